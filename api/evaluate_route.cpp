@@ -1,0 +1,70 @@
+#include <limits>
+
+#include "api/read_json.hpp"
+#include "api/routes.hpp"
+#include "api/write_json.hpp"
+#include "core/derivative.hpp"
+#include "core/evaluate.hpp"
+#include "core/subdivide.hpp"
+
+namespace bezier::api {
+
+namespace {
+
+constexpr double kAnyFinite = std::numeric_limits<double>::max();
+
+struct EvaluateRequest {
+  std::vector<double> ts;
+  int derivatives = 0;
+  std::optional<double> split;
+};
+
+template <class P>
+nlohmann::json evaluate_answer(const core::BasicCurve<P>& curve, const EvaluateRequest& request) {
+  nlohmann::json results = nlohmann::json::array();
+  // Hodographs are computed once per request, not once per t.
+  std::vector<core::BasicCurve<P>> hodographs;
+  for (int k = 1; k <= request.derivatives; ++k) {
+    hodographs.push_back(core::derivative(k == 1 ? curve : hodographs.back()));
+  }
+  for (const double t : request.ts) {
+    nlohmann::json result = {{"t", t}, {"point", point_json(core::evaluate(curve, t))}};
+    if (request.derivatives > 0) {
+      nlohmann::json derivs = nlohmann::json::array();
+      for (const auto& h : hodographs) derivs.push_back(point_json(core::evaluate(h, t)));
+      result["derivatives"] = std::move(derivs);
+    }
+    results.push_back(std::move(result));
+  }
+  nlohmann::json answer = {{"degree", curve.degree()}, {"results", std::move(results)}};
+  if (request.split) {
+    const auto halves = core::subdivide(curve, *request.split);
+    answer["split"] = {{"t", *request.split},
+                       {"left", points_json(halves.left)},
+                       {"right", points_json(halves.right)}};
+  }
+  return answer;
+}
+
+}  // namespace
+
+Reply evaluate_route(const nlohmann::json& request, const Limits& limits) {
+  RequestReader reader(limits);
+  reader.reject_unknown_fields(request, {"points", "t", "samples", "derivatives", "split"}, "");
+  std::optional<std::variant<core::Curve, core::Curve3>> curve;
+  if (const auto* points = reader.required(request, "points", "")) {
+    curve = reader.curve(*points, "/points");
+  }
+  EvaluateRequest parsed;
+  parsed.ts = reader.parameters(request, /*required=*/true);
+  if (const auto* d = RequestReader::optional(request, "derivatives")) {
+    if (const auto k = reader.integer(*d, "/derivatives", 0, limits.max_degree)) parsed.derivatives = *k;
+  }
+  if (const auto* s = RequestReader::optional(request, "split")) {
+    parsed.split = reader.number(*s, "/split");
+  }
+  if (!reader.ok()) return validation_reply(reader.take_errors());
+  return json_reply(std::visit([&](const auto& c) { return evaluate_answer(c, parsed); }, *curve));
+}
+
+}  // namespace bezier::api

@@ -1,0 +1,56 @@
+#include "api/handler.hpp"
+
+#include <array>
+
+#include "api/routes.hpp"
+
+namespace bezier::api {
+
+namespace {
+
+using RouteFunction = Reply (*)(const nlohmann::json&, const Limits&);
+
+struct Route {
+  std::string_view path;
+  RouteFunction function;
+};
+
+constexpr std::array kRoutes = {
+    Route{"/evaluate", &evaluate_route},
+    Route{"/polar", &polar_route},
+};
+
+constexpr std::array<std::string_view, kRoutes.size()> kPaths = [] {
+  std::array<std::string_view, kRoutes.size()> paths{};
+  for (std::size_t i = 0; i < kRoutes.size(); ++i) paths[i] = kRoutes[i].path;
+  return paths;
+}();
+
+}  // namespace
+
+std::span<const std::string_view> post_routes() noexcept { return kPaths; }
+
+bool is_post_route(std::string_view path) noexcept {
+  for (const Route& r : kRoutes) {
+    if (r.path == path) return true;
+  }
+  return false;
+}
+
+Reply handle(std::string_view path, std::string_view body, const Limits& limits) {
+  nlohmann::json request;
+  try {
+    request = nlohmann::json::parse(body);
+  } catch (const nlohmann::json::exception& e) {
+    return problem_reply(ProblemKind::malformed_json, std::string("body is not valid JSON: ") + e.what());
+  }
+  if (!request.is_object()) {
+    return problem_reply(ProblemKind::malformed_json, "body must be a JSON object");
+  }
+  for (const Route& r : kRoutes) {
+    if (r.path == path) return r.function(request, limits);
+  }
+  return problem_reply(ProblemKind::not_found, "no route " + std::string(path));
+}
+
+}  // namespace bezier::api

@@ -1,0 +1,73 @@
+#include "api/problem.hpp"
+
+namespace bezier::api {
+
+namespace {
+
+struct ProblemInfo {
+  int status;
+  const char* slug;
+  const char* title;
+};
+
+ProblemInfo info_of(ProblemKind kind) noexcept {
+  switch (kind) {
+    case ProblemKind::malformed_json:
+      return {400, "malformed-json", "Request body is not a JSON object"};
+    case ProblemKind::validation:
+      return {422, "validation", "Request failed validation"};
+    case ProblemKind::work_cap:
+      return {422, "work-cap", "Request needs more work than the per-request cap allows"};
+    case ProblemKind::payload_too_large:
+      return {413, "payload-too-large", "Request body is larger than the limit"};
+    case ProblemKind::unsupported_media_type:
+      return {415, "unsupported-media-type", "Content-Type must be application/json"};
+    case ProblemKind::not_found:
+      return {404, "not-found", "No such route"};
+    case ProblemKind::method_not_allowed:
+      return {405, "method-not-allowed", "Method not allowed on this route"};
+    case ProblemKind::unauthorized:
+      return {401, "unauthorized", "Missing or invalid bearer token"};
+    case ProblemKind::shutting_down:
+      return {503, "shutting-down", "Service is shutting down"};
+    case ProblemKind::internal:
+      break;
+  }
+  return {500, "internal", "Internal error"};
+}
+
+}  // namespace
+
+int status_of(ProblemKind kind) noexcept { return info_of(kind).status; }
+
+Reply problem_reply(ProblemKind kind, std::string detail, std::vector<FieldError> errors) {
+  const ProblemInfo info = info_of(kind);
+  nlohmann::json body = {
+      {"type", std::string("urn:bezier-service:problem:") + info.slug},
+      {"title", info.title},
+      {"status", info.status},
+      {"detail", std::move(detail)},
+  };
+  if (!errors.empty()) {
+    nlohmann::json list = nlohmann::json::array();
+    for (auto& e : errors) list.push_back({{"pointer", std::move(e.pointer)}, {"message", std::move(e.message)}});
+    body["errors"] = std::move(list);
+  }
+  // Invalid UTF-8 from the request may be echoed in a message: replace, never throw.
+  return {info.status, "application/problem+json",
+          body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)};
+}
+
+Reply validation_reply(std::vector<FieldError> errors) {
+  std::string detail = "request rejected";
+  if (!errors.empty()) detail = "'" + errors.front().pointer + "': " + errors.front().message;
+  if (errors.size() > 1) detail += " (and " + std::to_string(errors.size() - 1) + " more)";
+  return problem_reply(ProblemKind::validation, std::move(detail), std::move(errors));
+}
+
+Reply json_reply(const nlohmann::json& body) {
+  // nlohmann writes doubles as the shortest string that reads back to the same double.
+  return {200, "application/json", body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)};
+}
+
+}  // namespace bezier::api

@@ -1,0 +1,17 @@
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "api/limits.hpp"
+#include "api/problem.hpp"
+
+namespace bezier::api {
+
+// One function per POST route, each in its own <name>_route.cpp: read and validate
+// the request object, call the kernel, build the answer. The request is already known
+// to be a JSON object; pointers in errors are relative to its root.
+
+[[nodiscard]] Reply evaluate_route(const nlohmann::json& request, const Limits& limits);
+[[nodiscard]] Reply polar_route(const nlohmann::json& request, const Limits& limits);
+
+}  // namespace bezier::api

@@ -1,0 +1,57 @@
+#include "service/config.hpp"
+
+#include <CLI/CLI.hpp>
+
+namespace bezier::service {
+
+ParsedConfig parse_config(int argc, char** argv) {
+  Config config;
+  CLI::App app{"bezier-service: a Bézier-curve geometry kernel behind a JSON/HTTP API"};
+  app.set_version_flag("--version", "bezier-service 0.1.0");
+  app.add_option("--host", config.host, "Address to bind")->envname("BEZIER_HOST")->capture_default_str();
+  app.add_option("--port", config.port, "Port to listen on (0 picks a free port)")
+      ->envname("BEZIER_PORT")->check(CLI::Range(0, 65535))->capture_default_str();
+  app.add_option("--threads", config.threads, "Worker threads kept running")
+      ->envname("BEZIER_THREADS")->check(CLI::Range(1, 1024))->capture_default_str();
+  app.add_option("--max-connections", config.max_connections,
+                 "Most connections served at once (a thread each; beyond it they queue)")
+      ->envname("BEZIER_MAX_CONNECTIONS")->check(CLI::Range(1, 65536))->capture_default_str();
+  app.add_option("--keep-alive-timeout", config.keep_alive_timeout_s, "Seconds an idle keep-alive connection stays open")
+      ->envname("BEZIER_KEEP_ALIVE_TIMEOUT")->check(CLI::Range(0, 3600))->capture_default_str();
+  app.add_option("--keep-alive-max-requests", config.keep_alive_max_requests, "Requests served per connection")
+      ->envname("BEZIER_KEEP_ALIVE_MAX_REQUESTS")->check(CLI::Range(1, 1000000))->capture_default_str();
+  app.add_option("--read-timeout", config.read_timeout_s, "Seconds to wait for request bytes")
+      ->envname("BEZIER_READ_TIMEOUT")->check(CLI::Range(1, 3600))->capture_default_str();
+  app.add_option("--write-timeout", config.write_timeout_s, "Seconds to wait while writing an answer")
+      ->envname("BEZIER_WRITE_TIMEOUT")->check(CLI::Range(1, 3600))->capture_default_str();
+  app.add_option("--drain-seconds", config.drain_seconds, "After SIGTERM, seconds /readyz says 503 before the listener closes")
+      ->envname("BEZIER_DRAIN_SECONDS")->check(CLI::Range(0.0, 3600.0))->capture_default_str();
+  app.add_option("--max-body-bytes", config.limits.max_body_bytes, "Largest request body (413 above)")
+      ->envname("BEZIER_MAX_BODY_BYTES")->check(CLI::Range(std::size_t{64}, std::size_t{1} << 30))->capture_default_str();
+  app.add_option("--max-degree", config.limits.max_degree, "Highest curve degree accepted")
+      ->envname("BEZIER_MAX_DEGREE")->check(CLI::Range(1, 1000))->capture_default_str();
+  app.add_option("--max-t-values", config.limits.max_t_values, "Most t values or samples per request")
+      ->envname("BEZIER_MAX_T_VALUES")->check(CLI::Range(1, 10000000))->capture_default_str();
+  app.add_option("--max-work", config.limits.max_work, "Per-request work cap of iterative kernels (steps)")
+      ->envname("BEZIER_MAX_WORK")->check(CLI::Range(std::int64_t{1000}, std::int64_t{1} << 40))->capture_default_str();
+  app.add_option("--log-level", config.log_level, "trace, debug, info, warn, error, critical or off")
+      ->envname("BEZIER_LOG_LEVEL")
+      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}))
+      ->capture_default_str();
+  std::string format = "text";
+  app.add_option("--log-format", format, "text or json (one JSON object per line)")
+      ->envname("BEZIER_LOG_FORMAT")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
+  // The token is read from the environment only: a flag would show in `ps`.
+  if (const char* token = std::getenv("BEZIER_AUTH_TOKEN")) config.auth_token = token;
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    std::ostringstream out;
+    const int code = app.exit(e, out, out);
+    return {std::nullopt, code, out.str()};
+  }
+  config.log_format = format == "json" ? LogFormat::json : LogFormat::text;
+  return {config, 0, {}};
+}
+
+}  // namespace bezier::service

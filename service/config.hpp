@@ -1,0 +1,50 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "api/limits.hpp"
+
+namespace bezier::service {
+
+enum class LogFormat { text, json };
+
+/// Everything the executable is told at start, parsed once from flags and environment
+/// variables (a flag wins over its variable), then immutable.
+struct Config {
+  std::string host = "127.0.0.1";
+  int port = 8080;
+  /// Worker threads always kept. More are started when every worker holds a connection
+  /// (cpp-httplib serves a keep-alive connection on one thread until it closes), up to
+  /// max_connections; see service/elastic_task_queue.hpp.
+  int threads = 8;
+  int max_connections = 1024;
+  /// Seconds an idle keep-alive connection is kept, and requests served per connection.
+  int keep_alive_timeout_s = 5;
+  int keep_alive_max_requests = 1000;
+  /// Seconds to wait for a request's bytes (slow clients) and to write an answer.
+  int read_timeout_s = 5;
+  int write_timeout_s = 5;
+  /// After SIGTERM: seconds /readyz answers 503 while still serving, so a load
+  /// balancer can stop sending before the listener closes.
+  double drain_seconds = 0.0;
+  std::string log_level = "info";
+  LogFormat log_format = LogFormat::text;
+  /// Optional bearer token; empty means no authentication. Never logged.
+  std::string auth_token;
+  api::Limits limits;
+};
+
+/// The outcome of reading the command line: a config, or an exit code with the text
+/// to print (for --help, --version or a bad flag).
+struct ParsedConfig {
+  std::optional<Config> config;
+  int exit_code = 0;
+  std::string message;
+};
+
+/// Reads flags (argv) and BEZIER_* environment variables.
+[[nodiscard]] ParsedConfig parse_config(int argc, char** argv);
+
+}  // namespace bezier::service

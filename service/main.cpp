@@ -1,0 +1,64 @@
+// bezier-service: wires configuration, logging, the HTTP server and signals.
+#include <csignal>
+#include <cstdio>
+#include <thread>
+
+#include <spdlog/spdlog.h>
+
+#include "service/config.hpp"
+#include "service/log.hpp"
+#include "service/server.hpp"
+
+int main(int argc, char** argv) {
+  using namespace bezier::service;
+  const ParsedConfig parsed = parse_config(argc, argv);
+  if (!parsed.config) {
+    std::fputs(parsed.message.c_str(), parsed.exit_code == 0 ? stdout : stderr);
+    return parsed.exit_code;
+  }
+  const Config& config = *parsed.config;
+
+  // SIGTERM and SIGINT are blocked in every thread and taken by sigwait in one, so
+  // shutdown runs as ordinary code rather than inside a signal handler. The mask is
+  // set before any thread starts, so they all inherit it. SIGPIPE is ignored: a
+  // client that hangs up must not kill the process.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGTERM);
+  sigaddset(&stop_signals, SIGINT);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+  std::signal(SIGPIPE, SIG_IGN);
+
+  auto logger = make_logger(config);
+  Server server(config, logger);
+  const int port = server.bind();
+  if (port < 0) {
+    logger->critical("cannot bind {}:{}", config.host, config.port);
+    return 1;
+  }
+
+  std::thread signal_waiter([&] {
+    int signal = 0;
+    sigwait(&stop_signals, &signal);
+    logger->info("received {}, draining for {} s, then stopping", signal == SIGTERM ? "SIGTERM" : "SIGINT",
+                 config.drain_seconds);
+    server.begin_draining();
+    std::this_thread::sleep_for(std::chrono::duration<double>(config.drain_seconds));
+    server.stop();
+  });
+
+  // Printed once the socket accepts connections (it is bound and listening already:
+  // connections made now wait in the backlog until serve() takes them).
+  std::printf("listening on http://%s:%d\n", config.host.c_str(), port);
+  std::fflush(stdout);
+  logger->info("threads={} max_connections={} max_degree={} max_body_bytes={}", config.threads,
+               config.max_connections, config.limits.max_degree, config.limits.max_body_bytes);
+  const bool served = server.serve();
+  if (!served) {
+    // The listener failed on its own: wake the signal thread so it can be joined.
+    pthread_kill(signal_waiter.native_handle(), SIGTERM);
+  }
+  signal_waiter.join();
+  logger->info("stopped");
+  return served ? 0 : 1;
+}

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace bezier::service {
+
+/// Request counters, a latency histogram and the in-flight gauge, rendered in the
+/// Prometheus text exposition format (version 0.0.4). Lock-free: every update is a
+/// relaxed atomic add on a fixed slot, so recording costs nothing measurable on the
+/// request path. Routes and statuses outside the known sets share an "other" slot.
+class Metrics {
+ public:
+  /// Called when a request starts and when its answer is ready.
+  void request_started() noexcept { in_flight_.fetch_add(1, std::memory_order_relaxed); }
+  void request_finished(std::string_view route, int status, double seconds) noexcept;
+
+  /// The exposition text for GET /metrics.
+  [[nodiscard]] std::string render() const;
+
+  static constexpr std::array<std::string_view, 11> kRoutes = {
+      "/evaluate", "/polar",   "/loop-area", "/intersections", "/classify", "/openapi.yaml",
+      "/healthz",  "/readyz",  "/metrics",   "/",              "other"};
+  static constexpr std::array<int, 13> kStatuses = {200, 204, 400, 401, 404, 405, 408,
+                                                    413, 415, 422, 500, 503, 0 /*other*/};
+  /// Upper bounds of the latency buckets, in seconds (+Inf is implied).
+  static constexpr std::array<double, 14> kBuckets = {0.00005, 0.0001, 0.00025, 0.0005, 0.001,
+                                                      0.0025,  0.005,  0.01,    0.025,  0.05,
+                                                      0.1,     0.25,   0.5,     1.0};
+
+ private:
+  static std::size_t route_index(std::string_view route) noexcept;
+  static std::size_t status_index(int status) noexcept;
+
+  std::atomic<std::int64_t> in_flight_{0};
+  std::array<std::array<std::atomic<std::uint64_t>, kStatuses.size()>, kRoutes.size()> requests_{};
+  std::array<std::array<std::atomic<std::uint64_t>, kBuckets.size() + 1>, kRoutes.size()> buckets_{};
+  std::array<std::atomic<std::uint64_t>, kRoutes.size()> count_{};
+  // Sum of durations in nanoseconds, so it can be an integer atomic.
+  std::array<std::atomic<std::uint64_t>, kRoutes.size()> sum_ns_{};
+};
+
+}  // namespace bezier::service

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <atomic>
+#include <memory>
+
+#include <httplib.h>
+#include <spdlog/logger.h>
+
+#include "service/config.hpp"
+#include "service/metrics.hpp"
+
+namespace bezier::service {
+
+/// The HTTP front of the service: cpp-httplib set up with our routes, limits, hooks and
+/// task queue. Every POST route goes to api::handle; this class adds only what needs
+/// HTTP: methods, content type, body size, authentication, health, metrics, logging.
+class Server {
+ public:
+  Server(const Config& config, std::shared_ptr<spdlog::logger> logger);
+
+  /// Binds the listening socket; returns the port (the chosen one for port 0) or -1.
+  [[nodiscard]] int bind();
+  /// Serves until stop(); returns false if the listener failed.
+  bool serve();
+  /// From now on /readyz answers 503 (load balancers stop sending); still serving.
+  void begin_draining() noexcept { draining_.store(true); }
+  /// Closes the listener; serve() returns once in-flight requests are answered.
+  void stop() { http_.stop(); }
+
+ private:
+  void install_routes();
+  void handle_get(const httplib::Request& request, httplib::Response& response);
+  void handle_post(const httplib::Request& request, httplib::Response& response);
+  void handle_other_method(const httplib::Request& request, httplib::Response& response);
+  [[nodiscard]] bool authorized(const httplib::Request& request) const;
+  void log_access(const httplib::Request& request, const httplib::Response& response);
+
+  const Config config_;
+  std::shared_ptr<spdlog::logger> logger_;
+  httplib::Server http_;
+  Metrics metrics_;
+  std::atomic<bool> draining_{false};
+};
+
+}  // namespace bezier::service
