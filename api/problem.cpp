@@ -13,7 +13,7 @@ struct ProblemInfo {
 ProblemInfo info_of(ProblemKind kind) noexcept {
   switch (kind) {
     case ProblemKind::malformed_json:
-      return {400, "malformed-json", "Request body is not a JSON object"};
+      return {400, "malformed-json", "Malformed request body"};
     case ProblemKind::validation:
       return {422, "validation", "Request failed validation"};
     case ProblemKind::work_cap:

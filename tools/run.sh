@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# From a fresh clone: install what is missing, build Release, serve on 127.0.0.1:8080.
+# Extra arguments go to bezier-service (e.g. --port 9000, --log-format json).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+tools/install-deps.sh run
+cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DBEZIER_BUILD_TESTS=OFF -DBEZIER_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build build/release --target bezier-service
+exec build/release/service/bezier-service --host 127.0.0.1 --port 8080 "$@"
