@@ -1,0 +1,164 @@
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "api/handler.hpp"
+
+namespace bezier::api {
+namespace {
+
+using nlohmann::json;
+
+json call(const std::string& body, int expected_status, const Limits& limits = {}) {
+  const Reply reply = handle("/evaluate", body, limits);
+  EXPECT_EQ(reply.status, expected_status) << reply.body;
+  EXPECT_EQ(reply.content_type, expected_status == 200 ? "application/json" : "application/problem+json");
+  return json::parse(reply.body);
+}
+
+// The pointers of a 422 answer, in order.
+std::vector<std::string> pointers(const json& problem) {
+  std::vector<std::string> out;
+  for (const auto& e : problem.at("errors")) out.push_back(e.at("pointer"));
+  return out;
+}
+
+TEST(EvaluateRoute, PointsAtSeveralT) {
+  // Quadratic (0,0), (2,4), (4,0): B(t) = (4t, 8t(1-t)). Dyadic t gives exact values.
+  const json r = call(R"({"points":[[0,0],[2,4],[4,0]],"t":[0,0.25,1]})", 200);
+  EXPECT_EQ(r["degree"], 2);
+  ASSERT_EQ(r["results"].size(), 3u);
+  EXPECT_EQ(r["results"][0]["point"], json::parse("[0.0, 0.0]"));
+  EXPECT_EQ(r["results"][1]["point"], json::parse("[1.0, 1.5]"));
+  EXPECT_EQ(r["results"][2]["point"], json::parse("[4.0, 0.0]"));
+  EXPECT_EQ(r["results"][1]["t"], 0.25);
+  EXPECT_FALSE(r["results"][0].contains("derivatives"));
+}
+
+TEST(EvaluateRoute, DerivativesOfEveryOrder) {
+  // B(t) = (4t, 8t - 8t^2): B' = (4, 8 - 16t), B'' = (0, -16), B''' = 0.
+  const json r = call(R"({"points":[[0,0],[2,4],[4,0]],"t":0.25,"derivatives":3})", 200);
+  const json& d = r["results"][0]["derivatives"];
+  ASSERT_EQ(d.size(), 3u);
+  EXPECT_EQ(d[0], json::parse("[4.0, 4.0]"));
+  EXPECT_EQ(d[1], json::parse("[0.0, -16.0]"));
+  EXPECT_EQ(d[2], json::parse("[0.0, 0.0]"));
+}
+
+TEST(EvaluateRoute, SamplesIncludeBothEnds) {
+  const json r = call(R"({"points":[[0,0],[4,8]],"samples":5})", 200);
+  ASSERT_EQ(r["results"].size(), 5u);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(r["results"][i]["t"], i / 4.0);
+    EXPECT_EQ(r["results"][i]["point"], json::array({i * 1.0, i * 2.0}));
+  }
+}
+
+TEST(EvaluateRoute, SplitReturnsBothHalves) {
+  const json r = call(R"({"points":[[0,0],[2,4],[4,0]],"t":0.5,"split":0.5})", 200);
+  EXPECT_EQ(r["split"]["left"], json::parse("[[0.0,0.0],[1.0,2.0],[2.0,2.0]]"));
+  EXPECT_EQ(r["split"]["right"], json::parse("[[2.0,2.0],[3.0,2.0],[4.0,0.0]]"));
+}
+
+TEST(EvaluateRoute, ThreeDimensionalPoints) {
+  const json r = call(R"({"points":[[0,0,0],[2,4,8]],"t":0.5})", 200);
+  EXPECT_EQ(r["results"][0]["point"], json::parse("[1.0, 2.0, 4.0]"));
+}
+
+TEST(EvaluateRoute, AnyFiniteTExtrapolates) {
+  // The line from (0,0) to (1,2) at t = -3 and t = 5.
+  const json r = call(R"({"points":[[0,0],[1,2]],"t":[-3,5]})", 200);
+  EXPECT_EQ(r["results"][0]["point"], json::parse("[-3.0, -6.0]"));
+  EXPECT_EQ(r["results"][1]["point"], json::parse("[5.0, 10.0]"));
+}
+
+TEST(EvaluateRoute, MissingFields) {
+  const json r = call(R"({})", 422);
+  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points", "/t"}));
+  EXPECT_EQ(r["type"], "urn:bezier-service:problem:validation");
+}
+
+TEST(EvaluateRoute, UnknownFieldIsRejected) {
+  const json r = call(R"({"points":[[0,0],[1,1]],"t":0.5,"derivative":1})", 422);
+  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/derivative"}));
+}
+
+TEST(EvaluateRoute, WrongTypesPointAtTheField) {
+  const json r = call(R"({"points":"abc","t":"x","derivatives":1.5,"split":[]})", 422);
+  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points", "/t", "/derivatives", "/split"}));
+}
+
+TEST(EvaluateRoute, RaggedAndMixedDimensionPoints) {
+  json r = call(R"({"points":[[0,0],[1],[2,2]],"t":0})", 422);
+  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points/1"}));
+  r = call(R"({"points":[[0,0,0],[1,1],[2,2,2]],"t":0})", 422);
+  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points/1"}));
+  r = call(R"({"points":[[0,0],[1,1,1,1]],"t":0})", 422);
+  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points/1"}));
+  r = call(R"({"points":[[0,0],[true,1]],"t":0})", 422);
+  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points/1/0"}));
+}
+
+TEST(EvaluateRoute, TooFewPoints) {
+  EXPECT_EQ(pointers(call(R"({"points":[[0,0]],"t":0})", 422)), (std::vector<std::string>{"/points"}));
+  EXPECT_EQ(pointers(call(R"({"points":[],"t":0})", 422)), (std::vector<std::string>{"/points"}));
+}
+
+TEST(EvaluateRoute, DegreeLimit) {
+  Limits limits;
+  limits.max_degree = 3;
+  call(R"({"points":[[0,0],[1,1],[2,2],[3,3]],"t":0})", 200, limits);
+  const json r = call(R"({"points":[[0,0],[1,1],[2,2],[3,3],[4,4]],"t":0})", 422, limits);
+  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points"}));
+}
+
+TEST(EvaluateRoute, TValueAndSampleLimits) {
+  Limits limits;
+  limits.max_t_values = 2;
+  call(R"({"points":[[0,0],[1,1]],"t":[0,1]})", 200, limits);
+  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":[0,0.5,1]})", 422, limits)),
+            (std::vector<std::string>{"/t"}));
+  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"samples":3})", 422, limits)),
+            (std::vector<std::string>{"/samples"}));
+  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"samples":0})", 422)),
+            (std::vector<std::string>{"/samples"}));
+  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":[]})", 422)), (std::vector<std::string>{"/t"}));
+}
+
+TEST(EvaluateRoute, TAndSamplesAreExclusive) {
+  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":0,"samples":2})", 422)),
+            (std::vector<std::string>{"/samples"}));
+}
+
+TEST(EvaluateRoute, DerivativeOrderLimit) {
+  Limits limits;
+  limits.max_degree = 4;
+  call(R"({"points":[[0,0],[1,1]],"t":0,"derivatives":4})", 200, limits);
+  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":0,"derivatives":5})", 422, limits)),
+            (std::vector<std::string>{"/derivatives"}));
+  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":0,"derivatives":-1})", 422)),
+            (std::vector<std::string>{"/derivatives"}));
+}
+
+TEST(EvaluateRoute, NonFiniteNumbersPointAtTheField) {
+  const json r = call(R"({"points":[[0,0],[1,-1e400]],"t":[0,1e999]})", 422);
+  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points/1/1", "/t/1"}));
+}
+
+TEST(EvaluateRoute, MalformedAndNonObjectBodiesAre400) {
+  for (const char* body : {"", "{", "nul", "[]", "3", "\"text\"", "null", "{\"a\":1}x", "{'a':1}"}) {
+    const json r = call(body, 400);
+    EXPECT_EQ(r["type"], "urn:bezier-service:problem:malformed-json") << body;
+  }
+}
+
+TEST(EvaluateRoute, ErrorListIsBounded) {
+  std::string body = R"({"t":0,"points":[)";
+  for (int i = 0; i < 20; ++i) body += std::string(i ? "," : "") + "[\"a\",\"b\"]";
+  body += "]}";
+  const json r = call(body, 422);
+  EXPECT_LE(r["errors"].size(), 32u);
+  EXPECT_EQ(r["errors"][0]["pointer"], "/points/0/0");
+}
+
+}  // namespace
+}  // namespace bezier::api
