@@ -172,9 +172,9 @@ TEST_F(ServiceTest, MetricsCountRequestsByRouteAndStatus) {
             std::string::npos);
   // At least this request is in flight (earlier ones may still be finishing their
   // access line, which is written after the answer).
-  const auto gauge = r->body.find("bezier_requests_in_flight ");
+  const auto gauge = r->body.find("\nbezier_requests_in_flight ");
   ASSERT_NE(gauge, std::string::npos);
-  EXPECT_GE(std::stoi(r->body.substr(gauge + 26)), 1);
+  EXPECT_GE(std::stoi(r->body.substr(gauge + 27)), 1);
 }
 
 TEST_F(ServiceTest, RequestIdIsEchoedAndLogged) {
