@@ -67,6 +67,12 @@ inline double max_abs_coordinate(Point3 p) noexcept {
   return std::fmax(std::fabs(p.x), std::fmax(std::fabs(p.y), std::fabs(p.z)));
 }
 
+/// All coordinates finite (neither infinite nor NaN).
+inline bool is_finite(Point2 p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
+inline bool is_finite(Point3 p) noexcept {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
 /// Euclidean length, computed with hypot so it neither overflows nor underflows.
 inline double length(Point2 v) noexcept { return std::hypot(v.x, v.y); }
 inline double length(Point3 v) noexcept { return std::hypot(v.x, v.y, v.z); }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/curve.hpp"
+#include "core/evaluate.hpp"
 
 namespace bezier::core {
 
@@ -15,15 +16,18 @@ namespace bezier::core {
 /// connect-the-dots approach to splines", 1987; Farin, §4.4). The blossom is symmetric
 /// and multi-affine, so the order of the u_j changes nothing but rounding.
 /// Any finite u_j is allowed: a blossom is defined everywhere.
+/// The rounds are the compensated ones of evaluate() (CasteljauRow): each control point is
+/// within about one rounding of its exact value, and with all u_j = t the result is
+/// bit for bit what evaluate(curve, t) and subdivide(curve, t) compute.
 template <class P>
 [[nodiscard]] BasicCurve<P> polar(const BasicCurve<P>& curve, std::span<const double> us) {
   assert(static_cast<int>(us.size()) <= curve.degree());
-  std::vector<P> work(curve.points().begin(), curve.points().end());
-  for (const double u : us) {
-    for (std::size_t i = 0; i + 1 < work.size(); ++i) work[i] = lerp(work[i], work[i + 1], u);
-    work.pop_back();
-  }
-  return BasicCurve<P>(std::move(work));
+  CasteljauRow<P> row(curve.points());
+  for (const double u : us) row.casteljau_step(u);
+  std::vector<P> points;
+  points.reserve(row.size());
+  for (std::size_t i = 0; i < row.size(); ++i) points.push_back(row.point(i));
+  return BasicCurve<P>(std::move(points));
 }
 
 /// The first polar at t0: control points b_i^1(t0) = (1 - t0) P_i + t0 P_{i+1},

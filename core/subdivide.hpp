@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/curve.hpp"
+#include "core/evaluate.hpp"
 
 namespace bezier::core {
 
@@ -14,23 +15,25 @@ struct Split {
 };
 
 /// Splits B at t by de Casteljau: the left control points are the first points of each
-/// level of the triangle, the right ones the last points, read backwards (Farin, §4.6).
-/// Both halves share the split point bit for bit, and it is the same value evaluate()
-/// returns, because the same lerp sequence computes it. Any finite t is allowed
-/// (t outside [0,1] gives the extrapolated pieces). For a piece [a, b], see portion() in
-/// polar.hpp.
+/// level of the triangle, L_k = b_0^k(t), the right ones the last points, R_k = b_k^(n-k)(t)
+/// (Farin, "Curves and Surfaces for CAGD", 5th ed., §4.6). The triangle is the compensated
+/// one of evaluate() (CasteljauRow), so every new control point is within about one
+/// rounding of its exact value, and both halves share the split point L_n = R_0 bit for
+/// bit with each other and with evaluate(curve, t): the same steps compute it. Any finite
+/// t is allowed (t outside [0,1] gives the extrapolated pieces). For a piece [a, b], see
+/// portion() in polar.hpp.
 template <class P>
 [[nodiscard]] Split<P> subdivide(const BasicCurve<P>& curve, double t) {
-  std::vector<P> work(curve.points().begin(), curve.points().end());
-  const std::size_t n = work.size() - 1;
+  CasteljauRow<P> row(curve.points());
+  const std::size_t n = row.size() - 1;
   std::vector<P> left(n + 1);
   std::vector<P> right(n + 1);
-  left[0] = work[0];
-  right[n] = work[n];
-  for (std::size_t level = n; level > 0; --level) {
-    for (std::size_t i = 0; i < level; ++i) work[i] = lerp(work[i], work[i + 1], t);
-    left[n - level + 1] = work[0];
-    right[level - 1] = work[level - 1];
+  left[0] = row.point(0);
+  right[n] = row.point(n);
+  for (std::size_t k = 1; k <= n; ++k) {
+    row.casteljau_step(t);
+    left[k] = row.point(0);
+    right[n - k] = row.point(n - k);
   }
   return {BasicCurve<P>(std::move(left)), BasicCurve<P>(std::move(right))};
 }
