@@ -60,5 +60,6 @@ int main(int argc, char** argv) {
   }
   signal_waiter.join();
   logger->info("stopped");
+  spdlog::shutdown();  // drains the asynchronous log queue
   return served ? 0 : 1;
 }

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <random>
 
+#include <sys/socket.h>
+
 #include "api/handler.hpp"
 #include "api/problem.hpp"
 #include "service/elastic_task_queue.hpp"
@@ -86,9 +88,17 @@ Server::Server(const Config& config, std::shared_ptr<spdlog::logger> logger)
   install_routes();
 }
 
+bool HttpServer::widen_backlog(int backlog) noexcept { return ::listen(svr_sock_, backlog) == 0; }
+
 int Server::bind() {
-  if (config_.port == 0) return http_.bind_to_any_port(config_.host);
-  return http_.bind_to_port(config_.host, config_.port) ? config_.port : -1;
+  int port = -1;
+  if (config_.port == 0) {
+    port = http_.bind_to_any_port(config_.host);
+  } else if (http_.bind_to_port(config_.host, config_.port)) {
+    port = config_.port;
+  }
+  if (port >= 0 && !http_.widen_backlog(SOMAXCONN)) logger_->warn("could not widen the listen backlog");
+  return port;
 }
 
 bool Server::serve() { return http_.listen_after_bind(); }
