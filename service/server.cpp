@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <random>
+#include <thread>
 
 #include <sys/socket.h>
 
@@ -101,7 +102,18 @@ int Server::bind() {
   return port;
 }
 
-bool Server::serve() { return http_.listen_after_bind(); }
+bool Server::serve() {
+  const bool ok = http_.listen_after_bind();
+  serve_returned_.store(true);
+  return ok;
+}
+
+void Server::stop() {
+  while (!http_.is_running() && !serve_returned_.load()) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  http_.stop();
+}
 
 void Server::install_routes() {
   http_.set_pre_routing_handler([this](const httplib::Request& request, httplib::Response& response) {

@@ -34,8 +34,10 @@ class Server {
   bool serve();
   /// From now on /readyz answers 503 (load balancers stop sending); still serving.
   void begin_draining() noexcept { draining_.store(true); }
-  /// Closes the listener; serve() returns once in-flight requests are answered.
-  void stop() { http_.stop(); }
+  /// Closes the listener; serve() returns once in-flight requests are answered. Safe
+  /// to call before serve() has started (a signal right after start): it waits for the
+  /// listener to run, because httplib ignores a stop() that comes before listening.
+  void stop();
 
  private:
   void install_routes();
@@ -50,6 +52,7 @@ class Server {
   HttpServer http_;
   Metrics metrics_;
   std::atomic<bool> draining_{false};
+  std::atomic<bool> serve_returned_{false};
 };
 
 }  // namespace bezier::service
