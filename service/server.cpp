@@ -10,6 +10,7 @@
 #include "api/problem.hpp"
 #include "service/elastic_task_queue.hpp"
 #include "service/log.hpp"
+#include "service/static_files.hpp"
 
 namespace bezier::service {
 
@@ -66,7 +67,7 @@ bool is_get_route(std::string_view path) {
   for (const auto r : kGetRoutes) {
     if (r == path) return true;
   }
-  return false;
+  return find_static_file(path).has_value();
 }
 
 }  // namespace
@@ -197,6 +198,8 @@ void Server::handle_get(const httplib::Request& request, httplib::Response& resp
   } else if (path == "/openapi.yaml") {
     const auto spec = api::openapi_yaml();
     response.set_content(spec.data(), spec.size(), "application/yaml");
+  } else if (const auto file = find_static_file(path)) {
+    response.set_content(file->content.data(), file->content.size(), std::string(file->content_type).c_str());
   } else if (api::is_post_route(path)) {
     response.set_header("Allow", "POST");
     write_problem(response, api::ProblemKind::method_not_allowed, "use POST on " + path);
