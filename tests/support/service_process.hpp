@@ -24,7 +24,10 @@ namespace bezier::test {
 /// is ever fixed. The destructor kills the process if the test did not stop it.
 class ServiceProcess {
  public:
-  explicit ServiceProcess(std::vector<std::string> extra_args = {}) {
+  /// `extra_args` follow --host/--port; `extra_env` entries ("NAME=value") are added to
+  /// this process's environment for the child only.
+  explicit ServiceProcess(std::vector<std::string> extra_args = {},
+                          std::vector<std::string> extra_env = {}) {
     int out[2];
     if (pipe(out) != 0) throw std::runtime_error("pipe failed");
     std::vector<std::string> args = {BEZIER_SERVICE_BINARY, "--host", "127.0.0.1", "--port", "0"};
@@ -36,7 +39,11 @@ class ServiceProcess {
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
     posix_spawn_file_actions_addclose(&actions, out[0]);
-    const int rc = posix_spawn(&pid_, argv[0], &actions, nullptr, argv.data(), environ);
+    std::vector<char*> envp;
+    for (char** e = environ; *e != nullptr; ++e) envp.push_back(*e);
+    for (auto& e : extra_env) envp.push_back(e.data());
+    envp.push_back(nullptr);
+    const int rc = posix_spawn(&pid_, argv[0], &actions, nullptr, argv.data(), envp.data());
     posix_spawn_file_actions_destroy(&actions);
     close(out[1]);
     if (rc != 0) throw std::runtime_error("cannot start " + args[0]);
@@ -80,6 +87,7 @@ class ServiceProcess {
       const pid_t r = waitpid(pid_, &status, WNOHANG);
       if (r == pid_) {
         pid_ = -1;
+        if (reader_.joinable()) reader_.join();  // all output is in output_ now
         if (WIFEXITED(status)) return WEXITSTATUS(status);
         return std::nullopt;
       }
