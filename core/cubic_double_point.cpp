@@ -1,0 +1,76 @@
+#include "core/cubic_double_point.hpp"
+
+#include <algorithm>
+#include <cassert>
+
+#include "core/quadratic_roots.hpp"
+
+namespace bezier::core {
+
+namespace {
+
+// B(t) by de Casteljau on the four points, without the allocation of the general
+// evaluate(): this runs inside classify(), whose budget is tens of nanoseconds.
+Point2 cubic_point(std::span<const Point2, 4> p, double t) noexcept {
+  const Point2 a = lerp(p[0], p[1], t), b = lerp(p[1], p[2], t), c = lerp(p[2], p[3], t);
+  const Point2 d = lerp(a, b, t), e = lerp(b, c, t);
+  return lerp(d, e, t);
+}
+
+// Into [0, 1], and -0 to +0.
+double clamp_unit(double t) noexcept { return t <= 0.0 ? 0.0 : std::min(t, 1.0); }
+
+}  // namespace
+
+std::optional<CubicDoublePoint> cubic_double_point(std::span<const Point2, 4> p,
+                                                   const CubicPredicates& pred) {
+  // disc < 0 implies d1 d3 > 0, so d3 != 0 below.
+  if (pred.sign.disc >= 0) return std::nullopt;
+  const double d2 = pred.d2, d3 = pred.d3;
+  CubicDoublePoint dp;
+  // Loop closing exactly at an end: one root is exactly 0 (l0 = d3² s t = 0) or exactly 1
+  // (l1 = d3² (1 − s)(1 − t) = 0), the other follows from s + t = −d2 / d3.
+  const double sum = -d2 / d3;
+  if (pred.sign.l0 == 0 && pred.sign.l1 == 0) {
+    dp.t1 = 0.0;
+    dp.t2 = 1.0;
+  } else if (pred.sign.l0 == 0) {
+    dp.t1 = std::min(0.0, sum);
+    dp.t2 = std::max(0.0, sum);
+  } else if (pred.sign.l1 == 0) {
+    dp.t1 = std::min(1.0, sum - 1.0);
+    dp.t2 = std::max(1.0, sum - 1.0);
+  } else {
+    const RootPair r = quadratic_roots(d3, d2, pred.l0 / d3, -3.0 * pred.disc);
+    dp.t1 = r.lo;
+    dp.t2 = r.hi;
+  }
+  // Both roots in [0,1]: the product l0 and l1 of the root factors are >= 0 and the
+  // midpoint −d2 / (2 d3) lies in [0,1], i.e. d2 d3 <= 0 and (d2 + 2 d3) d3 >= 0.
+  dp.on_segment = pred.sign.l0 >= 0 && pred.sign.l1 >= 0 && pred.sign.d2 * pred.sign.d3 <= 0 &&
+                  pred.sign.d2_plus_2d3 * pred.sign.d3 >= 0;
+  if (dp.on_segment) {
+    dp.t1 = clamp_unit(dp.t1);
+    dp.t2 = clamp_unit(dp.t2);
+  }
+  // At an exactly closing end the point is that end point, bit for bit.
+  if (pred.sign.l0 == 0) {
+    dp.point = p[0];
+  } else if (pred.sign.l1 == 0) {
+    dp.point = p[3];
+  } else {
+    dp.point = 0.5 * (cubic_point(p, dp.t1) + cubic_point(p, dp.t2));
+  }
+  return dp;
+}
+
+std::optional<CubicDoublePoint> cubic_double_point(std::span<const Point2, 4> p) {
+  return cubic_double_point(p, cubic_predicates(p));
+}
+
+std::optional<CubicDoublePoint> cubic_double_point(const Curve& cubic) {
+  assert(cubic.degree() == 3);
+  return cubic_double_point(std::span<const Point2, 4>(cubic.points().data(), 4));
+}
+
+}  // namespace bezier::core
