@@ -26,6 +26,9 @@ ParsedConfig parse_config(int argc, char** argv) {
       ->envname("BEZIER_WRITE_TIMEOUT")->check(CLI::Range(1, 3600))->capture_default_str();
   app.add_option("--drain-seconds", config.drain_seconds, "After SIGTERM, seconds /readyz says 503 before the listener closes")
       ->envname("BEZIER_DRAIN_SECONDS")->check(CLI::Range(0.0, 3600.0))->capture_default_str();
+  app.add_option("--shutdown-timeout", config.shutdown_timeout_seconds,
+                 "After the listener closes, seconds in-flight requests get before the process exits anyway (status 1)")
+      ->envname("BEZIER_SHUTDOWN_TIMEOUT")->check(CLI::Range(0.0, 3600.0))->capture_default_str();
   app.add_option("--max-body-bytes", config.limits.max_body_bytes, "Largest request body (413 above)")
       ->envname("BEZIER_MAX_BODY_BYTES")->check(CLI::Range(std::size_t{64}, std::size_t{1} << 30))->capture_default_str();
   app.add_option("--max-degree", config.limits.max_degree, "Highest curve degree accepted")

@@ -29,6 +29,10 @@ struct Config {
   /// After SIGTERM: seconds /readyz answers 503 while still serving, so a load
   /// balancer can stop sending before the listener closes.
   double drain_seconds = 0.0;
+  /// After the listener closes: seconds in-flight requests get to finish (a client
+  /// sending a byte a second could otherwise hold the exit forever). Past it the process
+  /// exits with status 1.
+  double shutdown_timeout_seconds = 20.0;
   std::string log_level = "info";
   LogFormat log_format = LogFormat::text;
   /// Optional bearer token; empty means no authentication. Never logged.

@@ -1,6 +1,8 @@
 // bezier-service: wires configuration, logging, the HTTP server and signals.
 #include <csignal>
 #include <cstdio>
+#include <condition_variable>
+#include <mutex>
 #include <thread>
 
 #include <spdlog/spdlog.h>
@@ -37,6 +39,9 @@ int main(int argc, char** argv) {
     return 1;
   }
 
+  std::mutex exit_mutex;
+  std::condition_variable exit_ready;
+  bool served_returned = false;
   std::thread signal_waiter([&] {
     int signal = 0;
     sigwait(&stop_signals, &signal);
@@ -45,6 +50,14 @@ int main(int argc, char** argv) {
     server.begin_draining();
     std::this_thread::sleep_for(std::chrono::duration<double>(config.drain_seconds));
     server.stop();
+    std::unique_lock lock(exit_mutex);
+    if (!exit_ready.wait_for(lock, std::chrono::duration<double>(config.shutdown_timeout_seconds),
+                             [&] { return served_returned; })) {
+      logger->warn("in-flight requests did not finish within {} s; exiting anyway",
+                   config.shutdown_timeout_seconds);
+      spdlog::shutdown();
+      std::_Exit(1);
+    }
   });
 
   // Printed once the socket accepts connections (it is bound and listening already:
@@ -54,6 +67,11 @@ int main(int argc, char** argv) {
   logger->info("threads={} max_connections={} max_degree={} max_body_bytes={}", config.threads,
                config.max_connections, config.limits.max_degree, config.limits.max_body_bytes);
   const bool served = server.serve();
+  {
+    const std::lock_guard lock(exit_mutex);
+    served_returned = true;
+  }
+  exit_ready.notify_all();
   if (!served) {
     // The listener failed on its own: wake the signal thread so it can be joined.
     pthread_kill(signal_waiter.native_handle(), SIGTERM);
