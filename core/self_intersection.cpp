@@ -1,0 +1,231 @@
+#include "core/self_intersection.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/collinear_self_overlap.hpp"
+#include "core/cubic_double_point.hpp"
+#include "core/evaluate.hpp"
+#include "core/self_intersection_refine.hpp"
+#include "core/self_intersection_search.hpp"
+
+namespace bezier::core {
+
+namespace {
+
+constexpr double kUnitRoundoff = 0x1p-53;
+// Pairs found twice (from neighbouring boxes) agree to a few ulps; distinct transversal
+// pairs this close in both parameters do not occur above the resolution of the search.
+constexpr double kMergeCrossings = 1e-10;
+// Tangential contacts are located less sharply (and from clusters of boxes).
+constexpr double kMergeContacts = 1e-7;
+// Sine of the angle between the tangents below which a pair counts as tangent: about
+// sqrt(u), the precision to which a double root's tangent directions can be matched.
+constexpr double kTangentSine = 1e-7;
+
+/// A candidate pair before clean-up.
+struct Candidate {
+  double u;
+  double v;
+  double residual;
+  bool contact;  ///< from a contact refinement: a tangency by construction
+};
+
+/// Everything the clean-up needs about the curve.
+struct CurveFacts {
+  const Curve& curve;
+  std::span<const Point2> points;
+  double scale;
+  double dist_tol;
+  /// Rounding level of F = B(v) - B(u): 4 (n + 1) u scale.
+  double rounding;
+  bool closed;
+};
+
+/// Whether a Newton root is a real pair rather than a point of the diagonal blurred by
+/// rounding (see double_point_uncertainty).
+bool resolved(const CurveFacts& facts, double u, double v) {
+  return double_point_uncertainty(facts.points, u, v, facts.rounding) < 0.25 * (v - u);
+}
+
+/// |B(v) - B(u)| with the compensated evaluation: the most accurate residual available,
+/// used to decide whether an end point is exactly part of the pair.
+double exact_residual(const Curve& curve, double u, double v) {
+  return length(evaluate(curve, v) - evaluate(curve, u));
+}
+
+/// Moves u to 0 (v to 1) when B(0) = B(v) (B(u) = B(1)) holds as well as B(u) = B(v) did,
+/// up to rounding: a loop closing exactly at an end must report the end exactly.
+void snap_to_ends(Candidate& c, const CurveFacts& facts) {
+  constexpr double kNearEnd = 0x1p-20;
+  const bool near_start = c.u != 0.0 && std::fabs(c.u) <= kNearEnd;
+  const bool near_end = c.v != 1.0 && std::fabs(c.v - 1.0) <= kNearEnd;
+  if (!near_start && !near_end) return;
+  const double here = std::max(exact_residual(facts.curve, c.u, c.v), facts.rounding);
+  if (near_start && exact_residual(facts.curve, 0.0, c.v) <= here) c.u = 0.0;
+  if (near_end && exact_residual(facts.curve, c.u, 1.0) <= here) c.v = 1.0;
+}
+
+/// The pair as reported: the double point as the mean of B(t) and B(s), and the kind from
+/// the tangents there (a contact is tangent by construction unless a tangent vanishes).
+SelfIntersection finished_pair(const CurveFacts& facts, double u, double v, bool contact) {
+  const CurveJet ju = curve_jet(facts.points, u);
+  const CurveJet jv = curve_jet(facts.points, v);
+  const double n = static_cast<double>(facts.points.size() - 1);
+  const double zero = 1e-12 * n * facts.scale;
+  const double lu = length(ju.d1), lv = length(jv.d1);
+  SelfIntersectionKind kind = SelfIntersectionKind::transversal;
+  if (lu <= zero || lv <= zero) {
+    kind = SelfIntersectionKind::degenerate;
+  } else if (contact || std::fabs(cross(ju.d1, jv.d1)) <= kTangentSine * lu * lv) {
+    kind = SelfIntersectionKind::tangent;
+  }
+  return {u, v, 0.5 * (ju.point + jv.point), kind};
+}
+
+/// Snaps, filters (outside [0,1], t >= s, the trivial pair of a closed curve), sorts and
+/// merges the candidates, then computes points and kinds.
+std::vector<SelfIntersection> clean_up(std::vector<Candidate> candidates, const CurveFacts& facts) {
+  std::vector<Candidate> kept;
+  for (Candidate c : candidates) {
+    snap_to_ends(c, facts);
+    if (!(0.0 <= c.u && c.u < c.v && c.v <= 1.0)) continue;
+    if (facts.closed && c.u == 0.0 && c.v == 1.0) continue;
+    kept.push_back(c);
+  }
+  std::sort(kept.begin(), kept.end(), [](const Candidate& a, const Candidate& b) {
+    return a.u != b.u ? a.u < b.u : a.v < b.v;
+  });
+  std::vector<Candidate> merged;
+  for (const Candidate& c : kept) {
+    bool duplicate = false;
+    for (Candidate& m : merged) {
+      const double tol = (c.contact || m.contact) ? kMergeContacts : kMergeCrossings;
+      if (std::fabs(c.u - m.u) <= tol && std::fabs(c.v - m.v) <= tol) {
+        // Keep the better one; a Newton crossing beats a contact estimate.
+        if ((m.contact && !c.contact) || (m.contact == c.contact && c.residual < m.residual)) m = c;
+        duplicate = true;
+        break;
+      }
+    }
+    if (!duplicate) merged.push_back(c);
+  }
+  std::sort(merged.begin(), merged.end(), [](const Candidate& a, const Candidate& b) {
+    return a.u != b.u ? a.u < b.u : a.v < b.v;
+  });
+  std::vector<SelfIntersection> pairs;
+  for (const Candidate& c : merged) pairs.push_back(finished_pair(facts, c.u, c.v, c.contact));
+  return pairs;
+}
+
+/// Groups contact boxes that touch (within one box width) into clusters.
+std::vector<ParameterBox> cluster(std::vector<ParameterBox> boxes) {
+  std::sort(boxes.begin(), boxes.end(), [](const ParameterBox& a, const ParameterBox& b) { return a.u_lo < b.u_lo; });
+  std::vector<ParameterBox> clusters;
+  for (const ParameterBox& b : boxes) {
+    const double w = std::max(b.u_hi - b.u_lo, b.v_hi - b.v_lo);
+    bool joined = false;
+    for (auto it = clusters.rbegin(); it != clusters.rend(); ++it) {
+      if (it->u_hi + w < b.u_lo) continue;  // sorted by u_lo: older clusters may still reach
+      if (b.v_lo <= it->v_hi + w && it->v_lo <= b.v_hi + w && b.u_lo <= it->u_hi + w) {
+        *it = {std::min(it->u_lo, b.u_lo), std::max(it->u_hi, b.u_hi), std::min(it->v_lo, b.v_lo),
+               std::max(it->v_hi, b.v_hi)};
+        joined = true;
+        break;
+      }
+    }
+    if (!joined) clusters.push_back(b);
+  }
+  return clusters;
+}
+
+/// One candidate per cluster of contact boxes: Newton on F first (a crossing at a tiny
+/// angle also ends up here), else the tangential-contact refinement; kept when the two
+/// branches meet to within dist_tol and the pair is clear of the diagonal (near a cusp the
+/// closest pair slides to u = v).
+void resolve_contacts(const SelfIntersectionSearchOutcome& found, const CurveFacts& facts,
+                      std::vector<Candidate>& candidates, SelfIntersectionStats& stats) {
+  double width = 0.0;
+  for (const ParameterBox& b : found.contact_boxes) width = std::max({width, b.u_hi - b.u_lo, b.v_hi - b.v_lo});
+  for (const ParameterBox& c : cluster(found.contact_boxes)) {
+    const ParameterBox region{std::max(0.0, c.u_lo - width), std::min(1.0, c.u_hi + width),
+                              std::max(0.0, c.v_lo - width), std::min(1.0, c.v_hi + width)};
+    const double u0 = 0.5 * (c.u_lo + c.u_hi), v0 = 0.5 * (c.v_lo + c.v_hi);
+    PairRefinement r = refine_double_point(facts.points, u0, v0, region, facts.rounding);
+    // At a tangency Newton on F stalls, or lands on the double root with a singular
+    // Jacobian (an exact start does): then locate the touching point instead.
+    const bool contact = !(r.converged && resolved(facts, r.u, r.v));
+    if (contact) r = refine_contact(facts.points, u0, v0, region);
+    ++stats.newton_runs;
+    stats.newton_iterations += r.iterations;
+    if (r.residual <= facts.dist_tol && r.v - r.u > 4.0 * width) {
+      candidates.push_back({r.u, r.v, r.residual, contact});
+    }
+  }
+}
+
+SelfIntersectionResult collinear_result(const CurveFacts& facts, const CollinearFrame& frame,
+                                        const SelfIntersectionOptions& options) {
+  SelfIntersectionResult result;
+  result.stats.method = SelfIntersectionMethod::collinear;
+  CollinearOverlaps found = collinear_self_overlaps(facts.points, frame, facts.dist_tol, options.max_work);
+  result.stats.work = found.work;
+  result.overlaps = std::move(found.overlaps);
+  if (found.work_cap_reached) {
+    result.status = SelfIntersectionStatus::work_cap_reached;
+  } else if (!result.overlaps.empty()) {
+    result.status = SelfIntersectionStatus::degenerate;
+  }
+  return result;
+}
+
+/// Cubics: the exact closed form of cubic_double_point() (exact decisions, and t = 0 or 1
+/// exactly when the loop closes at an end), polished by Newton to full precision.
+SelfIntersectionResult closed_form_cubic(const CurveFacts& facts) {
+  SelfIntersectionResult result;
+  result.stats.method = SelfIntersectionMethod::closed_form_cubic;
+  const auto dp = cubic_double_point(std::span<const Point2, 4>(facts.points.data(), 4));
+  if (!dp || !dp->on_segment) return result;
+  if (facts.closed && dp->t1 == 0.0 && dp->t2 == 1.0) return result;  // the trivial pair
+  double u = dp->t1, v = dp->t2;
+  const PairRefinement polished = refine_double_point(facts.points, u, v, {0.0, 1.0, 0.0, 1.0}, facts.rounding, 8);
+  ++result.stats.newton_runs;
+  result.stats.newton_iterations += polished.iterations;
+  if (polished.converged && polished.u < polished.v) {
+    // Ends decided exactly stay exact.
+    if (u != 0.0) u = polished.u;
+    if (v != 1.0) v = polished.v;
+  }
+  result.pairs.push_back(finished_pair(facts, u, v, false));
+  if (u == 0.0) result.pairs.back().point = facts.points[0];
+  if (v == 1.0) result.pairs.back().point = facts.points[3];
+  return result;
+}
+
+}  // namespace
+
+SelfIntersectionResult self_intersections(const Curve& curve, const SelfIntersectionOptions& options) {
+  const std::span<const Point2> points = curve.points();
+  const double s = scale(curve);
+  const double rounding = 4.0 * static_cast<double>(points.size()) * kUnitRoundoff * s;
+  const CurveFacts facts{curve, points, s, options.dist_rel * s, rounding, curve.front() == curve.back()};
+  if (const auto frame = collinear_frame(points, facts.dist_tol)) {
+    return collinear_result(facts, *frame, options);
+  }
+  if (curve.degree() == 3 && options.cubic_closed_form) return closed_form_cubic(facts);
+
+  const SelfIntersectionSearchOutcome found = search_self_intersections(
+      points, {facts.dist_tol, facts.rounding, options.max_work, options.max_depth, facts.closed});
+  SelfIntersectionResult result;
+  result.stats = found.stats;
+  result.stats.method = SelfIntersectionMethod::subdivision;
+  std::vector<Candidate> candidates;
+  for (const PairRefinement& r : found.crossings) candidates.push_back({r.u, r.v, r.residual, false});
+  resolve_contacts(found, facts, candidates, result.stats);
+  result.pairs = clean_up(std::move(candidates), facts);
+  if (found.work_cap_reached) result.status = SelfIntersectionStatus::work_cap_reached;
+  return result;
+}
+
+}  // namespace bezier::core
