@@ -22,6 +22,7 @@ struct Route {
 constexpr std::array kRoutes = {
     Route{"/evaluate", &evaluate_route},
     Route{"/polar", &polar_route},
+    Route{"/classify", &classify_route},
 };
 
 constexpr std::array<std::string_view, kRoutes.size()> kPaths = [] {

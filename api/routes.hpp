@@ -13,5 +13,6 @@ namespace bezier::api {
 
 [[nodiscard]] Reply evaluate_route(const nlohmann::json& request, const Limits& limits);
 [[nodiscard]] Reply polar_route(const nlohmann::json& request, const Limits& limits);
+[[nodiscard]] Reply classify_route(const nlohmann::json& request, const Limits& limits);
 
 }  // namespace bezier::api

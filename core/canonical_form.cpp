@@ -9,7 +9,8 @@ namespace bezier::core {
 
 std::optional<Point2> canonical_point(const CubicPredicates& pred) {
   if (pred.sign.d1 == 0) return std::nullopt;
-  Point2 q{pred.x_num / pred.d1, pred.y_num / pred.d1};
+  // + 0.0 turns a -0 quotient into +0.
+  Point2 q{pred.x_num / pred.d1 + 0.0, pred.y_num / pred.d1 + 0.0};
   // Where a coordinate is known exactly, report it exactly: d2 = d1 (x − 3) and
   // I(1) = d1 (1 − y), so d2 = 0 puts x at 3 and an inflection at t = 1 puts y at 1.
   if (pred.sign.d2 == 0) q.x = 3.0;
