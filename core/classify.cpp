@@ -43,8 +43,9 @@ Inflections inflections_on_unit_interval(const CubicPredicates& pred) {
   // otherwise one does iff g(0), g(1) differ in strict sign or one of them is zero.
   const int g0 = s.d3 * s.d1, g1 = s.d3 * s.i1;
   const bool vertex_inside = s.d2 * s.d3 <= 0 && s.d2_plus_2d3 * s.d3 >= 0;
-  const RootPair r = quadratic_roots(pred.d3, pred.d2, pred.d1, pred.disc);
+  const auto roots = [&pred] { return quadratic_roots(pred.d3, pred.d2, pred.d1, pred.disc); };
   if (g0 >= 0 && g1 >= 0 && vertex_inside) {
+    const RootPair r = roots();
     add(g0 == 0 ? 0.0 : clamp_unit(r.lo));
     add(g1 == 0 ? 1.0 : clamp_unit(r.hi));
     if (out.t[1] < out.t[0]) out.t[1] = out.t[0];  // keep the order through rounding
@@ -54,6 +55,7 @@ Inflections inflections_on_unit_interval(const CubicPredicates& pred) {
     add(1.0);
   } else if (g0 * g1 < 0) {
     // g(0) < 0: 0 lies between the roots, so r2 is in (0, 1); g(0) > 0: r1 is.
+    const RootPair r = roots();
     add(clamp_unit(g0 < 0 ? r.hi : r.lo));
   }
   return out;
@@ -94,12 +96,12 @@ CubicClassification classify(std::span<const Point2, 4> p) {
   }
 
   if (s.disc < 0) {
-    const std::optional<CubicDoublePoint> dp = cubic_double_point(p, pred);
-    assert(dp.has_value());
-    if (!dp->on_segment) {
+    if (!double_point_on_segment(s)) {
       out.type = CubicType::arch;  // the loop lies (partly) outside [0,1]; no inflections
       return out;
     }
+    const std::optional<CubicDoublePoint> dp = cubic_double_point(p, pred);
+    assert(dp.has_value() && dp->on_segment);
     out.type = s.l0 == 0   ? CubicType::loop_at_start
                : s.l1 == 0 ? CubicType::loop_at_end
                            : CubicType::loop;

@@ -45,10 +45,7 @@ std::optional<CubicDoublePoint> cubic_double_point(std::span<const Point2, 4> p,
     dp.t1 = r.lo;
     dp.t2 = r.hi;
   }
-  // Both roots in [0,1]: the product l0 and l1 of the root factors are >= 0 and the
-  // midpoint −d2 / (2 d3) lies in [0,1], i.e. d2 d3 <= 0 and (d2 + 2 d3) d3 >= 0.
-  dp.on_segment = pred.sign.l0 >= 0 && pred.sign.l1 >= 0 && pred.sign.d2 * pred.sign.d3 <= 0 &&
-                  pred.sign.d2_plus_2d3 * pred.sign.d3 >= 0;
+  dp.on_segment = double_point_on_segment(pred.sign);
   if (dp.on_segment) {
     dp.t1 = clamp_unit(dp.t1);
     dp.t2 = clamp_unit(dp.t2);

@@ -24,6 +24,14 @@ struct CubicDoublePoint {
   bool on_segment = false;
 };
 
+/// Whether the double point exists (disc < 0) and both parameters lie in [0,1], from the
+/// exact signs alone: l0 = d3² t1 t2 >= 0, l1 = d3² (1 − t1)(1 − t2) >= 0 and the midpoint
+/// −d2 / (2 d3) in [0,1] (d2 d3 <= 0, (d2 + 2 d3) d3 >= 0). Lets a caller skip the roots
+/// when the loop is off the segment.
+[[nodiscard]] constexpr bool double_point_on_segment(const CubicSigns& s) noexcept {
+  return s.disc < 0 && s.l0 >= 0 && s.l1 >= 0 && s.d2 * s.d3 <= 0 && s.d2_plus_2d3 * s.d3 >= 0;
+}
+
 /// The double point of the cubic with control points p[0..3], over all real t.
 ///
 /// Derivation (with a, b, c, d1, d2, d3 as in cubic_predicates.hpp): B(s) = B(t), s != t,

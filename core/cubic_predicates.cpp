@@ -1,5 +1,6 @@
 #include "core/cubic_predicates.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
@@ -51,10 +52,11 @@ CubicPredicates cubic_predicates(std::span<const Point2, 4> p) {
   const double ux = p[1].x - p[0].x, uy = p[1].y - p[0].y;
   const double vx = p[2].x - p[0].x, vy = p[2].y - p[0].y;
   const double wx = p[3].x - p[0].x, wy = p[3].y - p[0].y;
-  const double m = std::fmax(std::fmax(std::fmax(std::fabs(ux), std::fabs(uy)),
-                                       std::fmax(std::fabs(vx), std::fabs(vy))),
-                             std::fmax(std::fabs(wx), std::fabs(wy)));
-  assert(!std::isnan(m) && "cubic_predicates: coordinates must be finite");
+  // std::max, not std::fmax: the inputs are finite (precondition), and fmax is a libm call.
+  const double m = std::max(std::max(std::max(std::fabs(ux), std::fabs(uy)),
+                                     std::max(std::fabs(vx), std::fabs(vy))),
+                            std::max(std::fabs(wx), std::fabs(wy)));
+  assert(!std::isnan(ux + uy + vx + vy + wx + wy) && "cubic_predicates: coordinates must be finite");
   if (!(kFilterMin <= m && m <= kFilterMax)) return cubic_predicates_exact(p);
 
   const double uxv = cross(ux, uy, vx, vy);
