@@ -52,7 +52,7 @@ bool resolved(const CurveFacts& facts, double u, double v) {
 /// |B(v) - B(u)| with the compensated evaluation: the most accurate residual available,
 /// used to decide whether an end point is exactly part of the pair.
 double exact_residual(const Curve& curve, double u, double v) {
-  return length(evaluate(curve, v) - evaluate(curve, u));
+  return norm(evaluate(curve, v) - evaluate(curve, u));
 }
 
 /// Moves u to 0 (v to 1) when B(0) = B(v) (B(u) = B(1)) holds as well as B(u) = B(v) did,
@@ -74,7 +74,7 @@ SelfIntersection finished_pair(const CurveFacts& facts, double u, double v, bool
   const CurveJet jv = curve_jet(facts.points, v);
   const double n = static_cast<double>(facts.points.size() - 1);
   const double zero = 1e-12 * n * facts.scale;
-  const double lu = length(ju.d1), lv = length(jv.d1);
+  const double lu = norm(ju.d1), lv = norm(jv.d1);
   SelfIntersectionKind kind = SelfIntersectionKind::transversal;
   if (lu <= zero || lv <= zero) {
     kind = SelfIntersectionKind::degenerate;
@@ -206,25 +206,40 @@ SelfIntersectionResult closed_form_cubic(const CurveFacts& facts) {
 }  // namespace
 
 SelfIntersectionResult self_intersections(const Curve& curve, const SelfIntersectionOptions& options) {
-  const std::span<const Point2> points = curve.points();
-  const double s = scale(curve);
+  // Work on the curve scaled by 2^k so that its largest coordinate lies in [1, 2): exact
+  // (barring underflow of coordinates 2^-1000 below the largest), leaves every parameter
+  // unchanged, and lets the inner loops use sqrt(v·v) without overflow.
+  const double original_scale = scale(curve);
+  const int k = original_scale > 0.0 ? -std::ilogb(original_scale) : 0;
+  // 2^k as two normal factors (k reaches 1074 for subnormal input); products with powers of
+  // two are exact.
+  const double f1 = std::ldexp(1.0, k / 2), f2 = std::ldexp(1.0, k - k / 2);
+  std::vector<Point2> scaled;
+  scaled.reserve(curve.points().size());
+  for (const Point2 p : curve.points()) scaled.push_back((p * f1) * f2);
+  const Curve normalized(std::move(scaled));
+  const std::span<const Point2> points = normalized.points();
+  const double s = std::ldexp(original_scale, k);
   const double rounding = 4.0 * static_cast<double>(points.size()) * kUnitRoundoff * s;
-  const CurveFacts facts{curve, points, s, options.dist_rel * s, rounding, curve.front() == curve.back()};
-  if (const auto frame = collinear_frame(points, facts.dist_tol)) {
-    return collinear_result(facts, *frame, options);
-  }
-  if (curve.degree() == 3 && options.cubic_closed_form) return closed_form_cubic(facts);
+  const CurveFacts facts{normalized, points, s, options.dist_rel * s, rounding, curve.front() == curve.back()};
 
-  const SelfIntersectionSearchOutcome found = search_self_intersections(
-      points, {facts.dist_tol, facts.rounding, options.max_work, options.max_depth, facts.closed});
   SelfIntersectionResult result;
-  result.stats = found.stats;
-  result.stats.method = SelfIntersectionMethod::subdivision;
-  std::vector<Candidate> candidates;
-  for (const PairRefinement& r : found.crossings) candidates.push_back({r.u, r.v, r.residual, false});
-  resolve_contacts(found, facts, candidates, result.stats);
-  result.pairs = clean_up(std::move(candidates), facts);
-  if (found.work_cap_reached) result.status = SelfIntersectionStatus::work_cap_reached;
+  if (const auto frame = collinear_frame(points, facts.dist_tol)) {
+    result = collinear_result(facts, *frame, options);
+  } else if (curve.degree() == 3 && options.cubic_closed_form) {
+    result = closed_form_cubic(facts);
+  } else {
+    const SelfIntersectionSearchOutcome found = search_self_intersections(
+        points, {facts.dist_tol, facts.rounding, options.max_work, options.max_depth, facts.closed});
+    result.stats = found.stats;
+    result.stats.method = SelfIntersectionMethod::subdivision;
+    std::vector<Candidate> candidates;
+    for (const PairRefinement& r : found.crossings) candidates.push_back({r.u, r.v, r.residual, false});
+    resolve_contacts(found, facts, candidates, result.stats);
+    result.pairs = clean_up(std::move(candidates), facts);
+    if (found.work_cap_reached) result.status = SelfIntersectionStatus::work_cap_reached;
+  }
+  for (SelfIntersection& pair : result.pairs) pair.point = (pair.point / f1) / f2;
   return result;
 }
 

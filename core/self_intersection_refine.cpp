@@ -73,19 +73,13 @@ PairRefinement refine_double_point(std::span<const Point2> points, double u0, do
   PairRefinement best;
   best.residual = std::numeric_limits<double>::infinity();
   double u = u0, v = v0;
-  bool done = false;  // set once a step has reached the noise floor
   for (int it = 0; it <= max_iterations; ++it) {
     const CurveJet ju = curve_jet(points, u);
     const CurveJet jv = curve_jet(points, v);
     const Point2 f = jv.point - ju.point;
-    const double residual = length(f);
-    // Near the root the residual only fluctuates at rounding level: keep the best iterate.
+    const double residual = norm(f);
     if (residual <= best.residual) best = {u, v, residual, false, it};
-    if (done || residual == 0.0) {
-      best.converged = true;
-      best.iterations = it;
-      return best;
-    }
+    if (residual == 0.0) return {u, v, 0.0, true, it};
     // -B'(u) du + B'(v) dv = -F, by Cramer's rule.
     const Point2 a = -ju.d1;
     const double det = cross(a, jv.d1);
@@ -96,12 +90,12 @@ PairRefinement refine_double_point(std::span<const Point2> points, double u0, do
     u += du;
     v += dv;
     if (!inside(u, v, box)) return best;
-    const double floor = rounding * std::numbers::sqrt2 * std::max(length(ju.d1), length(jv.d1)) /
+    const double floor = rounding * std::numbers::sqrt2 * std::max(norm(ju.d1), norm(jv.d1)) /
                          std::fabs(det);
     const double small = std::max(kConvergedStep, 4.0 * floor);
-    // A step at the noise floor leaves an error of order step^2: evaluate once more (to
-    // keep the best iterate) and stop.
-    done = std::fabs(du) <= small && std::fabs(dv) <= small;
+    // A step at the noise floor leaves an error of order step^2 (or of the noise): done.
+    // The residual reported is the one before the step, an upper bound up to rounding.
+    if (std::fabs(du) <= small && std::fabs(dv) <= small) return {u, v, residual, true, it + 1};
   }
   return best;
 }
@@ -112,7 +106,7 @@ double double_point_uncertainty(std::span<const Point2> points, double u, double
   const Point2 tv = curve_jet(points, v).d1;
   const double det = std::fabs(cross(tu, tv));
   if (det == 0.0) return std::numeric_limits<double>::infinity();
-  return rounding * std::numbers::sqrt2 * std::max(length(tu), length(tv)) / det;
+  return rounding * std::numbers::sqrt2 * std::max(norm(tu), norm(tv)) / det;
 }
 
 PairRefinement refine_contact(std::span<const Point2> points, double u0, double v0,
@@ -125,7 +119,7 @@ PairRefinement refine_contact(std::span<const Point2> points, double u0, double 
     const CurveJet ju = curve_jet(points, u);
     const CurveJet jv = curve_jet(points, v);
     const Point2 f = jv.point - ju.point;
-    const double residual = length(f);
+    const double residual = norm(f);
     if (residual <= best.residual) best = {u, v, residual, false, it};
     if (done || residual == 0.0) {
       best.converged = true;

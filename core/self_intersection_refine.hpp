@@ -1,10 +1,18 @@
 #pragma once
 
+#include <cmath>
 #include <span>
 
 #include "core/point.hpp"
 
 namespace bezier::core {
+
+// The functions here expect coordinates of moderate magnitude: self_intersections() scales
+// the control points by a power of two (exact) so that the largest coordinate lies in
+// [1, 2), and lengths are then sqrt(v·v) instead of the slower overflow-safe hypot.
+
+/// |v| = sqrt(v·v), for normalised coordinates (no overflow protection).
+[[nodiscard]] inline double norm(Point2 v) noexcept { return std::sqrt(dot(v, v)); }
 
 /// B(t), B'(t) and B''(t) of the curve with control points `points` (degree n >= 1;
 /// B'' is zero for n = 1).
@@ -46,8 +54,8 @@ struct PairRefinement {
 /// double point (B'(u), B'(v) not parallel) until the steps reach the noise floor that
 /// `rounding` (the rounding level of F, input units) sets: rounding * ||J^-1||, see
 /// double_point_uncertainty. Converged means a step at most max(2^-50, 4 * that floor): the
-/// error left after it is of order step^2. The iterate with the smallest |F| is returned
-/// (near the root |F| only fluctuates at rounding level). Stops
+/// error left after it is of order step^2, and the stepped pair is returned (with the
+/// residual before the step). Otherwise the iterate with the smallest |F| is returned. Stops
 /// unconverged after `max_iterations`, on a singular Jacobian or a non-finite value, or when
 /// an iterate leaves `box`. F vanishes on the whole diagonal u = v too, which is why callers
 /// keep u < v by the box and check the result with double_point_uncertainty.

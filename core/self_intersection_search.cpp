@@ -107,7 +107,7 @@ bool separated(const Point2* p, const Point2* q, std::size_t m, double margin) {
       q_lo = std::min(q_lo, sq);
       q_hi = std::max(q_hi, sq);
     }
-    const double gap = margin * length(axis);
+    const double gap = margin * norm(axis);
     if (p_hi + gap < q_lo || q_hi + gap < p_lo) return true;
   }
   return false;
@@ -117,13 +117,13 @@ bool separated(const Point2* p, const Point2* q, std::size_t m, double margin) {
 /// zero): below the distance tolerance the piece is a segment as far as we can tell.
 double flatness(const Point2* p, std::size_t m) {
   const Point2 chord = p[m - 1] - p[0];
-  const double len = length(chord);
+  const double len = norm(chord);
   double worst = 0.0;
   for (std::size_t i = 1; i + 1 < m; ++i) {
     const Point2 r = p[i] - p[0];
-    worst = std::max(worst, len > 0.0 ? std::fabs(cross(r, chord)) / len : length(r));
+    worst = std::max(worst, len > 0.0 ? std::fabs(cross(r, chord)) / len : norm(r));
   }
-  return len > 0.0 ? worst : std::max(worst, length(p[m - 1] - p[0]));
+  return len > 0.0 ? worst : std::max(worst, norm(p[m - 1] - p[0]));
 }
 
 /// Extent of the control points of one or two pieces: max over x and y of (max - min).
