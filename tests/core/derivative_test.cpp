@@ -19,8 +19,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "tests/support/exact.hpp"
-#include "tests/support/mulberry32.hpp"
+#include "tests/support/exact_bezier.hpp"
 
 namespace bezier::core {
 namespace {
@@ -28,32 +27,25 @@ namespace {
 using test::compensated_coefficient;
 using test::exact_points;
 using test::Mulberry32;
+using test::random_curve;
 using test::Rational;
 
 std::string context(std::uint32_t seed, int degree, int k, double t) {
   char text[140];
-  std::snprintf(text, sizeof text, "seed %u, degree %d, derivative %d, t = %.17g", seed, degree, k, t);
+  std::snprintf(text, sizeof text, "seed %u, degree %d, derivative %d, t = %.17g", seed, degree, k,
+                t);
   return text;
 }
 
-template <class P>
-P random_point(Mulberry32& rng, double lo, double hi) {
-  if constexpr (std::is_same_v<P, Point2>) {
-    return {rng.uniform(lo, hi), rng.uniform(lo, hi)};
-  } else {
-    return {rng.uniform(lo, hi), rng.uniform(lo, hi), rng.uniform(lo, hi)};
-  }
-}
-
-template <class P>
-BasicCurve<P> random_curve(Mulberry32& rng, int degree, double lo, double hi) {
-  std::vector<P> pts;
-  for (int i = 0; i <= degree; ++i) pts.push_back(random_point<P>(rng, lo, hi));
-  return BasicCurve<P>(std::move(pts));
-}
-
 std::vector<double> test_parameters(Mulberry32& rng) {
-  return {0.0, 1.0, 0.5, 1.0 / 3.0, rng.next(), rng.next(), rng.uniform(-1.5, 0.0), rng.uniform(1.0, 2.5)};
+  return {0.0,
+          1.0,
+          0.5,
+          1.0 / 3.0,
+          rng.next(),
+          rng.next(),
+          rng.uniform(-1.5, 0.0),
+          rng.uniform(1.0, 2.5)};
 }
 
 /// The exact k-th hodograph control points and their condition scales
@@ -83,13 +75,15 @@ ExactHodograph<RP> exact_hodograph(std::vector<RP> pts, int k) {
 
 /// Checks the contract above for the first `order` derivatives of `curve` at t.
 template <class P>
-void check_derivatives_at(const BasicCurve<P>& curve, double t, int order, const std::string& where) {
+void check_derivatives_at(const BasicCurve<P>& curve, double t, int order,
+                          const std::string& where) {
   const std::vector<P> got = derivatives_at(curve, t, order);
   ASSERT_EQ(got.size(), static_cast<std::size_t>(order));
   for (int k = 1; k <= order; ++k) {
     const auto h = exact_hodograph(exact_points(curve), k);
     const std::vector<Rational> ts(h.points.size() - 1, Rational(t));
-    EXPECT_EQ(test::accuracy_violation(got[static_cast<std::size_t>(k - 1)], test::exact_polar(h.points, ts).front(),
+    EXPECT_EQ(test::accuracy_violation(got[static_cast<std::size_t>(k - 1)],
+                                       test::exact_polar(h.points, ts).front(),
                                        test::exact_abs_polar(h.scales, ts).front(),
                                        compensated_coefficient(curve.degree())),
               "")
@@ -130,7 +124,9 @@ void check_hodograph_points(std::uint32_t seed, double lo, double hi) {
       ASSERT_EQ(got.degree(), n - k);
       for (int i = 0; i <= n - k; ++i) {
         const auto idx = static_cast<std::size_t>(i);
-        EXPECT_EQ(test::accuracy_violation(got[i], h.points[idx], h.scales[idx], compensated_coefficient(n)), "")
+        EXPECT_EQ(test::accuracy_violation(got[i], h.points[idx], h.scales[idx],
+                                           compensated_coefficient(n)),
+                  "")
             << context(seed, n, k, 0.0) << ", control point " << i;
       }
     }
@@ -161,8 +157,10 @@ TEST(DerivativesAt, ClosedFormForAPowerOfT) {
         const test::RPoint2 exact{x, Rational(k == 1 ? 1 : 0)};
         const auto h = exact_hodograph(exact_points(c), k);
         const test::RPoint2 scale =
-            test::exact_abs_polar(h.scales, std::vector<Rational>(h.scales.size() - 1, Rational(t))).front();
-        EXPECT_EQ(test::accuracy_violation(got[static_cast<std::size_t>(k - 1)], exact, scale, compensated_coefficient(n)),
+            test::exact_abs_polar(h.scales, std::vector<Rational>(h.scales.size() - 1, Rational(t)))
+                .front();
+        EXPECT_EQ(test::accuracy_violation(got[static_cast<std::size_t>(k - 1)], exact, scale,
+                                           compensated_coefficient(n)),
                   "")
             << "degree " << n << ", derivative " << k << ", t " << t;
       }
@@ -175,7 +173,8 @@ TEST(DerivativesAt, MatchExactValuesDegrees1To20In2D) {
     Mulberry32 rng(seed);
     for (int n = 1; n <= 20; ++n) {
       const Curve c = random_curve<Point2>(rng, n, -1.0, 1.0);
-      for (const double t : test_parameters(rng)) check_derivatives_at(c, t, std::min(n + 1, 3), context(seed, n, 0, t));
+      for (const double t : test_parameters(rng))
+        check_derivatives_at(c, t, std::min(n + 1, 3), context(seed, n, 0, t));
     }
   }
 }
@@ -184,7 +183,8 @@ TEST(DerivativesAt, MatchExactValuesDegrees1To20In3D) {
   Mulberry32 rng(57);
   for (int n = 1; n <= 20; ++n) {
     const Curve3 c = random_curve<Point3>(rng, n, -50.0, 50.0);
-    for (const double t : test_parameters(rng)) check_derivatives_at(c, t, std::min(n + 1, 3), context(57, n, 0, t));
+    for (const double t : test_parameters(rng))
+      check_derivatives_at(c, t, std::min(n + 1, 3), context(57, n, 0, t));
   }
 }
 
@@ -208,8 +208,10 @@ void check_degree_20(std::uint32_t seed, double magnitude, bool alternate) {
       }
     }
     const BasicCurve<P> c(pts);
-    for (const double t : test_parameters(rng)) check_derivatives_at(c, t, 2, context(seed, 20, 0, t));
-    for (const double t : {0.5, 0.4999, 0.25}) check_derivatives_at(c, t, 2, context(seed, 20, 0, t));
+    for (const double t : test_parameters(rng))
+      check_derivatives_at(c, t, 2, context(seed, 20, 0, t));
+    for (const double t : {0.5, 0.4999, 0.25})
+      check_derivatives_at(c, t, 2, context(seed, 20, 0, t));
   }
 }
 
@@ -239,8 +241,9 @@ TEST(DerivativesAt, RoundedHodographThenEvaluateAddsOneRoundingOfTheScale) {
         const auto h = exact_hodograph(exact_points(c), k);
         const std::vector<Rational> ts(h.points.size() - 1, Rational(t));
         const double coefficient = 0x1p-53 + 3 * compensated_coefficient(n);
-        EXPECT_EQ(test::accuracy_violation(evaluate(derivative(c, k), t), test::exact_polar(h.points, ts).front(),
-                                           test::exact_abs_polar(h.scales, ts).front(), coefficient),
+        EXPECT_EQ(test::accuracy_violation(
+                      evaluate(derivative(c, k), t), test::exact_polar(h.points, ts).front(),
+                      test::exact_abs_polar(h.scales, ts).front(), coefficient),
                   "")
             << context(67, n, k, t);
       }

@@ -24,42 +24,28 @@
 #include <type_traits>
 #include <vector>
 
-#include "tests/support/exact.hpp"
-#include "tests/support/mulberry32.hpp"
+#include "tests/support/exact_bezier.hpp"
 
 namespace bezier::core {
 namespace {
 
+using test::case_name;
 using test::compensated_coefficient;
 using test::exact_points;
 using test::Mulberry32;
+using test::random_curve;
 using test::Rational;
-
-std::string context(std::uint32_t seed, int degree, double t) {
-  char text[120];
-  std::snprintf(text, sizeof text, "seed %u, degree %d, t = %.17g", seed, degree, t);
-  return text;
-}
-
-template <class P>
-P random_point(Mulberry32& rng, double lo, double hi) {
-  if constexpr (std::is_same_v<P, Point2>) {
-    return {rng.uniform(lo, hi), rng.uniform(lo, hi)};
-  } else {
-    return {rng.uniform(lo, hi), rng.uniform(lo, hi), rng.uniform(lo, hi)};
-  }
-}
-
-template <class P>
-BasicCurve<P> random_curve(Mulberry32& rng, int degree, double lo, double hi) {
-  std::vector<P> pts;
-  for (int i = 0; i <= degree; ++i) pts.push_back(random_point<P>(rng, lo, hi));
-  return BasicCurve<P>(std::move(pts));
-}
 
 /// Parameters inside [0,1], at its ends, and outside it on both sides.
 std::vector<double> test_parameters(Mulberry32& rng) {
-  return {0.0, 1.0, 0.5, 1.0 / 3.0, rng.next(), rng.next(), rng.uniform(-1.5, 0.0), rng.uniform(1.0, 2.5)};
+  return {0.0,
+          1.0,
+          0.5,
+          1.0 / 3.0,
+          rng.next(),
+          rng.next(),
+          rng.uniform(-1.5, 0.0),
+          rng.uniform(1.0, 2.5)};
 }
 
 /// Checks the accuracy contract above for evaluate(curve, t); returns "" when it holds.
@@ -93,12 +79,15 @@ TEST(Evaluate, LinearPrecisionGivesTExactly) {
   // does not go through de Casteljau. n a power of two keeps i/n exact.
   for (const int n : {1, 2, 4, 8, 16}) {
     std::vector<Point2> pts;
-    for (int i = 0; i <= n; ++i) pts.push_back({static_cast<double>(i) / n, 1.0 - static_cast<double>(i) / n});
+    for (int i = 0; i <= n; ++i)
+      pts.push_back({static_cast<double>(i) / n, 1.0 - static_cast<double>(i) / n});
     const Curve c(pts);
     for (const double t : {0.0, 0.25, 1.0 / 3.0, 0.7, 1.0, -0.375, 1.9}) {
       const test::RPoint2 exact{Rational(t), Rational(1) - Rational(t)};
-      const test::RPoint2 scale = test::exact_abs_polar(exact_points(c), std::vector<Rational>(n, Rational(t))).front();
-      EXPECT_EQ(test::accuracy_violation(evaluate(c, t), exact, scale, compensated_coefficient(n)), "")
+      const test::RPoint2 scale =
+          test::exact_abs_polar(exact_points(c), std::vector<Rational>(n, Rational(t))).front();
+      EXPECT_EQ(test::accuracy_violation(evaluate(c, t), exact, scale, compensated_coefficient(n)),
+                "")
           << "degree " << n << " t " << t;
     }
   }
@@ -109,7 +98,8 @@ void check_random_curves(std::uint32_t seed, double lo, double hi) {
   Mulberry32 rng(seed);
   for (int n = 1; n <= 20; ++n) {
     const BasicCurve<P> c = random_curve<P>(rng, n, lo, hi);
-    for (const double t : test_parameters(rng)) EXPECT_EQ(evaluate_violation(c, t), "") << context(seed, n, t);
+    for (const double t : test_parameters(rng))
+      EXPECT_EQ(evaluate_violation(c, t), "") << case_name(seed, n, t);
   }
 }
 
@@ -144,8 +134,10 @@ void check_degree_20(std::uint32_t seed, double magnitude, bool alternate) {
       }
     }
     const BasicCurve<P> c(pts);
-    for (const double t : test_parameters(rng)) EXPECT_EQ(evaluate_violation(c, t), "") << context(seed, 20, t);
-    for (const double t : {0.5, 0.4999, 0.25, 0.75}) EXPECT_EQ(evaluate_violation(c, t), "") << context(seed, 20, t);
+    for (const double t : test_parameters(rng))
+      EXPECT_EQ(evaluate_violation(c, t), "") << case_name(seed, 20, t);
+    for (const double t : {0.5, 0.4999, 0.25, 0.75})
+      EXPECT_EQ(evaluate_violation(c, t), "") << case_name(seed, 20, t);
   }
 }
 
@@ -174,7 +166,8 @@ TEST(Evaluate, PowerOfTwoScalingCommutesBitForBit) {
       for (const double s : {0x1p-60, 0x1p-20, 0x1p20, 0x1p60}) {
         std::vector<Point2> scaled;
         for (const Point2 p : c.points()) scaled.push_back(s * p);
-        EXPECT_EQ(evaluate(Curve(scaled), t), s * evaluate(c, t)) << context(41, n, t) << " scale " << s;
+        EXPECT_EQ(evaluate(Curve(scaled), t), s * evaluate(c, t))
+            << case_name(41, n, t) << " scale " << s;
       }
     }
   }
@@ -189,10 +182,11 @@ TEST(Evaluate, ReversalMapsTToOneMinusT) {
     for (const double t : {0.5, rng.uniform(0.5, 1.0), rng.uniform(1.0, 2.0), 1.0}) {
       const auto pts = exact_points(c);
       const std::vector<Rational> ts(static_cast<std::size_t>(n), Rational(t));
-      EXPECT_EQ(test::accuracy_violation(evaluate(reversed(c), 1.0 - t), test::exact_polar(pts, ts).front(),
-                                         test::exact_abs_polar(pts, ts).front(), compensated_coefficient(n)),
+      EXPECT_EQ(test::accuracy_violation(
+                    evaluate(reversed(c), 1.0 - t), test::exact_polar(pts, ts).front(),
+                    test::exact_abs_polar(pts, ts).front(), compensated_coefficient(n)),
                 "")
-          << context(43, n, t);
+          << case_name(43, n, t);
     }
   }
 }

@@ -3,8 +3,6 @@
 // nearest, ties to even), so Rational(a) op Rational(b) rounded by to_double() must equal
 // a op b bit for bit; decimal strings of powers of two and ten are known closed forms.
 
-#include "tests/support/exact.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +10,8 @@
 #include <limits>
 #include <string>
 
+#include "tests/support/exact.hpp"
+#include "tests/support/exact_bezier.hpp"
 #include "tests/support/mulberry32.hpp"
 
 namespace bezier::test {
@@ -31,7 +31,8 @@ BigInt pow_big(long long base, int k) {
 BigInt random_big(Mulberry32& rng, int limbs) {
   BigInt r;
   const int count = 1 + static_cast<int>(rng.next() * limbs);
-  for (int i = 0; i < count; ++i) r = (r << 32) + BigInt(static_cast<long long>(rng.next() * 4294967296.0));
+  for (int i = 0; i < count; ++i)
+    r = (r << 32) + BigInt(static_cast<long long>(rng.next() * 4294967296.0));
   return rng.next() < 0.5 ? -r : r;
 }
 
@@ -80,7 +81,8 @@ TEST(BigInt, DivisionIdentityOnLargeRandomOperands) {
       const BigInt a = random_big(rng, 12);
       BigInt b = random_big(rng, 6);
       if (b.is_zero()) b = BigInt(3);
-      SCOPED_TRACE("seed " + std::to_string(seed) + " draw " + std::to_string(i) + ": " + a.str() + " / " + b.str());
+      SCOPED_TRACE("seed " + std::to_string(seed) + " draw " + std::to_string(i) + ": " + a.str() +
+                   " / " + b.str());
       const auto [q, r] = divmod(a, b);
       EXPECT_EQ(q * b + r, a);
       EXPECT_LT(r.abs(), b.abs());
@@ -96,7 +98,8 @@ TEST(BigInt, DivisionNeedingTheAddBackStep) {
   // Knuth's step D6 (add back) runs when the trial quotient is still one too large after
   // the two-limb test. Test data of Warren, "Hacker's Delight", §9-2 (divmnu, marked
   // "adding back required"), limbs most significant first:
-  // (0x80000000, 0, 3) / (0x20000000, 0, 1) = 3 rem (0x20000000, 0, 0), and the same with 0x8000 / 0x2000.
+  // (0x80000000, 0, 3) / (0x20000000, 0, 1) = 3 rem (0x20000000, 0, 0), and the same with 0x8000 /
+  // 0x2000.
   for (const long long top : {0x80000000LL, 0x8000LL}) {
     const BigInt u = (BigInt(top) << 64) + BigInt(3);
     const BigInt v = (BigInt(top / 4) << 64) + BigInt(1);
@@ -134,7 +137,7 @@ TEST(Rational, NormalisedRepresentation) {
   EXPECT_EQ(Rational(0.5).str(), "1/2");
   EXPECT_EQ(Rational(-3).str(), "-3");
   EXPECT_EQ(Rational(0.1).str(), "3602879701896397/36028797018963968");  // 0.1 = that / 2^55
-  EXPECT_EQ(Rational(0) , Rational(-0.0));
+  EXPECT_EQ(Rational(0), Rational(-0.0));
   EXPECT_EQ(Rational(BigInt(0), BigInt(-7)).den(), BigInt(1));
   EXPECT_EQ(Rational(18446744073709551615ull).str(), "18446744073709551615");
 }
@@ -150,8 +153,8 @@ TEST(Rational, ToDoubleOfSimpleFractions) {
 
 TEST(Rational, ToDoubleRoundsTiesToEven) {
   const Rational two53 = Rational(BigInt(1) << 53, BigInt(1));
-  EXPECT_EQ((two53 + Rational(1)).to_double(), 0x1p53);            // tie: down to even
-  EXPECT_EQ((two53 + Rational(3)).to_double(), 0x1p53 + 4);        // tie: up to even
+  EXPECT_EQ((two53 + Rational(1)).to_double(), 0x1p53);      // tie: down to even
+  EXPECT_EQ((two53 + Rational(3)).to_double(), 0x1p53 + 4);  // tie: up to even
   // Just above the tie rounds up: the sticky remainder counts.
   EXPECT_EQ((two53 + Rational(1) + Rational(BigInt(1), BigInt(1) << 80)).to_double(), 0x1p53 + 2);
   EXPECT_EQ((-(two53 + Rational(1))).to_double(), -0x1p53);
@@ -171,14 +174,16 @@ TEST(Rational, ToDoubleOverflowAndUnderflow) {
   EXPECT_EQ(Rational(kMinNormal).to_double(), kMinNormal);
   EXPECT_EQ((Rational(kDenormMin) / Rational(2)).to_double(), 0.0);  // tie to even: 0
   EXPECT_EQ((Rational(kDenormMin) * Rational(3) / Rational(4)).to_double(), kDenormMin);
-  EXPECT_EQ((Rational(kDenormMin) * Rational(3) / Rational(2)).to_double(), 2 * kDenormMin);  // tie: to even
+  EXPECT_EQ((Rational(kDenormMin) * Rational(3) / Rational(2)).to_double(),
+            2 * kDenormMin);  // tie: to even
   EXPECT_EQ((Rational(kDenormMin) / Rational(3)).to_double(), 0.0);
   EXPECT_EQ((Rational(kMinNormal) - Rational(kDenormMin)).to_double(), kMinNormal - kDenormMin);
   EXPECT_EQ((Rational(kDenormMin) * Rational(kDenormMin)).to_double(), 0.0);
 }
 
 TEST(Rational, DoublesRoundTripExactly) {
-  const double specials[] = {0.0, 1.0, -1.0, 0.1, 1.0 / 3.0, kMax, -kMax, kDenormMin, kMinNormal, 0x1p-1073, 1e300, 1e-300};
+  const double specials[] = {0.0,   1.0,        -1.0,       0.1,       1.0 / 3.0, kMax,
+                             -kMax, kDenormMin, kMinNormal, 0x1p-1073, 1e300,     1e-300};
   for (const double x : specials) EXPECT_EQ(Rational(x).to_double(), x) << x;
   for (const std::uint32_t seed : {1u, 5u}) {
     Mulberry32 rng(seed);
@@ -223,13 +228,14 @@ TEST(Rational, FieldIdentities) {
     EXPECT_EQ(a - a, Rational(0));
     EXPECT_EQ(abs(a) >= Rational(0), true);
     EXPECT_EQ(a.abs(), a < Rational(0) ? -a : a);
-    EXPECT_EQ(a < b, b > a);
+    EXPECT_EQ(a<b, b> a);
   }
 }
 
 TEST(RationalPoint, ExactDeCasteljauOfAQuadraticAtOneHalf) {
   // B(1/2) of P0 = (0,0), P1 = (1,2), P2 = (3,0) is (P0 + 2 P1 + P2) / 4 = (5/4, 1).
-  const std::vector<RPoint2> pts = {exact(core::Point2{0, 0}), exact(core::Point2{1, 2}), exact(core::Point2{3, 0})};
+  const std::vector<RPoint2> pts = {exact(core::Point2{0, 0}), exact(core::Point2{1, 2}),
+                                    exact(core::Point2{3, 0})};
   const RPoint2 mid = exact_evaluate(pts, Rational(1) / Rational(2));
   EXPECT_EQ(mid.x, Rational(5) / Rational(4));
   EXPECT_EQ(mid.y, Rational(1));

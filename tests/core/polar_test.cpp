@@ -22,42 +22,21 @@
 #include "core/derivative.hpp"
 #include "core/evaluate.hpp"
 #include "core/subdivide.hpp"
-#include "tests/support/exact.hpp"
-#include "tests/support/mulberry32.hpp"
+#include "tests/support/exact_bezier.hpp"
 
 namespace bezier::core {
 namespace {
 
+using test::case_name;
 using test::compensated_coefficient;
 using test::exact_abs_polar;
 using test::exact_points;
 using test::exact_polar;
 using test::Mulberry32;
+using test::random_curve;
 using test::Rational;
 
 constexpr double kU = 0x1p-53;  // unit roundoff
-
-std::string context(std::uint32_t seed, int degree, double t) {
-  char text[120];
-  std::snprintf(text, sizeof text, "seed %u, degree %d, t = %.17g", seed, degree, t);
-  return text;
-}
-
-template <class P>
-P random_point(Mulberry32& rng, double lo, double hi) {
-  if constexpr (std::is_same_v<P, Point2>) {
-    return {rng.uniform(lo, hi), rng.uniform(lo, hi)};
-  } else {
-    return {rng.uniform(lo, hi), rng.uniform(lo, hi), rng.uniform(lo, hi)};
-  }
-}
-
-template <class P>
-BasicCurve<P> random_curve(Mulberry32& rng, int degree, double lo, double hi) {
-  std::vector<P> pts;
-  for (int i = 0; i <= degree; ++i) pts.push_back(random_point<P>(rng, lo, hi));
-  return BasicCurve<P>(std::move(pts));
-}
 
 /// A parameter inside [0,1] most of the time, outside it otherwise.
 double random_parameter(Mulberry32& rng) {
@@ -69,7 +48,9 @@ std::vector<double> test_parameters(Mulberry32& rng) {
   return {0.0, 1.0, 0.5, rng.next(), rng.uniform(-1.5, 0.0), rng.uniform(1.0, 2.5)};
 }
 
-std::vector<Rational> rationals(const std::vector<double>& us) { return {us.begin(), us.end()}; }
+std::vector<Rational> rationals(const std::vector<double>& us) {
+  return {us.begin(), us.end()};
+}
 
 /// Runs check(curve, t0, context) over degrees 1..20 in 2-D and 3-D.
 void for_random_curves(std::uint32_t seed, auto&& check) {
@@ -78,21 +59,23 @@ void for_random_curves(std::uint32_t seed, auto&& check) {
     const Curve c2 = random_curve<Point2>(rng, n, -1.0, 1.0);
     const Curve3 c3 = random_curve<Point3>(rng, n, -1e3, 1e3);
     for (const double t0 : test_parameters(rng)) {
-      check(c2, t0, context(seed, n, t0));
-      check(c3, t0, context(seed, n, t0) + " 3-D");
+      check(c2, t0, case_name(seed, n, t0));
+      check(c3, t0, case_name(seed, n, t0) + " 3-D");
     }
   }
 }
 
 /// Checks each control point of `got` against the exact polar of `curve` at `us`.
 template <class P>
-void expect_polar_points(const BasicCurve<P>& got, const BasicCurve<P>& curve, const std::vector<double>& us,
-                         const std::string& where) {
+void expect_polar_points(const BasicCurve<P>& got, const BasicCurve<P>& curve,
+                         const std::vector<double>& us, const std::string& where) {
   const auto exact = exact_polar(exact_points(curve), rationals(us));
   const auto scale = exact_abs_polar(exact_points(curve), rationals(us));
   ASSERT_EQ(got.points().size(), exact.size()) << where;
   for (std::size_t i = 0; i < exact.size(); ++i) {
-    EXPECT_EQ(test::accuracy_violation(got.points()[i], exact[i], scale[i], compensated_coefficient(curve.degree())), "")
+    EXPECT_EQ(test::accuracy_violation(got.points()[i], exact[i], scale[i],
+                                       compensated_coefficient(curve.degree())),
+              "")
         << where << ", control point " << i;
   }
 }
@@ -111,7 +94,8 @@ TEST(Polar, IdentityPolarAtT0IsCurvePointExactly) {
   for_random_curves(82, [](const auto& c, double t0, const std::string& where) {
     const auto pts = exact_points(c);
     const auto q = exact_polar(pts, {Rational(t0)});
-    EXPECT_EQ(test::exact_evaluate(q, Rational(t0)), test::exact_evaluate(pts, Rational(t0))) << where;
+    EXPECT_EQ(test::exact_evaluate(q, Rational(t0)), test::exact_evaluate(pts, Rational(t0)))
+        << where;
   });
 }
 
@@ -124,7 +108,8 @@ TEST(Polar, FirstPolarAtT0IsCurvePoint) {
     const int n = c.degree();
     const auto pts = exact_points(c);
     const std::vector<double> all_t0(static_cast<std::size_t>(n), t0);
-    EXPECT_EQ(test::accuracy_violation(evaluate(first_polar(c, t0), t0), test::exact_evaluate(pts, Rational(t0)),
+    EXPECT_EQ(test::accuracy_violation(evaluate(first_polar(c, t0), t0),
+                                       test::exact_evaluate(pts, Rational(t0)),
                                        exact_abs_polar(pts, rationals(all_t0)).front(),
                                        kU + 3 * compensated_coefficient(n)),
               "")
@@ -159,10 +144,14 @@ TEST(Polar, FirstPolarIsTangentAtT0) {
     const Rational m(n - 1);
     for (std::size_t i = 0; i + 1 < scales.size(); ++i) scales[i] = m * (scales[i + 1] + scales[i]);
     scales.pop_back();
-    const auto t_scale = exact_abs_polar(scales, std::vector<Rational>(scales.size() - 1, Rational(t0))).front();
-    const auto exact = (m / Rational(n)) * test::exact_evaluate(test::exact_hodograph(pts), Rational(t0));
+    const auto t_scale =
+        exact_abs_polar(scales, std::vector<Rational>(scales.size() - 1, Rational(t0))).front();
+    const auto exact =
+        (m / Rational(n)) * test::exact_evaluate(test::exact_hodograph(pts), Rational(t0));
     const auto got = derivatives_at(first_polar(c, t0), t0, 1).front();
-    EXPECT_EQ(test::accuracy_violation(got, exact, t_scale, kU + 3 * compensated_coefficient(n)), "") << where;
+    EXPECT_EQ(test::accuracy_violation(got, exact, t_scale, kU + 3 * compensated_coefficient(n)),
+              "")
+        << where;
   });
   const Curve line({{0, 0}, {2, 4}});
   EXPECT_EQ(derivatives_at(first_polar(line, 0.3), 0.3, 1).front(), (Point2{0, 0}));
@@ -180,16 +169,19 @@ TEST(Blossom, SymmetricAndMultiAffineExactly) {
     EXPECT_EQ(exact_polar(pts, rationals(reordered)).front(), b) << "seed 86, degree " << n;
     std::rotate(reordered.begin(), reordered.begin() + n / 2, reordered.end());
     EXPECT_EQ(exact_polar(pts, rationals(reordered)).front(), b) << "seed 86, degree " << n;
-    // Multi-affine: affine in each argument, b(.., αa + (1-α)c, ..) = α b(.., a, ..) + (1-α) b(.., c, ..).
+    // Multi-affine: affine in each argument, b(.., αa + (1-α)c, ..) = α b(.., a, ..) + (1-α) b(..,
+    // c, ..).
     const auto slot = static_cast<std::size_t>(rng.next() * n);
-    const Rational alpha(rng.uniform(-2.0, 3.0)), a(random_parameter(rng)), c(random_parameter(rng));
+    const Rational alpha(rng.uniform(-2.0, 3.0)), a(random_parameter(rng)),
+        c(random_parameter(rng));
     auto args = rationals(us);
     args[slot] = a;
     const auto ba = exact_polar(pts, args).front();
     args[slot] = c;
     const auto bc = exact_polar(pts, args).front();
     args[slot] = alpha * a + (Rational(1) - alpha) * c;
-    EXPECT_EQ(exact_polar(pts, args).front(), alpha * ba + (Rational(1) - alpha) * bc) << "seed 86, degree " << n;
+    EXPECT_EQ(exact_polar(pts, args).front(), alpha * ba + (Rational(1) - alpha) * bc)
+        << "seed 86, degree " << n;
   }
 }
 
@@ -202,7 +194,8 @@ TEST(Blossom, MatchesExactValueInAnyArgumentOrder) {
     const auto exact = exact_polar(exact_points(c), rationals(us)).front();
     const auto scale = exact_abs_polar(exact_points(c), rationals(us)).front();
     for (int order = 0; order < 3; ++order) {
-      EXPECT_EQ(test::accuracy_violation(blossom(c, us), exact, scale, compensated_coefficient(n)), "")
+      EXPECT_EQ(test::accuracy_violation(blossom(c, us), exact, scale, compensated_coefficient(n)),
+                "")
           << "seed 87, degree " << n << ", order " << order;
       std::next_permutation(us.begin(), us.end());  // another order: the same exact value
     }
@@ -218,7 +211,8 @@ TEST(Polar, KthPolarControlPointsWithinOneRounding) {
       for (int j = 0; j < k; ++j) us.push_back(random_parameter(rng));
       const Curve3 q = polar(c, us);
       EXPECT_EQ(q.degree(), n - k);
-      expect_polar_points(q, c, us, "seed 88, degree " + std::to_string(n) + ", k " + std::to_string(k));
+      expect_polar_points(q, c, us,
+                          "seed 88, degree " + std::to_string(n) + ", k " + std::to_string(k));
     }
   }
 }
@@ -251,7 +245,7 @@ TEST(Portion, ControlPointsAreBlossomValues) {
       const auto exact = exact_polar(exact_points(c), rationals(args)).front();
       const auto scale = exact_abs_polar(exact_points(c), rationals(args)).front();
       EXPECT_EQ(test::accuracy_violation(piece[i], exact, scale, compensated_coefficient(n)), "")
-          << context(90, n, a) << ", b = " << b << ", control point " << i;
+          << case_name(90, n, a) << ", b = " << b << ", control point " << i;
     }
   }
 }
@@ -273,9 +267,12 @@ TEST(Portion, ReproducesTheCurveOnItsInterval) {
     for (const double u : {0.0, 0.25, 0.6, 1.0}) {
       const Rational ru(u), ra(a), rb(b);
       const auto exact = test::exact_evaluate(exact_points(c), ra + ru * (rb - ra));
-      const auto r = exact_abs_polar(scales, std::vector<Rational>(static_cast<std::size_t>(n), ru)).front();
-      EXPECT_EQ(test::accuracy_violation(evaluate(piece, u), exact, r, kU + 3 * compensated_coefficient(n)), "")
-          << context(91, n, a) << ", b = " << b << ", u = " << u;
+      const auto r =
+          exact_abs_polar(scales, std::vector<Rational>(static_cast<std::size_t>(n), ru)).front();
+      EXPECT_EQ(test::accuracy_violation(evaluate(piece, u), exact, r,
+                                         kU + 3 * compensated_coefficient(n)),
+                "")
+          << case_name(91, n, a) << ", b = " << b << ", u = " << u;
     }
   }
 }

@@ -18,49 +18,30 @@
 
 #include "core/binomial.hpp"
 #include "core/evaluate.hpp"
-#include "tests/support/exact.hpp"
-#include "tests/support/mulberry32.hpp"
+#include "tests/support/exact_bezier.hpp"
 
 namespace bezier::core {
 namespace {
 
+using test::case_name;
 using test::compensated_coefficient;
 using test::exact_abs_polar;
 using test::exact_points;
 using test::exact_polar;
 using test::Mulberry32;
+using test::random_curve;
 using test::Rational;
 
 constexpr double kU = 0x1p-53;  // unit roundoff
-
-std::string context(std::uint32_t seed, int degree, double t) {
-  char text[120];
-  std::snprintf(text, sizeof text, "seed %u, degree %d, t = %.17g", seed, degree, t);
-  return text;
-}
-
-template <class P>
-P random_point(Mulberry32& rng, double lo, double hi) {
-  if constexpr (std::is_same_v<P, Point2>) {
-    return {rng.uniform(lo, hi), rng.uniform(lo, hi)};
-  } else {
-    return {rng.uniform(lo, hi), rng.uniform(lo, hi), rng.uniform(lo, hi)};
-  }
-}
-
-template <class P>
-BasicCurve<P> random_curve(Mulberry32& rng, int degree, double lo, double hi) {
-  std::vector<P> pts;
-  for (int i = 0; i <= degree; ++i) pts.push_back(random_point<P>(rng, lo, hi));
-  return BasicCurve<P>(std::move(pts));
-}
 
 std::vector<double> test_parameters(Mulberry32& rng) {
   return {0.5, 1.0 / 3.0, rng.next(), rng.next(), rng.uniform(-1.5, 0.0), rng.uniform(1.0, 2.5)};
 }
 
 /// k copies of t, as de Casteljau arguments.
-std::vector<Rational> repeated(std::size_t k, double t) { return std::vector<Rational>(k, Rational(t)); }
+std::vector<Rational> repeated(std::size_t k, double t) {
+  return std::vector<Rational>(k, Rational(t));
+}
 
 /// De Casteljau's triangle at t in rationals, row k = the points after k rounds, and the
 /// same triangle of condition scales.
@@ -85,7 +66,7 @@ void for_random_curves(std::uint32_t seed, double lo, double hi, auto&& check) {
   Mulberry32 rng(seed);
   for (int n = 1; n <= 20; ++n) {
     const BasicCurve<P> c = random_curve<P>(rng, n, lo, hi);
-    for (const double t : test_parameters(rng)) check(c, t, context(seed, n, t));
+    for (const double t : test_parameters(rng)) check(c, t, case_name(seed, n, t));
   }
 }
 
@@ -101,8 +82,12 @@ void check_shared_split_point(const BasicCurve<P>& c, double t, const std::strin
 }
 
 TEST(Subdivide, SplitPointSharedBitForBitWithEvaluate) {
-  for_random_curves<Point2>(71, -1.0, 1.0, [](const auto& c, double t, const std::string& w) { check_shared_split_point(c, t, w); });
-  for_random_curves<Point3>(72, -1e6, 1e6, [](const auto& c, double t, const std::string& w) { check_shared_split_point(c, t, w); });
+  for_random_curves<Point2>(71, -1.0, 1.0, [](const auto& c, double t, const std::string& w) {
+    check_shared_split_point(c, t, w);
+  });
+  for_random_curves<Point3>(72, -1e6, 1e6, [](const auto& c, double t, const std::string& w) {
+    check_shared_split_point(c, t, w);
+  });
 }
 
 template <class P>
@@ -124,8 +109,12 @@ void check_control_points(const BasicCurve<P>& c, double t, const std::string& w
 }
 
 TEST(Subdivide, ControlPointsWithinOneRoundingOfExactTriangle) {
-  for_random_curves<Point2>(73, -1.0, 1.0, [](const auto& c, double t, const std::string& w) { check_control_points(c, t, w); });
-  for_random_curves<Point3>(74, -1e-6, 1e-6, [](const auto& c, double t, const std::string& w) { check_control_points(c, t, w); });
+  for_random_curves<Point2>(73, -1.0, 1.0, [](const auto& c, double t, const std::string& w) {
+    check_control_points(c, t, w);
+  });
+  for_random_curves<Point3>(74, -1e-6, 1e-6, [](const auto& c, double t, const std::string& w) {
+    check_control_points(c, t, w);
+  });
 }
 
 /// A half H (control points Ĥ_k, each within u |H*_k| + c S_k of its exact value H*_k by
@@ -155,16 +144,25 @@ void check_halves_reproduce_curve(const BasicCurve<P>& c, double t, const std::s
   std::vector<decltype(test::exact(P{}))> left_scales, right_scales;
   for (int k = 0; k <= n; ++k) {
     left_scales.push_back(tri.scales[static_cast<std::size_t>(k)].front());
-    right_scales.push_back(tri.scales[static_cast<std::size_t>(n - k)][static_cast<std::size_t>(k)]);
+    right_scales.push_back(
+        tri.scales[static_cast<std::size_t>(n - k)][static_cast<std::size_t>(k)]);
   }
-  check_half(halves.left, left_scales, [&](const Rational& u) { return test::exact_evaluate(pts, rt * u); }, where + " left");
-  check_half(halves.right, right_scales,
-             [&](const Rational& u) { return test::exact_evaluate(pts, rt + u * (Rational(1) - rt)); }, where + " right");
+  check_half(
+      halves.left, left_scales,
+      [&](const Rational& u) { return test::exact_evaluate(pts, rt * u); }, where + " left");
+  check_half(
+      halves.right, right_scales,
+      [&](const Rational& u) { return test::exact_evaluate(pts, rt + u * (Rational(1) - rt)); },
+      where + " right");
 }
 
 TEST(Subdivide, HalvesReproduceTheCurve) {
-  for_random_curves<Point2>(75, -1.0, 1.0, [](const auto& c, double t, const std::string& w) { check_halves_reproduce_curve(c, t, w); });
-  for_random_curves<Point3>(76, -100.0, 100.0, [](const auto& c, double t, const std::string& w) { check_halves_reproduce_curve(c, t, w); });
+  for_random_curves<Point2>(75, -1.0, 1.0, [](const auto& c, double t, const std::string& w) {
+    check_halves_reproduce_curve(c, t, w);
+  });
+  for_random_curves<Point3>(76, -100.0, 100.0, [](const auto& c, double t, const std::string& w) {
+    check_halves_reproduce_curve(c, t, w);
+  });
 }
 
 TEST(Subdivide, AtTheEndsOneHalfIsTheCurveAndTheOtherAPoint) {
@@ -174,8 +172,10 @@ TEST(Subdivide, AtTheEndsOneHalfIsTheCurveAndTheOtherAPoint) {
     const Split<Point2> at0 = subdivide(c, 0.0), at1 = subdivide(c, 1.0);
     EXPECT_EQ(at0.right, c) << "degree " << n;
     EXPECT_EQ(at1.left, c) << "degree " << n;
-    EXPECT_EQ(at0.left, Curve(std::vector<Point2>(static_cast<std::size_t>(n) + 1, c.front()))) << "degree " << n;
-    EXPECT_EQ(at1.right, Curve(std::vector<Point2>(static_cast<std::size_t>(n) + 1, c.back()))) << "degree " << n;
+    EXPECT_EQ(at0.left, Curve(std::vector<Point2>(static_cast<std::size_t>(n) + 1, c.front())))
+        << "degree " << n;
+    EXPECT_EQ(at1.right, Curve(std::vector<Point2>(static_cast<std::size_t>(n) + 1, c.back())))
+        << "degree " << n;
   }
 }
 
@@ -193,12 +193,15 @@ TEST(Subdivide, IntegerPointsAtOneHalfSplitExactly) {
     const Split<Point2> halves = subdivide(Curve(pts), 0.5);
     const auto closed_form = [&](int first, int count) {
       test::RPoint2 sum{Rational(0), Rational(0)};
-      for (int j = 0; j <= count; ++j) sum = sum + Rational(binomial(count, j)) * test::exact(pts[static_cast<std::size_t>(first + j)]);
+      for (int j = 0; j <= count; ++j)
+        sum = sum +
+              Rational(binomial(count, j)) * test::exact(pts[static_cast<std::size_t>(first + j)]);
       return Rational(test::BigInt(1), test::BigInt(1) << count) * sum;
     };
     for (int k = 0; k <= n; ++k) {
       EXPECT_EQ(test::exact(halves.left[k]), closed_form(0, k)) << "degree " << n << ", left " << k;
-      EXPECT_EQ(test::exact(halves.right[k]), closed_form(k, n - k)) << "degree " << n << ", right " << k;
+      EXPECT_EQ(test::exact(halves.right[k]), closed_form(k, n - k))
+          << "degree " << n << ", right " << k;
     }
   }
 }

@@ -1,0 +1,143 @@
+#pragma once
+
+// Exact Bézier arithmetic for tests of the kernel: de Casteljau, polars and hodographs in
+// rationals (tests/support/exact.hpp) on a curve's double control points, the condition
+// scales that floating-point errors are measured against, the accuracy contract of the
+// compensated kernel (core/evaluate.hpp, CasteljauRow), and seeded random test curves.
+
+#include <cassert>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "core/curve.hpp"
+#include "core/point.hpp"
+#include "tests/support/exact.hpp"
+#include "tests/support/mulberry32.hpp"
+
+namespace bezier::test {
+
+/// The exact control points of a curve.
+template <class P>
+[[nodiscard]] auto exact_points(const core::BasicCurve<P>& curve) {
+  std::vector<decltype(exact(P{}))> pts;
+  for (const P& p : curve.points()) pts.push_back(exact(p));
+  return pts;
+}
+
+/// The exact polar: k = us.size() de Casteljau rounds in rationals, round j with u_j,
+/// P_i <- (1 - u_j) P_i + u_j P_{i+1}; returns the n + 1 - k points left. With all n
+/// arguments equal to t, the single point left is B(t); with n arguments, the blossom.
+template <class RP>
+[[nodiscard]] std::vector<RP> exact_polar(std::vector<RP> pts, const std::vector<Rational>& us) {
+  for (const Rational& u : us) {
+    assert(pts.size() >= 2);
+    const Rational one_minus_u = Rational(1) - u;
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) pts[i] = one_minus_u * pts[i] + u * pts[i + 1];
+    pts.pop_back();
+  }
+  return pts;
+}
+
+/// The condition scale of the same polar: the triangle run on |P_i| with weights |1 - u_j|
+/// and |u_j|, i.e. Σ_i |P_i| |coefficient of P_i| per coordinate. Floating-point
+/// de Casteljau errors are bounded relative to it (for t in [0,1] and one t it is
+/// Σ |P_i| b_i(t) >= |B(t)|).
+template <class RP>
+[[nodiscard]] std::vector<RP> exact_abs_polar(std::vector<RP> pts,
+                                              const std::vector<Rational>& us) {
+  for (RP& p : pts) p = abs(p);
+  for (const Rational& u : us) {
+    const Rational a = abs(Rational(1) - u), b = abs(u);
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) pts[i] = a * pts[i] + b * pts[i + 1];
+    pts.pop_back();
+  }
+  return pts;
+}
+
+/// B(t) exactly, by de Casteljau in rationals.
+template <class RP>
+[[nodiscard]] RP exact_evaluate(std::vector<RP> pts, const Rational& t) {
+  std::vector<Rational> us(pts.size() - 1, t);
+  return exact_polar(std::move(pts), us).front();
+}
+
+/// The exact hodograph: n (P_{i+1} - P_i), i = 0..n-1 (a single point gives zero).
+template <class RP>
+[[nodiscard]] std::vector<RP> exact_hodograph(const std::vector<RP>& pts) {
+  if (pts.size() == 1) return {Rational(0) * pts[0]};
+  std::vector<RP> h;
+  const Rational n(static_cast<long long>(pts.size() - 1));
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) h.push_back(n * (pts[i + 1] - pts[i]));
+  return h;
+}
+
+/// γ_m = m u / (1 - m u) with u = 2^-53: the bound on m accumulated relative roundings
+/// (Higham, "Accuracy and Stability of Numerical Algorithms", 2nd ed., Lemma 3.1).
+[[nodiscard]] inline double rounding_gamma(int m) {
+  return m * 0x1p-53 / (1 - m * 0x1p-53);
+}
+
+/// The second-order coefficient c of the compensated kernel's bound for degree n (de
+/// Casteljau, hodograph or blossom rounds, up to n of each): c = 4 γ_{3n+4}^2. Jiang et al.
+/// (2010) prove |CompDeCasteljau - p(t)| <= u |p(t)| + 2 γ_{3n}^2 Σ |b_i| B_i(t); the factor
+/// 2 and the +4 cover the error terms that hodograph rounds add (O(k u^2) relative each)
+/// and the evaluation of the error row with r = fl(1 - t) in place of 1 - t.
+[[nodiscard]] inline double compensated_coefficient(int n) {
+  const double g = rounding_gamma(3 * n + 4);
+  return 4 * g * g;
+}
+
+/// Checks, exactly and per coordinate, |got - exact| <= u |exact| + c scale with u = 2^-53:
+/// one rounding of the exact value plus c times a condition scale (the accuracy contract
+/// of the compensated kernel, with c = O(n^2 u^2)). Returns "" when it holds, else a
+/// description of the worst coordinate for the failure message.
+template <class P, class RP>
+[[nodiscard]] std::string accuracy_violation(P got, const RP& exact_value, const RP& scale,
+                                             double c) {
+  const RP e = exact_value, err = abs(test::exact(got) - e);
+  const RP bound = Rational(0x1p-53) * abs(e) + Rational(c) * scale;
+  std::string out;
+  const auto check = [&](const Rational& er, const Rational& b, const Rational& ex,
+                         const char* name) {
+    if (er <= b) return;
+    char text[160];
+    std::snprintf(text, sizeof text, "%s: error %.3g > bound %.3g (exact %.17g) ", name,
+                  er.to_double(), b.to_double(), ex.to_double());
+    out += text;
+  };
+  check(err.x, bound.x, e.x, "x");
+  check(err.y, bound.y, e.y, "y");
+  if constexpr (requires { e.z; }) check(err.z, bound.z, e.z, "z");
+  return out;
+}
+
+/// A point with every coordinate drawn uniformly from [lo, hi).
+template <class P>
+[[nodiscard]] P random_point(Mulberry32& rng, double lo, double hi) {
+  if constexpr (std::is_same_v<P, core::Point2>) {
+    return {rng.uniform(lo, hi), rng.uniform(lo, hi)};
+  } else {
+    return {rng.uniform(lo, hi), rng.uniform(lo, hi), rng.uniform(lo, hi)};
+  }
+}
+
+/// A curve of the given degree with random_point control points.
+template <class P>
+[[nodiscard]] core::BasicCurve<P> random_curve(Mulberry32& rng, int degree, double lo, double hi) {
+  std::vector<P> pts;
+  for (int i = 0; i <= degree; ++i) pts.push_back(random_point<P>(rng, lo, hi));
+  return core::BasicCurve<P>(std::move(pts));
+}
+
+/// "seed S, degree n, t = ..." for failure messages, so a failing draw can be replayed.
+[[nodiscard]] inline std::string case_name(std::uint32_t seed, int degree, double t) {
+  char text[120];
+  std::snprintf(text, sizeof text, "seed %u, degree %d, t = %.17g", seed, degree, t);
+  return text;
+}
+
+}  // namespace bezier::test
