@@ -1,0 +1,111 @@
+// One round of requests for a snapshot of the page's state. Everything the page draws
+// comes from these answers: the sampled curves (/evaluate), the first polar (/polar),
+// the loops and their areas (/loop-area), the intersections and overlaps
+// (/intersections), the cubic's type and canonical point (/classify), and the points
+// on loops, overlaps, inflections and cusps (/evaluate at the parameters those answers
+// gave). Each request fails on its own: its problem is collected and the rest is drawn.
+
+import {post} from './api.js';
+
+export const kCurveSamples = 257;  // uniform samples of a curve (0 and 1 included)
+export const kPolarSamples = 129;
+const kPieceSamples = 97;  // samples of a loop or an overlapping piece
+
+/** The curves a round works on: A always, B when the second curve is on. */
+export function usedCurves(state) {
+  return state.second ? [0, 1] : [0];
+}
+
+function piece(interval) {
+  const [a, b] = interval;
+  const ts = [];
+  for (let i = 0; i < kPieceSamples; ++i) ts.push(a + (b - a) * i / (kPieceSamples - 1));
+  ts[kPieceSamples - 1] = b;
+  return ts;
+}
+
+/**
+ * Sends the requests for `state` and resolves to {answers, errors}; never rejects.
+ * answers.curves[i]: {evaluate, loopArea, classify, loopPaths, overlapPaths, features}
+ * answers.polar: the /polar answer for the active curve (with .curve = its index);
+ * answers.intersections: the /intersections answer for A and B.
+ * errors: [{what, error}] with error an ApiError.
+ */
+export async function computeRound(state) {
+  const errors = [];
+  const attempt = async (what, route, body) => {
+    try {
+      return await post(route, body);
+    } catch (error) {
+      errors.push({what, error});
+      return null;
+    }
+  };
+  const used = usedCurves(state);
+  const curves = state.curves.map(() => ({
+    evaluate: null, loopArea: null, classify: null, loopPaths: [], overlapPaths: [], features: [],
+  }));
+  const answers = {curves, polar: null, intersections: null};
+  const jobs = [];
+  for (const i of used) {
+    const {name, points} = state.curves[i];
+    if (points.length < 2) continue;
+    jobs.push(attempt(`curve ${name}`, '/evaluate', {points, samples: kCurveSamples})
+        .then((a) => { curves[i].evaluate = a; }));
+    if (points.length >= 3) {
+      jobs.push(attempt(`loops of ${name}`, '/loop-area', {points})
+          .then((a) => { curves[i].loopArea = a; }));
+    }
+    if (points.length === 4) {
+      jobs.push(attempt(`type of ${name}`, '/classify', {points})
+          .then((a) => { curves[i].classify = a; }));
+    }
+  }
+  const active = used.includes(state.active) ? state.active : 0;
+  const activePoints = state.curves[active].points;
+  if (activePoints.length >= 2) {
+    jobs.push(attempt(`polar of ${state.curves[active].name}`, '/polar',
+                      {points: activePoints, t0: state.t0, samples: kPolarSamples})
+        .then((a) => { if (a) answers.polar = {...a, curve: active}; }));
+  }
+  if (state.second && state.curves[0].points.length >= 2 && state.curves[1].points.length >= 2) {
+    jobs.push(attempt('intersections of A and B', '/intersections',
+                      {curves: [{points: state.curves[0].points}, {points: state.curves[1].points}]})
+        .then((a) => { answers.intersections = a; }));
+  }
+  await Promise.all(jobs);
+  await Promise.all(used.map((i) => pointsOnCurve(state, answers, i, attempt)));
+  return {answers, errors};
+}
+
+/** Second stage: the points of curve i at the parameters the first answers named. */
+async function pointsOnCurve(state, answers, i, attempt) {
+  const curve = answers.curves[i];
+  const wanted = [];  // {kind, ts, ...}
+  for (const loop of curve.loopArea?.loops ?? []) {
+    wanted.push({kind: 'loop', ts: piece(loop.t), loop});
+  }
+  const overlaps = answers.intersections?.overlaps ?? [];
+  for (const overlap of overlaps) {
+    const interval = i === 0 ? overlap.t_interval : overlap.s_interval;
+    if (Array.isArray(interval)) wanted.push({kind: 'overlap', ts: piece(interval)});
+  }
+  const c = curve.classify;
+  if (c) {
+    for (const t of c.inflections ?? []) wanted.push({kind: 'inflection', ts: [t], t});
+    if (typeof c.cusp === 'number') wanted.push({kind: 'cusp', ts: [c.cusp], t: c.cusp});
+  }
+  if (wanted.length === 0) return;
+  const ts = wanted.flatMap((w) => w.ts);
+  const answer = await attempt(`points on ${state.curves[i].name}`, '/evaluate',
+                               {points: state.curves[i].points, t: ts});
+  if (!answer) return;
+  let k = 0;
+  for (const w of wanted) {
+    const points = answer.results.slice(k, k + w.ts.length).map((r) => r.point);
+    k += w.ts.length;
+    if (w.kind === 'loop') curve.loopPaths.push({loop: w.loop, points});
+    else if (w.kind === 'overlap') curve.overlapPaths.push(points);
+    else curve.features.push({kind: w.kind, t: w.t, point: points[0]});
+  }
+}

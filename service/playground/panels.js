@@ -1,0 +1,142 @@
+// The side panel's text: values (B(t0), the polar's control points, the control points),
+// the cubic types, the intersections and loops, and the API's errors. Built from the
+// answers of the last round; numbers shown rounded, the full answers are on
+// window.playground for whoever needs every digit.
+
+import {kColors, kPointNames, formatNumber} from './draw.js';
+
+const fmt = formatNumber;
+const pt = (p) => `(${fmt(p[0])}, ${fmt(p[1])})`;
+
+function el(tag, attributes = {}, ...children) {
+  const node = document.createElement(tag);
+  for (const [k, v] of Object.entries(attributes)) {
+    if (k === 'class') node.className = v;
+    else if (k === 'style') node.style.cssText = v;
+    else node.setAttribute(k, v);
+  }
+  for (const c of children) node.append(c);
+  return node;
+}
+
+function replace(container, nodes) {
+  container.replaceChildren(...nodes);
+}
+
+export function renderValues(container, state, answers) {
+  const rows = [];
+  const add = (term, value, id) => {
+    rows.push(el('dt', {}, term));
+    rows.push(el('dd', id ? {id} : {}, value));
+  };
+  const active = state.active;
+  const curve = state.curves[active];
+  const name = kPointNames[active];
+  add('Editing', `curve ${curve.name}, ${curve.points.length} control point${curve.points.length === 1 ? '' : 's'}` +
+      (curve.points.length >= 2 ? `, degree ${curve.points.length - 1}` : ''), 'value-degree');
+  add('t0', state.t0.toFixed(2), 'value-t0');
+  const polar = answers?.polar && answers.polar.curve === active ? answers.polar : null;
+  add(`B(t0)`, polar ? pt(polar.curve_point) : '—', 'value-curve-point');
+  add('Polar points', polar ? polar.control_points.map((p, k) => `b${k} ${pt(p)}`).join(', ') : '—',
+      'value-polar-points');
+  add('Control points', curve.points.length ? curve.points.map((p, k) => `${name}${k} ${pt(p)}`).join(', ') : '—',
+      'value-control-points');
+  replace(container, rows);
+}
+
+export function renderTypes(container, state, answers) {
+  const items = [];
+  for (const i of state.second ? [0, 1] : [0]) {
+    const c = state.curves[i];
+    const answer = answers?.curves[i]?.classify;
+    const li = el('li', {'data-curve': c.name});
+    li.append(el('strong', {style: `color:${kColors.curves[i]}`}, `${c.name}: `));
+    if (c.points.length !== 4) {
+      li.append(el('span', {class: 'muted'}, 'a cubic (4 control points) has a type'));
+    } else if (!answer) {
+      li.append(el('span', {class: 'muted'}, 'no answer (see the error above)'));
+    } else {
+      li.append(el('span', {class: 'type'}, answer.type));
+      const parts = [];
+      parts.push(answer.canonical_point ? `canonical ${kPointNames[i]}3 ${pt(answer.canonical_point)}`
+                                        : 'no canonical point (P0, P1, P2 collinear)');
+      if (answer.inflections?.length) parts.push(`inflections t = ${answer.inflections.map(fmt).join(', ')}`);
+      if (typeof answer.cusp === 'number') parts.push(`cusp t = ${fmt(answer.cusp)}`);
+      if (answer.self_intersection) {
+        parts.push(`double point t = ${answer.self_intersection.t.map(fmt).join(', ')} at ${pt(answer.self_intersection.point)}`);
+      }
+      if (answer.loop_blinn) parts.push(`Loop–Blinn class of the unbounded cubic: ${answer.loop_blinn}`);
+      li.append(el('div', {class: 'small'}, parts.join('; ')));
+    }
+    items.push(li);
+  }
+  replace(container, items);
+}
+
+export function renderIntersections(container, state, answers) {
+  if (!state.second) {
+    replace(container, [el('li', {class: 'muted'}, 'Turn on "Second curve (B)" and add its points.')]);
+    return;
+  }
+  const x = answers?.intersections;
+  if (!x) {
+    const waiting = state.curves[0].points.length < 2 || state.curves[1].points.length < 2;
+    replace(container, [el('li', {class: 'muted'}, waiting ? 'Both curves need two control points.' : 'no answer (see the error above)')]);
+    return;
+  }
+  const items = x.intersections.map((hit, k) => el('li', {'data-index': String(k), 'data-kind': hit.kind},
+      el('span', {class: `kind kind-${hit.kind}`}, hit.kind),
+      `t = ${fmt(hit.t)}, s = ${fmt(hit.s)} at ${pt(hit.point)}`));
+  for (const o of x.overlaps ?? []) {
+    items.push(el('li', {'data-kind': 'overlap'}, el('span', {class: 'kind kind-overlap'}, 'overlap'),
+        `t ∈ [${o.t_interval.map(fmt).join(', ')}], s ∈ [${o.s_interval.map(fmt).join(', ')}]`));
+  }
+  if (items.length === 0) items.push(el('li', {class: 'muted'}, 'none: the curves do not meet'));
+  if (x.stats) {
+    const s = Object.entries(x.stats).map(([k, v]) => `${k} ${typeof v === 'number' ? fmt(v) : v}`).join(', ');
+    items.push(el('li', {class: 'muted small'}, s));
+  }
+  replace(container, items);
+}
+
+export function renderLoops(container, state, answers) {
+  const items = [];
+  let unanswered = 0;
+  for (const i of state.second ? [0, 1] : [0]) {
+    const c = state.curves[i];
+    const a = answers?.curves[i]?.loopArea;
+    if (!a) {
+      if (c.points.length >= 3) ++unanswered;
+      continue;
+    }
+    for (const loop of a.loops) {
+      items.push(el('li', {'data-curve': c.name},
+          el('strong', {style: `color:${kColors.curves[i]}`}, `${c.name}: `),
+          `loop t ∈ [${loop.t.map(fmt).join(', ')}] at ${pt(loop.point)}, area ${fmt(loop.area)} (signed ${fmt(loop.signed_area)})`));
+    }
+    if (a.closed) {
+      items.push(el('li', {'data-curve': c.name}, el('strong', {style: `color:${kColors.curves[i]}`}, `${c.name}: `),
+          `closed curve, signed area ${fmt(a.closed_area)}`));
+    }
+    if (a.loops.length > 1) items.push(el('li', {class: 'small'}, `${c.name}: total loop area ${fmt(a.area)}`));
+  }
+  if (unanswered) items.push(el('li', {class: 'muted'}, 'no answer (see the error above)'));
+  else if (items.length === 0) items.push(el('li', {class: 'muted'}, 'no self-intersection loops'));
+  replace(container, items);
+}
+
+/** One entry per failed request, with the problem the service sent. */
+export function renderErrors(container, errors) {
+  const items = errors.map(({what, error}) => {
+    const p = error.problem ?? {};
+    const li = el('li', {'data-route': error.route, 'data-status': String(error.status)});
+    li.append(el('strong', {}, `${what}: POST ${error.route} → ${error.status || 'no answer'} ${p.title ?? ''}`));
+    if (p.detail) li.append(el('div', {}, p.detail));
+    if (Array.isArray(p.errors) && p.errors.length) {
+      li.append(el('ul', {}, ...p.errors.map((e) => el('li', {}, el('code', {}, e.pointer || '/'), ` ${e.message}`))));
+    }
+    if (error.status === 401) li.append(el('div', {class: 'small'}, 'Enter the token under "API token" in the panel.'));
+    return li;
+  });
+  replace(container, items);
+}

@@ -1,0 +1,370 @@
+// Browser test of the playground page (GET /) against the real bezier-service binary,
+// in Debian's headless Chromium driven by playwright-core (no browser download).
+//
+//   node tests/browser/playground_test.mjs --service build/service/bezier-service \
+//        [--screenshot docs/playground.png]
+//
+// (or BEZIER_SERVICE_BINARY / PLAYGROUND_SCREENSHOT in the environment). Needs
+// `npm ci` in tests/browser and /usr/bin/chromium (Debian packages chromium,
+// chromium-driver). The page's answers are compared with the API's own answers to the
+// same requests, fetched here from node; positions are computed here from the canvas
+// box and the page's documented world (800 x 600 units, y up), not from the page.
+
+import {after, before, test} from 'node:test';
+import assert from 'node:assert/strict';
+import {spawn} from 'node:child_process';
+import {mkdtempSync, readFileSync, rmSync} from 'node:fs';
+import {tmpdir} from 'node:os';
+import {join} from 'node:path';
+import {parseArgs} from 'node:util';
+import {readPng} from './png.mjs';
+
+let chromium;
+try {
+  ({chromium} = await import('playwright-core'));
+} catch (e) {
+  console.error(`playwright-core is not installed: run \`npm ci\` in tests/browser (${e.message})`);
+  process.exit(1);
+}
+
+const {values: options} = parseArgs({
+  options: {service: {type: 'string'}, screenshot: {type: 'string'}, chromium: {type: 'string'}},
+});
+const servicePath = options.service ?? process.env.BEZIER_SERVICE_BINARY;
+const screenshotPath = options.screenshot ?? process.env.PLAYGROUND_SCREENSHOT ?? null;
+const chromiumPath = options.chromium ?? process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
+if (!servicePath) {
+  console.error('usage: node playground_test.mjs --service PATH/bezier-service [--screenshot FILE.png]');
+  process.exit(2);
+}
+
+const kMaxDegree = 5;  // the service runs with --max-degree 5, so 7 points must be refused
+const kWorld = {width: 800, height: 600};
+const kTimeout = 60_000;
+
+let service;
+let baseUrl;
+let context;
+let userDataDir;
+let page;
+const pageErrors = [];
+
+function startService() {
+  return new Promise((resolve, reject) => {
+    const child = spawn(servicePath, ['--host', '127.0.0.1', '--port', '0', '--max-degree', String(kMaxDegree),
+                                      '--log-level', 'warn'], {stdio: ['ignore', 'pipe', 'inherit']});
+    let text = '';
+    const timer = setTimeout(() => reject(new Error(`no "listening on" line within 20 s: ${text}`)), 20_000);
+    child.on('error', reject);
+    child.on('exit', (code) => reject(new Error(`service exited early with ${code}: ${text}`)));
+    child.stdout.on('data', (chunk) => {
+      if (baseUrl) return;  // keep draining so the pipe never fills
+      text += chunk;
+      const match = text.match(/listening on (http:\/\/[^\s]+)/);
+      if (match) {
+        clearTimeout(timer);
+        child.removeAllListeners('exit');
+        resolve({child, url: match[1].replace(/\/$/, '')});
+      }
+    });
+  });
+}
+
+async function api(route, body) {
+  const response = await fetch(baseUrl + route, {
+    method: 'POST', headers: {'Content-Type': 'application/json'}, body: JSON.stringify(body),
+  });
+  const answer = await response.json();
+  assert.equal(response.status, 200, `${route} answered ${response.status}: ${JSON.stringify(answer)}`);
+  return answer;
+}
+
+const settle = (p = page) => p.waitForFunction(() => window.playground && window.playground.idle, null, {timeout: kTimeout});
+const pageState = (p = page) => p.evaluate(() => window.playground.state());
+const pageAnswers = (p = page) => p.evaluate(() => window.playground.answers());
+const pageErrorsShown = (p = page) => p.evaluate(() => window.playground.errors());
+
+/** Client coordinates of world point w, from the canvas box and the world's definition. */
+async function client(w, p = page) {
+  const box = await p.locator('#scene').boundingBox();
+  return [box.x + w[0] * box.width / kWorld.width, box.y + (kWorld.height - w[1]) * box.height / kWorld.height];
+}
+
+async function clickWorld(w) {
+  const [x, y] = await client(w);
+  await page.mouse.click(x, y);
+}
+
+async function setMode(mode) {
+  await page.locator(`#modes input[value=${mode}]`).check({force: true});
+  assert.equal((await pageState()).mode, mode);
+}
+
+/** Numbers in a text such as "(392.5, 300)". */
+const numbersIn = (text) => (text.match(/-?\d+(\.\d+)?(e[-+]?\d+)?/gi) ?? []).map(Number);
+
+function assertClose(shown, exact, what) {
+  assert.ok(Math.abs(shown - exact) <= 1e-5 * Math.max(1, Math.abs(exact)), `${what}: page shows ${shown}, API says ${exact}`);
+}
+
+before(async () => {
+  ({child: service, url: baseUrl} = await startService());
+  userDataDir = mkdtempSync(join(tmpdir(), 'bezier-playground-chromium-'));
+  context = await chromium.launchPersistentContext(userDataDir, {
+    executablePath: chromiumPath,
+    headless: true,
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking',
+           '--disable-component-update', '--disable-sync'],
+    viewport: {width: 1280, height: 900},
+    deviceScaleFactor: 1,
+    hasTouch: true,
+    acceptDownloads: true,
+  });
+  context.setDefaultTimeout(kTimeout);
+  page = context.pages()[0] ?? await context.newPage();
+  page.on('pageerror', (e) => pageErrors.push(e.message));
+});
+
+after(async () => {
+  await context?.close();
+  if (userDataDir) rmSync(userDataDir, {recursive: true, force: true});
+  if (service) {
+    const exited = new Promise((resolve) => service.once('exit', (code, signal) => resolve({code, signal})));
+    service.kill('SIGTERM');
+    const {code} = await exited;
+    assert.equal(code, 0, 'the service exits 0 on SIGTERM');
+  }
+});
+
+test('GET / serves the page and its files with their content types', async () => {
+  for (const [path, type] of [['/', 'text/html'], ['/playground/app.js', 'text/javascript'],
+                              ['/playground/style.css', 'text/css']]) {
+    const response = await fetch(baseUrl + path);
+    assert.equal(response.status, 200, path);
+    assert.match(response.headers.get('content-type'), new RegExp(`^${type}`), path);
+  }
+  await page.goto(baseUrl + '/');
+  await settle();
+  assert.equal(await page.title(), 'Bézier playground · bezier-service');
+  assert.deepEqual((await pageState()).curves.map((c) => c.points), [[], []]);
+});
+
+const kFour = [[100, 120], [240, 480], [560, 500], [700, 140]];
+const kMoved = [300, 560];
+
+test('adds four points where the mouse clicks, and draws the API\'s curve', async () => {
+  await setMode('add');
+  for (const w of kFour) await clickWorld(w);
+  await settle();
+  const state = await pageState();
+  assert.deepEqual(state.curves[0].points, kFour);
+  // The page's mapping agrees with the test's to within a pixel.
+  const [px, py] = await page.evaluate((w) => window.playground.clientPoint(w), kFour[1]);
+  const [tx, ty] = await client(kFour[1]);
+  assert.ok(Math.abs(px - tx) < 1 && Math.abs(py - ty) < 1);
+  const drawn = (await pageAnswers()).curves[0].evaluate;
+  assert.deepEqual(drawn, await api('/evaluate', {points: kFour, samples: drawn.results.length}));
+  assert.match(await page.locator('#value-degree').textContent(), /4 control points, degree 3/);
+});
+
+test('Move mode highlights the point under the cursor and drags it', async () => {
+  await setMode('move');
+  const [x, y] = await client(kFour[1]);
+  await page.mouse.move(x, y);
+  assert.deepEqual(await page.evaluate(() => window.playground.hover()), {curve: 0, index: 1});
+  assert.ok(await page.locator('#scene.over-point').count() === 1, 'the cursor shows a point is under it');
+  assert.match(await page.locator('#bernstein-caption').textContent(), /degree 3/);
+  await page.mouse.down();
+  const [tx, ty] = await client(kMoved);
+  await page.mouse.move(tx, ty, {steps: 12});
+  await page.mouse.up();
+  await settle();
+  const points = (await pageState()).curves[0].points;
+  assert.deepEqual(points, [kFour[0], kMoved, kFour[2], kFour[3]]);
+  const drawn = (await pageAnswers()).curves[0].evaluate;
+  assert.deepEqual(drawn, await api('/evaluate', {points, samples: drawn.results.length}));
+});
+
+test('t0: slider and a two-decimal field clamped to [0, 1]; the page shows the API\'s polar', async () => {
+  const number = page.locator('#t0-number');
+  const setNumber = async (text) => {
+    await number.fill(text);
+    await number.press('Tab');
+  };
+  await setNumber('0.333');
+  assert.equal(await number.inputValue(), '0.33');
+  assert.equal((await pageState()).t0, 0.33);
+  await setNumber('1.7');
+  assert.equal(await number.inputValue(), '1.00');
+  assert.equal((await pageState()).t0, 1);
+  await setNumber('-0.25');
+  assert.equal(await number.inputValue(), '0.00');
+  await page.locator('#t0-range').focus();
+  await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('ArrowRight');
+  assert.equal(await number.inputValue(), '0.02', 'the slider steps by 0.01 and updates the field');
+  await setNumber('0.37');
+  assert.equal(await page.locator('#t0-range').inputValue(), '0.37');
+  await settle();
+
+  const state = await pageState();
+  assert.equal(state.t0, 0.37);
+  const polar = (await pageAnswers()).polar;
+  const exact = await api('/polar', {points: state.curves[0].points, t0: 0.37, samples: polar.results.length});
+  const {curve, ...drawn} = polar;
+  assert.equal(curve, 0);
+  assert.deepEqual(drawn, exact);
+  assert.equal(exact.control_points.length, 3);
+  const shown = numbersIn(await page.locator('#value-curve-point').textContent());
+  assert.equal(shown.length, 2);
+  shown.forEach((v, k) => assertClose(v, exact.curve_point[k], `B(t0)[${k}]`));
+  const shownPolar = numbersIn((await page.locator('#value-polar-points').textContent()).replace(/b\d+/g, ''));
+  assert.equal(shownPolar.length, 6);
+  shownPolar.forEach((v, k) => assertClose(v, exact.control_points[k >> 1][k & 1], `polar point ${k >> 1}`));
+  assert.equal(await page.locator('#value-t0').textContent(), '0.37');
+});
+
+test('Remove mode removes the point under the cursor', async () => {
+  await setMode('remove');
+  const [x, y] = await client(kFour[2]);
+  await page.mouse.move(x, y);
+  assert.deepEqual(await page.evaluate(() => window.playground.hover()), {curve: 0, index: 2});
+  await page.mouse.click(x, y);
+  await settle();
+  const points = (await pageState()).curves[0].points;
+  assert.deepEqual(points, [kFour[0], kMoved, kFour[3]]);
+  const answers = await pageAnswers();
+  assert.deepEqual(answers.curves[0].evaluate, await api('/evaluate', {points, samples: answers.curves[0].evaluate.results.length}));
+  assert.equal(answers.polar.degree, 1);
+  assert.match(await page.locator('#value-degree').textContent(), /degree 2/);
+  assert.deepEqual(await pageErrorsShown(), []);
+});
+
+test('errors from the API are shown to the user (degree above the limit)', async () => {
+  await setMode('add');
+  for (const w of [[400, 60], [460, 60], [520, 60], [580, 60]]) await clickWorld(w);
+  await settle();
+  assert.equal((await pageState()).curves[0].points.length, kMaxDegree + 2);
+  const shown = await pageErrorsShown();
+  const evaluate = shown.find((e) => e.route === '/evaluate');
+  assert.ok(evaluate, `an /evaluate error is listed: ${JSON.stringify(shown)}`);
+  assert.equal(evaluate.status, 422);
+  const item = page.locator('#errors li[data-route="/evaluate"][data-status="422"]');
+  await item.first().waitFor({state: 'visible'});
+  const text = await item.first().textContent();
+  assert.match(text, /422/);
+  assert.match(text, /\/points/);
+  assert.match(text, new RegExp(`limit of ${kMaxDegree}`));
+  await page.locator('#clear').click();
+  await settle();
+  assert.equal(await page.locator('#errors li').count(), 0, 'the errors go when the input is fixed');
+});
+
+const kCrossing = [[60, 300], [300, 420], [500, 300], [760, 420]];
+
+test('second curve: intersections marked, kind on hover; loops shaded with their area; cubic type', async () => {
+  await page.locator('#examples').selectOption('loop');
+  await settle();
+  const a = (await pageState()).curves[0].points;
+  assert.equal(a.length, 4);
+  await page.locator('#show-second').check();
+  assert.equal((await pageState()).active, 1, 'turning the second curve on edits it');
+  await setMode('add');
+  for (const w of kCrossing) await clickWorld(w);
+  await settle();
+  const state = await pageState();
+  assert.deepEqual(state.curves[1].points, kCrossing);
+  const answers = await pageAnswers();
+
+  const exact = await api('/intersections', {curves: [{points: a}, {points: kCrossing}]});
+  assert.deepEqual(answers.intersections, exact);
+  assert.ok(exact.intersections.length >= 2, 'the example curves cross');
+  const items = page.locator('#intersections li[data-index]');
+  assert.equal(await items.count(), exact.intersections.length);
+  for (let k = 0; k < exact.intersections.length; ++k) {
+    assert.equal(await items.nth(k).getAttribute('data-kind'), exact.intersections[k].kind);
+  }
+  await setMode('move');
+  const hit = exact.intersections[0];
+  const [x, y] = await client(hit.point);
+  await page.mouse.move(x, y);
+  const tooltip = page.locator('#tooltip');
+  await tooltip.waitFor({state: 'visible'});
+  assert.match(await tooltip.textContent(), new RegExp(`^${hit.kind} intersection`));
+  assert.equal(await page.locator('#intersections li.active').getAttribute('data-index'), '0');
+
+  const loops = await api('/loop-area', {points: a});
+  assert.ok(loops.loops.length >= 1, 'the example cubic has a loop');
+  assert.deepEqual(answers.curves[0].loopArea, loops);
+  assert.equal(answers.curves[0].loopPaths.length, loops.loops.length);
+  const loopItems = page.locator('#loops li[data-curve=A]');
+  assert.equal(await loopItems.count(), loops.loops.length);
+  const areaShown = numbersIn((await loopItems.first().textContent()).split('area')[1]);
+  assertClose(areaShown[0], loops.loops[0].area, 'loop area');
+
+  for (const [i, points] of [[0, a], [1, kCrossing]]) {
+    const type = await api('/classify', {points});
+    assert.deepEqual(answers.curves[i].classify, type);
+    const name = i === 0 ? 'A' : 'B';
+    assert.equal(await page.locator(`#types li[data-curve=${name}] .type`).textContent(), type.type);
+  }
+  assert.equal(answers.curves[0].classify.type, 'loop');
+  assert.deepEqual(await pageErrorsShown(), []);
+
+  await page.mouse.move(5, 5);  // no tooltip in the picture
+  if (screenshotPath) await page.screenshot({path: screenshotPath, fullPage: true});
+});
+
+test('the PNG download has the drawing and no background', async () => {
+  const [download] = await Promise.all([page.waitForEvent('download'), page.locator('#download').click()]);
+  assert.equal(download.suggestedFilename(), 'bezier-playground.png');
+  const png = readPng(readFileSync(await download.path()));
+  const box = await page.locator('#scene').boundingBox();
+  assert.equal(png.width, Math.round(box.width));
+  let opaque = 0;
+  for (let k = 3; k < png.pixels.length; k += 4) if (png.pixels[k] > 0) ++opaque;
+  assert.equal(png.pixels[3], 0, 'the corner is transparent');
+  assert.equal(png.pixels[png.pixels.length - 1], 0, 'the far corner is transparent');
+  assert.ok(opaque > 2000, `the curves are drawn (${opaque} pixels)`);
+  assert.ok(opaque < png.width * png.height / 2, 'most of the image is transparent');
+});
+
+test('overlapping curves: the overlap is listed and highlighted', async () => {
+  await page.locator('#examples').selectOption('overlap');
+  await settle();
+  const state = await pageState();
+  const exact = await api('/intersections', {curves: [{points: state.curves[0].points}, {points: state.curves[1].points}]});
+  assert.ok(exact.overlaps.length >= 1, 'the API reports the overlap');
+  const answers = await pageAnswers();
+  assert.deepEqual(answers.intersections, exact);
+  assert.equal(await page.locator('#intersections li[data-kind=overlap]').count(), exact.overlaps.length);
+  assert.equal(answers.curves[0].overlapPaths.length, exact.overlaps.length);
+  assert.equal(answers.curves[1].overlapPaths.length, exact.overlaps.length);
+});
+
+test('phone width: no sideways scrolling, and a tap adds a point', async () => {
+  const phone = await context.newPage();
+  phone.on('pageerror', (e) => pageErrors.push(e.message));
+  await phone.setViewportSize({width: 390, height: 844});
+  await phone.goto(baseUrl + '/');
+  await settle(phone);
+  const widths = await phone.evaluate(() => ({page: document.documentElement.scrollWidth, view: window.innerWidth}));
+  assert.ok(widths.page <= widths.view, `page ${widths.page} px wide in a ${widths.view} px viewport`);
+  const box = await phone.locator('#scene').boundingBox();
+  assert.ok(box.width <= 390 && box.width >= 300, `canvas ${box.width} px wide`);
+  for (const w of [[100, 100], [400, 500], [700, 100]]) {
+    const [x, y] = await client(w, phone);
+    await phone.touchscreen.tap(x, y);
+  }
+  await settle(phone);
+  const points = (await pageState(phone)).curves[0].points;
+  assert.equal(points.length, 3);
+  // A CSS pixel is about two world units here, so a tap lands within a unit or two.
+  points.forEach((p, k) => assert.ok(Math.abs(p[0] - [100, 400, 700][k]) <= 2 && Math.abs(p[1] - [100, 500, 100][k]) <= 2));
+  assert.ok((await pageAnswers(phone)).curves[0].evaluate, 'the curve is drawn');
+  await phone.close();
+});
+
+test('no script errors on the page', () => {
+  assert.deepEqual(pageErrors, []);
+});
