@@ -46,7 +46,7 @@ struct CurveFacts {
 /// Whether a Newton root is a real pair rather than a point of the diagonal blurred by
 /// rounding (see double_point_uncertainty).
 bool resolved(const CurveFacts& facts, double u, double v) {
-  return double_point_uncertainty(facts.points, u, v, facts.rounding) < 0.25 * (v - u);
+  return is_resolved_double_point(facts.points, u, v, facts.rounding);
 }
 
 /// |B(v) - B(u)| with the compensated evaluation: the most accurate residual available,

@@ -113,9 +113,12 @@ struct SelfIntersectionOptions {
 /// to exactly t = 0 or s = 1 when the end point satisfies B(t) = B(s) as well, and merged
 /// when found twice. Collinear curves are reported as overlaps (status degenerate).
 ///
-/// Resolution: pairs closer than about 1e-7 in parameter to each other (t close to s: loops
-/// of area ~1e-35 of the curve's size, below double precision) are indistinguishable from
-/// cusps and are not reported; distinct pairs closer than 1e-10 in both t and s are merged.
+/// Resolution: next to a cusp, |B(s) - B(t)| stays at rounding level for s - t up to about
+/// 1e-5, so pairs there are accepted only when rounding could not move them onto the
+/// diagonal (is_resolved_double_point); loops closer to a cusp than that (s - t below
+/// roughly 1e-4, area below ~1e-18 of the curve's size) are treated as the cusp and not
+/// reported. The exact cubic closed form has no such limit. Distinct pairs closer than
+/// 1e-10 in both t and s are merged.
 /// Tangential contacts are located to about half the digits when the branches have the
 /// same curvature there. Non-collinear curves that retrace themselves (improper
 /// parametrisations such as C(4t(1 - t))) exhaust the work budget.

@@ -72,6 +72,15 @@ struct PairRefinement {
 [[nodiscard]] double double_point_uncertainty(std::span<const Point2> points, double u, double v,
                                               double rounding);
 
+/// Whether a double point (u, v), u < v, is resolved: its uncertainty at rounding level
+/// `rounding` is below (v - u) / 1024. The linearised uncertainty underestimates how far
+/// the noise reaches near a cusp, where F grows only like (v - u)^3 along the anti-diagonal
+/// (observed: a cusp of a degree-4 curve gave "roots" with v - u = 1.5e-5 whose estimate was
+/// (v - u) / 7), hence the wide margin; real loops of area 1e-12 of their curve's size have
+/// v - u of order 1e-3 and estimates of order 1e-10, far inside it.
+[[nodiscard]] bool is_resolved_double_point(std::span<const Point2> points, double u, double v,
+                                            double rounding);
+
 /// The touching point of a tangential self-contact: Newton's method on
 ///   G(u, v) = (F·B'(v), cross(B'(u), B'(v))) = 0,   F = B(v) - B(u),
 /// i.e. B(v) is the foot of the perpendicular from B(u) to the other branch and the two

@@ -261,7 +261,7 @@ class Search {
     }
     // The box holds at most one pair and Newton found it; if rounding could move it onto
     // the diagonal, it is a cusp seen through rounding errors: the box is done either way.
-    if (double_point_uncertainty(points_, root.u, root.v, settings_.rounding) < 0.25 * (root.v - root.u)) {
+    if (is_resolved_double_point(points_, root.u, root.v, settings_.rounding)) {
       out_.crossings.push_back(root);
     } else {
       ++out_.stats.cusp_regions;

@@ -15,7 +15,7 @@ struct SelfIntersectionSearchSettings {
   /// Geometric tolerance in input units (dist_rel * scale).
   double dist_tol = 0.0;
   /// Rounding level of F = B(v) - B(u) in input units: a Newton root whose
-  /// double_point_uncertainty at this level is not below (v - u) / 4 is noise near a cusp.
+  /// is_resolved_double_point fails at this level is noise near a cusp.
   double rounding = 0.0;
   std::int64_t max_work = 0;
   int max_depth = 0;
