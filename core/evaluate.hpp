@@ -27,6 +27,8 @@ struct TwoTerm {
 
 /// a b = hi + lo exactly, with hi = fl(a b): the fused multiply-add gives the rounding
 /// error of the product in one rounding (exact unless the product over- or underflows).
+/// (Dekker's split-based TwoProduct avoids the libm call on x86-64 builds without -mfma,
+/// but measured no faster here: glibc dispatches fma to the hardware instruction.)
 [[nodiscard]] inline TwoTerm<double> two_product(double a, double b) noexcept {
   const double p = a * b;
   return {p, std::fma(a, b, -p)};
@@ -63,7 +65,7 @@ struct TwoTerm {
 /// guarantees O(n u) S(t) (about 10 ulps of S at degree 20 in practice, and far more than
 /// that relative to |B(t)| when B(t) cancels).
 ///
-/// The `value` row alone is exactly the plain algorithm, (1 - t) P_i + t P_{i+1} rounded
+/// The row of values alone is exactly the plain algorithm, (1 - t) P_i + t P_{i+1} rounded
 /// as lerp() rounds it, so evaluate, subdivide and polar share every bit of it. Every
 /// routine that needs a de Casteljau step uses this class, so that quantities that must
 /// agree (a split point and B(t); blossom(t, ..., t) and B(t)) come out bit for bit equal.
@@ -71,19 +73,20 @@ template <class P>
 class CasteljauRow {
  public:
   /// The control points, taken as exact (zero error).
-  explicit CasteljauRow(std::span<const P> points)
-      : value_(points.begin(), points.end()), error_(points.size(), P{}) {
+  explicit CasteljauRow(std::span<const P> points) {
     assert(!points.empty());
+    entries_.reserve(points.size());
+    for (const P& p : points) entries_.push_back({p, P{}});
   }
 
   /// Number of entries: n + 1 for a degree-n curve, one fewer after each step.
-  [[nodiscard]] std::size_t size() const noexcept { return value_.size(); }
+  [[nodiscard]] std::size_t size() const noexcept { return entries_.size(); }
 
   /// Entry i as one double point: value + error, rounded once. When the error terms are
   /// not finite (a product overflowed while the value did not), the plain value is returned.
   [[nodiscard]] P point(std::size_t i) const noexcept {
-    const P e = error_[i];
-    return is_finite(e) ? value_[i] + e : value_[i];
+    const auto& [value, error] = entries_[i];
+    return is_finite(error) ? value + error : value;
   }
 
   /// One de Casteljau round with parameter t: entry i <- (1 - t) entry i + t entry i+1.
@@ -95,15 +98,16 @@ class CasteljauRow {
     const TwoTerm<double> one_minus_t = two_sum(1.0, -t);
     const double r = one_minus_t.hi, rho = one_minus_t.lo;
     for (std::size_t i = 0; i + 1 < size(); ++i) {
-      const TwoTerm<P> left = two_product(r, value_[i]);
-      const TwoTerm<P> right = two_product(t, value_[i + 1]);
+      TwoTerm<P>& a = entries_[i];
+      const TwoTerm<P>& b = entries_[i + 1];
+      const TwoTerm<P> left = two_product(r, a.hi);
+      const TwoTerm<P> right = two_product(t, b.hi);
       const TwoTerm<P> sum = two_sum(left.hi, right.hi);
-      const P local = (left.lo + right.lo) + (sum.lo + rho * value_[i]);
-      error_[i] = (r * error_[i] + t * error_[i + 1]) + local;
-      value_[i] = sum.hi;
+      const P local = (left.lo + right.lo) + (sum.lo + rho * a.hi);
+      a.lo = (r * a.lo + t * b.lo) + local;
+      a.hi = sum.hi;
     }
-    value_.pop_back();
-    error_.pop_back();
+    entries_.pop_back();
   }
 
   /// One hodograph round: entry i <- m (entry i+1 - entry i), m = size() - 1 (the degree),
@@ -112,24 +116,23 @@ class CasteljauRow {
   /// cancellation. A single entry (degree 0) becomes the zero point.
   void hodograph_step() {
     if (size() == 1) {
-      value_[0] = P{};
-      error_[0] = P{};
+      entries_[0] = {P{}, P{}};
       return;
     }
     const double m = static_cast<double>(size() - 1);
     for (std::size_t i = 0; i + 1 < size(); ++i) {
-      const TwoTerm<P> diff = two_sum(value_[i + 1], -value_[i]);
+      TwoTerm<P>& a = entries_[i];
+      const TwoTerm<P>& b = entries_[i + 1];
+      const TwoTerm<P> diff = two_sum(b.hi, -a.hi);
       const TwoTerm<P> scaled = two_product(m, diff.hi);
-      error_[i] = scaled.lo + m * (diff.lo + (error_[i + 1] - error_[i]));
-      value_[i] = scaled.hi;
+      a.lo = scaled.lo + m * (diff.lo + (b.lo - a.lo));
+      a.hi = scaled.hi;
     }
-    value_.pop_back();
-    error_.pop_back();
+    entries_.pop_back();
   }
 
  private:
-  std::vector<P> value_;
-  std::vector<P> error_;
+  std::vector<TwoTerm<P>> entries_;  ///< hi: the rounded value, lo: its rounding error
 };
 
 /// B(t) = Σ C(n,i) (1-t)^(n-i) t^i P_i by de Casteljau's algorithm, n rounds of
