@@ -157,8 +157,15 @@ function markAt(sx, sy, radius) {
 
 const hitRadius = (event) => (event.pointerType === 'mouse' ? 10 : 20);
 
+function markListItems() {
+  for (const li of $('intersections').querySelectorAll('li[data-index]')) {
+    li.classList.toggle('active', Number(li.dataset.index) === hoverMark);
+  }
+}
+
 function showTooltip(sx, sy) {
   const tooltip = $('tooltip');
+  markListItems();
   if (hoverMark < 0) {
     tooltip.hidden = true;
     return;
@@ -170,10 +177,20 @@ function showTooltip(sx, sy) {
   tooltip.hidden = false;
   tooltip.style.left = `${Math.min(sx, view.cssWidth - 190)}px`;
   tooltip.style.top = `${sy}px`;
-  for (const li of $('intersections').querySelectorAll('li[data-index]')) {
-    li.classList.toggle('active', Number(li.dataset.index) === hoverMark);
-  }
 }
+
+// Pointing at an intersection in the list marks it on the canvas too.
+$('intersections').addEventListener('pointerover', (event) => {
+  const li = event.target.closest('li[data-index]');
+  hoverMark = li ? Number(li.dataset.index) : -1;
+  markListItems();
+  renderScene();
+});
+$('intersections').addEventListener('pointerleave', () => {
+  hoverMark = -1;
+  markListItems();
+  renderScene();
+});
 
 function updateHover(event) {
   const [sx, sy] = localPosition(event);
@@ -236,6 +253,7 @@ canvas.addEventListener('pointerleave', () => {
   hover = null;
   hoverMark = -1;
   $('tooltip').hidden = true;
+  markListItems();
   renderScene();
 });
 

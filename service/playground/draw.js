@@ -109,6 +109,8 @@ function drawLoops(ctx, view, state, answers, i) {
   }
   ctx.restore();
   for (const {loop, points} of curve.loopPaths) {
+    ctx.lineWidth = 1.5;
+    dot(ctx, view, loop.point, 3.5, '#ffffff', color);  // the double point B(t1) = B(t2)
     label(ctx, view, centroid(points), areaText(loop.area), color);
   }
   if (closed && typeof curve.loopArea.closed_area === 'number') {

@@ -52,7 +52,7 @@ export function renderTypes(container, state, answers) {
     const li = el('li', {'data-curve': c.name});
     li.append(el('strong', {style: `color:${kColors.curves[i]}`}, `${c.name}: `));
     if (c.points.length !== 4) {
-      li.append(el('span', {class: 'muted'}, 'a cubic (4 control points) has a type'));
+      li.append(el('span', {class: 'muted'}, 'types are for cubics (4 control points)'));
     } else if (!answer) {
       li.append(el('span', {class: 'muted'}, 'no answer (see the error above)'));
     } else {

@@ -311,7 +311,12 @@ test('second curve: intersections marked, kind on hover; loops shaded with their
   assert.equal(answers.curves[0].classify.type, 'loop');
   assert.deepEqual(await pageErrorsShown(), []);
 
-  await page.mouse.move(5, 5);  // no tooltip in the picture
+  await page.mouse.move(5, 5);
+  await tooltip.waitFor({state: 'hidden'});
+  assert.equal(await page.locator('#intersections li.active').count(), 0);
+  // The picture for the README: the polar of A at t0 = 0.37 beside B's intersections.
+  await page.locator('#editing input[value="0"]').check({force: true});
+  await settle();
   if (screenshotPath) await page.screenshot({path: screenshotPath, fullPage: true});
 });
 
