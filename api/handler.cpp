@@ -23,6 +23,7 @@ constexpr std::array kRoutes = {
     Route{"/evaluate", &evaluate_route},
     Route{"/polar", &polar_route},
     Route{"/classify", &classify_route},
+    Route{"/loop-area", &loop_area_route},
 };
 
 constexpr std::array<std::string_view, kRoutes.size()> kPaths = [] {

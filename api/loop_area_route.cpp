@@ -1,0 +1,138 @@
+// POST /loop-area (DESIGN §3): every loop of a planar curve of any degree with its area,
+// the closed curve's area, or the area enclosed by one parameter interval and its chord.
+//
+// Request:  {"points": [[x, y], ...], "interval": [t1, t2]}   (interval optional)
+//   points    2 to max_degree + 1 planar points, finite.
+//   interval  exactly two numbers with 0 <= t1 < t2 <= 1 (an empty or reversed interval is
+//             rejected: the area of [t2, t1] is minus that of [t1, t2]).
+// Answer without interval:
+//   {"degree", "loops": [{"t": [t1, t2], "point", "area" (>= 0), "signed_area", "kind"}],
+//    "area": Σ loop areas, "closed": P0 = Pn, "closed_area": number or null,
+//    "overlaps": [{"t_interval", "s_interval"}] (collinear curves that retrace themselves),
+//    "stats": {"method", "work", "max_depth", "newton_iterations"}}
+// Answer with interval (no loop search):
+//   {"degree", "interval": [t1, t2], "area": |A|, "signed_area": A, "chord": [B(t1), B(t2)],
+//    "closed", "closed_area"}
+// Errors: 422 validation problems with JSON Pointers; 422 work-cap problem when the
+// self-intersection search needs more than limits.max_work parameter boxes.
+
+#include <cmath>
+#include <string>
+
+#include "api/read_json.hpp"
+#include "api/routes.hpp"
+#include "api/write_json.hpp"
+#include "core/area.hpp"
+#include "core/evaluate.hpp"
+#include "core/loop_area.hpp"
+
+namespace bezier::api {
+
+namespace {
+
+const char* kind_name(core::SelfIntersectionKind kind) {
+  switch (kind) {
+    case core::SelfIntersectionKind::tangent:
+      return "tangent";
+    case core::SelfIntersectionKind::degenerate:
+      return "degenerate";
+    case core::SelfIntersectionKind::transversal:
+      break;
+  }
+  return "transversal";
+}
+
+const char* method_name(core::SelfIntersectionMethod method) {
+  switch (method) {
+    case core::SelfIntersectionMethod::closed_form_cubic:
+      return "closed-form-cubic";
+    case core::SelfIntersectionMethod::collinear:
+      return "collinear";
+    case core::SelfIntersectionMethod::subdivision:
+      break;
+  }
+  return "subdivision";
+}
+
+nlohmann::json closed_area_json(const core::Curve& curve) {
+  const auto area = core::closed_area(curve);
+  return area ? nlohmann::json(*area) : nlohmann::json(nullptr);
+}
+
+/// `interval`: exactly two numbers in [0, 1], strictly increasing.
+std::optional<std::pair<double, double>> read_interval(RequestReader& reader, const Json& value) {
+  const auto ts = reader.numbers(value, "/interval", 0.0, 1.0);
+  if (!ts) return std::nullopt;
+  if (ts->size() != 2) {
+    reader.fail("/interval", "expected exactly 2 numbers [t1, t2], got " + std::to_string(ts->size()));
+    return std::nullopt;
+  }
+  if (!((*ts)[0] < (*ts)[1])) {
+    reader.fail("/interval", "must be increasing: interval[0] < interval[1]");
+    return std::nullopt;
+  }
+  return std::pair{(*ts)[0], (*ts)[1]};
+}
+
+Reply interval_answer(const core::Curve& curve, double t1, double t2) {
+  const double signed_area = core::enclosed_area(curve, t1, t2);
+  return json_reply({{"degree", curve.degree()},
+                     {"interval", pair_json(t1, t2)},
+                     {"area", std::fabs(signed_area)},
+                     {"signed_area", signed_area},
+                     {"chord", nlohmann::json::array({point_json(core::evaluate(curve, t1)),
+                                                      point_json(core::evaluate(curve, t2))})},
+                     {"closed", core::is_closed(curve)},
+                     {"closed_area", closed_area_json(curve)}});
+}
+
+Reply loops_answer(const core::Curve& curve, const Limits& limits) {
+  core::SelfIntersectionOptions options;
+  options.max_work = limits.max_work;
+  const core::LoopAreaResult result = core::loop_area(curve, options);
+  if (result.status == core::SelfIntersectionStatus::work_cap_reached) {
+    return problem_reply(ProblemKind::work_cap,
+                         "the self-intersection search examined " + std::to_string(result.stats.work) +
+                             " parameter boxes, the per-request cap, without finishing (a curve that "
+                             "retraces itself without being a straight line needs unbounded work)");
+  }
+  nlohmann::json loops = nlohmann::json::array();
+  for (const core::Loop& loop : result.loops) {
+    loops.push_back({{"t", pair_json(loop.t1, loop.t2)},
+                     {"point", point_json(loop.point)},
+                     {"area", loop.area},
+                     {"signed_area", loop.signed_area},
+                     {"kind", kind_name(loop.kind)}});
+  }
+  nlohmann::json overlaps = nlohmann::json::array();
+  for (const core::SelfOverlap& o : result.overlaps) {
+    overlaps.push_back({{"t_interval", pair_json(o.t_lo, o.t_hi)}, {"s_interval", pair_json(o.s_lo, o.s_hi)}});
+  }
+  return json_reply({{"degree", curve.degree()},
+                     {"loops", std::move(loops)},
+                     {"area", result.area},
+                     {"closed", result.closed},
+                     {"closed_area", result.closed_area ? nlohmann::json(*result.closed_area) : nlohmann::json(nullptr)},
+                     {"overlaps", std::move(overlaps)},
+                     {"stats",
+                      {{"method", method_name(result.stats.method)},
+                       {"work", result.stats.work},
+                       {"max_depth", result.stats.max_depth},
+                       {"newton_iterations", result.stats.newton_iterations}}}});
+}
+
+}  // namespace
+
+Reply loop_area_route(const nlohmann::json& request, const Limits& limits) {
+  RequestReader reader(limits);
+  reader.reject_unknown_fields(request, {"points", "interval"}, "");
+  std::optional<core::Curve> curve;
+  if (const auto* points = reader.required(request, "points", "")) curve = reader.curve2(*points, "/points");
+  std::optional<std::pair<double, double>> interval;
+  if (const auto* value = RequestReader::optional(request, "interval")) interval = read_interval(reader, *value);
+  if (!reader.ok()) return validation_reply(reader.take_errors());
+  if (interval) return interval_answer(*curve, interval->first, interval->second);
+  return loops_answer(*curve, limits);
+}
+
+}  // namespace bezier::api
