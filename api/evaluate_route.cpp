@@ -22,16 +22,13 @@ struct EvaluateRequest {
 template <class P>
 nlohmann::json evaluate_answer(const core::BasicCurve<P>& curve, const EvaluateRequest& request) {
   nlohmann::json results = nlohmann::json::array();
-  // Hodographs are computed once per request, not once per t.
-  std::vector<core::BasicCurve<P>> hodographs;
-  for (int k = 1; k <= request.derivatives; ++k) {
-    hodographs.push_back(core::derivative(k == 1 ? curve : hodographs.back()));
-  }
   for (const double t : request.ts) {
     nlohmann::json result = {{"t", t}, {"point", point_json(core::evaluate(curve, t))}};
     if (request.derivatives > 0) {
       nlohmann::json derivs = nlohmann::json::array();
-      for (const auto& h : hodographs) derivs.push_back(point_json(core::evaluate(h, t)));
+      // derivatives_at keeps the hodographs unrounded: within one rounding of the exact
+      // value, where evaluating rounded hodograph points is not.
+      for (const auto& d : core::derivatives_at(curve, t, request.derivatives)) derivs.push_back(point_json(d));
       result["derivatives"] = std::move(derivs);
     }
     results.push_back(std::move(result));

@@ -2,6 +2,8 @@
 #include <nlohmann/json.hpp>
 
 #include "api/handler.hpp"
+#include "core/derivative.hpp"
+#include "core/evaluate.hpp"
 
 namespace bezier::api {
 namespace {
@@ -69,6 +71,35 @@ TEST(EvaluateRoute, AnyFiniteTExtrapolates) {
   const json r = call(R"({"points":[[0,0],[1,2]],"t":[-3,5]})", 200);
   EXPECT_EQ(r["results"][0]["point"], json::parse("[-3.0, -6.0]"));
   EXPECT_EQ(r["results"][1]["point"], json::parse("[5.0, 10.0]"));
+}
+
+TEST(EvaluateRoute, AnswersAreTheKernelsBitForBit) {
+  // Degree 20, control points alternating around ±1000 (the issue-2 accuracy case): the
+  // API must return exactly the compensated kernel's values (whose accuracy
+  // tests/core/derivative_test.cpp and evaluate_test.cpp prove), with no extra rounding
+  // from hodographs computed separately or from number formatting.
+  std::vector<core::Point2> pts;
+  json points = json::array();
+  for (int i = 0; i <= 20; ++i) {
+    const core::Point2 p{(i % 2 ? -1000.0 : 1000.0) + i / 7.0, (i % 2 ? 1000.0 : -1000.0) - i / 3.0};
+    pts.push_back(p);
+    points.push_back({p.x, p.y});
+  }
+  const core::Curve curve(pts);
+  const json ts = {0.1, 0.3, 0.5, 0.7, 0.9};
+  const json r = call(json{{"points", points}, {"t", ts}, {"derivatives", 2}}.dump(), 200);
+  for (std::size_t i = 0; i < ts.size(); ++i) {
+    const double t = ts[i];
+    const core::Point2 p = core::evaluate(curve, t);
+    const auto d = core::derivatives_at(curve, t, 2);
+    const json& got = r["results"][i];
+    EXPECT_EQ(got["point"][0].get<double>(), p.x);
+    EXPECT_EQ(got["point"][1].get<double>(), p.y);
+    for (std::size_t k = 0; k < 2; ++k) {
+      EXPECT_EQ(got["derivatives"][k][0].get<double>(), d[k].x) << "t " << t << " order " << k + 1;
+      EXPECT_EQ(got["derivatives"][k][1].get<double>(), d[k].y) << "t " << t << " order " << k + 1;
+    }
+  }
 }
 
 TEST(EvaluateRoute, MissingFields) {
