@@ -14,7 +14,9 @@ namespace bezier::core {
 /// with complex parameters), so this closed form is the cubic fast path of
 /// self-intersection: no subdivision, no iteration, and exact decisions on the boundaries.
 struct CubicDoublePoint {
-  double t1 = 0.0;  ///< t1 < t2; on the whole real line (outside [0,1] when the loop is)
+  /// t1 < t2 exactly; the rounded values keep t1 <= t2 (equal only for a loop narrower
+  /// than the spacing of doubles). On the whole real line (outside [0,1] when the loop is).
+  double t1 = 0.0;
   double t2 = 0.0;
   Point2 point;     ///< B(t1) = B(t2)
   /// Decided exactly: 0 <= t1 < t2 <= 1, i.e. the loop lies on the curve segment. When it
