@@ -1,0 +1,126 @@
+#pragma once
+
+#include <cassert>
+#include <cmath>
+#include <optional>
+#include <span>
+
+#include "core/intersect/coeffs.hpp"
+#include "core/intersect/double_double.hpp"
+#include "core/intersect/result.hpp"
+
+namespace bezier::core::bernstein {
+
+/// Unit roundoff of double arithmetic.
+inline constexpr double kU = 0x1p-53;
+
+/// (1 - t) a + t b in doubles, the de Casteljau step. For t in [0,1] its rounding error is
+/// at most 3.01 u max(|a|, |b|): 1 - t, the two products and the sum each round once.
+[[nodiscard]] inline double lerp(double a, double b, double t) noexcept { return (1.0 - t) * a + t * b; }
+[[nodiscard]] inline dd::Real lerp(dd::Real a, dd::Real b, double t) noexcept { return dd::lerp(a, b, t); }
+
+/// The coefficients of the same polynomial restricted to [a, b] and reparametrised to
+/// [0, 1]: coefficient i is the blossom value b(a^(n-i), b^i) (Ramshaw 1987), computed from
+/// the triangle of de Casteljau rounds with a (for i <= n/2, finished with i rounds of b)
+/// and with b (for i > n/2, finished with n - i rounds of a). The parameters enter exactly,
+/// so the piece is exactly the polynomial on [a, b] up to the rounding of the arithmetic:
+/// each coefficient goes through n steps, so for a, b in [0, 1] its error is at most
+/// 3.01 n u max|c| in doubles, 10 n u^2 max|c| in double-doubles.
+template <class T>
+[[nodiscard]] SmallArray<T> portion(std::span<const T> c, double a, double b) {
+  const std::size_t n = c.size() - 1;
+  SmallArray<T> out(n + 1);
+  SmallArray<T> row(c);
+  SmallArray<T> work(n + 1);
+  // Pass 1: rounds with a. After j rounds, row[0..n-j] is the level-j polygon; the first
+  // half of the results are finished from levels n - i with i rounds of b.
+  for (std::size_t j = 0;; ++j) {
+    const std::size_t i = n - j;  // level j serves result i = n - j when i <= n/2
+    if (2 * i <= n) {
+      for (std::size_t k = 0; k <= i; ++k) work[k] = row[k];
+      for (std::size_t level = i; level > 0; --level) {
+        for (std::size_t k = 0; k < level; ++k) work[k] = bernstein::lerp(work[k], work[k + 1], b);
+      }
+      out[i] = work[0];
+    }
+    if (j == n) break;
+    for (std::size_t k = 0; k + j < n; ++k) row[k] = bernstein::lerp(row[k], row[k + 1], a);
+  }
+  // Pass 2: rounds with b; result i > n/2 is finished from level i with n - i rounds of a.
+  for (std::size_t k = 0; k <= n; ++k) row[k] = c[k];
+  for (std::size_t j = 1; j <= n; ++j) {
+    for (std::size_t k = 0; k + j <= n; ++k) row[k] = bernstein::lerp(row[k], row[k + 1], b);
+    if (2 * j > n) {
+      const std::size_t m = n - j;  // rounds of a still to apply, polygon of m + 1 values
+      for (std::size_t k = 0; k <= m; ++k) work[k] = row[k];
+      for (std::size_t level = m; level > 0; --level) {
+        for (std::size_t k = 0; k < level; ++k) work[k] = bernstein::lerp(work[k], work[k + 1], a);
+      }
+      out[j] = work[0];
+    }
+  }
+  return out;
+}
+
+/// p(t) by de Casteljau.
+[[nodiscard]] inline double evaluate(std::span<const double> c, double t) {
+  SmallArray<double> row(c);
+  for (std::size_t level = c.size() - 1; level > 0; --level) {
+    for (std::size_t k = 0; k < level; ++k) row[k] = bernstein::lerp(row[k], row[k + 1], t);
+  }
+  return row[0];
+}
+
+/// Largest |c_i|.
+[[nodiscard]] inline double max_abs(std::span<const double> c) noexcept {
+  double m = 0.0;
+  for (const double v : c) m = std::fmax(m, std::fabs(v));
+  return m;
+}
+
+/// A conservative hull of {t in [0,1] : the control polygon's convex hull meets the band
+/// lo <= y <= hi}, for the points (i/n, c_i): the hull's extreme points on the band are on
+/// segments between two control points (every such segment lies in the hull, and the hull's
+/// edges are among them), so the minimum and maximum over all O(n^2) segments and all
+/// points inside the band are exact. The crossing abscissae are computed with a few
+/// roundings; the result is widened by 8 u on each side and clamped to [0, 1]. Empty
+/// (nullopt) exactly when every c_i < lo or every c_i > hi. This is the clip of
+/// Sederberg & Nishita (1990), without building the hull.
+[[nodiscard]] inline std::optional<ParamInterval> hull_clip(std::span<const double> c, double lo,
+                                                           double hi) {
+  const std::size_t n = c.size() - 1;
+  bool any_below = false, any_above = false, any_inside = false;
+  for (const double v : c) {
+    if (v < lo) any_below = true;
+    else if (v > hi) any_above = true;
+    else any_inside = true;
+  }
+  if (!any_inside && !(any_below && any_above)) return std::nullopt;
+  if (!any_below && !any_above) return ParamInterval{0.0, 1.0};
+  if (n == 0) return ParamInterval{0.0, 1.0};
+  const double inv_n = 1.0 / static_cast<double>(n);
+  double t_min = 2.0, t_max = -1.0;
+  auto consider = [&](double t) {
+    t_min = std::fmin(t_min, t);
+    t_max = std::fmax(t_max, t);
+  };
+  for (std::size_t i = 0; i <= n; ++i) {
+    if (lo <= c[i] && c[i] <= hi) consider(static_cast<double>(i) * inv_n);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j <= n; ++j) {
+      const double ci = c[i], cj = c[j];
+      const double xi = static_cast<double>(i) * inv_n, dx = static_cast<double>(j - i) * inv_n;
+      // Crossing of the line y = level by the segment, when the ends are on both sides.
+      for (const double level : {lo, hi}) {
+        if ((ci < level && cj > level) || (ci > level && cj < level)) {
+          consider(xi + dx * ((level - ci) / (cj - ci)));
+        }
+      }
+    }
+  }
+  const double pad = 8 * kU;
+  return ParamInterval{std::fmax(0.0, t_min - pad), std::fmin(1.0, t_max + pad)};
+}
+
+}  // namespace bezier::core::bernstein

@@ -1,0 +1,46 @@
+#include "core/intersect/clip.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/intersect/bernstein1d.hpp"
+
+namespace bezier::core {
+
+namespace {
+
+struct Extent {
+  double x_lo, x_hi, y_lo, y_hi;
+};
+
+Extent extent(const Piece& p) noexcept {
+  const auto [xl, xh] = std::minmax_element(p.x.begin(), p.x.end());
+  const auto [yl, yh] = std::minmax_element(p.y.begin(), p.y.end());
+  return {*xl - p.error, *xh + p.error, *yl - p.error, *yh + p.error};
+}
+
+}  // namespace
+
+bool is_noisy(const FatLine& line, const DistanceCoefficients& d) noexcept {
+  const auto [lo, hi] = std::minmax_element(d.a.begin(), d.a.end());
+  const double noise = line.margin + d.error;
+  const double signal = (line.d_max - line.d_min - 2 * line.margin) + (*hi - *lo);
+  return 4 * noise > signal;
+}
+
+bool bounding_boxes_disjoint(const Piece& f, const Piece& g) noexcept {
+  const Extent a = extent(f), b = extent(g);
+  return a.x_hi < b.x_lo || b.x_hi < a.x_lo || a.y_hi < b.y_lo || b.y_hi < a.y_lo;
+}
+
+ParamInterval map_to_domain(ParamInterval domain, ParamInterval local) noexcept {
+  constexpr double kU = bernstein::kU;
+  const double w = domain.hi - domain.lo;
+  ParamInterval out = domain;
+  if (local.lo > 0.0) out.lo = std::fmax(domain.lo, domain.lo + w * local.lo - 4 * kU);
+  if (local.hi < 1.0) out.hi = std::fmin(domain.hi, domain.lo + w * local.hi + 4 * kU);
+  if (out.hi < out.lo) out.hi = out.lo;
+  return out;
+}
+
+}  // namespace bezier::core

@@ -1,0 +1,63 @@
+#pragma once
+
+#include <algorithm>
+#include <cassert>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace bezier::core {
+
+/// A short sequence of values (Bernstein coefficients of one coordinate of a piece), stored
+/// inline up to kInline entries (degree 23) and on the heap beyond, so the clipping loop
+/// allocates nothing for the degrees the API accepts by default. A value type: copies are
+/// deep.
+template <class T>
+class SmallArray {
+ public:
+  static constexpr std::size_t kInline = 24;
+
+  SmallArray() = default;
+  explicit SmallArray(std::size_t n, T value = T{}) { resize(n, value); }
+  explicit SmallArray(std::span<const T> values) {
+    resize(values.size());
+    std::copy(values.begin(), values.end(), data());
+  }
+
+  void resize(std::size_t n, T value = T{}) {
+    if (n > kInline) heap_.assign(n, value);
+    else std::fill(inline_, inline_ + n, value);
+    size_ = n;
+  }
+
+  [[nodiscard]] std::size_t size() const noexcept { return size_; }
+  [[nodiscard]] bool empty() const noexcept { return size_ == 0; }
+  [[nodiscard]] T* data() noexcept { return size_ > kInline ? heap_.data() : inline_; }
+  [[nodiscard]] const T* data() const noexcept { return size_ > kInline ? heap_.data() : inline_; }
+  [[nodiscard]] T& operator[](std::size_t i) noexcept {
+    assert(i < size_);
+    return data()[i];
+  }
+  [[nodiscard]] const T& operator[](std::size_t i) const noexcept {
+    assert(i < size_);
+    return data()[i];
+  }
+  [[nodiscard]] T* begin() noexcept { return data(); }
+  [[nodiscard]] T* end() noexcept { return data() + size_; }
+  [[nodiscard]] const T* begin() const noexcept { return data(); }
+  [[nodiscard]] const T* end() const noexcept { return data() + size_; }
+  [[nodiscard]] T& back() noexcept { return data()[size_ - 1]; }
+  [[nodiscard]] const T& back() const noexcept { return data()[size_ - 1]; }
+  [[nodiscard]] operator std::span<const T>() const noexcept { return {data(), size_}; }  // NOLINT
+  [[nodiscard]] std::span<T> span() noexcept { return {data(), size_}; }
+
+ private:
+  T inline_[kInline] = {};
+  std::vector<T> heap_;
+  std::size_t size_ = 0;
+};
+
+/// Bernstein coefficients of a scalar polynomial.
+using Coeffs = SmallArray<double>;
+
+}  // namespace bezier::core

@@ -1,0 +1,151 @@
+#include "core/intersect/intersect.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/intersect/collinear.hpp"
+#include "core/intersect/fat_curve.hpp"
+#include "core/intersect/kind.hpp"
+#include "core/intersect/merge.hpp"
+#include "core/intersect/overlap.hpp"
+#include "core/intersect/refine.hpp"
+#include "core/intersect/search.hpp"
+#include "core/intersect/working_curve.hpp"
+
+namespace bezier::core {
+
+namespace {
+
+/// n max |P_{i+1} - P_i|: the largest |f'| can be on [0, 1] (the hodograph's hull).
+double hodograph_scale(const WorkingCurve& c) noexcept {
+  double m = 0.0;
+  for (std::size_t i = 0; i + 1 < c.x.size(); ++i) {
+    m = std::fmax(m, std::hypot(c.x[i + 1] - c.x[i], c.y[i + 1] - c.y[i]));
+  }
+  return c.degree * m;
+}
+
+Point2 curve_point(const WorkingCurve& c, double t) {
+  const PointDD p = evaluate_dd(c, t);
+  return {dd::to_double(p.x), dd::to_double(p.y)};
+}
+
+/// The answer for one (t, s), with its kind judged from the derivatives there.
+Intersection make_intersection(const WorkingCurve& f, const WorkingCurve& g, WorkingFrame frame,
+                               double t, double s, ParamInterval ti, ParamInterval si) {
+  Intersection x;
+  x.t = t;
+  x.s = s;
+  x.t_interval = ti;
+  x.s_interval = si;
+  const Point2 pf = curve_point(f, t), pg = curve_point(g, s);
+  x.point = from_working({pf.x / 2 + pg.x / 2, pf.y / 2 + pg.y / 2}, frame);
+  x.kind = classify_intersection(evaluate_with_tangent(f, t).tangent, evaluate_with_tangent(g, s).tangent,
+                                 hodograph_scale(f), hodograph_scale(g));
+  return x;
+}
+
+void sort_result(IntersectionResult& r) {
+  std::sort(r.intersections.begin(), r.intersections.end(), [](const Intersection& a, const Intersection& b) {
+    return a.t != b.t ? a.t < b.t : a.s < b.s;
+  });
+  std::sort(r.overlaps.begin(), r.overlaps.end(), [](const Overlap& a, const Overlap& b) {
+    return a.t_interval.lo != b.t_interval.lo ? a.t_interval.lo < b.t_interval.lo
+                                              : a.s_interval.lo < b.s_interval.lo;
+  });
+}
+
+/// End points of f and g equal bit for bit: exact roots, unless they lie on an overlap.
+std::vector<ExactRoot> exact_end_roots(const Curve& f, const Curve& g, std::span<const OverlapFinding> overlaps) {
+  std::vector<ExactRoot> roots;
+  for (const double t : {0.0, 1.0}) {
+    for (const double s : {0.0, 1.0}) {
+      const Point2 a = t == 0.0 ? f.front() : f.back();
+      const Point2 b = s == 0.0 ? g.front() : g.back();
+      if (!(a == b)) continue;
+      bool on = false;
+      for (const OverlapFinding& o : overlaps) on = on || on_overlap(o, t, s);
+      if (!on) roots.push_back({t, s});
+    }
+  }
+  return roots;
+}
+
+}  // namespace
+
+IntersectionResult intersect(const Curve& f, const Curve& g, const IntersectOptions& options) {
+  IntersectionResult result;
+  result.stats.method = options.method;
+  if (!(options.tolerance >= kMinTolerance)) {
+    result.status = IntersectStatus::tolerance_too_small;
+    return result;
+  }
+  const WorkingFrame frame = working_frame(f, g);
+  const WorkingCurve wf = to_working(f, frame), wg = to_working(g, frame);
+
+  // Two single points: the same point (every t and s) or nothing.
+  if (wf.is_point && wg.is_point) {
+    if (f.front() == g.front()) {
+      Intersection x;
+      x.t_interval = x.s_interval = {0.0, 1.0};
+      x.point = f.front();
+      x.kind = IntersectionKind::degenerate;
+      result.intersections.push_back(x);
+    }
+    return result;
+  }
+  // Two curves on one line: a one-dimensional problem.
+  if (!wf.is_point && !wg.is_point) {
+    if (const auto line = collinear_intersections(wf, wg)) {
+      result.overlaps = line->overlaps;
+      for (const CollinearContact& c : line->touches) {
+        result.intersections.push_back(make_intersection(wf, wg, frame, c.t_estimate, c.s_estimate, c.t, c.s));
+      }
+      sort_result(result);
+      return result;
+    }
+  }
+  const std::vector<OverlapFinding> overlaps = find_overlaps(wf, wg);
+  for (const OverlapFinding& o : overlaps) result.overlaps.push_back(o.overlap);
+  const std::vector<ExactRoot> exact =
+      (wf.is_point || wg.is_point) ? std::vector<ExactRoot>{} : exact_end_roots(f, g, overlaps);
+
+  SearchInput in;
+  in.f = &wf;
+  in.g = &wg;
+  in.method = options.method;
+  in.width = search_width(options.tolerance);
+  in.max_work = options.max_work;
+  in.overlaps = overlaps;
+  in.t_free = wf.is_point;
+  in.s_free = wg.is_point;
+  const FatCurveOperator op_f2 = fat_curve_operator(wf.degree, 2), op_g2 = fat_curve_operator(wg.degree, 2);
+  in.op_f2 = &op_f2;
+  in.op_g2 = &op_g2;
+  FatCurveOperator op_f, op_g;
+  if (options.method != IntersectMethod::subdivision) {
+    const int k = std::clamp(options.fat_curve_degree, 1, 3);
+    op_f = fat_curve_operator(wf.degree, options.method == IntersectMethod::hybrid ? k : wf.degree);
+    op_g = fat_curve_operator(wg.degree, options.method == IntersectMethod::hybrid ? k : wg.degree);
+    in.op_f = &op_f;
+    in.op_g = &op_g;
+  }
+  SearchOutput found = search(in);
+  result.stats = found.stats;
+  if (found.capped) result.status = IntersectStatus::work_cap_reached;
+
+  const KindTolerances kind_tol;
+  for (const Contact& c : merge_candidates(found.candidates, exact, in.width)) {
+    const Refinement r = refine_contact(wf, wg, c, in.t_free, in.s_free, kind_tol.tangent_sine);
+    result.stats.newton_iterations += r.iterations;
+    Intersection x = make_intersection(wf, wg, frame, r.t, r.s, c.t, c.s);
+    if (in.t_free || in.s_free) x.kind = IntersectionKind::degenerate;
+    x.resolved = c.resolved && (in.t_free || c.t.width() < options.tolerance) &&
+                 (in.s_free || c.s.width() < options.tolerance);
+    result.intersections.push_back(x);
+  }
+  sort_result(result);
+  return result;
+}
+
+}  // namespace bezier::core

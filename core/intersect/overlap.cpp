@@ -1,0 +1,219 @@
+#include "core/intersect/overlap.hpp"
+
+#include <cmath>
+
+#include "core/binomial.hpp"
+#include "core/degree.hpp"
+#include "core/intersect/bernstein1d.hpp"
+
+namespace bezier::core {
+
+namespace {
+
+constexpr double kU = bernstein::kU;
+/// Overlaps shorter than this (in s) are left to the search.
+constexpr double kShortestOverlap = 0x1p-30;
+
+/// Monomial coefficients a_k = C(n,k) Σ_{i<=k} (-1)^(k-i) C(k,i) P_i of one coordinate.
+std::vector<double> monomial(const std::vector<double>& c) {
+  const int n = static_cast<int>(c.size()) - 1;
+  std::vector<double> a(c.size(), 0.0);
+  for (int k = 0; k <= n; ++k) {
+    double sum = 0.0;
+    for (int i = 0; i <= k; ++i) {
+      const double term = binomial(k, i) * c[static_cast<std::size_t>(i)];
+      sum += ((k - i) % 2 == 0) ? term : -term;
+    }
+    a[static_cast<std::size_t>(k)] = binomial(n, k) * sum;
+  }
+  return a;
+}
+
+/// The largest k whose monomial coefficient is above the rounding of the conversion
+/// (C(n,k) 2^k u magnitude, with a safety factor of 64): a degree-elevated curve, rounded
+/// to doubles, has nothing else above its true degree.
+int true_degree(const std::vector<double>& ax, const std::vector<double>& ay, double magnitude) {
+  const int n = static_cast<int>(ax.size()) - 1;
+  for (int k = n; k >= 1; --k) {
+    const double tol = 64 * binomial(n, k) * std::ldexp(1.0, k) * kU * magnitude;
+    const double v = std::fmax(std::fabs(ax[static_cast<std::size_t>(k)]), std::fabs(ay[static_cast<std::size_t>(k)]));
+    if (v > tol) return k;
+  }
+  return 0;
+}
+
+struct Residual {
+  double x, y;
+};
+
+Residual residual(const WorkingCurve& f, double t, PointDD p) {
+  const PointDD q = evaluate_dd(f, t);
+  return {dd::to_double(dd::sub(q.x, p.x)), dd::to_double(dd::sub(q.y, p.y))};
+}
+
+std::vector<double> elevated(const std::vector<double>& c, int to) {
+  if (static_cast<int>(c.size()) - 1 == to) return c;
+  return elevate_degree(std::span<const double>(c), to);
+}
+
+std::vector<double> piece(const std::vector<double>& c, double a, double b) {
+  const Coeffs p = bernstein::portion<double>(c, a, b);
+  return {p.begin(), p.end()};
+}
+
+}  // namespace
+
+double overlap_tolerance(int degree) noexcept { return 0x1p-42 * std::fmax(1, degree); }
+
+double locate_on_curve(const WorkingCurve& f, PointDD p, double start) {
+  double t = start;
+  for (int i = 0; i < 30; ++i) {
+    const Residual r = residual(f, t, p);
+    const Point2 d = evaluate_with_tangent(f, t).tangent;
+    const double dd2 = d.x * d.x + d.y * d.y;
+    if (!(dd2 > 0)) break;
+    const double step = (r.x * d.x + r.y * d.y) / dd2;
+    if (!std::isfinite(step)) break;
+    t -= step;
+    if (std::fabs(step) <= 0x1p-60) break;
+  }
+  return std::fmin(1.0, std::fmax(0.0, t));
+}
+
+std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCurve& g) {
+  std::vector<OverlapFinding> out;
+  if (f.is_point || g.is_point) return out;
+  const std::vector<double> fx = monomial(f.x), fy = monomial(f.y);
+  const std::vector<double> gx = monomial(g.x), gy = monomial(g.y);
+  const int d = true_degree(fx, fy, f.magnitude);
+  if (d < 1 || d != true_degree(gx, gy, g.magnitude)) return out;
+  const auto at = [](const std::vector<double>& v, int k) { return v[static_cast<std::size_t>(k)]; };
+  // The coordinate with the larger top coefficient of f.
+  const bool use_x = std::fabs(at(fx, d)) >= std::fabs(at(fy, d));
+  const std::vector<double>& a = use_x ? fx : fy;
+  const std::vector<double>& b = use_x ? gx : gy;
+  const double r = at(b, d) / at(a, d);
+  std::vector<double> betas;
+  if (d % 2 == 1) {
+    betas.push_back(std::copysign(std::pow(std::fabs(r), 1.0 / d), r));
+  } else if (r > 0) {
+    betas.push_back(std::pow(r, 1.0 / d));
+    betas.push_back(-betas.back());
+  }
+  for (const double beta : betas) {
+    if (!(std::isfinite(beta) && beta != 0.0)) continue;
+    const double alpha = (at(b, d - 1) / std::pow(beta, d - 1) - at(a, d - 1)) / (d * at(a, d));
+    if (!std::isfinite(alpha)) continue;
+    // s with alpha + beta s in [0, 1], within [0, 1].
+    double raw_lo = -alpha / beta, raw_hi = (1 - alpha) / beta;
+    if (raw_lo > raw_hi) std::swap(raw_lo, raw_hi);
+    const double s_a = std::fmax(0.0, raw_lo), s_b = std::fmin(1.0, raw_hi);
+    if (!(s_b - s_a > kShortestOverlap)) continue;
+    // Each end is an end of g (s exact) or an end of f (t exact); Newton pins the other.
+    double ends_t[2], ends_s[2];
+    const double s_end[2] = {s_a, s_b};
+    const bool s_exact[2] = {raw_lo <= 0.0, raw_hi >= 1.0};
+    for (int e = 0; e < 2; ++e) {
+      const double phi = alpha + beta * s_end[e];
+      if (s_exact[e]) {
+        ends_s[e] = s_end[e];
+        ends_t[e] = locate_on_curve(f, evaluate_dd(g, s_end[e]), std::fmin(1.0, std::fmax(0.0, phi)));
+      } else {
+        ends_t[e] = (e == 0) == (beta > 0) ? 0.0 : 1.0;
+        ends_s[e] = locate_on_curve(g, evaluate_dd(f, ends_t[e]), s_end[e]);
+      }
+    }
+    if (!(ends_s[1] - ends_s[0] > kShortestOverlap)) continue;
+    // Verify: the two pieces, written with the same degree, have the same control points.
+    const int degree = std::max(f.degree, g.degree);
+    const std::vector<double> px = elevated(piece(f.x, ends_t[0], ends_t[1]), degree);
+    const std::vector<double> py = elevated(piece(f.y, ends_t[0], ends_t[1]), degree);
+    const std::vector<double> qx = elevated(piece(g.x, ends_s[0], ends_s[1]), degree);
+    const std::vector<double> qy = elevated(piece(g.y, ends_s[0], ends_s[1]), degree);
+    double gap = 0.0;
+    for (std::size_t i = 0; i < px.size(); ++i) {
+      gap = std::fmax(gap, std::fmax(std::fabs(px[i] - qx[i]), std::fabs(py[i] - qy[i])));
+    }
+    if (!(gap <= overlap_tolerance(degree))) continue;
+    OverlapFinding found;
+    found.map.beta = (ends_t[1] - ends_t[0]) / (ends_s[1] - ends_s[0]);
+    found.map.alpha = ends_t[0] - found.map.beta * ends_s[0];
+    found.overlap.t_interval = {std::fmin(ends_t[0], ends_t[1]), std::fmax(ends_t[0], ends_t[1])};
+    found.overlap.s_interval = {ends_s[0], ends_s[1]};
+    found.overlap.reversed = found.map.beta < 0;
+    out.push_back(found);
+  }
+  return out;
+}
+
+bool covered_by_overlap(const WorkingCurve& f, const CoincidenceMap& map, ParamInterval t,
+                        ParamInterval s) {
+  constexpr double kSlack = 0x1p-40;
+  const double p0 = map.alpha + map.beta * s.lo, p1 = map.alpha + map.beta * s.hi;
+  const double lo = std::fmin(p0, p1), hi = std::fmax(p0, p1);
+  if (hi < t.lo - kSlack || lo > t.hi + kSlack) return false;
+  const int n = f.degree;
+  if (n < 1) return false;
+  const double u_lo = std::fmin(t.lo, lo) - kSlack, u_hi = std::fmax(t.hi, hi) + kSlack;
+  const Coeffs qx = bernstein::portion<double>(f.x, u_lo, u_hi);
+  const Coeffs qy = bernstein::portion<double>(f.y, u_lo, u_hi);
+  Coeffs hx(static_cast<std::size_t>(n)), hy(static_cast<std::size_t>(n));
+  double h_max = 0.0;
+  for (std::size_t i = 0; i < hx.size(); ++i) {
+    hx[i] = qx[i + 1] - qx[i];
+    hy[i] = qy[i + 1] - qy[i];
+    h_max = std::fmax(h_max, std::fmax(std::fabs(hx[i]), std::fabs(hy[i])));
+  }
+  if (!(h_max > 0)) return false;
+  // Extrapolated pieces (U reaching outside [0, 1]) are larger; bound their rounding by the
+  // largest control point.
+  const double q_max = std::fmax(bernstein::max_abs(qx), bernstein::max_abs(qy));
+  const double err = 8 * (n + 1) * kU * std::fmax(q_max, f.magnitude) + 0x1p-40 * h_max;
+  const std::size_t last = hx.size() - 1;
+  const double n0 = std::hypot(hx[0], hy[0]), n1 = std::hypot(hx[last], hy[last]);
+  const Point2 candidates[] = {
+      {qx[hx.size()] - qx[0], qy[hx.size()] - qy[0]},
+      {hx[0], hy[0]},
+      {hx[last], hy[last]},
+      {n0 > 0 && n1 > 0 ? hx[0] / n0 + hx[last] / n1 : 0.0, n0 > 0 && n1 > 0 ? hy[0] / n0 + hy[last] / n1 : 0.0},
+  };
+  for (const Point2 d : candidates) {
+    const double d1 = std::fabs(d.x) + std::fabs(d.y);
+    if (!(d1 > 0)) continue;
+    bool all = true;
+    for (std::size_t i = 0; i < hx.size() && all; ++i) all = d.x * hx[i] + d.y * hy[i] > d1 * err;
+    if (all) return true;
+  }
+  return false;
+}
+
+bool coincide_at_precision(const WorkingCurve& f, const WorkingCurve& g, ParamInterval t,
+                           ParamInterval s, Point2 center) {
+  // The local scale: the piece of f in the box's frame, and its rounding.
+  const Piece fp = compensated_piece(f, t.lo, t.hi, center);
+  double size = 0.0;
+  for (std::size_t i = 0; i < fp.x.size(); ++i) size = std::fmax(size, std::fmax(std::fabs(fp.x[i]), std::fabs(fp.y[i])));
+  const double floor = 16.0 * std::max(f.degree, g.degree) * (kU * size + fp.error);
+  const Point2 fchord = {fp.x.back() - fp.x[0], fp.y.back() - fp.y[0]};
+  const Point2 gchord = evaluate_with_tangent(g, s.hi).point - evaluate_with_tangent(g, s.lo).point;
+  const bool forward = dot(fchord, gchord) >= 0;
+  constexpr int kSamples = 5;
+  for (int k = 0; k < kSamples; ++k) {
+    const double tau = static_cast<double>(k) / (kSamples - 1);
+    const double tk = t.lo + (t.hi - t.lo) * tau;
+    const double guess = forward ? s.lo + (s.hi - s.lo) * tau : s.hi - (s.hi - s.lo) * tau;
+    const PointDD p = evaluate_dd(f, tk);
+    const double sk = locate_on_curve(g, p, guess);
+    const Residual r = residual(g, sk, p);
+    if (!(std::fmax(std::fabs(r.x), std::fabs(r.y)) <= floor)) return false;
+  }
+  return true;
+}
+
+bool on_overlap(const OverlapFinding& o, double t, double s) noexcept {
+  constexpr double kSlack = 0x1p-30;
+  if (s < o.overlap.s_interval.lo - kSlack || s > o.overlap.s_interval.hi + kSlack) return false;
+  return std::fabs(t - (o.map.alpha + o.map.beta * s)) <= kSlack;
+}
+
+}  // namespace bezier::core

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <vector>
+
+#include "core/intersect/result.hpp"
+#include "core/intersect/working_curve.hpp"
+
+namespace bezier::core {
+
+/// A linear reparametrisation under which two curves are the same polynomial:
+/// g(s) = f(alpha + beta s) for every real s.
+struct CoincidenceMap {
+  double alpha = 0.0;
+  double beta = 1.0;
+};
+
+/// One overlap and the map that produced it.
+struct OverlapFinding {
+  Overlap overlap;
+  CoincidenceMap map;
+};
+
+/// The overlap tolerance: two pieces coincide when their control points (written with the
+/// same degree) agree to within 2^-42 n of the curves' working scale (about 256 n ulps of
+/// the largest coordinate): above the rounding of a portion and of the end points' Newton
+/// refinement, far below any visible gap.
+[[nodiscard]] double overlap_tolerance(int degree) noexcept;
+
+/// Overlaps of two curves that are not both collinear, by linear reparametrisation: if f
+/// and g share a piece, both proper, then g(s) = f(alpha + beta s) (a polynomial curve's
+/// proper parametrisations differ by affine maps). This covers identical, reversed
+/// (beta < 0), sub-piece, extension and degree-elevated copies. From the monomial
+/// coefficients a_k of f and b_k of g, of true degree d (degree-elevated copies have
+/// vanishing top coefficients): beta^d = b_d / a_d and
+/// b_{d-1} = beta^(d-1) (a_{d-1} + d alpha a_d). The candidate's overlap in [0,1]^2 is then
+/// pinned down by Newton's method at its ends (each end is an end of f or of g) and
+/// verified: f on [t_a, t_b] and g on [s_a, s_b] must have the same control points to
+/// within overlap_tolerance. Overlaps shorter than 2^-30 in s are left to the search, which
+/// reports them as contacts. Improper parametrisations (g(s) = f(q(s)) with q of degree
+/// >= 2) are not detected here; the search then runs into its work cap.
+[[nodiscard]] std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCurve& g);
+
+/// True when every intersection inside the box t x s lies on the overlap's diagonal
+/// t = alpha + beta s, so the box holds nothing but overlap points and can be dropped: the
+/// box meets the diagonal, and f is injective on the hull U of t and alpha + beta s (its
+/// hodograph's control vectors on U lie in an open half-plane, so f is strictly monotone
+/// along a direction). Then f(t) = g(s) = f(alpha + beta s) forces t = alpha + beta s.
+/// Near a cusp of f the test fails and the box is kept (the search subdivides it further).
+[[nodiscard]] bool covered_by_overlap(const WorkingCurve& f, const CoincidenceMap& map,
+                                      ParamInterval t, ParamInterval s);
+
+/// True when (t, s) lies on the overlap's diagonal to within 2^-30 in t.
+[[nodiscard]] bool on_overlap(const OverlapFinding& o, double t, double s) noexcept;
+
+/// True when f on t lies on g to within the rounding of the box's compensated pieces: f at
+/// five points of t, projected onto g (Gauss-Newton with double-double residuals, starting
+/// from the matching points of s), is everywhere within 16 n (u size + error) of g, where
+/// size and error are those of f's compensated piece in the frame centred at `center`. Then
+/// no clip in double-precision local coordinates can separate the curves inside the box (a
+/// contact of order >= 3, where they stay within c d^3 of each other), and the search stops
+/// refining the box: it is reported, unresolved. Sampling is enough for that decision,
+/// because it never drops a box.
+[[nodiscard]] bool coincide_at_precision(const WorkingCurve& f, const WorkingCurve& g, ParamInterval t,
+                                         ParamInterval s, Point2 center);
+
+/// Solves f(t) = p for t near `start` (Gauss-Newton on |f(t) - p|^2 with double-double
+/// residuals): the parameter of a point known to lie on f. Result clamped to [0, 1].
+[[nodiscard]] double locate_on_curve(const WorkingCurve& f, PointDD p, double start);
+
+}  // namespace bezier::core

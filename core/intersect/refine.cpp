@@ -1,0 +1,120 @@
+#include "core/intersect/refine.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/intersect/kind.hpp"
+
+namespace bezier::core {
+
+namespace {
+
+/// Steps below this (in parameter) end the iteration: a few ulps of 1/2.
+constexpr double kConverged = 0x1p-54;
+constexpr int kTransversalIterations = 40;
+constexpr int kTangencyIterations = 20;
+
+Point2 residual(const WorkingCurve& f, const WorkingCurve& g, double t, double s) {
+  const PointDD a = evaluate_dd(f, t), b = evaluate_dd(g, s);
+  return {dd::to_double(dd::sub(a.x, b.x)), dd::to_double(dd::sub(a.y, b.y))};
+}
+
+double clamp_to(ParamInterval iv, double x) noexcept { return std::clamp(x, iv.lo, iv.hi); }
+
+struct Newton {
+  double t, s;
+  int iterations = 0;
+  bool converged = false;
+};
+
+/// Newton on f(t) - g(s) = 0 (or Gauss-Newton on one free parameter).
+Newton transversal(const WorkingCurve& f, const WorkingCurve& g, const Contact& c, bool t_free,
+                   bool s_free) {
+  Newton n{c.t.lo + (c.t.hi - c.t.lo) / 2, c.s.lo + (c.s.hi - c.s.lo) / 2};
+  if (t_free) n.t = c.t.lo;
+  if (s_free) n.s = c.s.lo;
+  double last_step = INFINITY;
+  for (int i = 0; i < kTransversalIterations; ++i) {
+    const Point2 r = residual(f, g, n.t, n.s);
+    const Point2 df = evaluate_with_tangent(f, n.t).tangent;
+    const Point2 dg = evaluate_with_tangent(g, n.s).tangent;
+    ++n.iterations;
+    double dt = 0.0, ds = 0.0;
+    if (t_free) {
+      const double gg = dot(dg, dg);
+      if (!(gg > 0)) break;
+      ds = dot(r, dg) / gg;  // g(s + ds) ~ g(s) + g' ds = P
+    } else if (s_free) {
+      const double ff = dot(df, df);
+      if (!(ff > 0)) break;
+      dt = -dot(r, df) / ff;
+    } else {
+      // f' dt - g' ds = -r by Cramer's rule; det [f', -g'] = -(f' x g').
+      const double det = cross(df, dg);
+      if (!(det != 0.0)) break;
+      dt = -cross(r, dg) / det;
+      ds = cross(df, r) / det;
+    }
+    if (!(std::isfinite(dt) && std::isfinite(ds))) break;
+    n.t = clamp_to(c.t, n.t + dt);
+    n.s = clamp_to(c.s, n.s + ds);
+    const double step = std::fmax(std::fabs(dt), std::fabs(ds));
+    if (step <= kConverged) {
+      n.converged = true;
+      break;
+    }
+    // Stagnation (at the floor of the residual's accuracy, or a clamped step): stop.
+    if (step >= last_step && i > 8) break;
+    last_step = step;
+  }
+  return n;
+}
+
+/// Newton on cross(f', g') = 0, (f - g) · f' = 0.
+Newton tangency(const WorkingCurve& f, const WorkingCurve& g, const Contact& c, double t0, double s0) {
+  Newton n{t0, s0};
+  for (int i = 0; i < kTangencyIterations; ++i) {
+    const PointAndTangent ft = evaluate_with_tangent(f, n.t), gt = evaluate_with_tangent(g, n.s);
+    const Point2 r = residual(f, g, n.t, n.s);
+    const Point2 ddf = second_derivative(f, n.t), ddg = second_derivative(g, n.s);
+    const Point2 df = ft.tangent, dg = gt.tangent;
+    ++n.iterations;
+    const double F1 = cross(df, dg), F2 = dot(r, df);
+    const double a11 = cross(ddf, dg), a12 = cross(df, ddg);
+    const double a21 = dot(df, df) + dot(r, ddf), a22 = -dot(dg, df);
+    const double det = a11 * a22 - a12 * a21;
+    if (!(det != 0.0) || !std::isfinite(det)) break;
+    const double dt = -(F1 * a22 - a12 * F2) / det;
+    const double ds = -(a11 * F2 - a21 * F1) / det;
+    if (!(std::isfinite(dt) && std::isfinite(ds))) break;
+    n.t = clamp_to(c.t, n.t + dt);
+    n.s = clamp_to(c.s, n.s + ds);
+    if (std::fmax(std::fabs(dt), std::fabs(ds)) <= kConverged) {
+      n.converged = true;
+      break;
+    }
+  }
+  return n;
+}
+
+}  // namespace
+
+Refinement refine_contact(const WorkingCurve& f, const WorkingCurve& g, const Contact& contact,
+                          bool t_free, bool s_free, double tangent_sine) {
+  if (contact.exact) return {contact.exact_root.t, contact.exact_root.s, 0, false};
+  const Newton n = transversal(f, g, contact, t_free, s_free);
+  Refinement out{n.t, n.s, n.iterations, false};
+  if (t_free || s_free) return out;
+  const Point2 df = evaluate_with_tangent(f, n.t).tangent, dg = evaluate_with_tangent(g, n.s).tangent;
+  if (n.converged && sine_between(df, dg) > tangent_sine) return out;
+  const Newton tn = tangency(f, g, contact, n.t, n.s);
+  out.iterations += tn.iterations;
+  if (tn.converged) {
+    out.t = tn.t;
+    out.s = tn.s;
+    out.tangency_system = true;
+  }
+  return out;
+}
+
+}  // namespace bezier::core

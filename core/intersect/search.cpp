@@ -1,0 +1,260 @@
+#include "core/intersect/search.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <optional>
+
+#include "core/intersect/bezier_clip.hpp"
+#include "core/intersect/hybrid.hpp"
+#include "core/intersect/implicit_clip.hpp"
+#include "core/intersect/kind.hpp"
+#include "core/intersect/subdivision.hpp"
+
+namespace bezier::core {
+
+namespace {
+
+struct Box {
+  ParamInterval t{0.0, 1.0};
+  ParamInterval s{0.0, 1.0};
+  bool compensated = false;  ///< pieces in double-double, centred on the box
+  bool clip_s = false;       ///< whose turn it is to be clipped
+  bool along = false;        ///< direction of the line through a point-like piece
+  int depth = 0;
+};
+
+/// The two halves of an interval, or nothing when it is too narrow to split in doubles.
+struct Halves {
+  ParamInterval parts[2];
+  int count = 0;
+};
+
+Halves halves(ParamInterval iv) noexcept {
+  const double m = iv.lo + (iv.hi - iv.lo) * 0.5;
+  if (!(iv.lo < m && m < iv.hi)) return {{iv, iv}, 1};
+  return {{{iv.lo, m}, {m, iv.hi}}, 2};
+}
+
+/// The sine of the angle between two pieces' chords is below this: they run nearly parallel,
+/// and the implicit clip is worth its cost (a few hundred flops for cubics).
+constexpr double kParallelSine = 1.0 / 16;
+
+bool nearly_parallel(const Piece& a, const Piece& b) noexcept {
+  const Point2 ca = {a.x.back() - a.x[0], a.y.back() - a.y[0]};
+  const Point2 cb = {b.x.back() - b.x[0], b.y.back() - b.y[0]};
+  return sine_between(ca, cb) <= kParallelSine;
+}
+
+/// The intersection of two kept intervals (both contain every root), or nothing.
+std::optional<ParamInterval> intersect_kept(std::optional<ParamInterval> a, std::optional<ParamInterval> b) {
+  if (!a || !b) return std::nullopt;
+  const ParamInterval r{std::fmax(a->lo, b->lo), std::fmin(a->hi, b->hi)};
+  if (r.hi < r.lo) return std::nullopt;
+  return r;
+}
+
+/// One call's search state: the stack of boxes, the counters and the results. Nothing here
+/// outlives the call.
+class Searcher {
+ public:
+  explicit Searcher(const SearchInput& input) : in_(input) { out_.stats.method = input.method; }
+
+  SearchOutput run() {
+    stack_.push_back(Box{});
+    while (!stack_.empty() && !out_.capped) {
+      const Box box = stack_.back();
+      stack_.pop_back();
+      process(box);
+    }
+    return std::move(out_);
+  }
+
+ private:
+  [[nodiscard]] bool t_done(const Box& b) const noexcept { return in_.t_free || b.t.width() <= in_.width; }
+  [[nodiscard]] bool s_done(const Box& b) const noexcept { return in_.s_free || b.s.width() <= in_.width; }
+
+  void emit(const Box& b, bool resolved) {
+    out_.candidates.push_back({b.t, b.s, resolved && t_done(b) && s_done(b)});
+    ++out_.stats.candidate_boxes;
+  }
+
+  /// Halves the chosen intervals and pushes the children (2 or 4 boxes).
+  void split(const Box& b, bool split_t, bool split_s) {
+    const Halves ts = split_t ? halves(b.t) : Halves{{b.t, b.t}, 1};
+    const Halves ss = split_s ? halves(b.s) : Halves{{b.s, b.s}, 1};
+    if (ts.count * ss.count == 1) {
+      emit(b, false);  // nothing left to split in doubles
+      return;
+    }
+    ++out_.stats.subdivisions;
+    for (int i = ts.count - 1; i >= 0; --i) {
+      for (int j = ss.count - 1; j >= 0; --j) {
+        Box child = b;
+        child.t = ts.parts[i];
+        child.s = ss.parts[j];
+        child.depth = b.depth + 1;
+        child.along = false;
+        stack_.push_back(child);
+      }
+    }
+  }
+
+  void make_pieces(const Box& b) {
+    if (!b.compensated) {
+      if (!f_ok_) f_piece_ = fast_piece(*in_.f, b.t.lo, b.t.hi);
+      if (!g_ok_) g_piece_ = fast_piece(*in_.g, b.s.lo, b.s.hi);
+    } else {
+      // A frame centred near the box, so the rounded local coordinates are as small as
+      // the pieces themselves; both pieces must share it.
+      const Point2 center = evaluate_with_tangent(*in_.f, b.t.lo).point;
+      f_piece_ = compensated_piece(*in_.f, b.t.lo, b.t.hi, center);
+      g_piece_ = compensated_piece(*in_.g, b.s.lo, b.s.hi, center);
+    }
+    f_ok_ = g_ok_ = true;
+  }
+
+  [[nodiscard]] bool covered(const Box& b) const {
+    for (const OverlapFinding& o : in_.overlaps) {
+      if (covered_by_overlap(*in_.f, o.map, b.t, b.s)) return true;
+    }
+    return false;
+  }
+
+  void process(Box box) {
+    f_ok_ = g_ok_ = false;
+    bool tried_alternative = false;
+    bool tried_other = false;
+    for (;;) {
+      if (out_.stats.iterations >= in_.max_work) {
+        out_.capped = true;
+        return;
+      }
+      ++out_.stats.iterations;
+      out_.stats.max_depth = std::max(out_.stats.max_depth, box.depth);
+      const bool td = t_done(box), sd = s_done(box);
+      if (!in_.overlaps.empty() && covered(box)) return;
+      make_pieces(box);
+      if (box.compensated) ++out_.stats.compensated_steps;
+      if (bounding_boxes_disjoint(f_piece_, g_piece_)) return;
+      if (td && sd) {
+        // A clip shrinks a box onto where the pieces may meet, but only the next test
+        // shows whether they do: test once more before reporting.
+        const Separation sep = separation(f_piece_, g_piece_);
+        if (sep.separated) return;
+        if (sep.noisy && !box.compensated) {
+          box.compensated = true;
+          f_ok_ = g_ok_ = false;
+          continue;
+        }
+        emit(box, true);
+        return;
+      }
+
+      if (in_.method == IntersectMethod::subdivision) {
+        const Separation sep = separation(f_piece_, g_piece_);
+        if (sep.separated) return;
+        if (nearly_parallel(f_piece_, g_piece_) &&
+            (!implicit_clip(f_piece_, g_piece_, *in_.op_g2).kept || !implicit_clip(g_piece_, f_piece_, *in_.op_f2).kept)) {
+          return;
+        }
+        if (sep.noisy) {
+          if (!box.compensated) {
+            box.compensated = true;
+            f_ok_ = g_ok_ = false;
+            continue;
+          }
+          emit(box, false);
+          return;
+        }
+        if (box.compensated && !td && !sd &&
+            coincide_at_precision(*in_.f, *in_.g, box.t, box.s, evaluate_with_tangent(*in_.f, box.t.lo).point)) {
+          emit(box, false);
+          return;
+        }
+        split(box, !td, !sd);
+        return;
+      }
+
+      const bool clip_s = td ? true : (sd ? false : box.clip_s);
+      const Piece& x = clip_s ? g_piece_ : f_piece_;
+      const Piece& other = clip_s ? f_piece_ : g_piece_;
+      const PointLineDirection direction =
+          box.along ? PointLineDirection::along_other : PointLineDirection::across_other;
+      Clip clip = in_.method == IntersectMethod::hybrid
+                      ? hybrid_clip(x, other, clip_s ? *in_.op_g : *in_.op_f, direction)
+                      : bezier_clip(x, other, direction);
+      ++out_.stats.clipping_steps;
+      if (!clip.kept) return;
+      const double threshold = in_.method == IntersectMethod::hybrid ? 0.5 : 0.8;
+      if (clip.kept->width() > threshold && nearly_parallel(x, other)) {
+        const Clip fine = implicit_clip(x, other, clip_s ? *in_.op_f2 : *in_.op_g2);
+        ++out_.stats.clipping_steps;
+        clip.kept = intersect_kept(clip.kept, fine.kept);
+        if (!clip.kept) return;
+        // The finer test decides whether rounding is what keeps the pieces together.
+        if (fine.informative) clip.noisy = fine.noisy;
+      }
+      if (clip.noisy && !box.compensated) {
+        box.compensated = true;
+        f_ok_ = g_ok_ = false;
+        continue;
+      }
+      ParamInterval& domain = clip_s ? box.s : box.t;
+      const ParamInterval next = map_to_domain(domain, *clip.kept);
+      const double fraction = next.width() / domain.width();
+      if (fraction > threshold) {
+        if (!tried_alternative && is_point_like(other)) {
+          // A point-like piece defines no line: try the other direction through it.
+          tried_alternative = true;
+          box.along = !box.along;
+          continue;
+        }
+        if (clip.noisy) {
+          if (!tried_other && !td && !sd) {
+            tried_other = true;
+            box.clip_s = !clip_s;
+            continue;
+          }
+          emit(box, false);  // precision floor: compensated pieces cannot decide
+          return;
+        }
+        if (box.compensated && !td && !sd &&
+            coincide_at_precision(*in_.f, *in_.g, box.t, box.s, evaluate_with_tangent(*in_.f, box.t.lo).point)) {
+          emit(box, false);  // the curves agree to within rounding here: a high-order contact
+          return;
+        }
+        if (in_.method == IntersectMethod::hybrid) {
+          split(box, !td, !sd);
+        } else {
+          const bool split_t = !td && (sd || box.t.width() >= box.s.width());
+          split(box, split_t, !split_t);
+        }
+        return;
+      }
+      tried_alternative = tried_other = false;
+      domain = next;
+      if (box.compensated) f_ok_ = g_ok_ = false;
+      else if (clip_s) g_ok_ = false;
+      else f_ok_ = false;
+      box.clip_s = !clip_s;
+      ++box.depth;
+    }
+  }
+
+  const SearchInput& in_;
+  SearchOutput out_;
+  std::vector<Box> stack_;
+  Piece f_piece_, g_piece_;
+  bool f_ok_ = false, g_ok_ = false;
+};
+
+}  // namespace
+
+SearchOutput search(const SearchInput& input) {
+  assert(input.f != nullptr && input.g != nullptr);
+  assert(input.method == IntersectMethod::subdivision || (input.op_f != nullptr && input.op_g != nullptr));
+  return Searcher(input).run();
+}
+
+}  // namespace bezier::core

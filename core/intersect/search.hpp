@@ -1,0 +1,70 @@
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/intersect/fat_curve.hpp"
+#include "core/intersect/overlap.hpp"
+#include "core/intersect/result.hpp"
+#include "core/intersect/working_curve.hpp"
+
+namespace bezier::core {
+
+/// A box t x s of the parameter square that may hold an intersection.
+struct SearchCandidate {
+  ParamInterval t;
+  ParamInterval s;
+  /// False for a box left at the precision floor (compensated pieces could not decide)
+  /// before reaching the search width.
+  bool resolved = true;
+};
+
+/// What the search needs: the curves in their working frame, the method and its
+/// operators (built once per call), the overlaps whose diagonals hold nothing else, and
+/// which curve is a single point (its parameter is then free: every t is a solution).
+struct SearchInput {
+  const WorkingCurve* f = nullptr;
+  const WorkingCurve* g = nullptr;
+  IntersectMethod method = IntersectMethod::hybrid;
+  double width = 0x1p-42;  ///< boxes narrower than this in t and s are done (search_width)
+  std::int64_t max_work = 1000000;
+  const FatCurveOperator* op_f = nullptr;  ///< fat curves of f's pieces (hybrid)
+  const FatCurveOperator* op_g = nullptr;  ///< fat curves of g's pieces (hybrid)
+  const FatCurveOperator* op_f2 = nullptr;  ///< degree-2 fits of f's pieces (implicit_clip)
+  const FatCurveOperator* op_g2 = nullptr;  ///< degree-2 fits of g's pieces (implicit_clip)
+  std::span<const OverlapFinding> overlaps;
+  bool t_free = false;
+  bool s_free = false;
+};
+
+struct SearchOutput {
+  std::vector<SearchCandidate> candidates;
+  IntersectStats stats;
+  bool capped = false;  ///< the work budget ran out
+};
+
+/// Every box of [0,1]^2 that may hold an intersection, narrowed to the search width, by
+/// the chosen method. Boxes are kept on an explicit stack; each step is one unit of work.
+///
+///  - hybrid: clip the pieces in turn against each other's fat line with fat curves;
+///    when a clip keeps more than half of its interval, halve both intervals (seed 003).
+///  - bezier-clipping: the same with the convex hull of the distance function; when a clip
+///    keeps more than 80 % (removes less than 20 %), halve the wider interval
+///    (Sederberg & Nishita 1990, §4).
+///  - subdivision: drop the box when its pieces are separated (bounding boxes, fat lines),
+///    otherwise halve both intervals.
+///
+/// In all three, when the primary test fails on pieces that run nearly parallel (the sine
+/// of the angle between their chords below 1/16: a tangency, or curves that follow each
+/// other), the implicit "fat parabola" clip (implicit_clip.hpp) is tried before halving;
+/// without it, contacts of order 3 keep a tube of boxes alive at every level.
+///
+/// Every piece carries an error bound and every test includes it, so no box holding an
+/// intersection is ever dropped. When the bounds dominate a test (a tangency: the curves
+/// stay within rounding of each other), the box switches to compensated pieces
+/// (double-double, in a frame centred on the box); when even those cannot decide, the box
+/// is returned unresolved. Boxes covered by an overlap are dropped (covered_by_overlap).
+[[nodiscard]] SearchOutput search(const SearchInput& input);
+
+}  // namespace bezier::core

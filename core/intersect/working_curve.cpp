@@ -1,0 +1,134 @@
+#include "core/intersect/working_curve.hpp"
+
+#include <cmath>
+
+#include "core/intersect/bernstein1d.hpp"
+
+namespace bezier::core {
+
+namespace {
+
+constexpr double kU = bernstein::kU;
+
+}  // namespace
+
+WorkingFrame working_frame(const Curve& f, const Curve& g) {
+  Point2 lo = f.front(), hi = f.front();
+  for (const Curve* c : {&f, &g}) {
+    for (const Point2 p : c->points()) {
+      lo = {std::fmin(lo.x, p.x), std::fmin(lo.y, p.y)};
+      hi = {std::fmax(hi.x, p.x), std::fmax(hi.y, p.y)};
+    }
+  }
+  // Halves first: lo + hi may overflow.
+  const Point2 center = {lo.x / 2 + hi.x / 2, lo.y / 2 + hi.y / 2};
+  const double extent = std::fmax(hi.x / 2 - lo.x / 2, hi.y / 2 - lo.y / 2);
+  WorkingFrame frame;
+  if (!(extent > 0.0)) {
+    frame.origin = f.front();  // every control point of both curves is this point
+    return frame;
+  }
+  // A grid of a sixteenth of the extent: the origin has few significant bits, so inputs on
+  // any finer grid subtract from it exactly, and translating the inputs by a multiple of
+  // the grid translates the origin by the same amount.
+  const double grid = std::ldexp(1.0, std::ilogb(extent) - 4);
+  frame.origin = {std::nearbyint(center.x / grid) * grid, std::nearbyint(center.y / grid) * grid};
+  double m = 0.0;
+  for (const Curve* c : {&f, &g}) {
+    for (const Point2 p : c->points()) m = std::fmax(m, max_abs_coordinate(p - frame.origin));
+  }
+  frame.scale = m > 0.0 ? std::ldexp(1.0, -(std::ilogb(m) + 1)) : 1.0;
+  return frame;
+}
+
+WorkingCurve to_working(const Curve& curve, WorkingFrame frame) {
+  WorkingCurve w;
+  w.degree = curve.degree();
+  for (const Point2 p : curve.points()) {
+    const TwoTerm<double> x = two_sum(p.x, -frame.origin.x);
+    const TwoTerm<double> y = two_sum(p.y, -frame.origin.y);
+    w.x.push_back(x.hi * frame.scale);
+    w.y.push_back(y.hi * frame.scale);
+    w.x_lo.push_back(x.lo * frame.scale);
+    w.y_lo.push_back(y.lo * frame.scale);
+    w.x_dd.push_back({w.x.back(), w.x_lo.back()});
+    w.y_dd.push_back({w.y.back(), w.y_lo.back()});
+    w.magnitude = std::fmax(w.magnitude, std::fmax(std::fabs(w.x.back()), std::fabs(w.y.back())));
+    w.frame_error =
+        std::fmax(w.frame_error, std::fmax(std::fabs(w.x_lo.back()), std::fabs(w.y_lo.back())));
+  }
+  w.is_point = true;
+  for (std::size_t i = 1; i < w.x.size(); ++i) {
+    w.is_point = w.is_point && w.x[i] == w.x[0] && w.y[i] == w.y[0] && w.x_lo[i] == w.x_lo[0] &&
+                 w.y_lo[i] == w.y_lo[0];
+  }
+  return w;
+}
+
+Piece fast_piece(const WorkingCurve& f, double a, double b) {
+  Piece p;
+  p.x = bernstein::portion<double>(f.x, a, b);
+  p.y = bernstein::portion<double>(f.y, a, b);
+  p.error = f.frame_error + 3.02 * f.degree * kU * f.magnitude + 0x1p-1000;
+  return p;
+}
+
+Piece compensated_piece(const WorkingCurve& f, double a, double b, Point2 center) {
+  const SmallArray<dd::Real> xs = bernstein::portion<dd::Real>(f.x_dd, a, b);
+  const SmallArray<dd::Real> ys = bernstein::portion<dd::Real>(f.y_dd, a, b);
+  Piece p;
+  p.x.resize(xs.size());
+  p.y.resize(ys.size());
+  double local = 0.0;
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    p.x[i] = dd::to_double(dd::sub(xs[i], dd::from(center.x)));
+    p.y[i] = dd::to_double(dd::sub(ys[i], dd::from(center.y)));
+    local = std::fmax(local, std::fmax(std::fabs(p.x[i]), std::fabs(p.y[i])));
+  }
+  p.error = 1.01 * kU * local + (12.0 * f.degree + 4.0) * kU * kU * f.magnitude + 0x1p-1000;
+  return p;
+}
+
+PointDD evaluate_dd(const WorkingCurve& f, double t) {
+  SmallArray<dd::Real> xs(std::span<const dd::Real>(f.x_dd)), ys(std::span<const dd::Real>(f.y_dd));
+  for (std::size_t level = xs.size() - 1; level > 0; --level) {
+    for (std::size_t k = 0; k < level; ++k) {
+      xs[k] = dd::lerp(xs[k], xs[k + 1], t);
+      ys[k] = dd::lerp(ys[k], ys[k + 1], t);
+    }
+  }
+  return {xs[0], ys[0]};
+}
+
+PointAndTangent evaluate_with_tangent(const WorkingCurve& f, double t) {
+  const std::size_t n = f.x.size() - 1;
+  if (n == 0) return {{f.x[0], f.y[0]}, {0.0, 0.0}};
+  Coeffs xs(std::span<const double>(f.x)), ys(std::span<const double>(f.y));
+  for (std::size_t level = n; level > 1; --level) {
+    for (std::size_t k = 0; k < level; ++k) {
+      xs[k] = bernstein::lerp(xs[k], xs[k + 1], t);
+      ys[k] = bernstein::lerp(ys[k], ys[k + 1], t);
+    }
+  }
+  const double dn = static_cast<double>(n);
+  return {{bernstein::lerp(xs[0], xs[1], t), bernstein::lerp(ys[0], ys[1], t)},
+          {dn * (xs[1] - xs[0]), dn * (ys[1] - ys[0])}};
+}
+
+Point2 second_derivative(const WorkingCurve& f, double t) {
+  const std::size_t n = f.x.size() - 1;
+  if (n < 2) return {0.0, 0.0};
+  Coeffs xs(n - 1), ys(n - 1);
+  const double factor = static_cast<double>(n) * static_cast<double>(n - 1);
+  for (std::size_t i = 0; i + 2 <= n; ++i) {
+    xs[i] = factor * ((f.x[i + 2] - f.x[i + 1]) - (f.x[i + 1] - f.x[i]));
+    ys[i] = factor * ((f.y[i + 2] - f.y[i + 1]) - (f.y[i + 1] - f.y[i]));
+  }
+  return {bernstein::evaluate(xs, t), bernstein::evaluate(ys, t)};
+}
+
+Point2 from_working(Point2 p, WorkingFrame frame) noexcept {
+  return {p.x / frame.scale + frame.origin.x, p.y / frame.scale + frame.origin.y};
+}
+
+}  // namespace bezier::core
