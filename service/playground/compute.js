@@ -90,6 +90,12 @@ async function pointsOnCurve(state, answers, i, attempt) {
     const interval = i === 0 ? overlap.t_interval : overlap.s_interval;
     if (Array.isArray(interval)) wanted.push({kind: 'overlap', ts: piece(interval)});
   }
+  // A curve that retraces itself (collinear control points) overlaps itself: both pieces.
+  for (const overlap of curve.loopArea?.overlaps ?? []) {
+    for (const interval of [overlap.t_interval, overlap.s_interval]) {
+      if (Array.isArray(interval)) wanted.push({kind: 'overlap', ts: piece(interval)});
+    }
+  }
   const c = curve.classify;
   if (c) {
     for (const t of c.inflections ?? []) wanted.push({kind: 'inflection', ts: [t], t});

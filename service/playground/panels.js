@@ -112,7 +112,13 @@ export function renderLoops(container, state, answers) {
     for (const loop of a.loops) {
       items.push(el('li', {'data-curve': c.name},
           el('strong', {style: `color:${kColors.curves[i]}`}, `${c.name}: `),
-          `loop t ∈ [${loop.t.map(fmt).join(', ')}] at ${pt(loop.point)}, area ${fmt(loop.area)} (signed ${fmt(loop.signed_area)})`));
+          `${loop.kind && loop.kind !== 'transversal' ? `${loop.kind} ` : ''}loop t ∈ [${loop.t.map(fmt).join(', ')}] ` +
+          `at ${pt(loop.point)}, area ${fmt(loop.area)} (signed ${fmt(loop.signed_area)})`));
+    }
+    for (const o of a.overlaps ?? []) {
+      items.push(el('li', {'data-curve': c.name, 'data-kind': 'overlap'},
+          el('strong', {style: `color:${kColors.curves[i]}`}, `${c.name}: `),
+          `retraces itself: t ∈ [${o.t_interval.map(fmt).join(', ')}] and [${o.s_interval.map(fmt).join(', ')}]`));
     }
     if (a.closed) {
       items.push(el('li', {'data-curve': c.name}, el('strong', {style: `color:${kColors.curves[i]}`}, `${c.name}: `),

@@ -262,18 +262,53 @@ test('errors from the API are shown to the user (degree above the limit)', async
 
 const kCrossing = [[60, 300], [300, 420], [500, 300], [760, 420]];
 
-test('second curve: intersections marked, kind on hover; loops shaded with their area; cubic type', async () => {
+test('loops shaded with their area; the cubic\'s type and canonical point', async () => {
   await page.locator('#examples').selectOption('loop');
   await settle();
   const a = (await pageState()).curves[0].points;
   assert.equal(a.length, 4);
+  const answers = await pageAnswers();
+  const loops = await api('/loop-area', {points: a});
+  assert.ok(loops.loops.length >= 1, 'the example cubic has a loop');
+  assert.deepEqual(answers.curves[0].loopArea, loops);
+  assert.equal(answers.curves[0].loopPaths.length, loops.loops.length);
+  const loopItems = page.locator('#loops li[data-curve=A]');
+  assert.equal(await loopItems.count(), loops.loops.length);
+  const areaShown = numbersIn((await loopItems.first().textContent()).split('area')[1]);
+  assertClose(areaShown[0], loops.loops[0].area, 'loop area');
+  // The shading is drawn: the canvas is not transparent at the loop's centre.
+  const path = answers.curves[0].loopPaths[0].points;
+  const centre = [path.reduce((s, p) => s + p[0], 0) / path.length, path.reduce((s, p) => s + p[1], 0) / path.length];
+  const [cx, cy] = await client(centre);
+  const box = await page.locator('#scene').boundingBox();
+  const alphaInside = () => page.evaluate(([x, y]) => {
+    const canvas = document.getElementById('scene');
+    const r = canvas.width / canvas.getBoundingClientRect().width;
+    return canvas.getContext('2d').getImageData(Math.round(x * r), Math.round(y * r), 1, 1).data[3];
+  }, [cx - box.x, cy - box.y + 12]);  // a little below the area label
+  assert.ok(await alphaInside() > 0, 'the loop is shaded');
+  await page.locator('#show-loops').uncheck();
+  assert.equal(await alphaInside(), 0, 'without "Loops and areas" the inside is not painted');
+  await page.locator('#show-loops').check();
+
+  const type = await api('/classify', {points: a});
+  assert.deepEqual(answers.curves[0].classify, type);
+  assert.equal(type.type, 'loop');
+  assert.equal(await page.locator('#types li[data-curve=A] .type').textContent(), type.type);
+  const canonical = numbersIn((await page.locator('#types li[data-curve=A] .small').textContent()).split('canonical P3')[1]);
+  assertClose(canonical[0], type.canonical_point[0], 'canonical x');
+  assertClose(canonical[1], type.canonical_point[1], 'canonical y');
+  assert.deepEqual(await pageErrorsShown(), []);
+});
+
+test('second curve: intersections marked, their kind shown on hover', async () => {
+  const a = (await pageState()).curves[0].points;
   await page.locator('#show-second').check();
   assert.equal((await pageState()).active, 1, 'turning the second curve on edits it');
   await setMode('add');
   for (const w of kCrossing) await clickWorld(w);
   await settle();
-  const state = await pageState();
-  assert.deepEqual(state.curves[1].points, kCrossing);
+  assert.deepEqual((await pageState()).curves[1].points, kCrossing);
   const answers = await pageAnswers();
 
   const exact = await api('/intersections', {curves: [{points: a}, {points: kCrossing}]});
@@ -292,23 +327,9 @@ test('second curve: intersections marked, kind on hover; loops shaded with their
   await tooltip.waitFor({state: 'visible'});
   assert.match(await tooltip.textContent(), new RegExp(`^${hit.kind} intersection`));
   assert.equal(await page.locator('#intersections li.active').getAttribute('data-index'), '0');
-
-  const loops = await api('/loop-area', {points: a});
-  assert.ok(loops.loops.length >= 1, 'the example cubic has a loop');
-  assert.deepEqual(answers.curves[0].loopArea, loops);
-  assert.equal(answers.curves[0].loopPaths.length, loops.loops.length);
-  const loopItems = page.locator('#loops li[data-curve=A]');
-  assert.equal(await loopItems.count(), loops.loops.length);
-  const areaShown = numbersIn((await loopItems.first().textContent()).split('area')[1]);
-  assertClose(areaShown[0], loops.loops[0].area, 'loop area');
-
-  for (const [i, points] of [[0, a], [1, kCrossing]]) {
-    const type = await api('/classify', {points});
-    assert.deepEqual(answers.curves[i].classify, type);
-    const name = i === 0 ? 'A' : 'B';
-    assert.equal(await page.locator(`#types li[data-curve=${name}] .type`).textContent(), type.type);
-  }
-  assert.equal(answers.curves[0].classify.type, 'loop');
+  const type = await api('/classify', {points: kCrossing});
+  assert.deepEqual(answers.curves[1].classify, type);
+  assert.equal(await page.locator('#types li[data-curve=B] .type').textContent(), type.type);
   assert.deepEqual(await pageErrorsShown(), []);
 
   await page.mouse.move(5, 5);
