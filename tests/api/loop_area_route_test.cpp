@@ -1,0 +1,178 @@
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "api/handler.hpp"
+#include "core/loop_area.hpp"
+
+namespace bezier::api {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kDegree7 = R"([[0,0],[1,1],[2,3],[1,4],[0,4],[-1,3],[0,1],[1,0]])";
+
+Reply post(const std::string& body, const Limits& limits = Limits{}) { return handle("/loop-area", body, limits); }
+
+json call(const std::string& body, int expected_status, const Limits& limits = Limits{}) {
+  const Reply reply = post(body, limits);
+  EXPECT_EQ(reply.status, expected_status) << reply.body;
+  EXPECT_EQ(reply.content_type, expected_status == 200 ? "application/json" : "application/problem+json");
+  return json::parse(reply.body);
+}
+
+/// The pointers of a 422 validation problem, in order.
+std::vector<std::string> pointers(const json& problem) {
+  EXPECT_EQ(problem["status"], 422);
+  EXPECT_EQ(problem["type"], "urn:bezier-service:problem:validation");
+  std::vector<std::string> out;
+  for (const json& e : problem["errors"]) {
+    EXPECT_TRUE(e["message"].is_string());
+    out.push_back(e["pointer"]);
+  }
+  return out;
+}
+
+std::vector<std::string> errors_of(const std::string& body, const Limits& limits = Limits{}) {
+  return pointers(call(body, 422, limits));
+}
+
+using Pointers = std::vector<std::string>;
+
+TEST(LoopAreaRoute, Degree7ExampleIsTheKernelsAnswerRoundTripped) {
+  const json r = call(std::string(R"({"points":)") + kDegree7 + "}", 200);
+  const core::LoopAreaResult k = core::loop_area(core::Curve({{0, 0}, {1, 1}, {2, 3}, {1, 4}, {0, 4}, {-1, 3}, {0, 1}, {1, 0}}));
+  ASSERT_EQ(k.loops.size(), 1u);
+  EXPECT_EQ(r["degree"], 7);
+  ASSERT_EQ(r["loops"].size(), 1u);
+  const json& loop = r["loops"][0];
+  // Full double precision on the wire: every number reads back to the same double.
+  EXPECT_EQ(loop["t"][0].get<double>(), k.loops[0].t1);
+  EXPECT_EQ(loop["t"][1].get<double>(), k.loops[0].t2);
+  EXPECT_EQ(loop["point"][0].get<double>(), k.loops[0].point.x);
+  EXPECT_EQ(loop["point"][1].get<double>(), k.loops[0].point.y);
+  EXPECT_EQ(loop["signed_area"].get<double>(), k.loops[0].signed_area);
+  EXPECT_EQ(loop["area"].get<double>(), k.loops[0].area);
+  EXPECT_EQ(loop["kind"], "transversal");
+  EXPECT_EQ(r["area"].get<double>(), k.area);
+  // The issue's values (t1 + t2 = 1 by symmetry, area ~2.2537) to the precision the core
+  // tests establish against exact arithmetic.
+  EXPECT_NEAR(loop["t"][0].get<double>(), 0.07506435058866631, 1e-15);
+  EXPECT_NEAR(loop["signed_area"].get<double>(), 2.2537095301725511, 1e-14);
+  EXPECT_EQ(r["closed"], false);
+  EXPECT_TRUE(r["closed_area"].is_null());
+  EXPECT_EQ(r["overlaps"], json::array());
+  EXPECT_EQ(r["stats"]["method"], "subdivision");
+  EXPECT_GT(r["stats"]["work"].get<int>(), 0);
+}
+
+TEST(LoopAreaRoute, CubicUsesTheClosedForm) {
+  // B(t) = t (a t^2 + b t + c) with B(3/4) = B(0) = (0, 0): the loop closes at the start.
+  const json r = call(R"({"points":[[0,0],[-0.375,-2.8125],[-1.75,-2.625],[1.875,3.5625]]})", 200);
+  ASSERT_EQ(r["loops"].size(), 1u);
+  EXPECT_EQ(r["loops"][0]["t"][0], 0.0);
+  EXPECT_NEAR(r["loops"][0]["t"][1].get<double>(), 0.75, 1e-15);
+  EXPECT_EQ(r["loops"][0]["point"], json::parse("[0.0, 0.0]"));
+  EXPECT_EQ(r["stats"]["method"], "closed-form-cubic");
+}
+
+TEST(LoopAreaRoute, ClosedCurveHasItsAreaAndNoTrivialLoop) {
+  // A closed cubic, P0 = P3 = 0: x = 6t(1-t)^2, y = 6t^2(1-t), and
+  // 1/2 ∫ (x y' - x' y) dt = 1/2 ∫ 36 t^2 (1-t)^2 dt = 18 B(3,3) = 18 / 30 = 3/5.
+  const json r = call(R"({"points":[[0,0],[2,0],[0,2],[0,0]]})", 200);
+  EXPECT_EQ(r["closed"], true);
+  EXPECT_EQ(r["loops"], json::array());
+  EXPECT_EQ(r["area"], 0.0);
+  EXPECT_NEAR(r["closed_area"].get<double>(), 0.6, 1e-15);
+}
+
+TEST(LoopAreaRoute, IntervalAreaWithItsChord) {
+  // Archimedes: the parabolic segment is 2/3 of the triangle (0,0), (1,2), (2,0): 4/3,
+  // clockwise. On [1/4, 3/4] the piece is again a parabola, control points (0.5, 0.75),
+  // (1, 1.25), (1.5, 0.75) (blossoms b(1/4,1/4), b(1/4,3/4), b(3/4,3/4)): 2/3 of that
+  // triangle (base 1, height 1/2), 1/6.
+  json r = call(R"({"points":[[0,0],[1,2],[2,0]],"interval":[0,1]})", 200);
+  EXPECT_EQ(r["degree"], 2);
+  EXPECT_EQ(r["interval"], json::parse("[0.0, 1.0]"));
+  EXPECT_EQ(r["signed_area"], -4.0 / 3.0);
+  EXPECT_EQ(r["area"], 4.0 / 3.0);
+  EXPECT_EQ(r["chord"], json::parse("[[0.0, 0.0], [2.0, 0.0]]"));
+  EXPECT_FALSE(r.contains("loops"));
+  EXPECT_EQ(r["closed"], false);
+  EXPECT_TRUE(r["closed_area"].is_null());
+  r = call(R"({"points":[[0,0],[1,2],[2,0]],"interval":[0.25,0.75]})", 200);
+  EXPECT_NEAR(r["signed_area"].get<double>(), -1.0 / 6.0, 1e-15);
+  EXPECT_EQ(r["chord"], json::parse("[[0.5, 0.75], [1.5, 0.75]]"));
+  // A null interval is an absent one.
+  r = call(R"({"points":[[0,0],[1,2],[2,0]],"interval":null})", 200);
+  EXPECT_TRUE(r.contains("loops"));
+}
+
+TEST(LoopAreaRoute, CollinearCurveListsOverlaps) {
+  const json r = call(R"({"points":[[0,0],[2,2],[0,0]]})", 200);
+  EXPECT_EQ(r["loops"], json::array());
+  EXPECT_EQ(r["area"], 0.0);
+  ASSERT_EQ(r["overlaps"].size(), 1u);
+  EXPECT_EQ(r["overlaps"][0]["t_interval"][0], 0.0);
+  EXPECT_NEAR(r["overlaps"][0]["t_interval"][1].get<double>(), 0.5, 1e-12);
+  EXPECT_EQ(r["overlaps"][0]["s_interval"][1], 1.0);
+  EXPECT_EQ(r["stats"]["method"], "collinear");
+  EXPECT_EQ(r["closed"], true);
+  EXPECT_EQ(r["closed_area"], 0.0);
+}
+
+TEST(LoopAreaRoute, ValidationErrorsPointAtTheField) {
+  EXPECT_EQ(errors_of(R"({})"), (Pointers{"/points"}));
+  EXPECT_EQ(errors_of(R"({"points":"abc"})"), (Pointers{"/points"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0]]})"), (Pointers{"/points"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1]]})"), (Pointers{"/points/1"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1,1]]})"), (Pointers{"/points/1"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0,0],[1,1,1]]})"), (Pointers{"/points/0", "/points/1"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1e999,1]]})"), (Pointers{"/points/1/0"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,"a"],[1,1]]})"), (Pointers{"/points/0/1"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"intervals":[0,1]})"), (Pointers{"/intervals"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":0.5})"), (Pointers{"/interval"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[]})"), (Pointers{"/interval"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[0.5]})"), (Pointers{"/interval"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[0.1,0.2,0.3]})"), (Pointers{"/interval"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[-0.1,0.5]})"), (Pointers{"/interval/0"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[0.2,1.5]})"), (Pointers{"/interval/1"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":["a",0.5]})"), (Pointers{"/interval/0"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[0.5,0.5]})"), (Pointers{"/interval"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[0.7,0.2]})"), (Pointers{"/interval"}));
+  // Every problem at once.
+  EXPECT_EQ(errors_of(R"({"interval":[2,0.5],"extra":1})"), (Pointers{"/extra", "/points", "/interval/0"}));
+}
+
+TEST(LoopAreaRoute, DegreeAboveTheLimit) {
+  Limits limits;
+  limits.max_degree = 6;
+  const json r = call(std::string(R"({"points":)") + kDegree7 + "}", 422, limits);
+  EXPECT_EQ(pointers(r), (Pointers{"/points"}));
+}
+
+TEST(LoopAreaRoute, WorkCapIsA422Problem) {
+  Limits limits;
+  limits.max_work = 5;
+  const json r = call(std::string(R"({"points":)") + kDegree7 + "}", 422, limits);
+  EXPECT_EQ(r["type"], "urn:bezier-service:problem:work-cap");
+  EXPECT_EQ(r["status"], 422);
+  EXPECT_NE(r["detail"].get<std::string>().find("5 parameter boxes"), std::string::npos);
+  EXPECT_FALSE(r.contains("errors"));
+  // The interval form does no search and is not capped.
+  limits.max_work = 1;
+  call(std::string(R"({"points":)") + kDegree7 + R"(,"interval":[0.1,0.9]})", 200, limits);
+  // A curve retracing itself (B(t) = C(4t(1-t)), C quadratic) exhausts the default cap.
+  const json cap = call(R"({"points":[[0,0],[3,1.5],[4,5],[3,1.5],[0,0]]})", 422);
+  EXPECT_EQ(cap["type"], "urn:bezier-service:problem:work-cap");
+}
+
+TEST(LoopAreaRoute, MalformedBodies) {
+  EXPECT_EQ(post("not json").status, 400);
+  EXPECT_EQ(post("[1,2]").status, 400);
+  EXPECT_EQ(post("[1,2]").content_type, "application/problem+json");
+}
+
+}  // namespace
+}  // namespace bezier::api
