@@ -4,7 +4,7 @@
 // newest state, so dragging never floods the service and the last answer always
 // matches what is on screen.
 
-import {setApiToken, apiToken} from './api.js';
+import {ApiError, apiToken, setApiToken} from './api.js';
 import {drawBernstein} from './bernstein.js';
 import {drawCanonicalMap} from './canonical.js';
 import {computeRound, usedCurves} from './compute.js';
@@ -71,9 +71,15 @@ async function schedule() {
   while (answeredKey !== requestKey()) {
     const key = requestKey();
     const snapshot = structuredClone({curves: state.curves, second: state.second, active: state.active, t0: state.t0});
-    const round = await computeRound(snapshot);
-    answers = round.answers;
-    errors = round.errors;
+    try {
+      const round = await computeRound(snapshot);
+      answers = round.answers;
+      errors = round.errors;
+    } catch (e) {
+      // An answer of an unexpected shape: say so instead of stalling.
+      answers = null;
+      errors = [{what: 'drawing the answers', error: new ApiError('(page)', 0, {title: 'Page error', detail: String(e)})}];
+    }
     answeredKey = key;
     renderPanels();
     renderScene();
