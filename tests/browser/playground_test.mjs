@@ -90,6 +90,17 @@ async function client(w, p = page) {
   return [box.x + w[0] * box.width / kWorld.width, box.y + (kWorld.height - w[1]) * box.height / kWorld.height];
 }
 
+/** The canvas pixel [r, g, b, a] at world point w, shifted dy CSS pixels down. */
+async function pixelAt(w, dy = 0) {
+  const box = await page.locator('#scene').boundingBox();
+  const [x, y] = await client(w);
+  return page.evaluate(([cx, cy]) => {
+    const canvas = document.getElementById('scene');
+    const r = canvas.width / canvas.getBoundingClientRect().width;
+    return [...canvas.getContext('2d').getImageData(Math.round(cx * r), Math.round(cy * r), 1, 1).data];
+  }, [x - box.x, y - box.y + dy]);
+}
+
 async function clickWorld(w) {
   const [x, y] = await client(w);
   await page.mouse.click(x, y);
@@ -102,6 +113,15 @@ async function setMode(mode) {
 
 /** Numbers in a text such as "(392.5, 300)". */
 const numbersIn = (text) => (text.match(/-?\d+(\.\d+)?(e[-+]?\d+)?/gi) ?? []).map(Number);
+
+/** Equal answers; `stats` may carry timings, so there only the same keys and method. */
+function assertSameAnswer(drawn, exact, what) {
+  const {stats: drawnStats, ...drawnRest} = drawn ?? {};
+  const {stats: exactStats, ...exactRest} = exact;
+  assert.deepEqual(drawnRest, exactRest, what);
+  assert.deepEqual(Object.keys(drawnStats ?? {}).sort(), Object.keys(exactStats ?? {}).sort(), `${what}: stats`);
+  assert.equal(drawnStats?.method, exactStats?.method, `${what}: method`);
+}
 
 function assertClose(shown, exact, what) {
   assert.ok(Math.abs(shown - exact) <= 1e-5 * Math.max(1, Math.abs(exact)), `${what}: page shows ${shown}, API says ${exact}`);
@@ -270,7 +290,7 @@ test('loops shaded with their area; the cubic\'s type and canonical point', asyn
   const answers = await pageAnswers();
   const loops = await api('/loop-area', {points: a});
   assert.ok(loops.loops.length >= 1, 'the example cubic has a loop');
-  assert.deepEqual(answers.curves[0].loopArea, loops);
+  assertSameAnswer(answers.curves[0].loopArea, loops, '/loop-area');
   assert.equal(answers.curves[0].loopPaths.length, loops.loops.length);
   const loopItems = page.locator('#loops li[data-curve=A]');
   assert.equal(await loopItems.count(), loops.loops.length);
@@ -279,13 +299,7 @@ test('loops shaded with their area; the cubic\'s type and canonical point', asyn
   // The shading is drawn: the canvas is not transparent at the loop's centre.
   const path = answers.curves[0].loopPaths[0].points;
   const centre = [path.reduce((s, p) => s + p[0], 0) / path.length, path.reduce((s, p) => s + p[1], 0) / path.length];
-  const [cx, cy] = await client(centre);
-  const box = await page.locator('#scene').boundingBox();
-  const alphaInside = () => page.evaluate(([x, y]) => {
-    const canvas = document.getElementById('scene');
-    const r = canvas.width / canvas.getBoundingClientRect().width;
-    return canvas.getContext('2d').getImageData(Math.round(x * r), Math.round(y * r), 1, 1).data[3];
-  }, [cx - box.x, cy - box.y + 12]);  // a little below the area label
+  const alphaInside = async () => (await pixelAt(centre, 12))[3];  // a little below the area label
   assert.ok(await alphaInside() > 0, 'the loop is shaded');
   await page.locator('#show-loops').uncheck();
   assert.equal(await alphaInside(), 0, 'without "Loops and areas" the inside is not painted');
@@ -312,7 +326,7 @@ test('second curve: intersections marked, their kind shown on hover', async () =
   const answers = await pageAnswers();
 
   const exact = await api('/intersections', {curves: [{points: a}, {points: kCrossing}]});
-  assert.deepEqual(answers.intersections, exact);
+  assertSameAnswer(answers.intersections, exact, '/intersections');
   assert.ok(exact.intersections.length >= 2, 'the example curves cross');
   const items = page.locator('#intersections li[data-index]');
   assert.equal(await items.count(), exact.intersections.length);
@@ -362,10 +376,19 @@ test('overlapping curves: the overlap is listed and highlighted', async () => {
   const exact = await api('/intersections', {curves: [{points: state.curves[0].points}, {points: state.curves[1].points}]});
   assert.ok(exact.overlaps.length >= 1, 'the API reports the overlap');
   const answers = await pageAnswers();
-  assert.deepEqual(answers.intersections, exact);
+  assertSameAnswer(answers.intersections, exact, '/intersections');
   assert.equal(await page.locator('#intersections li[data-kind=overlap]').count(), exact.overlaps.length);
   assert.equal(answers.curves[0].overlapPaths.length, exact.overlaps.length);
   assert.equal(answers.curves[1].overlapPaths.length, exact.overlaps.length);
+  // Highlighted: a yellow band along the piece, beside the curves' own lines.
+  const piece = answers.curves[0].overlapPaths[0];
+  const spot = piece[Math.round(piece.length * 0.7)];
+  const [r, g, b, alpha] = await pixelAt(spot, 4);
+  assert.ok(alpha > 0 && r > b + 60 && g > b + 30, `yellow at the overlap, got rgba(${r}, ${g}, ${b}, ${alpha})`);
+  await page.locator('#show-intersections').uncheck();
+  const [, , , plain] = await pixelAt(spot, 4);
+  assert.ok(plain < alpha, 'the band goes with the Intersections check box');
+  await page.locator('#show-intersections').check();
 });
 
 test('phone width: no sideways scrolling, and a tap adds a point', async () => {
