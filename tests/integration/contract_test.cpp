@@ -1,0 +1,385 @@
+// The OpenAPI contract against the running service (issue 8): api/openapi.yaml is
+// served byte for byte; every example in it is sent and answered as documented; every
+// constraint of every request schema, broken on purpose, is answered with the
+// documented 4xx problem; and every answer, errors included, matches the spec's
+// schemas (a status, media type or member the spec does not describe fails).
+#include <httplib.h>
+
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "api/limits.hpp"
+#include "tests/contract/schema_violations.hpp"
+#include "tests/support/openapi_validator.hpp"
+#include "tests/support/service_process.hpp"
+
+namespace bezier::test {
+namespace {
+
+using nlohmann::json;
+
+const OpenApiContract& contract() { return openapi_contract(); }
+
+/// One HTTP request to the service, recorded as an exchange (headers included).
+HttpExchange send(int port, const std::string& method, const std::string& path,
+                  const std::string& content_type = "", const std::string& body = "",
+                  const httplib::Headers& headers = {}) {
+  httplib::Client client("127.0.0.1", port);
+  client.set_read_timeout(30, 0);
+  const char* type = content_type.empty() ? "application/json" : content_type.c_str();
+  const httplib::Result r = [&] {
+    if (method == "HEAD") return client.Head(path.c_str(), headers);
+    if (method == "POST") return client.Post(path.c_str(), headers, body, type);
+    if (method == "PUT") return client.Put(path.c_str(), headers, body, type);
+    if (method == "PATCH") return client.Patch(path.c_str(), headers, body, type);
+    if (method == "DELETE") return client.Delete(path.c_str(), headers);
+    if (method == "OPTIONS") return client.Options(path.c_str(), headers);
+    return client.Get(path.c_str(), headers);
+  }();
+  HttpExchange e;
+  e.method = method;
+  e.path = path;
+  e.request_content_type = content_type;
+  e.request_body = body;
+  if (!r) {
+    ADD_FAILURE() << method << " " << path << ": no answer";
+    return e;
+  }
+  e.status = r->status;
+  e.response_content_type = r->get_header_value("Content-Type");
+  e.response_body = r->body;
+  e.headers_known = true;
+  for (const auto& [name, value] : r->headers) {
+    std::string lower;
+    for (const char c : name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    e.response_headers[lower] = value;
+  }
+  return e;
+}
+
+/// Sends and checks the answer against the spec.
+HttpExchange exchange(int port, const std::string& method, const std::string& path,
+                      const std::string& content_type = "", const std::string& body = "",
+                      const httplib::Headers& headers = {}) {
+  HttpExchange e = send(port, method, path, content_type, body, headers);
+  SCOPED_TRACE(method + " " + path + " " + body.substr(0, 300));
+  expect_conforms(e);
+  return e;
+}
+
+/// "" when `actual` equals `expected` (numbers to 1e-12 relative to max(1, |expected|):
+/// examples are written from closed forms, the service rounds); else where they differ.
+std::string mismatch(const json& actual, const json& expected, const std::string& at = "") {
+  if (expected.is_number() && actual.is_number()) {
+    const double a = actual.get<double>();
+    const double e = expected.get<double>();
+    return std::fabs(a - e) <= 1e-12 * std::max(1.0, std::fabs(e)) ? "" : at + ": " + actual.dump() + " != " + expected.dump();
+  }
+  if (actual.type() != expected.type()) return at + ": " + actual.dump() + " != " + expected.dump();
+  if (expected.is_array()) {
+    if (actual.size() != expected.size()) return at + ": " + actual.dump() + " != " + expected.dump();
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      if (auto m = mismatch(actual[i], expected[i], at + "/" + std::to_string(i)); !m.empty()) return m;
+    }
+    return "";
+  }
+  if (expected.is_object()) {
+    for (const auto& [k, v] : actual.items()) {
+      if (!expected.contains(k)) return at + "/" + k + ": not in the example";
+    }
+    for (const auto& [k, v] : expected.items()) {
+      if (!actual.contains(k)) return at + "/" + k + ": missing";
+      if (auto m = mismatch(actual.at(k), v, at + "/" + k); !m.empty()) return m;
+    }
+    return "";
+  }
+  return actual == expected ? "" : at + ": " + actual.dump() + " != " + expected.dump();
+}
+
+struct Operation {
+  std::string path;
+  std::string method;  // lower case, as in the spec
+  std::string location;
+};
+
+std::vector<Operation> operations() {
+  std::vector<Operation> out;
+  for (const auto& [path, item] : contract().spec().at("paths").items()) {
+    for (const char* m : {"get", "post", "put", "patch", "delete"}) {
+      if (item.contains(m)) out.push_back({path, m, "/paths/" + pointer_token(path) + "/" + m});
+    }
+  }
+  return out;
+}
+
+std::string upper(std::string s) {
+  for (auto& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+/// The concrete path of an operation: path parameters take their documented example.
+std::string concrete_path(const Operation& op) {
+  std::string path = op.path;
+  const json& node = contract().at(op.location);
+  for (const auto& p : member_or_empty(node, "parameters")) {
+    const json& param = p.contains("$ref") ? contract().at(p.at("$ref").get<std::string>()) : p;
+    if (param.at("in") != "path") continue;
+    EXPECT_TRUE(param.contains("example")) << op.path << ": path parameter without an example";
+    std::string name = "{";
+    name += param.at("name").get<std::string>();
+    name += "}";
+    if (const auto at = path.find(name); at != std::string::npos) path.replace(at, name.size(), param.value("example", "x"));
+  }
+  return path;
+}
+
+/// Where the request schema of an operation is, or "" when it takes no body.
+std::string request_schema(const Operation& op) {
+  const json& node = contract().at(op.location);
+  if (!node.contains("requestBody")) return "";
+  return contract().resolve(op.location + "/requestBody") + "/content/application~1json/schema";
+}
+
+/// The response example called `name` of an operation: {status, location of the example}.
+std::pair<int, std::string> response_example(const Operation& op, const std::string& name) {
+  for (const auto& [status, ref] : contract().at(op.location + "/responses").items()) {
+    const std::string response = contract().resolve(op.location + "/responses/" + status);
+    for (const auto& [media, content] : member_or_empty(contract().at(response), "content").items()) {
+      if (content.contains("examples") && content.at("examples").contains(name)) {
+        return {std::stoi(status), response + "/content/" + pointer_token(media) + "/examples/" + name};
+      }
+    }
+  }
+  return {0, ""};
+}
+
+class ContractTest : public ::testing::Test {
+ protected:
+  // The service runs with its default limits: the spec's bounds are those defaults.
+  static void SetUpTestSuite() { service_ = new ServiceProcess(); }
+  static void TearDownTestSuite() {
+    delete service_;
+    service_ = nullptr;
+  }
+  static int port() { return service_->port(); }
+  static inline ServiceProcess* service_ = nullptr;
+};
+
+TEST_F(ContractTest, TheServedSpecIsTheFile) {
+  const auto e = exchange(port(), "GET", "/openapi.yaml");
+  std::ifstream file(std::string(BEZIER_SOURCE_DIR) + "/api/openapi.yaml", std::ios::binary);
+  std::stringstream text;
+  text << file.rdbuf();
+  EXPECT_TRUE(e.response_body == text.str())
+      << "GET /openapi.yaml (" << e.response_body.size() << " bytes) is not api/openapi.yaml ("
+      << text.str().size() << " bytes): rebuild the service";
+  EXPECT_EQ(contract().spec().at("openapi"), "3.1.0");
+}
+
+TEST_F(ContractTest, TheSpecStatesTheServiceDefaults) {
+  const api::Limits defaults;
+  const json& limits = contract().spec().at("info").at("x-limits");
+  EXPECT_EQ(limits.at("max_degree"), defaults.max_degree);
+  EXPECT_EQ(limits.at("max_t_values"), defaults.max_t_values);
+  EXPECT_EQ(limits.at("max_body_bytes"), defaults.max_body_bytes);
+  EXPECT_EQ(limits.at("max_work"), defaults.max_work);
+  const auto schema = [](const std::string& name) { return contract().at("/components/schemas/" + name); };
+  EXPECT_EQ(schema("Points2").at("maxItems"), defaults.max_degree + 1);
+  EXPECT_EQ(schema("Points3").at("maxItems"), defaults.max_degree + 1);
+  EXPECT_EQ(schema("Parameters").at("oneOf").at(1).at("maxItems"), defaults.max_t_values);
+  EXPECT_EQ(schema("Samples").at("maximum"), defaults.max_t_values);
+  EXPECT_EQ(schema("EvaluateRequest").at("properties").at("derivatives").at("maximum"), defaults.max_degree);
+  EXPECT_EQ(schema("PolarRequest").at("properties").at("t0").at("oneOf").at(1).at("maxItems"), defaults.max_degree);
+}
+
+TEST_F(ContractTest, ExamplesMatchTheirOwnSchemas) {
+  for (const Operation& op : operations()) {
+    SCOPED_TRACE(op.method + " " + op.path);
+    if (const std::string schema = request_schema(op); !schema.empty()) {
+      const std::string media = contract().resolve(op.location + "/requestBody") + "/content/application~1json";
+      for (const auto& [name, example] : member_or_empty(contract().at(media), "examples").items()) {
+        for (const auto& e : contract().schema_errors(schema, example.at("value"))) ADD_FAILURE() << name << ": " << e;
+      }
+    }
+    for (const auto& [status, ref] : contract().at(op.location + "/responses").items()) {
+      const std::string response = contract().resolve(op.location + "/responses/" + status);
+      for (const auto& [media, content] : member_or_empty(contract().at(response), "content").items()) {
+        for (const auto& [name, example] : member_or_empty(content, "examples").items()) {
+          const std::string schema = response + "/content/" + pointer_token(media) + "/schema";
+          for (const auto& e : contract().schema_errors(schema, example.at("value"))) {
+            ADD_FAILURE() << status << " " << name << ": " << e;
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST_F(ContractTest, EveryExampleIsAnsweredAsDocumented) {
+  for (const Operation& op : operations()) {
+    SCOPED_TRACE(op.method + " " + op.path);
+    const std::string path = concrete_path(op);
+    int answered = 0;
+    if (request_schema(op).empty()) {
+      // No request body: one request, and every 200 example must be its answer.
+      const auto e = exchange(port(), upper(op.method), path);
+      EXPECT_EQ(e.status, 200) << e.response_body;
+      const std::string ok = contract().resolve(op.location + "/responses/200");
+      for (const auto& [media, content] : member_or_empty(contract().at(ok), "content").items()) {
+        for (const auto& [name, example] : member_or_empty(content, "examples").items()) {
+          EXPECT_EQ(mismatch(json::parse(e.response_body, nullptr, false), example.at("value")), "") << name;
+        }
+      }
+      answered += e.status == 200;
+      EXPECT_EQ(exchange(port(), "HEAD", path).status, 200);
+    } else {
+      // Every request example (valid or x-invalid-request-examples) is answered by the
+      // response example of the same name.
+      const std::string media = contract().resolve(op.location + "/requestBody") + "/content/application~1json";
+      json examples = json::object();
+      for (const json* group : {&member_or_empty(contract().at(media), "examples"),
+                                &member_or_empty(contract().at(op.location), "x-invalid-request-examples")}) {
+        if (group->is_object()) examples.update(*group);
+      }
+      for (const auto& [name, example] : examples.items()) {
+        SCOPED_TRACE("example " + name);
+        const auto [status, where] = response_example(op, name);
+        ASSERT_NE(status, 0) << "no response example named " << name;
+        const auto e = exchange(port(), "POST", path, "application/json", example.at("value").dump());
+        EXPECT_EQ(e.status, status) << e.response_body;
+        EXPECT_EQ(mismatch(json::parse(e.response_body, nullptr, false), contract().at(where).at("value")), "");
+        answered += e.status >= 200 && e.status < 300;
+      }
+    }
+    EXPECT_GE(answered, 1) << "no example of a successful call";
+  }
+}
+
+TEST_F(ContractTest, EveryRequestConstraintIsEnforced) {
+  const ViolationGenerator generator(contract());
+  for (const Operation& op : operations()) {
+    const std::string schema = request_schema(op);
+    if (schema.empty()) continue;
+    SCOPED_TRACE(op.method + " " + op.path);
+    const std::string media = contract().resolve(op.location + "/requestBody") + "/content/application~1json";
+    std::set<std::string> uncovered = generator.sites(schema);
+    int sent = 0;
+    for (const auto& [name, example] : contract().at(media).at("examples").items()) {
+      for (const SchemaViolation& v : generator.violations(schema, example.at("value"))) {
+        SCOPED_TRACE(name + ": " + v.what + " (" + v.site + "): " + v.request.dump().substr(0, 300));
+        const auto e = exchange(port(), "POST", op.path, "application/json", v.request.dump());
+        const bool whole_body = v.pointers.size() == 1 && v.pointers[0].empty();
+        EXPECT_EQ(e.status, whole_body ? 400 : 422) << e.response_body;
+        uncovered.erase(v.site);
+        ++sent;
+        const json problem = json::parse(e.response_body, nullptr, false);
+        if (whole_body || e.status != 422 || !problem.contains("errors")) continue;
+        EXPECT_EQ(problem.at("type"), "urn:bezier-service:problem:validation");
+        // Some error points at what was broken: the same member, one inside or around it,
+        // or a sibling in the same array (a point that is ragged against the others).
+        const auto related = [&](const std::string& p) {
+          for (const auto& q : v.pointers) {
+            const auto parent = [](const std::string& s) { return s.substr(0, s.rfind('/')); };
+            if (p == q || p.rfind(q + "/", 0) == 0 || q.rfind(p + "/", 0) == 0 ||
+                (!parent(p).empty() && parent(p) == parent(q))) {
+              return true;
+            }
+          }
+          return false;
+        };
+        bool found = false;
+        for (const auto& err : problem.at("errors")) found = found || related(err.at("pointer").get<std::string>());
+        EXPECT_TRUE(found) << "no error points at " << json(v.pointers).dump() << ": " << e.response_body;
+      }
+    }
+    for (const auto& site : uncovered) ADD_FAILURE() << "no request example lets the test break " << site;
+    std::printf("%s %s: %d requests, each breaking one of %zu constraints\n", upper(op.method).c_str(),
+                op.path.c_str(), sent, generator.sites(schema).size());
+  }
+}
+
+TEST_F(ContractTest, EveryBoundIsAccepted) {
+  const ViolationGenerator generator(contract());
+  for (const Operation& op : operations()) {
+    const std::string schema = request_schema(op);
+    if (schema.empty()) continue;
+    SCOPED_TRACE(op.method + " " + op.path);
+    const std::string media = contract().resolve(op.location + "/requestBody") + "/content/application~1json";
+    std::set<std::string> unreached = generator.bound_sites(schema);
+    std::map<std::string, std::string> refusals;
+    for (const auto& [name, example] : contract().at(media).at("examples").items()) {
+      for (const SchemaViolation& b : generator.boundaries(schema, example.at("value"))) {
+        const auto e = exchange(port(), "POST", op.path, "application/json", b.request.dump());
+        if (e.status == 200) {
+          unreached.erase(b.site);
+        } else {
+          refusals[b.site] = name + ": " + b.what + " -> " + std::to_string(e.status) + " " + e.response_body.substr(0, 300);
+        }
+      }
+    }
+    // A bound the service refuses from every example is a spec looser than the service
+    // (or an example missing: each bound needs one example from which it is reachable).
+    for (const auto& site : unreached) ADD_FAILURE() << "no example reaches the bound " << site << ": " << refusals[site];
+  }
+}
+
+TEST_F(ContractTest, ErrorsOutsideTheSchemasAreDocumented) {
+  for (const Operation& op : operations()) {
+    SCOPED_TRACE(op.method + " " + op.path);
+    const std::string path = concrete_path(op);
+    if (op.method == "post") {
+      EXPECT_EQ(exchange(port(), "POST", path, "application/json", "{\"points\": [[0,0],").status, 400);
+      EXPECT_EQ(exchange(port(), "POST", path, "application/json", "[1, 2]").status, 400);
+      EXPECT_EQ(exchange(port(), "POST", path, "application/json", "").status, 400);
+      EXPECT_EQ(exchange(port(), "POST", path, "text/plain", "{}").status, 415);
+      const std::string huge = "{\"pad\": \"" + std::string(api::Limits{}.max_body_bytes, 'x') + "\"}";
+      EXPECT_EQ(exchange(port(), "POST", path, "application/json", huge).status, 413);
+      // A non-finite number is a field error, with its pointer.
+      EXPECT_EQ(exchange(port(), "POST", path, "application/json", "{\"points\": [[0, 1e999]]}").status, 422);
+      for (const char* m : {"GET", "HEAD", "PUT", "PATCH", "DELETE", "OPTIONS"}) {
+        EXPECT_EQ(exchange(port(), m, path, "application/json", "{}").status, 405) << m;
+      }
+    } else {
+      for (const char* m : {"POST", "PUT", "PATCH", "DELETE", "OPTIONS"}) {
+        EXPECT_EQ(exchange(port(), m, path, "application/json", "{}").status, 405) << m;
+      }
+    }
+  }
+  EXPECT_EQ(exchange(port(), "GET", "/no-such-route").status, 404);
+  EXPECT_EQ(exchange(port(), "POST", "/no-such-route", "application/json", "{}").status, 404);
+  EXPECT_EQ(exchange(port(), "GET", "/playground/no-such-file.html").status, 404);
+}
+
+TEST(ContractWithToken, UnauthorizedIsDocumented) {
+  ServiceProcess service({}, {"BEZIER_AUTH_TOKEN=contract-secret"});
+  for (const Operation& op : operations()) {
+    if (op.method != "post") continue;
+    const json& examples = contract().at(contract().resolve(op.location + "/requestBody") + "/content/application~1json/examples");
+    const std::string body = examples.begin()->at("value").dump();
+    EXPECT_EQ(exchange(service.port(), "POST", op.path, "application/json", body).status, 401) << op.path;
+    EXPECT_EQ(exchange(service.port(), "POST", op.path, "application/json", body,
+                       {{"Authorization", "Bearer contract-secret"}}).status, 200) << op.path;
+  }
+}
+
+TEST(ContractWhileDraining, NotReadyIsDocumented) {
+  ServiceProcess service({"--drain-seconds", "2"});
+  EXPECT_EQ(exchange(service.port(), "GET", "/readyz").status, 200);
+  service.signal(SIGTERM);
+  int status = 200;
+  for (int i = 0; i < 100 && status == 200; ++i) {
+    status = send(service.port(), "GET", "/readyz").status;
+    if (status == 200) usleep(10000);
+  }
+  EXPECT_EQ(exchange(service.port(), "GET", "/readyz").status, 503);
+  EXPECT_EQ(exchange(service.port(), "GET", "/healthz").status, 200);
+  EXPECT_EQ(service.wait_exit(), std::optional<int>(0));
+}
+
+}  // namespace
+}  // namespace bezier::test
