@@ -64,7 +64,8 @@ std::optional<std::pair<double, double>> read_interval(RequestReader& reader, co
   const auto ts = reader.numbers(value, "/interval", 0.0, 1.0);
   if (!ts) return std::nullopt;
   if (ts->size() != 2) {
-    reader.fail("/interval", "expected exactly 2 numbers [t1, t2], got " + std::to_string(ts->size()));
+    reader.fail("/interval",
+                "expected exactly 2 numbers [t1, t2], got " + std::to_string(ts->size()));
     return std::nullopt;
   }
   if (!((*ts)[0] < (*ts)[1])) {
@@ -91,10 +92,11 @@ Reply loops_answer(const core::Curve& curve, const Limits& limits) {
   options.max_work = limits.max_work;
   const core::LoopAreaResult result = core::loop_area(curve, options);
   if (result.status == core::SelfIntersectionStatus::work_cap_reached) {
-    return problem_reply(ProblemKind::work_cap,
-                         "the self-intersection search examined " + std::to_string(result.stats.work) +
-                             " parameter boxes, the per-request cap, without finishing (a curve that "
-                             "retraces itself without being a straight line needs unbounded work)");
+    return problem_reply(
+        ProblemKind::work_cap,
+        "the self-intersection search examined " + std::to_string(result.stats.work) +
+            " parameter boxes, the per-request cap, without finishing (a curve that "
+            "retraces itself without being a straight line needs unbounded work)");
   }
   nlohmann::json loops = nlohmann::json::array();
   for (const core::Loop& loop : result.loops) {
@@ -106,13 +108,15 @@ Reply loops_answer(const core::Curve& curve, const Limits& limits) {
   }
   nlohmann::json overlaps = nlohmann::json::array();
   for (const core::SelfOverlap& o : result.overlaps) {
-    overlaps.push_back({{"t_interval", pair_json(o.t_lo, o.t_hi)}, {"s_interval", pair_json(o.s_lo, o.s_hi)}});
+    overlaps.push_back(
+        {{"t_interval", pair_json(o.t_lo, o.t_hi)}, {"s_interval", pair_json(o.s_lo, o.s_hi)}});
   }
   return json_reply({{"degree", curve.degree()},
                      {"loops", std::move(loops)},
                      {"area", result.area},
                      {"closed", result.closed},
-                     {"closed_area", result.closed_area ? nlohmann::json(*result.closed_area) : nlohmann::json(nullptr)},
+                     {"closed_area", result.closed_area ? nlohmann::json(*result.closed_area)
+                                                        : nlohmann::json(nullptr)},
                      {"overlaps", std::move(overlaps)},
                      {"stats",
                       {{"method", method_name(result.stats.method)},
@@ -127,9 +131,11 @@ Reply loop_area_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
   reader.reject_unknown_fields(request, {"points", "interval"}, "");
   std::optional<core::Curve> curve;
-  if (const auto* points = reader.required(request, "points", "")) curve = reader.curve2(*points, "/points");
+  if (const auto* points = reader.required(request, "points", ""))
+    curve = reader.curve2(*points, "/points");
   std::optional<std::pair<double, double>> interval;
-  if (const auto* value = RequestReader::optional(request, "interval")) interval = read_interval(reader, *value);
+  if (const auto* value = RequestReader::optional(request, "interval"))
+    interval = read_interval(reader, *value);
   if (!reader.ok()) return validation_reply(reader.take_errors());
   if (interval) return interval_answer(*curve, interval->first, interval->second);
   return loops_answer(*curve, limits);

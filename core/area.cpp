@@ -25,8 +25,9 @@ double enclosed_area(std::span<const Point2> points) {
     const Point2 pi = points[static_cast<std::size_t>(i)] - origin;
     double row = 0.0;
     for (int j = i + 1; j <= n; ++j) {
-      const double weight = ((j - i) * cn[static_cast<std::size_t>(i)] * cn[static_cast<std::size_t>(j)]) /
-                            (scale * c2[static_cast<std::size_t>(i + j - 1)]);
+      const double weight =
+          ((j - i) * cn[static_cast<std::size_t>(i)] * cn[static_cast<std::size_t>(j)]) /
+          (scale * c2[static_cast<std::size_t>(i + j - 1)]);
       row += weight * cross(pi, points[static_cast<std::size_t>(j)] - origin);
     }
     area += row;
@@ -78,7 +79,9 @@ double enclosed_area(const Curve& curve, double a, double b) {
   return enclosed_area(piece);
 }
 
-double enclosed_area(const Curve& curve) { return enclosed_area(curve.points()); }
+double enclosed_area(const Curve& curve) {
+  return enclosed_area(curve.points());
+}
 
 double signed_area(const Curve& curve, double a, double b) {
   // The closed path is the curve piece plus the chord B(b) -> B(a); the chord's own Green
@@ -91,9 +94,13 @@ double signed_area(const Curve& curve, double a, double b) {
   return enclosed_area(piece) + 0.5 * cross(piece.front(), piece.back());
 }
 
-double signed_area(const Curve& curve) { return signed_area(curve, 0.0, 1.0); }
+double signed_area(const Curve& curve) {
+  return signed_area(curve, 0.0, 1.0);
+}
 
-bool is_closed(const Curve& curve) noexcept { return curve.front() == curve.back(); }
+bool is_closed(const Curve& curve) noexcept {
+  return curve.front() == curve.back();
+}
 
 std::optional<double> closed_area(const Curve& curve) {
   if (!is_closed(curve)) return std::nullopt;

@@ -17,7 +17,9 @@ double bernstein_value(std::span<const double> c, double t) {
   return w[0];
 }
 
-int sign_of(double v) { return v > 0.0 ? 1 : (v < 0.0 ? -1 : 0); }
+int sign_of(double v) {
+  return v > 0.0 ? 1 : (v < 0.0 ? -1 : 0);
+}
 
 /// An interval on which x' has one sign (all Bernstein coefficients of that sign).
 struct SignRun {
@@ -97,8 +99,10 @@ CollinearOverlaps collinear_self_overlaps(std::span<const Point2> points,
     ++out.work;
     Pending node = std::move(stack.back());
     stack.pop_back();
-    const bool positive = std::all_of(node.c.begin(), node.c.end(), [](double v) { return v > 0.0; });
-    const bool negative = std::all_of(node.c.begin(), node.c.end(), [](double v) { return v < 0.0; });
+    const bool positive =
+        std::all_of(node.c.begin(), node.c.end(), [](double v) { return v > 0.0; });
+    const bool negative =
+        std::all_of(node.c.begin(), node.c.end(), [](double v) { return v < 0.0; });
     if (positive || negative) {
       runs.push_back({node.lo, node.hi, positive ? 1 : -1});
       continue;
@@ -110,7 +114,8 @@ CollinearOverlaps collinear_self_overlaps(std::span<const Point2> points,
     std::vector<double> right = node.c;
     left[0] = right[0];
     for (std::size_t k = 1; k < right.size(); ++k) {
-      for (std::size_t i = 0; i + k < right.size(); ++i) right[i] = 0.5 * right[i] + 0.5 * right[i + 1];
+      for (std::size_t i = 0; i + k < right.size(); ++i)
+        right[i] = 0.5 * right[i] + 0.5 * right[i + 1];
       left[k] = right[0];
     }
     const double mid = 0.5 * (node.lo + node.hi);
@@ -145,17 +150,21 @@ CollinearOverlaps collinear_self_overlaps(std::span<const Point2> points,
   const double x_tol = dist_tol / std::sqrt(len2);
   for (std::size_t p = 0; p + 1 < signs.size(); ++p) {
     for (std::size_t q = p + 1; q < signs.size(); ++q) {
-      const double lo = std::max(std::min(values[p], values[p + 1]), std::min(values[q], values[q + 1]));
-      const double hi = std::min(std::max(values[p], values[p + 1]), std::max(values[q], values[q + 1]));
+      const double lo =
+          std::max(std::min(values[p], values[p + 1]), std::min(values[q], values[q + 1]));
+      const double hi =
+          std::min(std::max(values[p], values[p + 1]), std::max(values[q], values[q + 1]));
       if (!(hi - lo > x_tol)) continue;
       const double t1 = preimage(p, lo), t2 = preimage(p, hi);
       const double s1 = preimage(q, lo), s2 = preimage(q, hi);
-      out.overlaps.push_back({std::min(t1, t2), std::max(t1, t2), std::min(s1, s2), std::max(s1, s2)});
+      out.overlaps.push_back(
+          {std::min(t1, t2), std::max(t1, t2), std::min(s1, s2), std::max(s1, s2)});
     }
   }
-  std::sort(out.overlaps.begin(), out.overlaps.end(), [](const SelfOverlap& a, const SelfOverlap& b) {
-    return a.t_lo != b.t_lo ? a.t_lo < b.t_lo : a.s_lo < b.s_lo;
-  });
+  std::sort(out.overlaps.begin(), out.overlaps.end(),
+            [](const SelfOverlap& a, const SelfOverlap& b) {
+              return a.t_lo != b.t_lo ? a.t_lo < b.t_lo : a.s_lo < b.s_lo;
+            });
   return out;
 }
 

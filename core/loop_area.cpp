@@ -11,7 +11,8 @@ LoopAreaResult loop_area(const Curve& curve, const SelfIntersectionOptions& opti
   LoopAreaResult result;
   for (const SelfIntersection& pair : found.pairs) {
     const double signed_area = enclosed_area(curve, pair.t, pair.s);
-    result.loops.push_back({pair.t, pair.s, pair.point, std::fabs(signed_area), signed_area, pair.kind});
+    result.loops.push_back(
+        {pair.t, pair.s, pair.point, std::fabs(signed_area), signed_area, pair.kind});
     result.area += std::fabs(signed_area);
   }
   result.closed = is_closed(curve);

@@ -48,6 +48,7 @@ struct LoopAreaResult {
 /// trivial pair (0, 1) is not a loop: its area is closed_area. With status
 /// work_cap_reached the loops found so far are listed but may be incomplete.
 /// Precondition: finite coordinates.
-[[nodiscard]] LoopAreaResult loop_area(const Curve& curve, const SelfIntersectionOptions& options = {});
+[[nodiscard]] LoopAreaResult loop_area(const Curve& curve,
+                                       const SelfIntersectionOptions& options = {});
 
 }  // namespace bezier::core

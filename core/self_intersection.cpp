@@ -121,7 +121,8 @@ std::vector<SelfIntersection> clean_up(std::vector<Candidate> candidates, const 
 
 /// Groups contact boxes that touch (within one box width) into clusters.
 std::vector<ParameterBox> cluster(std::vector<ParameterBox> boxes) {
-  std::sort(boxes.begin(), boxes.end(), [](const ParameterBox& a, const ParameterBox& b) { return a.u_lo < b.u_lo; });
+  std::sort(boxes.begin(), boxes.end(),
+            [](const ParameterBox& a, const ParameterBox& b) { return a.u_lo < b.u_lo; });
   std::vector<ParameterBox> clusters;
   for (const ParameterBox& b : boxes) {
     const double w = std::max(b.u_hi - b.u_lo, b.v_hi - b.v_lo);
@@ -147,7 +148,8 @@ std::vector<ParameterBox> cluster(std::vector<ParameterBox> boxes) {
 void resolve_contacts(const SelfIntersectionSearchOutcome& found, const CurveFacts& facts,
                       std::vector<Candidate>& candidates, SelfIntersectionStats& stats) {
   double width = 0.0;
-  for (const ParameterBox& b : found.contact_boxes) width = std::max({width, b.u_hi - b.u_lo, b.v_hi - b.v_lo});
+  for (const ParameterBox& b : found.contact_boxes)
+    width = std::max({width, b.u_hi - b.u_lo, b.v_hi - b.v_lo});
   for (const ParameterBox& c : cluster(found.contact_boxes)) {
     const ParameterBox region{std::max(0.0, c.u_lo - width), std::min(1.0, c.u_hi + width),
                               std::max(0.0, c.v_lo - width), std::min(1.0, c.v_hi + width)};
@@ -169,7 +171,8 @@ SelfIntersectionResult collinear_result(const CurveFacts& facts, const Collinear
                                         const SelfIntersectionOptions& options) {
   SelfIntersectionResult result;
   result.stats.method = SelfIntersectionMethod::collinear;
-  CollinearOverlaps found = collinear_self_overlaps(facts.points, frame, facts.dist_tol, options.max_work);
+  CollinearOverlaps found =
+      collinear_self_overlaps(facts.points, frame, facts.dist_tol, options.max_work);
   result.stats.work = found.work;
   result.overlaps = std::move(found.overlaps);
   if (found.work_cap_reached) {
@@ -189,7 +192,8 @@ SelfIntersectionResult closed_form_cubic(const CurveFacts& facts) {
   if (!dp || !dp->on_segment) return result;
   if (facts.closed && dp->t1 == 0.0 && dp->t2 == 1.0) return result;  // the trivial pair
   double u = dp->t1, v = dp->t2;
-  const PairRefinement polished = refine_double_point(facts.points, u, v, {0.0, 1.0, 0.0, 1.0}, facts.rounding, 8);
+  const PairRefinement polished =
+      refine_double_point(facts.points, u, v, {0.0, 1.0, 0.0, 1.0}, facts.rounding, 8);
   ++result.stats.newton_runs;
   result.stats.newton_iterations += polished.iterations;
   if (polished.converged && polished.u < polished.v) {
@@ -205,7 +209,8 @@ SelfIntersectionResult closed_form_cubic(const CurveFacts& facts) {
 
 }  // namespace
 
-SelfIntersectionResult self_intersections(const Curve& curve, const SelfIntersectionOptions& options) {
+SelfIntersectionResult self_intersections(const Curve& curve,
+                                          const SelfIntersectionOptions& options) {
   // Work on the curve scaled by 2^k so that its largest coordinate lies in [1, 2): exact
   // (barring underflow of coordinates 2^-1000 below the largest), leaves every parameter
   // unchanged, and lets the inner loops use sqrt(v·v) without overflow.
@@ -221,7 +226,8 @@ SelfIntersectionResult self_intersections(const Curve& curve, const SelfIntersec
   const std::span<const Point2> points = normalized.points();
   const double s = std::ldexp(original_scale, k);
   const double rounding = 4.0 * static_cast<double>(points.size()) * kUnitRoundoff * s;
-  const CurveFacts facts{normalized, points, s, options.dist_rel * s, rounding, curve.front() == curve.back()};
+  const CurveFacts facts{normalized,           points,   s,
+                         options.dist_rel * s, rounding, curve.front() == curve.back()};
 
   SelfIntersectionResult result;
   if (const auto frame = collinear_frame(points, facts.dist_tol)) {
@@ -230,11 +236,13 @@ SelfIntersectionResult self_intersections(const Curve& curve, const SelfIntersec
     result = closed_form_cubic(facts);
   } else {
     const SelfIntersectionSearchOutcome found = search_self_intersections(
-        points, {facts.dist_tol, facts.rounding, options.max_work, options.max_depth, facts.closed});
+        points,
+        {facts.dist_tol, facts.rounding, options.max_work, options.max_depth, facts.closed});
     result.stats = found.stats;
     result.stats.method = SelfIntersectionMethod::subdivision;
     std::vector<Candidate> candidates;
-    for (const PairRefinement& r : found.crossings) candidates.push_back({r.u, r.v, r.residual, false});
+    for (const PairRefinement& r : found.crossings)
+      candidates.push_back({r.u, r.v, r.residual, false});
     resolve_contacts(found, facts, candidates, result.stats);
     result.pairs = clean_up(std::move(candidates), facts);
     if (found.work_cap_reached) result.status = SelfIntersectionStatus::work_cap_reached;

@@ -129,7 +129,7 @@ struct SelfIntersectionOptions {
 /// half-plane and cone criteria are the classical ones for curve pieces without loops
 /// (Sederberg & Meyers 1988, "Loop detection in surface patch intersections").
 /// Precondition: finite coordinates.
-[[nodiscard]] SelfIntersectionResult self_intersections(const Curve& curve,
-                                                        const SelfIntersectionOptions& options = {});
+[[nodiscard]] SelfIntersectionResult self_intersections(
+    const Curve& curve, const SelfIntersectionOptions& options = {});
 
 }  // namespace bezier::core

@@ -90,8 +90,8 @@ PairRefinement refine_double_point(std::span<const Point2> points, double u0, do
     u += du;
     v += dv;
     if (!inside(u, v, box)) return best;
-    const double floor = rounding * std::numbers::sqrt2 * std::max(norm(ju.d1), norm(jv.d1)) /
-                         std::fabs(det);
+    const double floor =
+        rounding * std::numbers::sqrt2 * std::max(norm(ju.d1), norm(jv.d1)) / std::fabs(det);
     const double small = std::max(kConvergedStep, 4.0 * floor);
     // A step at the noise floor leaves an error of order step^2 (or of the noise): done.
     // The residual reported is the one before the step, an upper bound up to rounding.

@@ -12,7 +12,9 @@ namespace bezier::core {
 // [1, 2), and lengths are then sqrt(v·v) instead of the slower overflow-safe hypot.
 
 /// |v| = sqrt(v·v), for normalised coordinates (no overflow protection).
-[[nodiscard]] inline double norm(Point2 v) noexcept { return std::sqrt(dot(v, v)); }
+[[nodiscard]] inline double norm(Point2 v) noexcept {
+  return std::sqrt(dot(v, v));
+}
 
 /// B(t), B'(t) and B''(t) of the curve with control points `points` (degree n >= 1;
 /// B'' is zero for n = 1).

@@ -183,8 +183,8 @@ class Search {
   void process(const Box& box) {
     out_.stats.max_depth = std::max(out_.stats.max_depth, box.depth);
     // Work on copies: children are pushed where this box's pieces were.
-    Point2* const i_half = scratch_.data();             // I0, I1
-    Point2* const j_half = scratch_.data() + 2 * m_;    // J0, J1
+    Point2* const i_half = scratch_.data();           // I0, I1
+    Point2* const j_half = scratch_.data() + 2 * m_;  // J0, J1
     const Point2* const pi = arena_.data() + box.offset;
     const Point2* const pj = pi + m_;
     if (box.kind == BoxKind::apart) {
@@ -232,7 +232,8 @@ class Search {
       // At most one pair in the box: if Newton lands inside, that is it.
       if (try_newton(box, pi, pj)) return true;
     }
-    const bool flat = flatness(pi, m_) <= settings_.dist_tol && flatness(pj, m_) <= settings_.dist_tol;
+    const bool flat =
+        flatness(pi, m_) <= settings_.dist_tol && flatness(pj, m_) <= settings_.dist_tol;
     if (flat || box.depth >= settings_.max_depth) {
       out_.contact_boxes.push_back({box.a, box.b, box.c, box.d});
       ++out_.stats.contact_candidates;

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "api/handler.hpp"
@@ -13,12 +13,15 @@ using nlohmann::json;
 
 constexpr const char* kDegree7 = R"([[0,0],[1,1],[2,3],[1,4],[0,4],[-1,3],[0,1],[1,0]])";
 
-Reply post(const std::string& body, const Limits& limits = Limits{}) { return handle("/loop-area", body, limits); }
+Reply post(const std::string& body, const Limits& limits = Limits{}) {
+  return handle("/loop-area", body, limits);
+}
 
 json call(const std::string& body, int expected_status, const Limits& limits = Limits{}) {
   const Reply reply = post(body, limits);
   EXPECT_EQ(reply.status, expected_status) << reply.body;
-  EXPECT_EQ(reply.content_type, expected_status == 200 ? "application/json" : "application/problem+json");
+  EXPECT_EQ(reply.content_type,
+            expected_status == 200 ? "application/json" : "application/problem+json");
   return json::parse(reply.body);
 }
 
@@ -42,7 +45,8 @@ using Pointers = std::vector<std::string>;
 
 TEST(LoopAreaRoute, Degree7ExampleIsTheKernelsAnswerRoundTripped) {
   const json r = call(std::string(R"({"points":)") + kDegree7 + "}", 200);
-  const core::LoopAreaResult k = core::loop_area(core::Curve({{0, 0}, {1, 1}, {2, 3}, {1, 4}, {0, 4}, {-1, 3}, {0, 1}, {1, 0}}));
+  const core::LoopAreaResult k = core::loop_area(
+      core::Curve({{0, 0}, {1, 1}, {2, 3}, {1, 4}, {0, 4}, {-1, 3}, {0, 1}, {1, 0}}));
   ASSERT_EQ(k.loops.size(), 1u);
   EXPECT_EQ(r["degree"], 7);
   ASSERT_EQ(r["loops"].size(), 1u);
@@ -135,14 +139,19 @@ TEST(LoopAreaRoute, ValidationErrorsPointAtTheField) {
   EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":0.5})"), (Pointers{"/interval"}));
   EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[]})"), (Pointers{"/interval"}));
   EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[0.5]})"), (Pointers{"/interval"}));
-  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[0.1,0.2,0.3]})"), (Pointers{"/interval"}));
-  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[-0.1,0.5]})"), (Pointers{"/interval/0"}));
-  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[0.2,1.5]})"), (Pointers{"/interval/1"}));
-  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":["a",0.5]})"), (Pointers{"/interval/0"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[0.1,0.2,0.3]})"),
+            (Pointers{"/interval"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[-0.1,0.5]})"),
+            (Pointers{"/interval/0"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[0.2,1.5]})"),
+            (Pointers{"/interval/1"}));
+  EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":["a",0.5]})"),
+            (Pointers{"/interval/0"}));
   EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[0.5,0.5]})"), (Pointers{"/interval"}));
   EXPECT_EQ(errors_of(R"({"points":[[0,0],[1,1]],"interval":[0.7,0.2]})"), (Pointers{"/interval"}));
   // Every problem at once.
-  EXPECT_EQ(errors_of(R"({"interval":[2,0.5],"extra":1})"), (Pointers{"/extra", "/points", "/interval/0"}));
+  EXPECT_EQ(errors_of(R"({"interval":[2,0.5],"extra":1})"),
+            (Pointers{"/extra", "/points", "/interval/0"}));
 }
 
 TEST(LoopAreaRoute, DegreeAboveTheLimit) {

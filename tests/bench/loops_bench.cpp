@@ -156,7 +156,8 @@ void BM_Loops_Degree7_LoopArea(benchmark::State& state) {
 BENCHMARK(BM_Loops_Degree7_LoopArea);
 
 void BM_Loops_Degree7_SelfIntersections(benchmark::State& state) {
-  for (auto _ : state) benchmark::DoNotOptimize(bezier::core::self_intersections(degree7_example()));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(bezier::core::self_intersections(degree7_example()));
 }
 BENCHMARK(BM_Loops_Degree7_SelfIntersections);
 

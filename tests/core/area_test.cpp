@@ -22,7 +22,8 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 Curve random_dyadic_curve(test::Mulberry32& rng, int degree) {
   std::vector<Point2> pts;
   for (int i = 0; i <= degree; ++i) {
-    pts.push_back({std::floor(rng.uniform(-4096, 4096)) / 4096, std::floor(rng.uniform(-4096, 4096)) / 4096});
+    pts.push_back(
+        {std::floor(rng.uniform(-4096, 4096)) / 4096, std::floor(rng.uniform(-4096, 4096)) / 4096});
   }
   return Curve(std::move(pts));
 }
@@ -38,10 +39,12 @@ TEST(Area, EnclosedAreaMatchesExactPowerBasisIntegralForEveryDegree) {
   for (int degree = 1; degree <= 30; ++degree) {
     for (int k = 0; k < 4; ++k) {
       const Curve c = random_dyadic_curve(rng, degree);
-      const Rational exact = test::exact_enclosed_area(test::power_form(c), Rational(0), Rational(1));
+      const Rational exact =
+          test::exact_enclosed_area(test::power_form(c), Rational(0), Rational(1));
       // Rounding: each of the ~n^2/2 terms carries a few roundings of its size.
       const double tol = 4.0 * degree * degree * kEps * area_scale(c);
-      EXPECT_NEAR(enclosed_area(c), exact.to_double(), tol) << "degree " << degree << " seed state " << rng.state();
+      EXPECT_NEAR(enclosed_area(c), exact.to_double(), tol)
+          << "degree " << degree << " seed state " << rng.state();
     }
   }
 }
@@ -51,7 +54,8 @@ TEST(Area, ExactAtDegreeThirtyOnAlternatingControlPoints) {
   // rule integrates exactly (39); the closed form has no such limit. Alternating control
   // points make the terms cancel heavily.
   std::vector<Point2> pts;
-  for (int i = 0; i <= 30; ++i) pts.push_back({std::ldexp(1.0, -(i % 7)) * (i % 3 - 1), (i % 2 == 0) ? 1.0 : -1.0});
+  for (int i = 0; i <= 30; ++i)
+    pts.push_back({std::ldexp(1.0, -(i % 7)) * (i % 3 - 1), (i % 2 == 0) ? 1.0 : -1.0});
   const Curve c(pts);
   const Rational exact = test::exact_enclosed_area(test::power_form(c), Rational(0), Rational(1));
   EXPECT_NEAR(enclosed_area(c), exact.to_double(), 4.0 * 30 * 30 * kEps);
@@ -76,14 +80,16 @@ TEST(Area, SignedAreaOfAPieceMatchesTheExactIntegral) {
   for (int degree = 1; degree <= 12; ++degree) {
     const Curve c = random_dyadic_curve(rng, degree);
     const test::PowerCurve pc = test::power_form(c);
-    for (const auto& [a, b] : {std::pair{0.25, 0.75}, {0.0, 0.5}, {0.125, 1.0}, {0.75, 0.25}, {0.5, 0.5}}) {
+    for (const auto& [a, b] :
+         {std::pair{0.25, 0.75}, {0.0, 0.5}, {0.125, 1.0}, {0.75, 0.25}, {0.5, 0.5}}) {
       const double tol = 8.0 * degree * degree * kEps * area_scale(c);
       EXPECT_NEAR(signed_area(c, a, b), test::exact_green_integral(pc, a, b).to_double(), tol)
           << "degree " << degree << " [" << a << ", " << b << "]";
       EXPECT_NEAR(enclosed_area(c, a, b), test::exact_enclosed_area(pc, a, b).to_double(), tol)
           << "degree " << degree << " [" << a << ", " << b << "]";
     }
-    EXPECT_NEAR(signed_area(c), test::exact_green_integral(pc, 0, 1).to_double(), 8.0 * degree * degree * kEps * area_scale(c));
+    EXPECT_NEAR(signed_area(c), test::exact_green_integral(pc, 0, 1).to_double(),
+                8.0 * degree * degree * kEps * area_scale(c));
   }
 }
 
@@ -160,7 +166,8 @@ TEST(Area, AffineMapMultipliesByTheDeterminant) {
     const double m10 = std::floor(rng.uniform(-8, 8)) / 4, m11 = std::floor(rng.uniform(-8, 8)) / 4;
     const Point2 shift{std::floor(rng.uniform(-64, 64)) / 8, std::floor(rng.uniform(-64, 64)) / 8};
     std::vector<Point2> mapped;
-    for (const Point2 p : c.points()) mapped.push_back(Point2{m00 * p.x + m01 * p.y, m10 * p.x + m11 * p.y} + shift);
+    for (const Point2 p : c.points())
+      mapped.push_back(Point2{m00 * p.x + m01 * p.y, m10 * p.x + m11 * p.y} + shift);
     const Curve image(mapped);
     const Rational det = Rational(m00) * Rational(m11) - Rational(m01) * Rational(m10);
     const Rational exact = det * test::exact_enclosed_area(test::power_form(c), 0, 1);
@@ -173,8 +180,10 @@ TEST(Area, ReversalFlipsTheSign) {
   test::Mulberry32 rng(16);
   for (int degree = 2; degree <= 12; ++degree) {
     const Curve c = random_dyadic_curve(rng, degree);
-    EXPECT_NEAR(enclosed_area(reversed(c)), -enclosed_area(c), 8.0 * degree * degree * kEps * area_scale(c));
-    EXPECT_NEAR(signed_area(reversed(c)), -signed_area(c), 8.0 * degree * degree * kEps * area_scale(c));
+    EXPECT_NEAR(enclosed_area(reversed(c)), -enclosed_area(c),
+                8.0 * degree * degree * kEps * area_scale(c));
+    EXPECT_NEAR(signed_area(reversed(c)), -signed_area(c),
+                8.0 * degree * degree * kEps * area_scale(c));
   }
 }
 
@@ -189,7 +198,8 @@ TEST(Area, DegreeElevationKeepsTheArea) {
 
 TEST(Area, ClosedCurveAreaIsExact) {
   // A closed quartic and a closed cubic, against the exact integral.
-  for (const Curve& c : {Curve({{0, 0}, {2, -1}, {3, 2}, {-1, 3}, {0, 0}}), Curve({{1, 1}, {4, 1}, {0.5, 3}, {1, 1}})}) {
+  for (const Curve& c : {Curve({{0, 0}, {2, -1}, {3, 2}, {-1, 3}, {0, 0}}),
+                         Curve({{1, 1}, {4, 1}, {0.5, 3}, {1, 1}})}) {
     ASSERT_TRUE(is_closed(c));
     const auto area = closed_area(c);
     ASSERT_TRUE(area.has_value());
@@ -203,7 +213,8 @@ TEST(Area, ClosedCurveEqualsTheSumOfItsTwoHalves) {
   // Green's theorem is additive: the two halves' integrals (origin-dependent each) sum to
   // the enclosed area.
   const Curve c({{0, 0}, {3, -1}, {4, 3}, {-2, 2}, {0, 0}});
-  EXPECT_NEAR(signed_area(c, 0, 0.375) + signed_area(c, 0.375, 1), *closed_area(c), 64 * kEps * area_scale(c));
+  EXPECT_NEAR(signed_area(c, 0, 0.375) + signed_area(c, 0.375, 1), *closed_area(c),
+              64 * kEps * area_scale(c));
 }
 
 TEST(Area, OpenCurvesHaveNoClosedArea) {

@@ -18,7 +18,9 @@ using test::Poly;
 using test::Rational;
 using test::RPoint2;
 
-Rational q(long long p, long long d) { return Rational(p) / Rational(d); }
+Rational q(long long p, long long d) {
+  return Rational(p) / Rational(d);
+}
 
 Curve degree7_example() {
   return Curve({{0, 0}, {1, 1}, {2, 3}, {1, 4}, {0, 4}, {-1, 3}, {0, 1}, {1, 0}});
@@ -62,8 +64,9 @@ TEST(LoopArea, TinyLoopHasItsClosedFormArea) {
   // 1/2 ∫ (x y' - x' y) ds = -9/2 ∫_{-d}^{d} (s^4 + d^2 s^2) ds = -(24/5) d^5.
   for (const int k : {4, 6, 9}) {
     const double d = std::ldexp(1.0, -k);
-    const Curve c = symmetric_from_power({Rational(0), Rational(-3) * Rational(d) * Rational(d), Rational(0), Rational(3)},
-                                         {Rational(0), Rational(0), Rational(3)});
+    const Curve c = symmetric_from_power(
+        {Rational(0), Rational(-3) * Rational(d) * Rational(d), Rational(0), Rational(3)},
+        {Rational(0), Rational(0), Rational(3)});
     const double expected = -24.0 / 5.0 * std::pow(d, 5);
     const LoopAreaResult r = loop_area(c);
     ASSERT_EQ(r.loops.size(), 1u) << k;
@@ -109,9 +112,11 @@ TEST(LoopArea, LoopClosingAtTheStart) {
   const Rational T = q(3, 4);
   const RPoint2 a{Rational(6), Rational(3)}, b{Rational(-3), Rational(9)};
   const RPoint2 c{-(a.x * T * T + b.x * T), -(a.y * T * T + b.y * T)};
-  const auto curve = test::exact_curve(test::bernstein_from_power({Rational(0), c.x, b.x, a.x}, {Rational(0), c.y, b.y, a.y}));
+  const auto curve = test::exact_curve(
+      test::bernstein_from_power({Rational(0), c.x, b.x, a.x}, {Rational(0), c.y, b.y, a.y}));
   ASSERT_TRUE(curve.has_value());
-  const double exact = test::exact_enclosed_area(test::power_form(*curve), Rational(0), T).to_double();
+  const double exact =
+      test::exact_enclosed_area(test::power_form(*curve), Rational(0), T).to_double();
   const LoopAreaResult r = loop_area(*curve);
   ASSERT_EQ(r.loops.size(), 1u);
   EXPECT_EQ(r.loops[0].t1, 0.0);
@@ -123,7 +128,8 @@ TEST(LoopArea, NestedLoopsEachWithItsOwnAreaAndTheirTotal) {
   // x = 5 s (s^2 - 1/64)(s^2 - 9/64), y = 5 s^2: pairs 1/2 ∓ 1/8 and 1/2 ∓ 3/8 (dyadic), so
   // both loop areas are exact rationals. The outer loop [1/8, 7/8] contains the inner one.
   const Rational a = q(1, 64), b = q(9, 64);
-  const Curve c = symmetric_from_power({Rational(0), Rational(5) * a * b, Rational(0), Rational(-5) * (a + b), Rational(0), Rational(5)},
+  const Curve c = symmetric_from_power({Rational(0), Rational(5) * a * b, Rational(0),
+                                        Rational(-5) * (a + b), Rational(0), Rational(5)},
                                        {Rational(0), Rational(0), Rational(5)});
   const test::PowerCurve pc = test::power_form(c);
   const double outer = test::exact_enclosed_area(pc, q(1, 8), q(7, 8)).to_double();
@@ -132,13 +138,15 @@ TEST(LoopArea, NestedLoopsEachWithItsOwnAreaAndTheirTotal) {
   ASSERT_EQ(r.loops.size(), 2u);
   EXPECT_NEAR(r.loops[0].signed_area, outer, 1e-14 * std::fabs(outer));
   EXPECT_NEAR(r.loops[1].signed_area, inner, 1e-13 * std::fabs(inner));
-  EXPECT_NEAR(r.area, std::fabs(outer) + std::fabs(inner), 1e-14 * (std::fabs(outer) + std::fabs(inner)));
+  EXPECT_NEAR(r.area, std::fabs(outer) + std::fabs(inner),
+              1e-14 * (std::fabs(outer) + std::fabs(inner)));
 }
 
 TEST(LoopArea, TangentialContactEnclosesALoop) {
   // x = 5 s (s^2 - 1/16)^2, y = 5 s^2 touches itself at t = 1/4, 3/4.
   const Rational d2 = q(1, 16);
-  const Curve c = symmetric_from_power({Rational(0), Rational(5) * d2 * d2, Rational(0), Rational(-10) * d2, Rational(0), Rational(5)},
+  const Curve c = symmetric_from_power({Rational(0), Rational(5) * d2 * d2, Rational(0),
+                                        Rational(-10) * d2, Rational(0), Rational(5)},
                                        {Rational(0), Rational(0), Rational(5)});
   const double exact = test::exact_enclosed_area(test::power_form(c), q(1, 4), q(3, 4)).to_double();
   const LoopAreaResult r = loop_area(c);
@@ -155,7 +163,8 @@ TEST(LoopArea, ClosedCurves) {
   EXPECT_TRUE(r.loops.empty());
   EXPECT_EQ(r.area, 0.0);
   ASSERT_TRUE(r.closed_area.has_value());
-  EXPECT_NEAR(*r.closed_area, test::exact_green_integral(test::power_form(cubic), 0, 1).to_double(), 1e-15);
+  EXPECT_NEAR(*r.closed_area, test::exact_green_integral(test::power_form(cubic), 0, 1).to_double(),
+              1e-15);
 
   // A closed figure eight with B(1 - t) = -B(t): two lobes (0, 1/2) and (1/2, 1) of opposite
   // orientation and equal size; the closed area cancels.
@@ -179,7 +188,8 @@ TEST(LoopArea, AreaFollowsSimilarityMapsAndReversal) {
       for (const Point2 shift : {Point2{0, 0}, Point2{-5, 12}}) {
         const double co = std::cos(angle), si = std::sin(angle);
         std::vector<Point2> mapped;
-        for (const Point2 p : c.points()) mapped.push_back(s * Point2{co * p.x - si * p.y, si * p.x + co * p.y} + s * shift);
+        for (const Point2 p : c.points())
+          mapped.push_back(s * Point2{co * p.x - si * p.y, si * p.x + co * p.y} + s * shift);
         const LoopAreaResult m = loop_area(Curve(mapped));
         ASSERT_EQ(m.loops.size(), 1u);
         EXPECT_NEAR(m.loops[0].signed_area / (s * s), a, 1e-12 * a) << s << " " << angle;

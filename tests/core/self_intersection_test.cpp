@@ -26,7 +26,9 @@ SelfIntersectionOptions general_path() {
   return o;
 }
 
-Rational q(long long p, long long d) { return Rational(p) / Rational(d); }
+Rational q(long long p, long long d) {
+  return Rational(p) / Rational(d);
+}
 
 /// The curve with power-form coordinates x(s), y(s), s = t - shift, as exact control points
 /// (the constructions below are chosen so that they are doubles).
@@ -66,14 +68,16 @@ Curve loop_at_start_cubic() {
 /// t = 1/2 ∓ d, and no other pair (y even).
 Curve tangent_contact_quintic(const Rational& d) {
   const Rational d2 = d * d;
-  return from_power_in_s({Rational(0), Rational(5) * d2 * d2, Rational(0), Rational(-10) * d2, Rational(0), Rational(5)},
+  return from_power_in_s({Rational(0), Rational(5) * d2 * d2, Rational(0), Rational(-10) * d2,
+                          Rational(0), Rational(5)},
                          {Rational(0), Rational(0), Rational(5)}, q(1, 2));
 }
 
 /// x = 5 s (s^2 - d1^2)(s^2 - d2^2), y = 5 s^2: two nested loops, pairs 1/2 ∓ d1, 1/2 ∓ d2.
 Curve nested_loops_quintic(const Rational& d1, const Rational& d2) {
   const Rational a = d1 * d1, b = d2 * d2;
-  return from_power_in_s({Rational(0), Rational(5) * a * b, Rational(0), Rational(-5) * (a + b), Rational(0), Rational(5)},
+  return from_power_in_s({Rational(0), Rational(5) * a * b, Rational(0), Rational(-5) * (a + b),
+                          Rational(0), Rational(5)},
                          {Rational(0), Rational(0), Rational(5)}, q(1, 2));
 }
 
@@ -140,7 +144,8 @@ ExactCubicLoop exact_cubic_loop(const Curve& c) {
   const Rational disc = sigma * sigma - Rational(4) * pi;
   if (disc.sign() <= 0) return {0, 0, false};
   const Rational root = test::sqrt_approx(disc, 120);
-  return {((sigma - root) / Rational(2)).to_double(), ((sigma + root) / Rational(2)).to_double(), true};
+  return {((sigma - root) / Rational(2)).to_double(), ((sigma + root) / Rational(2)).to_double(),
+          true};
 }
 
 std::vector<Curve> random_loop_cubics(std::uint32_t seed, std::size_t count) {
@@ -270,12 +275,14 @@ TEST(SelfIntersection, CuspsAreNotSelfIntersections) {
   // (0,0), (1,1), (0,1), (1,0): a cusp at t = 1/2 (B'(1/2) = 0).
   const Curve cusp({{0, 0}, {1, 1}, {0, 1}, {1, 0}});
   // x = 3 s^2, y = 3 s^3, s = t - 1/4: a cusp at t = 1/4, off the dyadic grid's centre.
-  const Curve cusp_quarter = from_power_in_s({Rational(0), Rational(0), Rational(3)},
-                                             {Rational(0), Rational(0), Rational(0), Rational(3)}, q(1, 4));
+  const Curve cusp_quarter =
+      from_power_in_s({Rational(0), Rational(0), Rational(3)},
+                      {Rational(0), Rational(0), Rational(0), Rational(3)}, q(1, 4));
   for (const Curve& c : {cusp, elevated(cusp), cusp_quarter, elevated(cusp_quarter)}) {
     for (const auto& options : {SelfIntersectionOptions{}, general_path()}) {
       const SelfIntersectionResult r = self_intersections(c, options);
-      EXPECT_TRUE(r.pairs.empty()) << "degree " << c.degree() << " t = " << (r.pairs.empty() ? 0 : r.pairs[0].t);
+      EXPECT_TRUE(r.pairs.empty())
+          << "degree " << c.degree() << " t = " << (r.pairs.empty() ? 0 : r.pairs[0].t);
       EXPECT_EQ(r.status, SelfIntersectionStatus::ok);
     }
   }
@@ -332,7 +339,8 @@ TEST(SelfIntersection, CollinearCurvesReportOverlaps) {
     EXPECT_NEAR(std::max(x(o.t_lo), x(o.t_hi)), std::max(x(o.s_lo), x(o.s_hi)), 1e-9);
   }
 
-  const SelfIntersectionResult monotone = self_intersections(Curve({{0, 0}, {1, 1}, {2, 2}, {4, 4}}));
+  const SelfIntersectionResult monotone =
+      self_intersections(Curve({{0, 0}, {1, 1}, {2, 2}, {4, 4}}));
   EXPECT_EQ(monotone.status, SelfIntersectionStatus::ok);
   EXPECT_TRUE(monotone.overlaps.empty());
 
@@ -383,9 +391,10 @@ TEST(SelfIntersection, ReversalMapsTToOneMinusT) {
       const SelfIntersection& f = fwd.pairs[i];
       if (fwd.pairs.size() > 1) {
         // With several pairs the order by t and by 1 - s can differ: match by nearest.
-        const auto it = std::min_element(bwd.pairs.begin(), bwd.pairs.end(), [&](const auto& x, const auto& y) {
-          return std::fabs(1 - x.s - f.t) < std::fabs(1 - y.s - f.t);
-        });
+        const auto it =
+            std::min_element(bwd.pairs.begin(), bwd.pairs.end(), [&](const auto& x, const auto& y) {
+              return std::fabs(1 - x.s - f.t) < std::fabs(1 - y.s - f.t);
+            });
         EXPECT_NEAR(1.0 - it->s, f.t, 1e-12) << k;
         EXPECT_NEAR(1.0 - it->t, f.s, 1e-12) << k;
       } else {
@@ -464,7 +473,8 @@ std::vector<std::pair<double, double>> slow_search(const Curve& c, int chords) {
   std::sort(found.begin(), found.end());
   std::vector<std::pair<double, double>> merged;
   for (const auto& p : found) {
-    if (merged.empty() || std::fabs(p.first - merged.back().first) > 1e-9 || std::fabs(p.second - merged.back().second) > 1e-9) {
+    if (merged.empty() || std::fabs(p.first - merged.back().first) > 1e-9 ||
+        std::fabs(p.second - merged.back().second) > 1e-9) {
       merged.push_back(p);
     }
   }
@@ -485,10 +495,12 @@ TEST(SelfIntersection, RandomCurvesOfDegree3To8AgreeWithTheSlowSearch) {
     const auto slow = slow_search(c, kChords);
     // Every crossing of the polyline is found...
     for (const auto& [u, v] : slow) {
-      const bool matched = std::any_of(r.pairs.begin(), r.pairs.end(), [&](const SelfIntersection& x) {
-        return std::fabs(x.t - u) < 1e-10 && std::fabs(x.s - v) < 1e-10;
-      });
-      EXPECT_TRUE(matched) << "k = " << k << " degree " << n << " missed (" << u << ", " << v << ")";
+      const bool matched =
+          std::any_of(r.pairs.begin(), r.pairs.end(), [&](const SelfIntersection& x) {
+            return std::fabs(x.t - u) < 1e-10 && std::fabs(x.s - v) < 1e-10;
+          });
+      EXPECT_TRUE(matched) << "k = " << k << " degree " << n << " missed (" << u << ", " << v
+                           << ")";
     }
     // ... and everything found is a true double point; pairs the polyline cannot see are
     // loops narrower than a few chords.

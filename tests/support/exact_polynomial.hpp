@@ -35,7 +35,8 @@ inline Poly poly_sub(Poly a, const Poly& b) {
 
 inline Poly poly_derivative(const Poly& a) {
   Poly r;
-  for (std::size_t k = 1; k < a.size(); ++k) r.push_back(Rational(static_cast<long long>(k)) * a[k]);
+  for (std::size_t k = 1; k < a.size(); ++k)
+    r.push_back(Rational(static_cast<long long>(k)) * a[k]);
   if (r.empty()) r.push_back(Rational(0));
   return r;
 }
@@ -43,7 +44,8 @@ inline Poly poly_derivative(const Poly& a) {
 /// ∫ a: coefficient k + 1 is a_k / (k + 1), constant term 0.
 inline Poly poly_antiderivative(const Poly& a) {
   Poly r{Rational(0)};
-  for (std::size_t k = 0; k < a.size(); ++k) r.push_back(a[k] / Rational(static_cast<long long>(k + 1)));
+  for (std::size_t k = 0; k < a.size(); ++k)
+    r.push_back(a[k] / Rational(static_cast<long long>(k + 1)));
   return r;
 }
 
@@ -69,7 +71,8 @@ struct PowerCurve {
 
 inline PowerCurve power_form(const std::vector<RPoint2>& pts) {
   const int n = static_cast<int>(pts.size()) - 1;
-  PowerCurve pc{Poly(static_cast<std::size_t>(n) + 1, Rational(0)), Poly(static_cast<std::size_t>(n) + 1, Rational(0))};
+  PowerCurve pc{Poly(static_cast<std::size_t>(n) + 1, Rational(0)),
+                Poly(static_cast<std::size_t>(n) + 1, Rational(0))};
   for (int i = 0; i <= n; ++i) {
     for (int j = 0; j <= n - i; ++j) {
       // C(n,i) t^i C(n-i,j) (-t)^j
@@ -81,24 +84,30 @@ inline PowerCurve power_form(const std::vector<RPoint2>& pts) {
   return pc;
 }
 
-inline PowerCurve power_form(const core::Curve& curve) { return power_form(exact_points(curve)); }
+inline PowerCurve power_form(const core::Curve& curve) {
+  return power_form(exact_points(curve));
+}
 
 inline RPoint2 power_value(const PowerCurve& pc, const Rational& t) {
   return {poly_value(pc.x, t), poly_value(pc.y, t)};
 }
 
-inline Rational rcross(const RPoint2& a, const RPoint2& b) { return a.x * b.y - a.y * b.x; }
+inline Rational rcross(const RPoint2& a, const RPoint2& b) {
+  return a.x * b.y - a.y * b.x;
+}
 
 /// 1/2 ∫_a^b (x y' - x' y) dt exactly, through the antiderivative of the power form.
 inline Rational exact_green_integral(const PowerCurve& pc, const Rational& a, const Rational& b) {
-  const Poly integrand = poly_sub(poly_mul(pc.x, poly_derivative(pc.y)), poly_mul(poly_derivative(pc.x), pc.y));
+  const Poly integrand =
+      poly_sub(poly_mul(pc.x, poly_derivative(pc.y)), poly_mul(poly_derivative(pc.x), pc.y));
   const Poly anti = poly_antiderivative(integrand);
   return (poly_value(anti, b) - poly_value(anti, a)) / Rational(2);
 }
 
 /// The area enclosed by B on [a, b] and the chord from B(b) back to B(a), exactly.
 inline Rational exact_enclosed_area(const PowerCurve& pc, const Rational& a, const Rational& b) {
-  return exact_green_integral(pc, a, b) + rcross(power_value(pc, b), power_value(pc, a)) / Rational(2);
+  return exact_green_integral(pc, a, b) +
+         rcross(power_value(pc, b), power_value(pc, a)) / Rational(2);
 }
 
 /// Control points from power coefficients (x_k, y_k of t^k, degree n = size - 1):
@@ -154,7 +163,8 @@ inline std::vector<RPoint2> elevate(const std::vector<RPoint2>& pts) {
   q.push_back(pts.front());
   for (long long i = 1; i <= n; ++i) {
     const Rational a(Rational(i) / Rational(n + 1));
-    q.push_back(a * pts[static_cast<std::size_t>(i - 1)] + (Rational(1) - a) * pts[static_cast<std::size_t>(i)]);
+    q.push_back(a * pts[static_cast<std::size_t>(i - 1)] +
+                (Rational(1) - a) * pts[static_cast<std::size_t>(i)]);
   }
   q.push_back(pts.back());
   return q;
