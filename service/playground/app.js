@@ -9,6 +9,8 @@ import {drawBernstein} from './bernstein.js';
 import {drawCanonicalMap} from './canonical.js';
 import {computeRound, usedCurves} from './compute.js';
 import {drawScene, kColors, kPointNames, formatNumber} from './draw.js';
+import {kExamples} from './examples.js';
+import {markAt, pointAt} from './hit.js';
 import {renderErrors, renderIntersections, renderLoops, renderTypes, renderValues} from './panels.js';
 import {View} from './view.js';
 
@@ -26,14 +28,6 @@ const state = {
   },
 };
 
-const kExamples = {
-  loop: {a: [[250, 100], [750, 560], [50, 560], [550, 100]]},
-  crossing: {a: [[80, 120], [260, 560], [520, 40], [720, 480]], b: [[100, 480], [300, 60], [560, 580], [740, 160]]},
-  tangent: {a: [[100, 100], [300, 500], [500, 100]], b: [[150, 300], [450, 300]]},
-  overlap: {a: [[100, 100], [300, 500], [500, 100]], b: [[200, 250], [300, 350], [400, 250]]},
-  closed: {a: [[200, 150], [60, 520], [740, 520], [600, 150], [200, 150]]},
-  inflections: {a: [[300, 150], [300, 350], [500, 350], [100, 250]]},
-};
 
 let answers = null;  // the last round's answers (for `answered` below)
 let errors = [];
@@ -127,40 +121,6 @@ function localPosition(event) {
   return [event.clientX - rect.left, event.clientY - rect.top];
 }
 
-/** The control point within `radius` CSS pixels of (sx, sy), the active curve first. */
-function pointAt(sx, sy, radius) {
-  let best = null;
-  let bestDistance = radius;
-  const order = [state.active, ...usedCurves(state).filter((i) => i !== state.active)];
-  for (const i of order) {
-    if (!usedCurves(state).includes(i)) continue;
-    state.curves[i].points.forEach((p, k) => {
-      const [x, y] = view.toScreen(p);
-      const d = Math.hypot(x - sx, y - sy);
-      if (d < bestDistance - 1e-9) {
-        best = {curve: i, index: k};
-        bestDistance = d;
-      }
-    });
-  }
-  return best;
-}
-
-function markAt(sx, sy, radius) {
-  const hits = (state.show.intersections && answers?.intersections?.intersections) || [];
-  let best = -1;
-  let bestDistance = radius;
-  hits.forEach((hit, k) => {
-    const [x, y] = view.toScreen(hit.point);
-    const d = Math.hypot(x - sx, y - sy);
-    if (d < bestDistance) {
-      best = k;
-      bestDistance = d;
-    }
-  });
-  return best;
-}
-
 const hitRadius = (event) => (event.pointerType === 'mouse' ? 10 : 20);
 
 function markListItems() {
@@ -200,8 +160,8 @@ $('intersections').addEventListener('pointerleave', () => {
 
 function updateHover(event) {
   const [sx, sy] = localPosition(event);
-  hover = pointAt(sx, sy, hitRadius(event));
-  hoverMark = hover ? -1 : markAt(sx, sy, hitRadius(event));
+  hover = pointAt(state, view, sx, sy, hitRadius(event));
+  hoverMark = hover ? -1 : markAt(state, view, answers, sx, sy, hitRadius(event));
   canvas.classList.toggle('over-point', hover !== null && state.mode !== 'add');
   showTooltip(sx, sy);
 }
