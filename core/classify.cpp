@@ -89,9 +89,7 @@ CubicClassification classify(std::span<const Point2, 4> p) {
       return out;
     }
     out.type = CubicType::cusp;
-    out.cusp = s.d2 == 0             ? 0.0
-               : s.d2_plus_2d3 == 0 ? 1.0
-                                    : clamp_unit(-pred.d2 / (2.0 * pred.d3));
+    out.cusp = s.d2 == 0 ? 0.0 : s.d2_plus_2d3 == 0 ? 1.0 : clamp_unit(-pred.d2 / (2.0 * pred.d3));
     return out;
   }
 

@@ -73,9 +73,9 @@ struct CubicClassification {
 ///
 /// Invariant under affine maps (reflections included), exactly for exact images; under
 /// reversal (t -> 1 − t) the type is the same with loop_at_start and loop_at_end swapped
-/// (except for a closed cubic, loop_at_start both ways) and parameters reflected. No iteration: constant time (tens of nanoseconds on the
-/// filter path, a few microseconds when an exact evaluation is needed).
-/// Precondition: finite coordinates.
+/// (except for a closed cubic, loop_at_start both ways) and parameters reflected. No iteration:
+/// constant time (tens of nanoseconds on the filter path, a few microseconds when an exact
+/// evaluation is needed). Precondition: finite coordinates.
 [[nodiscard]] CubicClassification classify(std::span<const Point2, 4> p);
 
 /// The same for a Curve. Precondition: cubic.degree() == 3.

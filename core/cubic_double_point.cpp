@@ -18,7 +18,9 @@ Point2 cubic_point(std::span<const Point2, 4> p, double t) noexcept {
 }
 
 // Into [0, 1], and -0 to +0.
-double clamp_unit(double t) noexcept { return t <= 0.0 ? 0.0 : std::min(t, 1.0); }
+double clamp_unit(double t) noexcept {
+  return t <= 0.0 ? 0.0 : std::min(t, 1.0);
+}
 
 }  // namespace
 

@@ -18,7 +18,7 @@ struct CubicDoublePoint {
   /// than the spacing of doubles). On the whole real line (outside [0,1] when the loop is).
   double t1 = 0.0;
   double t2 = 0.0;
-  Point2 point;     ///< B(t1) = B(t2)
+  Point2 point;  ///< B(t1) = B(t2)
   /// Decided exactly: 0 <= t1 < t2 <= 1, i.e. the loop lies on the curve segment. When it
   /// holds, t1 and t2 are clamped into [0,1], t1 is exactly 0 when the loop closes at the
   /// start (then point = P0 exactly) and t2 exactly 1 when it closes at the end

@@ -30,14 +30,18 @@ constexpr double kFilterMax = 0x1p200;
 constexpr int kExactTopExponent = 200;
 constexpr double kExactSmallest = 0x1p-216;
 
-int sign_of(double v) noexcept { return (v > 0.0) - (v < 0.0); }
+int sign_of(double v) noexcept {
+  return (v > 0.0) - (v < 0.0);
+}
 
 // The sign of a value whose error is at most `bound`, or nothing when the bound straddles 0.
 bool is_certain(double value, double bound) noexcept {
   return std::fabs(value) > bound * kBoundSlack;
 }
 
-double cross(double ax, double ay, double bx, double by) noexcept { return ax * by - ay * bx; }
+double cross(double ax, double ay, double bx, double by) noexcept {
+  return ax * by - ay * bx;
+}
 
 Expansion cross(const Expansion& ax, const Expansion& ay, const Expansion& bx,
                 const Expansion& by) {
@@ -53,10 +57,11 @@ CubicPredicates cubic_predicates(std::span<const Point2, 4> p) {
   const double vx = p[2].x - p[0].x, vy = p[2].y - p[0].y;
   const double wx = p[3].x - p[0].x, wy = p[3].y - p[0].y;
   // std::max, not std::fmax: the inputs are finite (precondition), and fmax is a libm call.
-  const double m = std::max(std::max(std::max(std::fabs(ux), std::fabs(uy)),
-                                     std::max(std::fabs(vx), std::fabs(vy))),
-                            std::max(std::fabs(wx), std::fabs(wy)));
-  assert(!std::isnan(ux + uy + vx + vy + wx + wy) && "cubic_predicates: coordinates must be finite");
+  const double m = std::max(
+      std::max(std::max(std::fabs(ux), std::fabs(uy)), std::max(std::fabs(vx), std::fabs(vy))),
+      std::max(std::fabs(wx), std::fabs(wy)));
+  assert(!std::isnan(ux + uy + vx + vy + wx + wy) &&
+         "cubic_predicates: coordinates must be finite");
   if (!(kFilterMin <= m && m <= kFilterMax)) return cubic_predicates_exact(p);
 
   const double uxv = cross(ux, uy, vx, vy);
@@ -94,8 +99,8 @@ CubicPredicates cubic_predicates(std::span<const Point2, 4> p) {
   const double b_l0 = err22 + 3.0 * err13 + kUnitRoundoff * (2.0 * p22 + 9.0 * std::fabs(p13));
   const double l1 = ((p22 + p23) + p33) - 3.0 * p13;
   const double terms_l1 = p22 + std::fabs(p23) + p33 + 3.0 * std::fabs(p13);
-  const double b_l1 = err22 + err23 + err33 + 3.0 * err13 +
-                      kUnitRoundoff * (4.0 * terms_l1 + 3.0 * std::fabs(p13));
+  const double b_l1 =
+      err22 + err23 + err33 + 3.0 * err13 + kUnitRoundoff * (4.0 * terms_l1 + 3.0 * std::fabs(p13));
 
   // Bitwise &: eight well-predicted tests without eight branches.
   const bool all_certain = is_certain(d1, e1) & is_certain(d2, e2) & is_certain(d3, e3) &
@@ -114,8 +119,8 @@ CubicPredicates cubic_predicates(std::span<const Point2, 4> p) {
   out.disc = disc;
   out.l0 = l0;
   out.l1 = l1;
-  out.sign = {sign_of(d1),     sign_of(d2),   sign_of(d3), sign_of(vertex),
-              sign_of(i1),     sign_of(disc), sign_of(l0), sign_of(l1)};
+  out.sign = {sign_of(d1), sign_of(d2),   sign_of(d3), sign_of(vertex),
+              sign_of(i1), sign_of(disc), sign_of(l0), sign_of(l1)};
   out.exact = true;
   return out;
 }
@@ -147,8 +152,8 @@ CubicPredicates cubic_predicates_exact(std::span<const Point2, 4> p) {
   const Expansion uxv = cross(ux, uy, vx, vy);
   const Expansion uxw = cross(ux, uy, wx, wy);
   const Expansion vxw = cross(vx, vy, wx, wy);
-  const Expansion y_num = cross(Expansion::difference(q[1].x, q[2].x),
-                                Expansion::difference(q[1].y, q[2].y), wx, wy);
+  const Expansion y_num =
+      cross(Expansion::difference(q[1].x, q[2].x), Expansion::difference(q[1].y, q[2].y), wx, wy);
 
   const Expansion& d1 = uxv;
   const Expansion d2 = uxw - uxv * 3.0;

@@ -48,16 +48,26 @@ enum class LoopBlinnClass {
 /// "loop-at-end", "double-inflection", "single-inflection", "arch".
 [[nodiscard]] constexpr std::string_view name(CubicType type) noexcept {
   switch (type) {
-    case CubicType::point: return "point";
-    case CubicType::line: return "line";
-    case CubicType::quadratic: return "quadratic";
-    case CubicType::cusp: return "cusp";
-    case CubicType::loop: return "loop";
-    case CubicType::loop_at_start: return "loop-at-start";
-    case CubicType::loop_at_end: return "loop-at-end";
-    case CubicType::double_inflection: return "double-inflection";
-    case CubicType::single_inflection: return "single-inflection";
-    case CubicType::arch: return "arch";
+    case CubicType::point:
+      return "point";
+    case CubicType::line:
+      return "line";
+    case CubicType::quadratic:
+      return "quadratic";
+    case CubicType::cusp:
+      return "cusp";
+    case CubicType::loop:
+      return "loop";
+    case CubicType::loop_at_start:
+      return "loop-at-start";
+    case CubicType::loop_at_end:
+      return "loop-at-end";
+    case CubicType::double_inflection:
+      return "double-inflection";
+    case CubicType::single_inflection:
+      return "single-inflection";
+    case CubicType::arch:
+      return "arch";
   }
   return "arch";
 }
@@ -65,12 +75,18 @@ enum class LoopBlinnClass {
 /// "serpentine", "cusp", "loop", "quadratic", "line", "point".
 [[nodiscard]] constexpr std::string_view name(LoopBlinnClass c) noexcept {
   switch (c) {
-    case LoopBlinnClass::serpentine: return "serpentine";
-    case LoopBlinnClass::cusp: return "cusp";
-    case LoopBlinnClass::loop: return "loop";
-    case LoopBlinnClass::quadratic: return "quadratic";
-    case LoopBlinnClass::line: return "line";
-    case LoopBlinnClass::point: return "point";
+    case LoopBlinnClass::serpentine:
+      return "serpentine";
+    case LoopBlinnClass::cusp:
+      return "cusp";
+    case LoopBlinnClass::loop:
+      return "loop";
+    case LoopBlinnClass::quadratic:
+      return "quadratic";
+    case LoopBlinnClass::line:
+      return "line";
+    case LoopBlinnClass::point:
+      return "point";
   }
   return "point";
 }

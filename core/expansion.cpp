@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstddef>
 
-#include "core/evaluate.hpp"  // two_sum, two_product: the error-free transformations
+#include "core/error_free.hpp"
 
 namespace bezier::core {
 
@@ -67,7 +67,9 @@ Expansion operator+(const Expansion& e, const Expansion& f) {
   return h;
 }
 
-Expansion operator-(const Expansion& e, const Expansion& f) { return e + (-f); }
+Expansion operator-(const Expansion& e, const Expansion& f) {
+  return e + (-f);
+}
 
 // Shewchuk's Scale-Expansion-Zeroelim (Theorem 19), with the fused multiply-add TwoProduct.
 Expansion operator*(const Expansion& e, double b) {

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -123,8 +123,8 @@ TEST(ClassifyRoute, DegenerateCubics) {
 TEST(ClassifyRoute, NumbersRoundTrip) {
   const std::string body = R"({"points":[[0.1,0.2],[1.3,2.7],[3.3,-0.7],[0.4,1.9]]})";
   const json r = call(body, 200);
-  const core::CubicClassification c = core::classify(
-      core::Curve({{0.1, 0.2}, {1.3, 2.7}, {3.3, -0.7}, {0.4, 1.9}}));
+  const core::CubicClassification c =
+      core::classify(core::Curve({{0.1, 0.2}, {1.3, 2.7}, {3.3, -0.7}, {0.4, 1.9}}));
   EXPECT_EQ(r["type"], std::string(core::name(c.type)));
   ASSERT_TRUE(c.canonical_point.has_value());
   EXPECT_EQ(r["canonical_point"][0].get<double>(), c.canonical_point->x);
@@ -142,15 +142,16 @@ TEST(ClassifyRoute, ValidationErrorsCarryPointers) {
   r = call(R"({"points":"cubic"})", 422);
   EXPECT_EQ(pointers(r), std::vector<std::string>{"/points"});
   // Not a cubic: the route says exactly 4 points, whatever the count.
-  for (const std::string pts : {"[]", "[[0,0],[1,1]]", "[[0,0],[1,1],[2,0]]",
-                                "[[0,0],[1,1],[2,0],[3,3],[4,0]]"}) {
+  for (const std::string pts :
+       {"[]", "[[0,0],[1,1]]", "[[0,0],[1,1],[2,0]]", "[[0,0],[1,1],[2,0],[3,3],[4,0]]"}) {
     r = call("{\"points\":" + pts + "}", 422);
     EXPECT_EQ(pointers(r), std::vector<std::string>{"/points"}) << pts;
     EXPECT_NE(r["errors"][0]["message"].get<std::string>().find("exactly 4"), std::string::npos);
   }
   // Space points: classification is planar.
   r = call(R"({"points":[[0,0,0],[1,1,1],[2,0,2],[3,3,3]]})", 422);
-  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points/0", "/points/1", "/points/2", "/points/3"}));
+  EXPECT_EQ(pointers(r),
+            (std::vector<std::string>{"/points/0", "/points/1", "/points/2", "/points/3"}));
   // A ragged point and a string coordinate, both reported.
   r = call(R"({"points":[[0,0],[1],[2,"0"],[3,1]]})", 422);
   EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points/1", "/points/2/1"}));

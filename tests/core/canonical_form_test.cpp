@@ -13,7 +13,9 @@ namespace {
 
 using Cubic = std::array<Point2, 4>;
 
-std::optional<Point2> canonical(const Cubic& p) { return canonical_point(std::span<const Point2, 4>(p)); }
+std::optional<Point2> canonical(const Cubic& p) {
+  return canonical_point(std::span<const Point2, 4>(p));
+}
 
 TEST(CanonicalForm, PointOfAnAffineImage) {
   // P0, P1, P2 = (0,0), (0,1), (1,1) map to themselves, so P3 is its own canonical point;
@@ -36,7 +38,8 @@ TEST(CanonicalForm, UndefinedWhenTheFirstThreePointsAreCollinear) {
   EXPECT_FALSE(canonical({Point2{0, 0}, Point2{1, 1}, Point2{1, 1}, Point2{2, 0}}).has_value());
   EXPECT_FALSE(canonical({Point2{0, 0}, Point2{1, 2}, Point2{3, 6}, Point2{2, 0}}).has_value());
   // Nearly collinear is still defined (decided exactly), with a large canonical point.
-  const auto near = canonical({Point2{0, 0}, Point2{1, 2}, Point2{3, std::nextafter(6.0, 7.0)}, Point2{2, 0}});
+  const auto near =
+      canonical({Point2{0, 0}, Point2{1, 2}, Point2{3, std::nextafter(6.0, 7.0)}, Point2{2, 0}});
   ASSERT_TRUE(near.has_value());
   EXPECT_GT(std::fabs(near->x) + std::fabs(near->y), 1e14);
 }
@@ -47,12 +50,18 @@ TEST(CanonicalForm, RegionsAndEdges) {
     CubicType type;
   };
   for (const Case& c : {
-           Case{{0, 2}, CubicType::single_inflection}, Case{{-1, 0.5}, CubicType::double_inflection},
-           Case{{0.5, -1}, CubicType::arch},           Case{{-1, -0.5}, CubicType::loop},
-           Case{{-1, 0}, CubicType::cusp},             Case{{1, 1}, CubicType::cusp},
-           Case{{2, 0.75}, CubicType::arch},           Case{{-3, -6}, CubicType::loop_at_start},
-           Case{{0, 0}, CubicType::loop_at_start},     Case{{0, 1}, CubicType::double_inflection},
-           Case{{1.5, 1}, CubicType::single_inflection}, Case{{3, 0}, CubicType::quadratic},
+           Case{{0, 2}, CubicType::single_inflection},
+           Case{{-1, 0.5}, CubicType::double_inflection},
+           Case{{0.5, -1}, CubicType::arch},
+           Case{{-1, -0.5}, CubicType::loop},
+           Case{{-1, 0}, CubicType::cusp},
+           Case{{1, 1}, CubicType::cusp},
+           Case{{2, 0.75}, CubicType::arch},
+           Case{{-3, -6}, CubicType::loop_at_start},
+           Case{{0, 0}, CubicType::loop_at_start},
+           Case{{0, 1}, CubicType::double_inflection},
+           Case{{1.5, 1}, CubicType::single_inflection},
+           Case{{3, 0}, CubicType::quadratic},
        }) {
     EXPECT_EQ(canonical_region(c.q), c.type) << c.q.x << ", " << c.q.y;
   }
@@ -64,7 +73,8 @@ TEST(CanonicalForm, RegionAgreesWithExactRationalEdges) {
   test::Mulberry32 rng(91);
   for (int i = 0; i < 20000; ++i) {
     const Point2 q = i % 2 == 0 ? Point2{rng.uniform(-6, 4), rng.uniform(-12, 3)}
-                                : Point2{std::floor(rng.uniform(-48, 32)) / 8, std::floor(rng.uniform(-3072, 768)) / 256};
+                                : Point2{std::floor(rng.uniform(-48, 32)) / 8,
+                                         std::floor(rng.uniform(-3072, 768)) / 256};
     ASSERT_EQ(canonical_region(q), test::exact_region(q.x, q.y)) << q.x << ", " << q.y;
   }
 }

@@ -24,17 +24,27 @@ using Cubic = std::array<Point2, 4>;
 
 struct Affine {
   double a, b, c, d, e, f;
-  [[nodiscard]] Point2 operator()(Point2 p) const { return {a * p.x + b * p.y + e, c * p.x + d * p.y + f}; }
-  [[nodiscard]] Cubic operator()(const Cubic& q) const { return {(*this)(q[0]), (*this)(q[1]), (*this)(q[2]), (*this)(q[3])}; }
+  [[nodiscard]] Point2 operator()(Point2 p) const {
+    return {a * p.x + b * p.y + e, c * p.x + d * p.y + f};
+  }
+  [[nodiscard]] Cubic operator()(const Cubic& q) const {
+    return {(*this)(q[0]), (*this)(q[1]), (*this)(q[2]), (*this)(q[3])};
+  }
 };
 
 // Fixed maps (identity, reflections in both axes and the diagonal, shears, scalings by
 // 2^±k) and random ones with entries in {k/8}; all have det != 0.
 std::vector<Affine> dyadic_maps() {
   std::vector<Affine> maps = {
-      {1, 0, 0, 1, 0, 0},          {-1, 0, 0, 1, 0, 0},     {1, 0, 0, -1, 0.5, 0},
-      {0, 1, 1, 0, -3, 2},         {1, 0.5, 0, 1, 3, -2},   {0, -2, 2, 0, -0.25, 0.75},
-      {1.5, -0.75, 0.25, 2, -7, 1}, {0x1p-30, 0, 0, 0x1p-30, 0, 0}, {0x1p40, 0, 0, -0x1p40, 0x1p41, 0},
+      {1, 0, 0, 1, 0, 0},
+      {-1, 0, 0, 1, 0, 0},
+      {1, 0, 0, -1, 0.5, 0},
+      {0, 1, 1, 0, -3, 2},
+      {1, 0.5, 0, 1, 3, -2},
+      {0, -2, 2, 0, -0.25, 0.75},
+      {1.5, -0.75, 0.25, 2, -7, 1},
+      {0x1p-30, 0, 0, 0x1p-30, 0, 0},
+      {0x1p40, 0, 0, -0x1p40, 0x1p41, 0},
   };
   test::Mulberry32 rng(11);
   while (maps.size() < 24) {
@@ -45,9 +55,15 @@ std::vector<Affine> dyadic_maps() {
   return maps;
 }
 
-Cubic canonical_cubic(Point2 q) { return {Point2{0, 0}, Point2{0, 1}, Point2{1, 1}, q}; }
-Cubic reversed_cubic(const Cubic& p) { return {p[3], p[2], p[1], p[0]}; }
-CubicClassification classify_cubic(const Cubic& p) { return classify(std::span<const Point2, 4>(p)); }
+Cubic canonical_cubic(Point2 q) {
+  return {Point2{0, 0}, Point2{0, 1}, Point2{1, 1}, q};
+}
+Cubic reversed_cubic(const Cubic& p) {
+  return {p[3], p[2], p[1], p[0]};
+}
+CubicClassification classify_cubic(const Cubic& p) {
+  return classify(std::span<const Point2, 4>(p));
+}
 
 // The fast (filtered) path and the exact path decide every sign alike.
 void expect_paths_agree(const Cubic& p) {
@@ -323,8 +339,8 @@ TEST(ClassifyBoundary, InflectionAtAnEndBuiltInGeneralPosition) {
   for (int k = -12; k <= 12; ++k) {
     const Point2 a0 = random_lattice_point(rng, 5), b0 = random_lattice_point(rng, 5);
     if (cross(a0, b0) == 0) continue;
-    const Cubic base = from_power_form(random_lattice_point(rng, 50), 4 * a0, 4 * b0,
-                                       k * a0 + (k - 4.0) * b0);
+    const Cubic base =
+        from_power_form(random_lattice_point(rng, 50), 4 * a0, 4 * b0, k * a0 + (k - 4.0) * b0);
     for (const Affine& m : maps) {
       const Cubic p = m(base);
       const auto c = classify_cubic(p);
@@ -345,10 +361,12 @@ TEST(ClassifyBoundary, InflectionAtAnEndBuiltInGeneralPosition) {
 TEST(ClassifyBoundary, ExtremeScalesStayExact) {
   // Far outside the floating-point filter's range (largest coordinate difference 2^±200)
   // the exact path decides, after an exact power-of-two rescaling.
-  const std::vector<std::pair<Point2, CubicType>> cases = {
-      {{-1, 0}, CubicType::cusp},          {{-3, -6}, CubicType::loop_at_start},
-      {{0, 1}, CubicType::double_inflection}, {{1.5, 1}, CubicType::single_inflection},
-      {{2, 0.75}, CubicType::arch},        {{1, 1}, CubicType::cusp}};
+  const std::vector<std::pair<Point2, CubicType>> cases = {{{-1, 0}, CubicType::cusp},
+                                                           {{-3, -6}, CubicType::loop_at_start},
+                                                           {{0, 1}, CubicType::double_inflection},
+                                                           {{1.5, 1}, CubicType::single_inflection},
+                                                           {{2, 0.75}, CubicType::arch},
+                                                           {{1, 1}, CubicType::cusp}};
   for (const auto& [q, type] : cases) {
     for (const int e : {-1000, -700, -400, -250, 250, 400, 700, 900}) {
       Cubic p = canonical_cubic(q);

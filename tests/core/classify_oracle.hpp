@@ -15,7 +15,9 @@
 
 namespace bezier::test {
 
-inline Rational exact_cross(const RPoint2& a, const RPoint2& b) { return a.x * b.y - a.y * b.x; }
+inline Rational exact_cross(const RPoint2& a, const RPoint2& b) {
+  return a.x * b.y - a.y * b.x;
+}
 
 /// The exact canonical point of P0..P3, when P0, P1, P2 are not collinear.
 inline std::optional<RPoint2> exact_canonical_point(std::span<const RPoint2, 4> p) {

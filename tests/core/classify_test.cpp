@@ -21,21 +21,31 @@ using Cubic = std::array<Point2, 4>;
 // x -> A x + t with dyadic entries: exact on inputs with few significant bits.
 struct Affine {
   double a, b, c, d, e, f;
-  [[nodiscard]] Point2 operator()(Point2 p) const { return {a * p.x + b * p.y + e, c * p.x + d * p.y + f}; }
-  [[nodiscard]] Cubic operator()(const Cubic& q) const { return {(*this)(q[0]), (*this)(q[1]), (*this)(q[2]), (*this)(q[3])}; }
+  [[nodiscard]] Point2 operator()(Point2 p) const {
+    return {a * p.x + b * p.y + e, c * p.x + d * p.y + f};
+  }
+  [[nodiscard]] Cubic operator()(const Cubic& q) const {
+    return {(*this)(q[0]), (*this)(q[1]), (*this)(q[2]), (*this)(q[3])};
+  }
 };
 
 // Identity, a reflection, a shear with translation, a rotation by 90° with scaling, a
 // reflection through the diagonal with non-uniform scaling (det < 0), a general map.
 const std::vector<Affine> kMaps = {
-    {1, 0, 0, 1, 0, 0},         {-1, 0, 0, 1, 0, 0},      {1, 0.5, 0, 1, 3, -2},
-    {0, -2, 2, 0, -0.25, 0.75}, {0, 0.125, 4, 0, 5, 5},   {1.5, -0.75, 0.25, 2, -7, 1},
+    {1, 0, 0, 1, 0, 0},         {-1, 0, 0, 1, 0, 0},    {1, 0.5, 0, 1, 3, -2},
+    {0, -2, 2, 0, -0.25, 0.75}, {0, 0.125, 4, 0, 5, 5}, {1.5, -0.75, 0.25, 2, -7, 1},
 };
 
-Cubic canonical_cubic(Point2 q) { return {Point2{0, 0}, Point2{0, 1}, Point2{1, 1}, q}; }
-Cubic reversed_cubic(const Cubic& p) { return {p[3], p[2], p[1], p[0]}; }
+Cubic canonical_cubic(Point2 q) {
+  return {Point2{0, 0}, Point2{0, 1}, Point2{1, 1}, q};
+}
+Cubic reversed_cubic(const Cubic& p) {
+  return {p[3], p[2], p[1], p[0]};
+}
 
-CubicClassification classify_cubic(const Cubic& p) { return classify(std::span<const Point2, 4>(p)); }
+CubicClassification classify_cubic(const Cubic& p) {
+  return classify(std::span<const Point2, 4>(p));
+}
 
 // Points inside each region of the canonical map, with the region named by the issue's
 // edges (checked by hand: cusp edge c(x) = (3 + 2x − x²)/4).
@@ -44,16 +54,16 @@ struct RegionCase {
   CubicType type;
 };
 const std::vector<RegionCase> kInteriorPoints = {
-    {{0, 2}, CubicType::single_inflection},      // y > 1
-    {{5, 5}, CubicType::single_inflection},      // y > 1, far right
-    {{-1, 0.5}, CubicType::double_inflection},   // c(−1) = 0 < y < 1, x <= 1
+    {{0, 2}, CubicType::single_inflection},             // y > 1
+    {{5, 5}, CubicType::single_inflection},             // y > 1, far right
+    {{-1, 0.5}, CubicType::double_inflection},          // c(−1) = 0 < y < 1, x <= 1
     {{0.75, 0.9921875}, CubicType::double_inflection},  // c(0.75) = 0.984375
-    {{2, 0.875}, CubicType::arch},               // above c(2) = 0.75, but x > 1
-    {{4, -1}, CubicType::arch},                  // above c(4) = −1.25, x > 1
-    {{0.5, -1}, CubicType::arch},                // below the loop-at-end edge
-    {{-4, -10}, CubicType::arch},                // below the loop-at-start edge (−28/3)
-    {{-1, -0.5}, CubicType::loop},               // c(−1) = 0 > y > −4/3
-    {{0.5, 0.921875}, CubicType::loop},          // between 0.8956 (t = 1 edge) and c = 0.9375
+    {{2, 0.875}, CubicType::arch},                      // above c(2) = 0.75, but x > 1
+    {{4, -1}, CubicType::arch},                         // above c(4) = −1.25, x > 1
+    {{0.5, -1}, CubicType::arch},                       // below the loop-at-end edge
+    {{-4, -10}, CubicType::arch},                       // below the loop-at-start edge (−28/3)
+    {{-1, -0.5}, CubicType::loop},                      // c(−1) = 0 > y > −4/3
+    {{0.5, 0.921875}, CubicType::loop},  // between 0.8956 (t = 1 edge) and c = 0.9375
     {{-0.25, 0.5}, CubicType::loop},
 };
 
@@ -135,10 +145,11 @@ TEST(Classify, DegenerateInputs) {
     EXPECT_EQ(c.loop_blinn, LoopBlinnClass::point);
     EXPECT_FALSE(c.canonical_point.has_value());
   }
-  for (const Cubic& p : {Cubic{Point2{0, 0}, Point2{1, 1}, Point2{2, 2}, Point2{3, 3}},
-                         Cubic{Point2{0, 0}, Point2{2, 2}, Point2{-1, -1}, Point2{1, 1}},  // folds back
-                         Cubic{Point2{5, 0}, Point2{5, 3}, Point2{5, 3}, Point2{5, -7}},   // vertical
-                         Cubic{Point2{1, 2}, Point2{1, 2}, Point2{1, 2}, Point2{4, 8}}}) {
+  for (const Cubic& p :
+       {Cubic{Point2{0, 0}, Point2{1, 1}, Point2{2, 2}, Point2{3, 3}},
+        Cubic{Point2{0, 0}, Point2{2, 2}, Point2{-1, -1}, Point2{1, 1}},  // folds back
+        Cubic{Point2{5, 0}, Point2{5, 3}, Point2{5, 3}, Point2{5, -7}},   // vertical
+        Cubic{Point2{1, 2}, Point2{1, 2}, Point2{1, 2}, Point2{4, 8}}}) {
     const auto c = classify_cubic(p);
     EXPECT_EQ(c.type, CubicType::line);
     EXPECT_EQ(c.loop_blinn, LoopBlinnClass::line);
@@ -292,7 +303,8 @@ TEST(Classify, DirectMathOnRandomCubics) {
     // B' and B'' straight from the Bernstein form of the hodographs.
     const auto kappa = [&](double t) {
       const double s = 1 - t;
-      const Point2 d1 = 3 * (s * s * (p[1] - p[0]) + 2 * s * t * (p[2] - p[1]) + t * t * (p[3] - p[2]));
+      const Point2 d1 =
+          3 * (s * s * (p[1] - p[0]) + 2 * s * t * (p[2] - p[1]) + t * t * (p[3] - p[2]));
       const Point2 d2 = 6 * (s * (p[2] - 2 * p[1] + p[0]) + t * (p[3] - 2 * p[2] + p[1]));
       return cross(d1, d2);
     };
@@ -352,14 +364,17 @@ TEST(Classify, InvariantUnderExactAffineMapsAndScaling) {
   test::Mulberry32 rng(5);
   for (int i = 0; i < 1500; ++i) {
     Cubic p = random_cubic(rng, -2.0, 2.0);
-    for (Point2& q : p) q = {std::ldexp(std::round(std::ldexp(q.x, 20)), -20), std::ldexp(std::round(std::ldexp(q.y, 20)), -20)};
+    for (Point2& q : p)
+      q = {std::ldexp(std::round(std::ldexp(q.x, 20)), -20),
+           std::ldexp(std::round(std::ldexp(q.y, 20)), -20)};
     const auto c = classify_cubic(p);
     for (const Affine& m : kMaps) {
       const auto mc = classify_cubic(m(p));
       ASSERT_EQ(mc.type, c.type) << i;
       ASSERT_EQ(mc.inflections.count, c.inflections.count);
       for (int k = 0; k < c.inflections.count; ++k) {
-        EXPECT_NEAR(mc.inflections.t[static_cast<std::size_t>(k)], c.inflections.t[static_cast<std::size_t>(k)], 1e-12);
+        EXPECT_NEAR(mc.inflections.t[static_cast<std::size_t>(k)],
+                    c.inflections.t[static_cast<std::size_t>(k)], 1e-12);
       }
     }
     // Powers of two far beyond the filter's range (the exact path then decides) and

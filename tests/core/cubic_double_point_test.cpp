@@ -19,7 +19,9 @@ std::optional<CubicDoublePoint> double_point(const Cubic& p) {
   return cubic_double_point(std::span<const Point2, 4>(p));
 }
 
-Curve as_curve(const Cubic& p) { return Curve(std::vector<Point2>(p.begin(), p.end())); }
+Curve as_curve(const Cubic& p) {
+  return Curve(std::vector<Point2>(p.begin(), p.end()));
+}
 
 // P0 + 3at + 3bt² + ct³ from a, b, c.
 Cubic from_power_form(Point2 p0, Point2 a, Point2 b, Point2 c) {
@@ -32,7 +34,8 @@ TEST(CubicDoublePoint, RecoversTheParametersItWasBuiltFrom) {
   struct Pair {
     double s, t;
   };
-  for (const Pair pr : {Pair{-0.5, 1.5}, Pair{0.25, 0.75}, Pair{-2, -1}, Pair{1.25, 4}, Pair{0, 0.5}}) {
+  for (const Pair pr :
+       {Pair{-0.5, 1.5}, Pair{0.25, 0.75}, Pair{-2, -1}, Pair{1.25, 4}, Pair{0, 0.5}}) {
     const double sum = pr.s + pr.t, q = pr.s * pr.s + pr.s * pr.t + pr.t * pr.t;
     const Point2 a{1, 2}, b{-3, 1};
     const Point2 c = (-3.0 / q) * (a + sum * b);  // not exact unless q is dyadic: close enough

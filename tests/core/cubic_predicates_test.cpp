@@ -14,7 +14,9 @@ namespace {
 using Cubic = std::array<Point2, 4>;
 using test::Rational;
 
-CubicPredicates predicates(const Cubic& p) { return cubic_predicates(std::span<const Point2, 4>(p)); }
+CubicPredicates predicates(const Cubic& p) {
+  return cubic_predicates(std::span<const Point2, 4>(p));
+}
 CubicPredicates exact_predicates(const Cubic& p) {
   return cubic_predicates_exact(std::span<const Point2, 4>(p));
 }
@@ -27,7 +29,9 @@ struct ExactValues {
 ExactValues exact_values(const Cubic& p) {
   const test::RPoint2 p0 = test::exact(p[0]), p1 = test::exact(p[1]), p2 = test::exact(p[2]),
                       p3 = test::exact(p[3]);
-  const auto cr = [](const test::RPoint2& u, const test::RPoint2& v) { return u.x * v.y - u.y * v.x; };
+  const auto cr = [](const test::RPoint2& u, const test::RPoint2& v) {
+    return u.x * v.y - u.y * v.x;
+  };
   const test::RPoint2 a = p1 - p0;
   const test::RPoint2 b = (p2 - p1) - (p1 - p0);
   const test::RPoint2 c = (p3 - p0) + Rational(3) * (p1 - p2);
@@ -131,7 +135,9 @@ TEST(CubicPredicates, TranslationAndLinearMapsActByTheDeterminant) {
   };
   for (int i = 0; i < 500; ++i) {
     Cubic p;
-    for (Point2& q : p) q = {std::round(rng.uniform(-4, 4) * 65536) / 65536, std::round(rng.uniform(-4, 4) * 65536) / 65536};
+    for (Point2& q : p)
+      q = {std::round(rng.uniform(-4, 4) * 65536) / 65536,
+           std::round(rng.uniform(-4, 4) * 65536) / 65536};
     const CubicPredicates base = predicates(p);
     Cubic moved = p;
     for (Point2& q : moved) q = q + Point2{1024.5, -3.25};
