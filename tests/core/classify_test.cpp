@@ -256,6 +256,12 @@ TEST(Classify, AgreesWithTheExactOracleOnRandomCubics) {
       const Cubic p = random_cubic(rng, -1.0, 1.0);
       const auto c = classify_cubic(p);
       ASSERT_EQ(c.type, test::exact_type(p)) << "seed " << seed << " cubic " << i;
+      // The returned (rounded) canonical point lies in the same region: none of these
+      // random cubics is within rounding of an edge.
+      if (c.canonical_point) {
+        ASSERT_EQ(canonical_region(*c.canonical_point), c.type)
+            << "seed " << seed << " cubic " << i;
+      }
       EXPECT_TRUE(c.exact);
       // The fast path and the exact path decide the same signs.
       const auto fast = cubic_predicates(std::span<const Point2, 4>(p));
