@@ -244,8 +244,16 @@ export function drawScene(view, state, answers, hover, hoverMark) {
           ctx.stroke();
         }
       }
-      if (state.show.labels) label(ctx, view, p, `${kPointNames[i]}${k}`, kColors.curves[i]);
     });
+    if (state.show.labels) {
+      // Coincident points share one label ("P0 = P4" on a closed curve).
+      const names = new Map();
+      points.forEach((p, k) => {
+        const key = `${p[0]},${p[1]}`;
+        names.set(key, [...(names.get(key) ?? []), `${kPointNames[i]}${k}`]);
+      });
+      for (const [key, list] of names) label(ctx, view, key.split(',').map(Number), list.join(' = '), kColors.curves[i]);
+    }
   }
 
   if (state.show.intersections && answers?.intersections) {
