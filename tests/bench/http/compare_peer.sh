@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# bezier-service against the peer (Paper.js behind node's http, ../shared/tools/peer-service)
+# in the same run: wrk at 64 connections, alternating A and B per round, for /evaluate,
+# /intersections and /classify with the peer's own request bodies. While each load runs
+# a 65th client probes /healthz every 100 ms: a req/s figure counts only if every probe is
+# answered (all connections served). Prints one line per run and the medians.
+#   tests/bench/http/compare_peer.sh [service-binary] [seconds] [rounds]
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../../.." && pwd)
+binary=${1:-$root/build/test/service/bezier-service}
+seconds=${2:-10}
+rounds=${3:-3}
+peer_src=${PEER_SERVICE:-$root/../shared/tools/peer-service}
+[ -d "$peer_src" ] || { echo "peer service not found at $peer_src (set PEER_SERVICE)" >&2; exit 2; }
+command -v wrk >/dev/null || { echo "wrk is needed: apt-get install wrk" >&2; exit 2; }
+
+work=$(mktemp -d)
+pids=()
+cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; wait 2>/dev/null || true; rm -rf "$work"; }
+trap cleanup EXIT
+
+# The peer is copied, so its node_modules never land in the shared folder.
+cp -r "$peer_src" "$work/peer"
+(cd "$work/peer" && npm install --no-audit --no-fund --silent >/dev/null)
+free_port() { python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])'; }
+peer_port=$(free_port)
+(cd "$work/peer" && exec node peer_service.mjs "$peer_port" --workers 2) >"$work/peer.log" 2>&1 &
+pids+=($!)
+"$binary" --port 0 --log-level warn >"$work/ours.log" 2>&1 &
+pids+=($!)
+for _ in $(seq 200); do
+  grep -q "listening on" "$work/ours.log" && curl -fs "http://127.0.0.1:$peer_port/healthz" >/dev/null && break
+  sleep 0.05
+done
+ours_url=$(grep -o 'http://[0-9.]*:[0-9]*' "$work/ours.log" | head -1)
+peer_url="http://127.0.0.1:$peer_port"
+
+probe() {  # until $1 disappears: prints the slowest /healthz answer (ms) and failures
+  local worst=0 failed=0 t
+  while [ -e "$1" ]; do
+    if t=$(curl -s -o /dev/null -m 2 -w '%{time_total}' "$2/healthz"); then
+      worst=$(awk -v a="$worst" -v b="$t" 'BEGIN { print (b * 1000 > a) ? b * 1000 : a }')
+    else
+      failed=$((failed + 1))
+    fi
+    sleep 0.1
+  done
+  echo "$worst $failed"
+}
+
+run() {  # name url route -> "rps p99_ms probe_ms probe_failed errors"
+  local flag="$work/flag" out
+  touch "$flag"
+  probe "$flag" "$2" >"$work/probe" &
+  local probe_pid=$!
+  out=$(wrk -t2 -c64 -d"${seconds}s" --latency -s "$peer_src/wrk/$3.lua" "$2/$3")
+  rm -f "$flag"
+  wait $probe_pid
+  local rps p99 errors
+  rps=$(echo "$out" | awk '/Requests\/sec/ { print $2 }')
+  p99=$(echo "$out" | awk '$1 == "99%" { v = $2; if (v ~ /us$/) { sub(/us/, "", v); v /= 1000 } else if (v ~ /ms$/) { sub(/ms/, "", v) } else if (v ~ /s$/) { sub(/s/, "", v); v *= 1000 } print v }')
+  errors=$(echo "$out" | grep -cE "Non-2xx|Socket errors" || true)
+  echo "$rps $p99 $(cat "$work/probe") $errors"
+}
+
+printf '%-14s %-6s %5s %10s %8s %9s %6s\n' route server round req/s p99_ms probe_ms errors
+for route in evaluate intersections classify; do
+  for round in $(seq "$rounds"); do
+    for server in ours peer; do
+      url=$ours_url; [ $server = peer ] && url=$peer_url
+      read -r rps p99 probe_ms probe_failed errors < <(run $server "$url" $route)
+      echo "$route $server $rps $p99 $probe_ms $probe_failed $errors" >>"$work/results"
+      printf '%-14s %-6s %5s %10s %8s %9s %6s\n' $route $server "$round" "$rps" "$p99" "$probe_ms" "$((errors + probe_failed))"
+    done
+  done
+done
+echo
+echo "medians over $rounds rounds (req/s, p99 ms); ratio = ours / peer"
+for route in evaluate intersections classify; do
+  med() { grep "^$route $1 " "$work/results" | awk "{ print \$$2 }" | sort -g | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }'; }
+  o=$(med ours 3); p=$(med peer 3); op=$(med ours 4); pp=$(med peer 4)
+  printf '%-14s ours %10s %8s   peer %10s %8s   ratio %.2f\n' $route "$o" "$op" "$p" "$pp" "$(awk -v a="$o" -v b="$p" 'BEGIN { print a / b }')"
+done
