@@ -274,8 +274,13 @@ class ViolationGenerator {
         add(walk, replaced(walk.root, pointer, longer), here("maxItems"),
             "grown to " + std::to_string(longer.size()) + " items", {pointer}, also);
       }
+      // The first and the last element: a bound such as "t1 <= 1" may only be reachable
+      // at the end of an increasing pair.
       if (node.contains("items") && !value.empty()) {
         generate(walk, loc + "/items", pointer + "/0", pattern + "/*", also, depth + 1);
+        if (value.size() > 1) {
+          generate(walk, loc + "/items", pointer + "/" + std::to_string(value.size() - 1), pattern + "/*", also, depth + 1);
+        }
       }
     }
     if (value.is_object()) {

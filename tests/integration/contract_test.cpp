@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "api/handler.hpp"
 #include "api/limits.hpp"
 #include "tests/contract/schema_violations.hpp"
 #include "tests/support/openapi_validator.hpp"
@@ -179,6 +180,16 @@ TEST_F(ContractTest, TheServedSpecIsTheFile) {
       << "GET /openapi.yaml (" << e.response_body.size() << " bytes) is not api/openapi.yaml ("
       << text.str().size() << " bytes): rebuild the service";
   EXPECT_EQ(contract().spec().at("openapi"), "3.1.0");
+}
+
+TEST_F(ContractTest, EveryRouteOfTheServiceIsInTheSpec) {
+  std::set<std::string> documented;
+  for (const Operation& op : operations()) {
+    if (op.method == "post") documented.insert(op.path);
+  }
+  std::set<std::string> served;
+  for (const std::string_view route : api::post_routes()) served.emplace(route);
+  EXPECT_EQ(served, documented) << "POST routes of the service (api/handler.cpp) vs the spec's";
 }
 
 TEST_F(ContractTest, TheSpecStatesTheServiceDefaults) {
