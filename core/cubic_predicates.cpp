@@ -84,28 +84,24 @@ CubicPredicates cubic_predicates(std::span<const Point2, 4> p) {
   const double e1 = 9.0 * unit, e2 = 47.0 * unit, e3 = 77.0 * unit;
   const double e_vertex = 235.0 * unit, e_i1 = 167.0 * unit;
 
-  // Degree 4: the propagated error of each product (|a~ b~ - a b| <= |a~| e_b + (|b~| + e_b) e_a)
-  // plus u times every term for the roundings of the products, the scalings by 3, and the
-  // sums (each sum's rounding is at most u times the sum of the absolute terms).
-  const double a1 = std::fabs(d1), a2 = std::fabs(d2), a3 = std::fabs(d3);
-  const double p22 = d2 * d2, p13 = d1 * d3, p23 = d2 * d3, p33 = d3 * d3;
-  const double err22 = e2 * (2.0 * a2 + e2);
-  const double err13 = a1 * e3 + (a3 + e3) * e1;
-  const double err23 = a2 * e3 + (a3 + e3) * e2;
-  const double err33 = e3 * (2.0 * a3 + e3);
-  const double disc = p22 - 4.0 * p13;
-  const double b_disc = err22 + 4.0 * err13 + 2.0 * kUnitRoundoff * (p22 + 4.0 * std::fabs(p13));
-  const double l0 = p22 - 3.0 * p13;
-  const double b_l0 = err22 + 3.0 * err13 + kUnitRoundoff * (2.0 * p22 + 9.0 * std::fabs(p13));
-  const double l1 = ((p22 + p23) + p33) - 3.0 * p13;
-  const double terms_l1 = p22 + std::fabs(p23) + p33 + 3.0 * std::fabs(p13);
-  const double b_l1 =
-      err22 + err23 + err33 + 3.0 * err13 + kUnitRoundoff * (4.0 * terms_l1 + 3.0 * std::fabs(p13));
+  // Degree 4, one bound for all three: with A = max |d~i|, each product's propagated error is
+  // |d~i d~j − di dj| <= |d~i| e_j + (|d~j| + e_j) e_i <= A (e_i + e_j) + e_i e_j, and each
+  // rounding (products, the scalings by 3, the sums) at most u times the sum of the absolute
+  // terms. Summed over l1 = d2² + d2 d3 + d3² − 3 d1 d3, the largest of the three:
+  // (94 + 124 + 154 + 3·86) A U + (47² + 47·77 + 77² + 3·9·77) U² + u (4·6 + 3) A²
+  // = 630 A U + 13836 U² + 27 u A²; disc (438, 4981, 10) and l0 (352, 4288, 11) are smaller.
+  // Looser than per-predicate bounds by a small factor, and a third of the work.
+  const double a = std::max(std::max(std::fabs(d1), std::fabs(d2)), std::fabs(d3));
+  const double disc = d2 * d2 - 4.0 * (d1 * d3);
+  const double l0 = d2 * d2 - 3.0 * (d1 * d3);
+  const double l1 = ((d2 * d2 + d2 * d3) + d3 * d3) - 3.0 * (d1 * d3);
+  const double bound4 = (630.0 * a + 13836.0 * unit) * unit + 27.0 * kUnitRoundoff * a * a;
+  const double smallest4 = std::min(std::min(std::fabs(disc), std::fabs(l0)), std::fabs(l1));
 
-  // Bitwise &: eight well-predicted tests without eight branches.
+  // Bitwise &: six well-predicted tests without six branches.
   const bool all_certain = is_certain(d1, e1) & is_certain(d2, e2) & is_certain(d3, e3) &
                            is_certain(vertex, e_vertex) & is_certain(i1, e_i1) &
-                           is_certain(disc, b_disc) & is_certain(l0, b_l0) & is_certain(l1, b_l1);
+                           is_certain(smallest4, bound4);
   // Near an edge (or a degenerate configuration: some value is zero) the filter cannot
   // decide; the exact path decides everything, and its approximations are the better ones.
   if (!all_certain) return cubic_predicates_exact(p);

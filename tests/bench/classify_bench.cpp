@@ -34,18 +34,21 @@ std::vector<Cubic> shared_cubics(std::size_t count) {
   return cubics;
 }
 
-// Full classification: type, canonical point, inflections, cusp, double point.
+// Full classification: type, canonical point, inflections, cusp, double point. The
+// argument is the number of distinct cubics cycled through: 4096 (256 KiB, from L2) and
+// 256 (16 KiB, from L1).
 void BM_Classify(benchmark::State& state) {
-  const std::vector<Cubic> cubics = shared_cubics(4096);
+  const std::size_t count = static_cast<std::size_t>(state.range(0));
+  const std::vector<Cubic> cubics = shared_cubics(count);
   std::size_t i = 0;
   for (auto _ : state) {
     const auto c = bezier::core::classify(std::span<const Point2, 4>(cubics[i]));
     benchmark::DoNotOptimize(c);
-    i = (i + 1) & 4095;
+    i = (i + 1) & (count - 1);
   }
   state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_Classify);
+BENCHMARK(BM_Classify)->Arg(4096)->Arg(256);
 
 // The predicates alone (the filter, and the exact path when it is unsure).
 void BM_ClassifyPredicates(benchmark::State& state) {
