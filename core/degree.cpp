@@ -10,7 +10,18 @@ namespace bezier::core {
 
 namespace {
 
-using Matrix = std::vector<std::vector<long double>>;
+/// Row-major long double matrix with its column count (small: the Gram systems here have
+/// k + 1 <= 11 rows).
+struct Matrix {
+  std::size_t rows = 0, cols = 0;
+  std::vector<long double> v;
+  Matrix(std::size_t r, std::size_t c) : rows(r), cols(c), v(r * c, 0.0L) {}
+  long double& operator()(std::size_t i, std::size_t j) { return v[i * cols + j]; }
+  long double operator()(std::size_t i, std::size_t j) const { return v[i * cols + j]; }
+  void swap_rows(std::size_t a, std::size_t b) {
+    for (std::size_t j = 0; j < cols; ++j) std::swap((*this)(a, j), (*this)(b, j));
+  }
+};
 
 long double binomial_ld(int n, int k) { return static_cast<long double>(binomial(n, k)); }
 
@@ -18,33 +29,130 @@ long double binomial_ld(int n, int k) { return static_cast<long double>(binomial
 /// partial pivoting. A is a Gram matrix of a basis, so it is symmetric positive definite
 /// and never singular.
 Matrix solve(Matrix a, Matrix b) {
-  const std::size_t n = a.size();
-  const std::size_t m = b.empty() ? 0 : b[0].size();
+  const std::size_t n = a.rows;
+  const std::size_t m = b.cols;
   for (std::size_t col = 0; col < n; ++col) {
     std::size_t pivot = col;
     for (std::size_t r = col + 1; r < n; ++r) {
-      if (std::fabs(a[r][col]) > std::fabs(a[pivot][col])) pivot = r;
+      if (std::fabs(a(r, col)) > std::fabs(a(pivot, col))) pivot = r;
     }
-    std::swap(a[col], a[pivot]);
-    std::swap(b[col], b[pivot]);
+    a.swap_rows(col, pivot);
+    b.swap_rows(col, pivot);
     for (std::size_t r = col + 1; r < n; ++r) {
-      const long double factor = a[r][col] / a[col][col];
-      for (std::size_t c = col; c < n; ++c) a[r][c] -= factor * a[col][c];
-      for (std::size_t c = 0; c < m; ++c) b[r][c] -= factor * b[col][c];
+      const long double factor = a(r, col) / a(col, col);
+      for (std::size_t c = col; c < n; ++c) a(r, c) -= factor * a(col, c);
+      for (std::size_t c = 0; c < m; ++c) b(r, c) -= factor * b(col, c);
     }
   }
-  Matrix x(n, std::vector<long double>(m, 0.0L));
+  Matrix x(n, m);
   for (std::size_t r = n; r-- > 0;) {
     for (std::size_t c = 0; c < m; ++c) {
-      long double sum = b[r][c];
-      for (std::size_t j = r + 1; j < n; ++j) sum -= a[r][j] * x[j][c];
-      x[r][c] = sum / a[r][r];
+      long double sum = b(r, c);
+      for (std::size_t j = r + 1; j < n; ++j) sum -= a(r, j) * x(j, c);
+      x(r, c) = sum / a(r, r);
     }
   }
   return x;
 }
 
+/// L2 reduction matrices for the fat curves (k = 2, 3) of every degree up to 20, computed
+/// at compile time by the same Gram-system elimination as below, so that building a fat
+/// curve operator costs no elimination per request.
+constexpr int kTableDegree = 20;
+
+constexpr long double const_binomial(int n, int k) {
+  if (k < 0 || k > n) return 0.0L;
+  long double c = 1.0L;
+  for (int j = 0; j < k; ++j) c = c * (n - j) / (j + 1);
+  return c;
+}
+
+constexpr long double const_abs(long double x) { return x < 0 ? -x : x; }
+
+struct ReductionTable {
+  // [k - 2][n] -> (k + 1) x (n + 1) entries, row-major.
+  double entries[2][kTableDegree + 1][4 * (kTableDegree + 1)] = {};
+};
+
+constexpr ReductionTable make_reduction_table() {
+  ReductionTable table;
+  for (int k = 2; k <= 3; ++k) {
+    for (int n = k + 1; n <= kTableDegree; ++n) {
+      long double a[4][4] = {};
+      long double b[4][kTableDegree + 1] = {};
+      for (int i = 0; i <= k; ++i) {
+        for (int j = 0; j <= k; ++j) {
+          a[i][j] = const_binomial(k, i) * const_binomial(k, j) / ((2 * k + 1) * const_binomial(2 * k, i + j));
+        }
+        for (int j = 0; j <= n; ++j) {
+          b[i][j] = const_binomial(k, i) * const_binomial(n, j) / ((k + n + 1) * const_binomial(k + n, i + j));
+        }
+      }
+      for (int col = 0; col <= k; ++col) {
+        int pivot = col;
+        for (int r = col + 1; r <= k; ++r) {
+          if (const_abs(a[r][col]) > const_abs(a[pivot][col])) pivot = r;
+        }
+        for (int j = 0; j <= k; ++j) std::swap(a[col][j], a[pivot][j]);
+        for (int j = 0; j <= n; ++j) std::swap(b[col][j], b[pivot][j]);
+        for (int r = col + 1; r <= k; ++r) {
+          const long double factor = a[r][col] / a[col][col];
+          for (int c = col; c <= k; ++c) a[r][c] -= factor * a[col][c];
+          for (int c = 0; c <= n; ++c) b[r][c] -= factor * b[col][c];
+        }
+      }
+      long double x[4][kTableDegree + 1] = {};
+      for (int r = k; r >= 0; --r) {
+        for (int c = 0; c <= n; ++c) {
+          long double sum = b[r][c];
+          for (int j = r + 1; j <= k; ++j) sum -= a[r][j] * x[j][c];
+          x[r][c] = sum / a[r][r];
+        }
+      }
+      for (int i = 0; i <= k; ++i) {
+        for (int j = 0; j <= n; ++j) table.entries[k - 2][n][i * (n + 1) + j] = static_cast<double>(x[i][j]);
+      }
+    }
+  }
+  return table;
+}
+
+constexpr ReductionTable kReductionTable = make_reduction_table();
+
+struct ElevationTable {
+  // [from - 1][to] -> (to + 1) x (from + 1) entries, row-major.
+  double entries[3][kTableDegree + 1][4 * (kTableDegree + 1)] = {};
+};
+
+constexpr ElevationTable make_elevation_table() {
+  ElevationTable table;
+  for (int from = 1; from <= 3; ++from) {
+    for (int to = from; to <= kTableDegree; ++to) {
+      for (int i = 0; i <= to; ++i) {
+        for (int j = 0; j <= from; ++j) {
+          if (i - j < 0 || i - j > to - from) continue;
+          table.entries[from - 1][to][i * (from + 1) + j] = static_cast<double>(
+              const_binomial(from, j) * const_binomial(to - from, i - j) / const_binomial(to, i));
+        }
+      }
+    }
+  }
+  return table;
+}
+
+constexpr ElevationTable kElevationTable = make_elevation_table();
+
 }  // namespace
+
+const double* l2_reduction_table(int n, int k) noexcept {
+  if ((k != 2 && k != 3) || n <= k || n > kTableDegree) return nullptr;
+  return kReductionTable.entries[k - 2][n];
+}
+
+const double* elevation_table(int from, int to) noexcept {
+  if (from < 1 || from > 3 || to < from || to > kTableDegree) return nullptr;
+  return kElevationTable.entries[from - 1][to];
+}
 
 BernsteinMatrix elevation_matrix(int from, int to) {
   assert(0 <= from && from <= to);
@@ -64,24 +172,26 @@ BernsteinMatrix elevation_matrix(int from, int to) {
 BernsteinMatrix l2_reduction_matrix(int n, int k) {
   assert(n >= 0 && k >= 0);
   if (k >= n) return elevation_matrix(n, k);
-  Matrix gram(static_cast<std::size_t>(k + 1), std::vector<long double>(static_cast<std::size_t>(k + 1)));
-  Matrix mixed(static_cast<std::size_t>(k + 1), std::vector<long double>(static_cast<std::size_t>(n + 1)));
+  if ((k == 2 || k == 3) && n <= kTableDegree) {
+    const double* e = kReductionTable.entries[k - 2][n];
+    return {k + 1, n + 1, std::vector<double>(e, e + (k + 1) * (n + 1))};
+  }
+  const auto K = static_cast<std::size_t>(k), N = static_cast<std::size_t>(n);
+  Matrix gram(K + 1, K + 1), mixed(K + 1, N + 1);
   for (int i = 0; i <= k; ++i) {
     for (int j = 0; j <= k; ++j) {
-      gram[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
+      gram(static_cast<std::size_t>(i), static_cast<std::size_t>(j)) =
           binomial_ld(k, i) * binomial_ld(k, j) / ((2 * k + 1) * binomial_ld(2 * k, i + j));
     }
     for (int j = 0; j <= n; ++j) {
-      mixed[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
+      mixed(static_cast<std::size_t>(i), static_cast<std::size_t>(j)) =
           binomial_ld(k, i) * binomial_ld(n, j) / ((k + n + 1) * binomial_ld(k + n, i + j));
     }
   }
   const Matrix r = solve(std::move(gram), std::move(mixed));
   BernsteinMatrix out{k + 1, n + 1, {}};
-  out.entries.reserve(static_cast<std::size_t>((k + 1) * (n + 1)));
-  for (const auto& row : r) {
-    for (const long double v : row) out.entries.push_back(static_cast<double>(v));
-  }
+  out.entries.reserve(r.v.size());
+  for (const long double v : r.v) out.entries.push_back(static_cast<double>(v));
   return out;
 }
 

@@ -40,6 +40,14 @@ struct BernsteinMatrix {
 /// elevation. Precondition: n >= 0, k >= 0.
 [[nodiscard]] BernsteinMatrix l2_reduction_matrix(int n, int k);
 
+/// The row-major entries of l2_reduction_matrix(n, k) from a table built at compile time,
+/// for k in {2, 3} and k < n <= 20 (the fat curves' operators); nullptr otherwise.
+[[nodiscard]] const double* l2_reduction_table(int n, int k) noexcept;
+
+/// The row-major entries of elevation_matrix(from, to) from a table built at compile time,
+/// for 1 <= from <= 3 and from <= to <= 20; nullptr otherwise.
+[[nodiscard]] const double* elevation_table(int from, int to) noexcept;
+
 /// m v for a coefficient vector of size m.cols.
 [[nodiscard]] std::vector<double> apply(const BernsteinMatrix& m, std::span<const double> v);
 

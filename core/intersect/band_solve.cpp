@@ -20,8 +20,8 @@ double horner(double c0, double c1, double c2, double c3, double t) noexcept {
   return ((c3 * t + c2) * t + c1) * t + c0;
 }
 
-double polish(double c0, double c1, double c2, double c3, double t) noexcept {
-  for (int i = 0; i < 3; ++i) {
+double polish(double c0, double c1, double c2, double c3, double t, int iterations) noexcept {
+  for (int i = 0; i < iterations; ++i) {
     const double f = horner(c0, c1, c2, c3, t);
     const double df = (3 * c3 * t + 2 * c2) * t + c1;
     if (!(df != 0.0)) break;
@@ -97,7 +97,7 @@ bool certainly_outside(std::span<const double> q, double lo, double hi, double e
 
 CubicRoots real_roots_up_to_cubic(double c0, double c1, double c2, double c3, double lo, double hi) {
   CubicRoots out;
-  const double scale = std::fmax(std::fmax(std::fabs(c0), std::fabs(c1)), std::fmax(std::fabs(c2), std::fabs(c3)));
+  const double scale = bernstein::max2(bernstein::max2(std::fabs(c0), std::fabs(c1)), bernstein::max2(std::fabs(c2), std::fabs(c3)));
   if (scale == 0.0) return out;
   double raw[3];
   int count = 0;
@@ -110,7 +110,9 @@ CubicRoots real_roots_up_to_cubic(double c0, double c1, double c2, double c3, do
     count = 1;
   }
   for (int i = 0; i < count; ++i) {
-    const double t = polish(c0, c1, c2, c3, raw[i]);
+    // The cancellation-free quadratic formula is accurate as it is; the trigonometric and
+    // Cardano forms lose a few digits to the normalisation, which Newton's method restores.
+    const double t = polish(c0, c1, c2, c3, raw[i], c3 != 0.0 ? 2 : 0);
     if (lo <= t && t <= hi) out.t[out.count++] = t;
   }
   sort_small(out.t, out.count);
@@ -128,8 +130,8 @@ std::optional<ParamInterval> kept_interval_by_hulls(std::span<const double> p, d
     if (!clip) return std::nullopt;
     const double w = range.hi - range.lo;
     ParamInterval next = range;
-    if (clip->lo > 0.0) next.lo = std::fmax(range.lo, range.lo + w * clip->lo - 4 * kU);
-    if (clip->hi < 1.0) next.hi = std::fmin(range.hi, range.lo + w * clip->hi + 4 * kU);
+    if (clip->lo > 0.0) next.lo = bernstein::max2(range.lo, range.lo + w * clip->lo - 4 * kU);
+    if (clip->hi < 1.0) next.hi = bernstein::min2(range.hi, range.lo + w * clip->hi + 4 * kU);
     const bool shrank_enough = next.hi - next.lo < 0.8 * w;
     range = next;
     if (!shrank_enough) break;
@@ -137,11 +139,79 @@ std::optional<ParamInterval> kept_interval_by_hulls(std::span<const double> p, d
   return range;
 }
 
+namespace {
+
+/// p on [0, a] (left) and on [b, 1] (right) for degree k <= 3, by one de Casteljau pass each:
+/// the left piece is the first entry of every level, the right piece the last.
+struct Ends {
+  double left[4];
+  double right[4];
+};
+
+Ends end_pieces(const double* p, int k, double a, double b) noexcept {
+  Ends out{};
+  double row[4];
+  for (int i = 0; i <= k; ++i) row[i] = p[i];
+  out.left[0] = row[0];
+  for (int level = k; level > 0; --level) {
+    for (int i = 0; i < level; ++i) row[i] = bernstein::lerp(row[i], row[i + 1], a);
+    out.left[k - level + 1] = row[0];
+  }
+  for (int i = 0; i <= k; ++i) row[i] = p[i];
+  out.right[k] = row[k];
+  for (int level = k; level > 0; --level) {
+    for (int i = 0; i < level; ++i) row[i] = bernstein::lerp(row[i], row[i + 1], b);
+    out.right[level - 1] = row[level - 1];
+  }
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
+/// de Casteljau value of a degree-k <= 3 polynomial.
+double value(const double* p, int k, double t) noexcept {
+  double row[4];
+  for (int i = 0; i <= k; ++i) row[i] = p[i];
+  for (int level = k; level > 0; --level) {
+    for (int i = 0; i < level; ++i) row[i] = bernstein::lerp(row[i], row[i + 1], t);
+  }
+  return row[0];
+}
+
+/// The root of the monotone p(t) = level in (0, 1): Newton's method on the power form,
+/// started where the control polygon crosses the level (already within O(w^2) of it).
+double monotone_root(const double* p, const double* c, int k, double level) noexcept {
+  double t = 0.5;
+  for (int i = 0; i < k; ++i) {
+    if ((p[i] <= level) != (p[i + 1] <= level)) {
+      t = (i + (level - p[i]) / (p[i + 1] - p[i])) / k;
+      break;
+    }
+  }
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    const double f = horner(c[0] - level, c[1], c[2], c[3], t);
+    const double df = (3 * c[3] * t + 2 * c[2]) * t + c[1];
+    if (!(df != 0.0)) break;
+    const double next = t - f / df;
+    if (!(next >= 0.0 && next <= 1.0)) break;
+    t = next;
+  }
+  return t;
+}
+
+}  // namespace
+
 std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo, double hi) {
-  const auto [min_it, max_it] = std::minmax_element(p.begin(), p.end());
-  if (*max_it < lo || *min_it > hi) return std::nullopt;
-  if (lo <= *min_it && *max_it <= hi) return ParamInterval{0.0, 1.0};
   const int k = static_cast<int>(p.size()) - 1;
+  double p_min = p[0], p_max = p[0];
+  for (const double v : p) {
+    p_min = v < p_min ? v : p_min;
+    p_max = v > p_max ? v : p_max;
+  }
+  if (p_max < lo || p_min > hi) return std::nullopt;
+  if (lo <= p_min && p_max <= hi) return ParamInterval{0.0, 1.0};
   if (k < 1 || k > 3) return kept_interval_by_hulls(p, lo, hi);
   // Power basis: p(t) = c0 + c1 t + c2 t^2 + c3 t^3.
   double c[4] = {p[0], 0.0, 0.0, 0.0};
@@ -155,32 +225,69 @@ std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo,
     c[2] = 3 * (p[0] - 2 * p[1] + p[2]);
     c[3] = (p[3] - p[0]) + 3 * (p[1] - p[2]);
   }
+  const double e = 3.02 * k * kU * bernstein::max_abs(p) + 0x1p-1000;
+  // Monotone p (monotone Bernstein coefficients, so p' has constant sign): the set is one
+  // interval between the crossings of lo and hi, and a single value outside each end
+  // certifies it. This is the common case once the pieces are small.
+  bool increasing = true, decreasing = true;
+  for (int i = 0; i < k; ++i) {
+    increasing = increasing && p[static_cast<std::size_t>(i)] <= p[static_cast<std::size_t>(i) + 1];
+    decreasing = decreasing && p[static_cast<std::size_t>(i)] >= p[static_cast<std::size_t>(i) + 1];
+  }
+  if (increasing || decreasing) {
+    // Where p enters the band (from below if increasing, from above if decreasing) and
+    // where it leaves it; an end of [0, 1] already inside needs no root.
+    const double enter = increasing ? lo : hi, leave = increasing ? hi : lo;
+    const bool starts_inside = increasing ? p[0] >= lo : p[0] <= hi;
+    const bool ends_inside = increasing ? p[static_cast<std::size_t>(k)] <= hi : p[static_cast<std::size_t>(k)] >= lo;
+    double alpha = 0.0, beta = 1.0;
+    bool certified = true;
+    if (!starts_inside) {
+      alpha = monotone_root(p.data(), c, k, enter) - kRootPad;
+      if (alpha > 0.0) {
+        const double v = value(p.data(), k, alpha);
+        certified = increasing ? v < lo - e : v > hi + e;
+      } else {
+        alpha = 0.0;
+      }
+    }
+    if (certified && !ends_inside) {
+      beta = monotone_root(p.data(), c, k, leave) + kRootPad;
+      if (beta < 1.0) {
+        const double v = value(p.data(), k, beta);
+        certified = increasing ? v > hi + e : v < lo - e;
+      } else {
+        beta = 1.0;
+      }
+    }
+    if (certified && alpha <= beta) return ParamInterval{alpha, beta};
+  }
   double breaks[8];
   int nb = 0;
   breaks[nb++] = 0.0;
   for (const double level : {lo, hi}) {
     const CubicRoots r = real_roots_up_to_cubic(c[0] - level, c[1], c[2], c[3], -0x1p-20, 1 + 0x1p-20);
-    for (int i = 0; i < r.count; ++i) breaks[nb++] = std::clamp(r.t[i], 0.0, 1.0);
+    for (int i = 0; i < r.count; ++i) breaks[nb++] = r.t[i] < 0.0 ? 0.0 : (r.t[i] > 1.0 ? 1.0 : r.t[i]);
   }
   breaks[nb++] = 1.0;
   sort_small(breaks, nb);
+  // Classify the segments by p at their midpoints (Horner: only a guess, certified below).
   double alpha = 2.0, beta = -1.0;
   for (int i = 0; i + 1 < nb; ++i) {
     const double mid = breaks[i] / 2 + breaks[i + 1] / 2;
-    const double v = bernstein::evaluate(p, mid);
+    const double v = horner(c[0], c[1], c[2], c[3], mid);
     if (lo <= v && v <= hi) {
-      alpha = std::fmin(alpha, breaks[i]);
-      beta = std::fmax(beta, breaks[i + 1]);
+      alpha = alpha < breaks[i] ? alpha : breaks[i];
+      beta = beta > breaks[i + 1] ? beta : breaks[i + 1];
     }
   }
   if (beta < alpha) return kept_interval_by_hulls(p, lo, hi);
   alpha = alpha - kRootPad > 0 ? alpha - kRootPad : 0.0;
   beta = beta + kRootPad < 1 ? beta + kRootPad : 1.0;
-  const double e = 3.02 * k * kU * bernstein::max_abs(p) + 0x1p-1000;
-  if (alpha > 0.0 && !certainly_outside(bernstein::portion<double>(p, 0.0, alpha), lo, hi, e)) {
-    return kept_interval_by_hulls(p, lo, hi);
-  }
-  if (beta < 1.0 && !certainly_outside(bernstein::portion<double>(p, beta, 1.0), lo, hi, e)) {
+  const Ends ends = end_pieces(p.data(), k, alpha, beta);
+  const std::span<const double> left(ends.left, static_cast<std::size_t>(k + 1));
+  const std::span<const double> right(ends.right, static_cast<std::size_t>(k + 1));
+  if ((alpha > 0.0 && !certainly_outside(left, lo, hi, e)) || (beta < 1.0 && !certainly_outside(right, lo, hi, e))) {
     return kept_interval_by_hulls(p, lo, hi);
   }
   return ParamInterval{alpha, beta};

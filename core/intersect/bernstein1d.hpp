@@ -29,13 +29,43 @@ inline constexpr double kU = 0x1p-53;
 template <class T>
 [[nodiscard]] SmallArray<T> portion(std::span<const T> c, double a, double b) {
   const std::size_t n = c.size() - 1;
-  SmallArray<T> out(n + 1);
-  SmallArray<T> row(c);
-  SmallArray<T> work(n + 1);
-  // Pass 1: rounds with a. After j rounds, row[0..n-j] is the level-j polygon; the first
-  // half of the results are finished from levels n - i with i rounds of b.
+  SmallArray<T> out(n + 1, typename SmallArray<T>::Uninitialized{});
+  // Straight-line code for the common low degrees: the same blossom values as below.
+  if (n == 1) {
+    out[0] = bernstein::lerp(c[0], c[1], a);
+    out[1] = bernstein::lerp(c[0], c[1], b);
+    return out;
+  }
+  if (n == 2) {
+    const T a0 = bernstein::lerp(c[0], c[1], a), a1 = bernstein::lerp(c[1], c[2], a);
+    const T b0 = bernstein::lerp(c[0], c[1], b), b1 = bernstein::lerp(c[1], c[2], b);
+    out[0] = bernstein::lerp(a0, a1, a);
+    out[1] = bernstein::lerp(a0, a1, b);
+    out[2] = bernstein::lerp(b0, b1, b);
+    return out;
+  }
+  if (n == 3) {
+    const T a10 = bernstein::lerp(c[0], c[1], a), a11 = bernstein::lerp(c[1], c[2], a),
+            a12 = bernstein::lerp(c[2], c[3], a);
+    const T a20 = bernstein::lerp(a10, a11, a), a21 = bernstein::lerp(a11, a12, a);
+    const T b10 = bernstein::lerp(c[0], c[1], b), b11 = bernstein::lerp(c[1], c[2], b),
+            b12 = bernstein::lerp(c[2], c[3], b);
+    const T b20 = bernstein::lerp(b10, b11, b), b21 = bernstein::lerp(b11, b12, b);
+    out[0] = bernstein::lerp(a20, a21, a);
+    out[1] = bernstein::lerp(a20, a21, b);
+    out[2] = bernstein::lerp(b20, b21, a);
+    out[3] = bernstein::lerp(b20, b21, b);
+    return out;
+  }
+  SmallArray<T> row_storage(n + 1, typename SmallArray<T>::Uninitialized{});
+  SmallArray<T> work_storage(n + 1, typename SmallArray<T>::Uninitialized{});
+  T* row = row_storage.data();
+  T* work = work_storage.data();
+  for (std::size_t k = 0; k <= n; ++k) row[k] = c[k];
+  // Pass 1: rounds with a. After j rounds, row[0..n-j] is the level-j polygon; result
+  // i = n - j <= n/2 is finished from it with i rounds of b.
   for (std::size_t j = 0;; ++j) {
-    const std::size_t i = n - j;  // level j serves result i = n - j when i <= n/2
+    const std::size_t i = n - j;
     if (2 * i <= n) {
       for (std::size_t k = 0; k <= i; ++k) work[k] = row[k];
       for (std::size_t level = i; level > 0; --level) {
@@ -64,17 +94,22 @@ template <class T>
 
 /// p(t) by de Casteljau.
 [[nodiscard]] inline double evaluate(std::span<const double> c, double t) {
-  SmallArray<double> row(c);
+  SmallArray<double> row(c);  // inline storage up to degree 23
   for (std::size_t level = c.size() - 1; level > 0; --level) {
     for (std::size_t k = 0; k < level; ++k) row[k] = bernstein::lerp(row[k], row[k + 1], t);
   }
   return row[0];
 }
 
+/// max(a, b) and min(a, b) without std::fmax's NaN handling (a library call in GCC): for
+/// the hot loops, on values known to be finite.
+[[nodiscard]] constexpr double max2(double a, double b) noexcept { return a > b ? a : b; }
+[[nodiscard]] constexpr double min2(double a, double b) noexcept { return a < b ? a : b; }
+
 /// Largest |c_i|.
 [[nodiscard]] inline double max_abs(std::span<const double> c) noexcept {
   double m = 0.0;
-  for (const double v : c) m = std::fmax(m, std::fabs(v));
+  for (const double v : c) m = max2(m, std::fabs(v));
   return m;
 }
 

@@ -14,9 +14,14 @@ struct Extent {
 };
 
 Extent extent(const Piece& p) noexcept {
-  const auto [xl, xh] = std::minmax_element(p.x.begin(), p.x.end());
-  const auto [yl, yh] = std::minmax_element(p.y.begin(), p.y.end());
-  return {*xl - p.error, *xh + p.error, *yl - p.error, *yh + p.error};
+  double xl = p.x[0], xh = p.x[0], yl = p.y[0], yh = p.y[0];
+  for (std::size_t i = 1; i < p.x.size(); ++i) {
+    xl = p.x[i] < xl ? p.x[i] : xl;
+    xh = p.x[i] > xh ? p.x[i] : xh;
+    yl = p.y[i] < yl ? p.y[i] : yl;
+    yh = p.y[i] > yh ? p.y[i] : yh;
+  }
+  return {xl - p.error, xh + p.error, yl - p.error, yh + p.error};
 }
 
 }  // namespace
@@ -37,8 +42,8 @@ ParamInterval map_to_domain(ParamInterval domain, ParamInterval local) noexcept 
   constexpr double kU = bernstein::kU;
   const double w = domain.hi - domain.lo;
   ParamInterval out = domain;
-  if (local.lo > 0.0) out.lo = std::fmax(domain.lo, domain.lo + w * local.lo - 4 * kU);
-  if (local.hi < 1.0) out.hi = std::fmin(domain.hi, domain.lo + w * local.hi + 4 * kU);
+  if (local.lo > 0.0) out.lo = bernstein::max2(domain.lo, domain.lo + w * local.lo - 4 * kU);
+  if (local.hi < 1.0) out.hi = bernstein::min2(domain.hi, domain.lo + w * local.hi + 4 * kU);
   if (out.hi < out.lo) out.hi = out.lo;
   return out;
 }

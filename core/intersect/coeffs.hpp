@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cstddef>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace bezier::core {
@@ -18,7 +19,30 @@ class SmallArray {
   static constexpr std::size_t kInline = 24;
 
   SmallArray() = default;
+  SmallArray(const SmallArray& other) { *this = other; }
+  SmallArray& operator=(const SmallArray& other) {
+    if (this == &other) return *this;
+    if (other.size_ > kInline) heap_ = other.heap_;
+    else std::copy(other.inline_, other.inline_ + other.size_, inline_);
+    size_ = other.size_;
+    return *this;
+  }
+  SmallArray(SmallArray&& other) noexcept { *this = std::move(other); }
+  SmallArray& operator=(SmallArray&& other) noexcept {
+    if (this == &other) return *this;
+    if (other.size_ > kInline) heap_ = std::move(other.heap_);
+    else std::copy(other.inline_, other.inline_ + other.size_, inline_);
+    size_ = other.size_;
+    return *this;
+  }
+  ~SmallArray() = default;
   explicit SmallArray(std::size_t n, T value = T{}) { resize(n, value); }
+  /// n entries left unset, for buffers that are written before they are read.
+  struct Uninitialized {};
+  SmallArray(std::size_t n, Uninitialized) {
+    if (n > kInline) heap_.resize(n);
+    size_ = n;
+  }
   explicit SmallArray(std::span<const T> values) {
     resize(values.size());
     std::copy(values.begin(), values.end(), data());
@@ -52,7 +76,7 @@ class SmallArray {
   [[nodiscard]] std::span<T> span() noexcept { return {data(), size_}; }
 
  private:
-  T inline_[kInline] = {};
+  T inline_[kInline];  // not zeroed: resize() writes the first size_ entries
   std::vector<T> heap_;
   std::size_t size_ = 0;
 };

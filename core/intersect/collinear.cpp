@@ -74,7 +74,7 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f, c
   for (const WorkingCurve* c : {&f, &g}) {
     for (std::size_t i = 0; i < c->x.size(); ++i) {
       const Point2 v = {c->x[i] - origin.x, c->y[i] - origin.y};
-      const double d = std::hypot(v.x, v.y);
+      const double d = std::sqrt(v.x * v.x + v.y * v.y);  // working frame: no overflow
       if (d > best) {
         best = d;
         dir = v;

@@ -15,8 +15,16 @@ FatCurveOperator fat_curve_operator(int n, int k) {
   op.n = n;
   op.k = std::min(k, n);
   if (op.k < n) {
-    op.reduce = l2_reduction_matrix(n, op.k);
-    op.elevate = elevation_matrix(op.k, n);
+    op.reduce = l2_reduction_table(n, op.k);
+    op.elevate = elevation_table(op.k, n);
+    if (op.reduce == nullptr) {
+      op.owned_reduce = l2_reduction_matrix(n, op.k);
+      op.reduce = op.owned_reduce.entries.data();
+    }
+    if (op.elevate == nullptr) {
+      op.owned_elevate = elevation_matrix(op.k, n);
+      op.elevate = op.owned_elevate.entries.data();
+    }
   }
   return op;
 }
@@ -32,14 +40,16 @@ FatCurve fat_curve(const FatCurveOperator& op, std::span<const double> a) {
   out.p.resize(static_cast<std::size_t>(k + 1));
   for (int i = 0; i <= k; ++i) {
     double sum = 0.0;
-    for (int j = 0; j <= n; ++j) sum += op.reduce(i, j) * a[static_cast<std::size_t>(j)];
+    const double* row = op.reduce + i * (n + 1);
+    for (int j = 0; j <= n; ++j) sum += row[j] * a[static_cast<std::size_t>(j)];
     out.p[static_cast<std::size_t>(i)] = sum;
   }
   double delta = 0.0;
   for (int i = 0; i <= n; ++i) {
     double c = 0.0;
-    for (int j = 0; j <= k; ++j) c += op.elevate(i, j) * out.p[static_cast<std::size_t>(j)];
-    delta = std::fmax(delta, std::fabs(a[static_cast<std::size_t>(i)] - c));
+    const double* row = op.elevate + i * (k + 1);
+    for (int j = 0; j <= k; ++j) c += row[j] * out.p[static_cast<std::size_t>(j)];
+    delta = bernstein::max2(delta, std::fabs(a[static_cast<std::size_t>(i)] - c));
   }
   // E's entries carry one rounding each and the sum k + 1 more; the rows of E are convex
   // combinations, so |fl(E p) - E p| <= (k + 3) u max|p|; the difference rounds once more.

@@ -17,8 +17,19 @@ namespace bezier::core {
 struct FatCurveOperator {
   int n = 0;
   int k = 0;  ///< min(requested k, n)
-  BernsteinMatrix reduce;   ///< (k+1) x (n+1)
-  BernsteinMatrix elevate;  ///< (n+1) x (k+1)
+  /// Row-major entries of R, (k+1) x (n+1), and of E, (n+1) x (k+1): the compile-time
+  /// tables of degree.hpp when they cover (n, k), else the owned matrices below.
+  const double* reduce = nullptr;
+  const double* elevate = nullptr;
+  BernsteinMatrix owned_reduce;
+  BernsteinMatrix owned_elevate;
+
+  FatCurveOperator() = default;
+  FatCurveOperator(const FatCurveOperator&) = delete;  // the pointers may point into owned_*
+  FatCurveOperator& operator=(const FatCurveOperator&) = delete;
+  FatCurveOperator(FatCurveOperator&&) noexcept = default;  // vectors keep their buffers
+  FatCurveOperator& operator=(FatCurveOperator&&) noexcept = default;
+  ~FatCurveOperator() = default;
 };
 
 [[nodiscard]] FatCurveOperator fat_curve_operator(int n, int k);

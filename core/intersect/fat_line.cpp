@@ -14,7 +14,7 @@ constexpr double kU = bernstein::kU;
 double reach(const Piece& p, Point2 origin) noexcept {
   double r = 0.0;
   for (std::size_t i = 0; i < p.x.size(); ++i) {
-    r = std::fmax(r, std::fmax(std::fabs(p.x[i] - origin.x), std::fabs(p.y[i] - origin.y)));
+    r = bernstein::max2(r, bernstein::max2(std::fabs(p.x[i] - origin.x), std::fabs(p.y[i] - origin.y)));
   }
   return r;
 }
@@ -36,12 +36,12 @@ FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection directio
   const Point2 origin = {g.x[0], g.y[0]};
   Point2 d = chord(g);
   const double limit = 4 * g.error;
-  if (std::fmax(std::fabs(d.x), std::fabs(d.y)) <= limit) {
+  if (bernstein::max2(std::fabs(d.x), std::fabs(d.y)) <= limit) {
     // Closed or nearly closed piece: use the farthest control point instead.
     double best = 0.0;
     for (std::size_t j = 1; j <= m; ++j) {
       const Point2 v = {g.x[j] - origin.x, g.y[j] - origin.y};
-      const double size = std::fmax(std::fabs(v.x), std::fabs(v.y));
+      const double size = bernstein::max2(std::fabs(v.x), std::fabs(v.y));
       if (size > best) {
         best = size;
         d = v;
@@ -75,15 +75,15 @@ FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection directio
       c = opposite ? 4.0 / 9.0 : 0.75;
     }
     for (std::size_t j = 1; j < m; ++j) {
-      lo = std::fmin(lo, c * (dist[j] - e));
-      hi = std::fmax(hi, c * (dist[j] + e));
+      lo = bernstein::min2(lo, c * (dist[j] - e));
+      hi = bernstein::max2(hi, c * (dist[j] + e));
     }
     lo -= e;
     hi += e;
   } else {
     for (std::size_t j = 0; j <= m; ++j) {
-      lo = std::fmin(lo, dist[j]);
-      hi = std::fmax(hi, dist[j]);
+      lo = bernstein::min2(lo, dist[j]);
+      hi = bernstein::max2(hi, dist[j]);
     }
     lo -= e;
     hi += e;

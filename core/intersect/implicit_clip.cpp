@@ -57,7 +57,7 @@ Clip implicit_clip(const Piece& x, const Piece& other, const FatCurveOperator& o
   const Point2 q0 = par.q[0], q1 = par.q[1], q2 = par.q[2];
   const double area = cross(q1 - q0, q2 - q0);  // D, twice the signed area
   const double l0 = length(q2 - q1), l1 = length(q2 - q0), l2 = length(q1 - q0);  // |grad D_i|
-  if (!(std::fabs(area) > 64 * kU * std::fmax(l0, std::fmax(l1, l2)) * std::fmax(l0, std::fmax(l1, l2)))) {
+  if (!(std::fabs(area) > 64 * kU * bernstein::max2(l0, bernstein::max2(l1, l2)) * bernstein::max2(l0, bernstein::max2(l1, l2)))) {
     return no_information;  // Q is (nearly) straight: its implicit form degenerates
   }
   const std::size_t n1 = x.x.size();
@@ -68,13 +68,13 @@ Clip implicit_clip(const Piece& x, const Piece& other, const FatCurveOperator& o
     d0[k] = cross(q1 - p, q2 - p);
     d1[k] = cross(q2 - p, q0 - p);
     d2[k] = cross(q0 - p, q1 - p);
-    for (const Point2 q : par.q) reach = std::fmax(reach, length(q - p));
-    big = std::fmax(big, std::fmax(std::fabs(d0[k]), std::fmax(std::fabs(d1[k]), std::fabs(d2[k]))));
+    for (const Point2 q : par.q) reach = bernstein::max2(reach, length(q - p));
+    big = bernstein::max2(big, bernstein::max2(std::fabs(d0[k]), bernstein::max2(std::fabs(d1[k]), std::fabs(d2[k]))));
   }
   // Each D_i at a control point: x's error moves the point by sqrt(2) x.error along a
   // gradient of length <= max l_i; the two differences, two products and the difference of
   // the cross product round with relative error <= 4 u of |a| |b| <= reach^2.
-  const double l_max = std::fmax(l0, std::fmax(l1, l2));
+  const double l_max = bernstein::max2(l0, bernstein::max2(l1, l2));
   const double e = l_max * std::sqrt(2.0) * x.error * (1 + kU) + 5 * kU * reach * reach;
   const Coeffs sq = product(d1, d1), pr = product(d0, d2);
   Coeffs j(sq.size());

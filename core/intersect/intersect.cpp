@@ -1,7 +1,9 @@
 #include "core/intersect/intersect.hpp"
+#include "core/intersect/bernstein1d.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/intersect/collinear.hpp"
 #include "core/intersect/fat_curve.hpp"
@@ -20,14 +22,10 @@ namespace {
 double hodograph_scale(const WorkingCurve& c) noexcept {
   double m = 0.0;
   for (std::size_t i = 0; i + 1 < c.x.size(); ++i) {
-    m = std::fmax(m, std::hypot(c.x[i + 1] - c.x[i], c.y[i + 1] - c.y[i]));
+    const double dx = c.x[i + 1] - c.x[i], dy = c.y[i + 1] - c.y[i];
+    m = bernstein::max2(m, std::sqrt(dx * dx + dy * dy));  // working frame: no overflow
   }
   return c.degree * m;
-}
-
-Point2 curve_point(const WorkingCurve& c, double t) {
-  const PointDD p = evaluate_dd(c, t);
-  return {dd::to_double(p.x), dd::to_double(p.y)};
 }
 
 /// The answer for one (t, s), with its kind judged from the derivatives there.
@@ -38,10 +36,9 @@ Intersection make_intersection(const WorkingCurve& f, const WorkingCurve& g, Wor
   x.s = s;
   x.t_interval = ti;
   x.s_interval = si;
-  const Point2 pf = curve_point(f, t), pg = curve_point(g, s);
-  x.point = from_working({pf.x / 2 + pg.x / 2, pf.y / 2 + pg.y / 2}, frame);
-  x.kind = classify_intersection(evaluate_with_tangent(f, t).tangent, evaluate_with_tangent(g, s).tangent,
-                                 hodograph_scale(f), hodograph_scale(g));
+  const PointAndTangent pf = evaluate_with_tangent(f, t), pg = evaluate_with_tangent(g, s);
+  x.point = from_working({pf.point.x / 2 + pg.point.x / 2, pf.point.y / 2 + pg.point.y / 2}, frame);
+  x.kind = classify_intersection(pf.tangent, pg.tangent, hodograph_scale(f), hodograph_scale(g));
   return x;
 }
 
@@ -53,6 +50,20 @@ void sort_result(IntersectionResult& r) {
     return a.t_interval.lo != b.t_interval.lo ? a.t_interval.lo < b.t_interval.lo
                                               : a.s_interval.lo < b.s_interval.lo;
   });
+}
+
+bool control_boxes_disjoint(const Curve& f, const Curve& g) noexcept {
+  const auto box = [](const Curve& c) {
+    Point2 lo = c.front(), hi = c.front();
+    for (const Point2 p : c.points()) {
+      lo = {p.x < lo.x ? p.x : lo.x, p.y < lo.y ? p.y : lo.y};
+      hi = {p.x > hi.x ? p.x : hi.x, p.y > hi.y ? p.y : hi.y};
+    }
+    return std::pair{lo, hi};
+  };
+  const auto [flo, fhi] = box(f);
+  const auto [glo, ghi] = box(g);
+  return fhi.x < glo.x || ghi.x < flo.x || fhi.y < glo.y || ghi.y < flo.y;
 }
 
 /// End points of f and g equal bit for bit: exact roots, unless they lie on an overlap.
@@ -80,6 +91,9 @@ IntersectionResult intersect(const Curve& f, const Curve& g, const IntersectOpti
     result.status = IntersectStatus::tolerance_too_small;
     return result;
   }
+  // Control-point bounding boxes apart (exact comparisons of the inputs): nothing to do.
+  // Most pairs of random curves end here.
+  if (control_boxes_disjoint(f, g)) return result;
   const WorkingFrame frame = working_frame(f, g);
   const WorkingCurve wf = to_working(f, frame), wg = to_working(g, frame);
 

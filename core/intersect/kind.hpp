@@ -27,6 +27,7 @@ struct KindTolerances {
                                                      const KindTolerances& tol = {}) noexcept;
 
 /// The sine of the angle between two vectors, |a x b| / (|a| |b|); 0 when either is zero.
+/// For vectors of moderate size (the working frame's): the squares must not overflow.
 [[nodiscard]] double sine_between(Point2 a, Point2 b) noexcept;
 
 }  // namespace bezier::core

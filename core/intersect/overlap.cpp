@@ -15,9 +15,9 @@ constexpr double kU = bernstein::kU;
 constexpr double kShortestOverlap = 0x1p-30;
 
 /// Monomial coefficients a_k = C(n,k) Σ_{i<=k} (-1)^(k-i) C(k,i) P_i of one coordinate.
-std::vector<double> monomial(const std::vector<double>& c) {
+Coeffs monomial(std::span<const double> c) {
   const int n = static_cast<int>(c.size()) - 1;
-  std::vector<double> a(c.size(), 0.0);
+  Coeffs a(c.size(), 0.0);
   for (int k = 0; k <= n; ++k) {
     double sum = 0.0;
     for (int i = 0; i <= k; ++i) {
@@ -32,11 +32,11 @@ std::vector<double> monomial(const std::vector<double>& c) {
 /// The largest k whose monomial coefficient is above the rounding of the conversion
 /// (C(n,k) 2^k u magnitude, with a safety factor of 64): a degree-elevated curve, rounded
 /// to doubles, has nothing else above its true degree.
-int true_degree(const std::vector<double>& ax, const std::vector<double>& ay, double magnitude) {
+int true_degree(const Coeffs& ax, const Coeffs& ay, double magnitude) {
   const int n = static_cast<int>(ax.size()) - 1;
   for (int k = n; k >= 1; --k) {
     const double tol = 64 * binomial(n, k) * std::ldexp(1.0, k) * kU * magnitude;
-    const double v = std::fmax(std::fabs(ax[static_cast<std::size_t>(k)]), std::fabs(ay[static_cast<std::size_t>(k)]));
+    const double v = bernstein::max2(std::fabs(ax[static_cast<std::size_t>(k)]), std::fabs(ay[static_cast<std::size_t>(k)]));
     if (v > tol) return k;
   }
   return 0;
@@ -56,14 +56,14 @@ std::vector<double> elevated(const std::vector<double>& c, int to) {
   return elevate_degree(std::span<const double>(c), to);
 }
 
-std::vector<double> piece(const std::vector<double>& c, double a, double b) {
+std::vector<double> piece(std::span<const double> c, double a, double b) {
   const Coeffs p = bernstein::portion<double>(c, a, b);
   return {p.begin(), p.end()};
 }
 
 }  // namespace
 
-double overlap_tolerance(int degree) noexcept { return 0x1p-42 * std::fmax(1, degree); }
+double overlap_tolerance(int degree) noexcept { return 0x1p-42 * bernstein::max2(1, degree); }
 
 double locate_on_curve(const WorkingCurve& f, PointDD p, double start) {
   double t = start;
@@ -77,24 +77,31 @@ double locate_on_curve(const WorkingCurve& f, PointDD p, double start) {
     t -= step;
     if (std::fabs(step) <= 0x1p-60) break;
   }
-  return std::fmin(1.0, std::fmax(0.0, t));
+  return bernstein::min2(1.0, bernstein::max2(0.0, t));
 }
 
 std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCurve& g) {
   std::vector<OverlapFinding> out;
   if (f.is_point || g.is_point) return out;
-  const std::vector<double> fx = monomial(f.x), fy = monomial(f.y);
-  const std::vector<double> gx = monomial(g.x), gy = monomial(g.y);
+  const Coeffs fx = monomial(f.x), fy = monomial(f.y);
+  const Coeffs gx = monomial(g.x), gy = monomial(g.y);
   const int d = true_degree(fx, fy, f.magnitude);
   if (d < 1 || d != true_degree(gx, gy, g.magnitude)) return out;
-  const auto at = [](const std::vector<double>& v, int k) { return v[static_cast<std::size_t>(k)]; };
+  const auto at = [](const Coeffs& v, int k) { return v[static_cast<std::size_t>(k)]; };
   // The coordinate with the larger top coefficient of f.
   const bool use_x = std::fabs(at(fx, d)) >= std::fabs(at(fy, d));
-  const std::vector<double>& a = use_x ? fx : fy;
-  const std::vector<double>& b = use_x ? gx : gy;
+  const Coeffs& a = use_x ? fx : fy;
+  const Coeffs& b = use_x ? gx : gy;
+  const Coeffs& a_other = use_x ? fy : fx;
+  const Coeffs& b_other = use_x ? gy : gx;
+  // A cheap necessary condition first (most pairs stop here): the other coordinate's top
+  // coefficients must scale by the same beta^d, to within the conversion's rounding.
+  const double top_tol = 0x1p-20 * bernstein::max2(std::fabs(at(b, d)), std::fabs(at(b_other, d)));
   const double r = at(b, d) / at(a, d);
   std::vector<double> betas;
-  if (d % 2 == 1) {
+  if (d == 3) {
+    betas.push_back(std::cbrt(r));
+  } else if (d % 2 == 1) {
     betas.push_back(std::copysign(std::pow(std::fabs(r), 1.0 / d), r));
   } else if (r > 0) {
     betas.push_back(std::pow(r, 1.0 / d));
@@ -102,12 +109,19 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
   }
   for (const double beta : betas) {
     if (!(std::isfinite(beta) && beta != 0.0)) continue;
+    const double beta_d = std::pow(beta, d);
+    if (!(std::fabs(at(b_other, d) - beta_d * at(a_other, d)) <= top_tol)) continue;
     const double alpha = (at(b, d - 1) / std::pow(beta, d - 1) - at(a, d - 1)) / (d * at(a, d));
     if (!std::isfinite(alpha)) continue;
+    const double next = std::pow(beta, d - 1) * (at(a_other, d - 1) + d * alpha * at(a_other, d));
+    if (!(std::fabs(at(b_other, d - 1) - next) <=
+          0x1p-20 * (std::fabs(at(b_other, d - 1)) + std::fabs(next) + std::fabs(at(b_other, d))))) {
+      continue;
+    }
     // s with alpha + beta s in [0, 1], within [0, 1].
     double raw_lo = -alpha / beta, raw_hi = (1 - alpha) / beta;
     if (raw_lo > raw_hi) std::swap(raw_lo, raw_hi);
-    const double s_a = std::fmax(0.0, raw_lo), s_b = std::fmin(1.0, raw_hi);
+    const double s_a = bernstein::max2(0.0, raw_lo), s_b = bernstein::min2(1.0, raw_hi);
     if (!(s_b - s_a > kShortestOverlap)) continue;
     // Each end is an end of g (s exact) or an end of f (t exact); Newton pins the other.
     double ends_t[2], ends_s[2];
@@ -117,7 +131,7 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
       const double phi = alpha + beta * s_end[e];
       if (s_exact[e]) {
         ends_s[e] = s_end[e];
-        ends_t[e] = locate_on_curve(f, evaluate_dd(g, s_end[e]), std::fmin(1.0, std::fmax(0.0, phi)));
+        ends_t[e] = locate_on_curve(f, evaluate_dd(g, s_end[e]), bernstein::min2(1.0, bernstein::max2(0.0, phi)));
       } else {
         ends_t[e] = (e == 0) == (beta > 0) ? 0.0 : 1.0;
         ends_s[e] = locate_on_curve(g, evaluate_dd(f, ends_t[e]), s_end[e]);
@@ -132,13 +146,13 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
     const std::vector<double> qy = elevated(piece(g.y, ends_s[0], ends_s[1]), degree);
     double gap = 0.0;
     for (std::size_t i = 0; i < px.size(); ++i) {
-      gap = std::fmax(gap, std::fmax(std::fabs(px[i] - qx[i]), std::fabs(py[i] - qy[i])));
+      gap = bernstein::max2(gap, bernstein::max2(std::fabs(px[i] - qx[i]), std::fabs(py[i] - qy[i])));
     }
     if (!(gap <= overlap_tolerance(degree))) continue;
     OverlapFinding found;
     found.map.beta = (ends_t[1] - ends_t[0]) / (ends_s[1] - ends_s[0]);
     found.map.alpha = ends_t[0] - found.map.beta * ends_s[0];
-    found.overlap.t_interval = {std::fmin(ends_t[0], ends_t[1]), std::fmax(ends_t[0], ends_t[1])};
+    found.overlap.t_interval = {bernstein::min2(ends_t[0], ends_t[1]), bernstein::max2(ends_t[0], ends_t[1])};
     found.overlap.s_interval = {ends_s[0], ends_s[1]};
     found.overlap.reversed = found.map.beta < 0;
     out.push_back(found);
@@ -150,11 +164,11 @@ bool covered_by_overlap(const WorkingCurve& f, const CoincidenceMap& map, ParamI
                         ParamInterval s) {
   constexpr double kSlack = 0x1p-40;
   const double p0 = map.alpha + map.beta * s.lo, p1 = map.alpha + map.beta * s.hi;
-  const double lo = std::fmin(p0, p1), hi = std::fmax(p0, p1);
+  const double lo = bernstein::min2(p0, p1), hi = bernstein::max2(p0, p1);
   if (hi < t.lo - kSlack || lo > t.hi + kSlack) return false;
   const int n = f.degree;
   if (n < 1) return false;
-  const double u_lo = std::fmin(t.lo, lo) - kSlack, u_hi = std::fmax(t.hi, hi) + kSlack;
+  const double u_lo = bernstein::min2(t.lo, lo) - kSlack, u_hi = bernstein::max2(t.hi, hi) + kSlack;
   const Coeffs qx = bernstein::portion<double>(f.x, u_lo, u_hi);
   const Coeffs qy = bernstein::portion<double>(f.y, u_lo, u_hi);
   Coeffs hx(static_cast<std::size_t>(n)), hy(static_cast<std::size_t>(n));
@@ -162,13 +176,13 @@ bool covered_by_overlap(const WorkingCurve& f, const CoincidenceMap& map, ParamI
   for (std::size_t i = 0; i < hx.size(); ++i) {
     hx[i] = qx[i + 1] - qx[i];
     hy[i] = qy[i + 1] - qy[i];
-    h_max = std::fmax(h_max, std::fmax(std::fabs(hx[i]), std::fabs(hy[i])));
+    h_max = bernstein::max2(h_max, bernstein::max2(std::fabs(hx[i]), std::fabs(hy[i])));
   }
   if (!(h_max > 0)) return false;
   // Extrapolated pieces (U reaching outside [0, 1]) are larger; bound their rounding by the
   // largest control point.
-  const double q_max = std::fmax(bernstein::max_abs(qx), bernstein::max_abs(qy));
-  const double err = 8 * (n + 1) * kU * std::fmax(q_max, f.magnitude) + 0x1p-40 * h_max;
+  const double q_max = bernstein::max2(bernstein::max_abs(qx), bernstein::max_abs(qy));
+  const double err = 8 * (n + 1) * kU * bernstein::max2(q_max, f.magnitude) + 0x1p-40 * h_max;
   const std::size_t last = hx.size() - 1;
   const double n0 = std::hypot(hx[0], hy[0]), n1 = std::hypot(hx[last], hy[last]);
   const Point2 candidates[] = {
@@ -192,7 +206,7 @@ bool coincide_at_precision(const WorkingCurve& f, const WorkingCurve& g, ParamIn
   // The local scale: the piece of f in the box's frame, and its rounding.
   const Piece fp = compensated_piece(f, t.lo, t.hi, center);
   double size = 0.0;
-  for (std::size_t i = 0; i < fp.x.size(); ++i) size = std::fmax(size, std::fmax(std::fabs(fp.x[i]), std::fabs(fp.y[i])));
+  for (std::size_t i = 0; i < fp.x.size(); ++i) size = bernstein::max2(size, bernstein::max2(std::fabs(fp.x[i]), std::fabs(fp.y[i])));
   const double floor = 16.0 * std::max(f.degree, g.degree) * (kU * size + fp.error);
   const Point2 fchord = {fp.x.back() - fp.x[0], fp.y.back() - fp.y[0]};
   const Point2 gchord = evaluate_with_tangent(g, s.hi).point - evaluate_with_tangent(g, s.lo).point;
@@ -205,7 +219,7 @@ bool coincide_at_precision(const WorkingCurve& f, const WorkingCurve& g, ParamIn
     const PointDD p = evaluate_dd(f, tk);
     const double sk = locate_on_curve(g, p, guess);
     const Residual r = residual(g, sk, p);
-    if (!(std::fmax(std::fabs(r.x), std::fabs(r.y)) <= floor)) return false;
+    if (!(bernstein::max2(std::fabs(r.x), std::fabs(r.y)) <= floor)) return false;
   }
   return true;
 }

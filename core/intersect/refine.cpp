@@ -1,4 +1,5 @@
 #include "core/intersect/refine.hpp"
+#include "core/intersect/bernstein1d.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -58,8 +59,11 @@ Newton transversal(const WorkingCurve& f, const WorkingCurve& g, const Contact& 
     if (!(std::isfinite(dt) && std::isfinite(ds))) break;
     n.t = clamp_to(c.t, n.t + dt);
     n.s = clamp_to(c.s, n.s + ds);
-    const double step = std::fmax(std::fabs(dt), std::fabs(ds));
-    if (step <= kConverged) {
+    const double step = bernstein::max2(std::fabs(dt), std::fabs(ds));
+    // At a well-conditioned root Newton's error after a step of size h is O(h^2): below
+    // 2^-40 the new iterate is already exact to the last bit, and one more residual would
+    // only confirm it.
+    if (step <= kConverged || (step <= 0x1p-40 && sine_between(df, dg) > 0x1p-10)) {
       n.converged = true;
       break;
     }
@@ -89,7 +93,7 @@ Newton tangency(const WorkingCurve& f, const WorkingCurve& g, const Contact& c, 
     if (!(std::isfinite(dt) && std::isfinite(ds))) break;
     n.t = clamp_to(c.t, n.t + dt);
     n.s = clamp_to(c.s, n.s + ds);
-    if (std::fmax(std::fabs(dt), std::fabs(ds)) <= kConverged) {
+    if (bernstein::max2(std::fabs(dt), std::fabs(ds)) <= kConverged) {
       n.converged = true;
       break;
     }

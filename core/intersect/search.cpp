@@ -1,4 +1,5 @@
 #include "core/intersect/search.hpp"
+#include "core/intersect/bernstein1d.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -46,10 +47,22 @@ bool nearly_parallel(const Piece& a, const Piece& b) noexcept {
   return sine_between(ca, cb) <= kParallelSine;
 }
 
+/// The larger side of a piece's control-point bounding box.
+double piece_extent(const Piece& p) noexcept {
+  double xl = p.x[0], xh = p.x[0], yl = p.y[0], yh = p.y[0];
+  for (std::size_t i = 1; i < p.x.size(); ++i) {
+    xl = p.x[i] < xl ? p.x[i] : xl;
+    xh = p.x[i] > xh ? p.x[i] : xh;
+    yl = p.y[i] < yl ? p.y[i] : yl;
+    yh = p.y[i] > yh ? p.y[i] : yh;
+  }
+  return xh - xl > yh - yl ? xh - xl : yh - yl;
+}
+
 /// The intersection of two kept intervals (both contain every root), or nothing.
 std::optional<ParamInterval> intersect_kept(std::optional<ParamInterval> a, std::optional<ParamInterval> b) {
   if (!a || !b) return std::nullopt;
-  const ParamInterval r{std::fmax(a->lo, b->lo), std::fmin(a->hi, b->hi)};
+  const ParamInterval r{bernstein::max2(a->lo, b->lo), bernstein::min2(a->hi, b->hi)};
   if (r.hi < r.lo) return std::nullopt;
   return r;
 }
@@ -204,24 +217,45 @@ class Searcher {
       const ParamInterval next = map_to_domain(domain, *clip.kept);
       const double fraction = next.width() / domain.width();
       if (fraction > threshold) {
+        // Keep what the clip removed (it is sound), then decide how to go on.
+        if (next.width() < domain.width()) {
+          domain = next;
+          if (box.compensated) f_ok_ = g_ok_ = false;
+          else if (clip_s) g_ok_ = false;
+          else f_ok_ = false;
+        }
         if (!tried_alternative && is_point_like(other)) {
           // A point-like piece defines no line: try the other direction through it.
           tried_alternative = true;
           box.along = !box.along;
           continue;
         }
-        if (clip.noisy) {
-          if (!tried_other && !td && !sd) {
-            tried_other = true;
-            box.clip_s = !clip_s;
-            continue;
-          }
-          emit(box, false);  // precision floor: compensated pieces cannot decide
-          return;
-        }
         if (box.compensated && !td && !sd &&
             coincide_at_precision(*in_.f, *in_.g, box.t, box.s, evaluate_with_tangent(*in_.f, box.t.lo).point)) {
           emit(box, false);  // the curves agree to within rounding here: a high-order contact
+          return;
+        }
+        if (!tried_other && !td && !sd) {
+          // The other curve's clip may still succeed: try it before halving.
+          tried_other = true;
+          box.clip_s = !clip_s;
+          continue;
+        }
+        if (clip.noisy) {
+          if (!box.compensated) {
+            box.compensated = true;
+            f_ok_ = g_ok_ = false;
+            continue;
+          }
+          // Rounding decides, even in compensated pieces. When one piece is much longer
+          // than the other, halving it still helps (its fat line was the blunt one);
+          // otherwise this is the precision floor.
+          const double ef = piece_extent(f_piece_), eg = piece_extent(g_piece_);
+          if (!td && !sd && (ef > 8 * eg || eg > 8 * ef)) {
+            split(box, ef > eg, eg >= ef);
+            return;
+          }
+          emit(box, false);
           return;
         }
         if (in_.method == IntersectMethod::hybrid) {

@@ -16,13 +16,13 @@ WorkingFrame working_frame(const Curve& f, const Curve& g) {
   Point2 lo = f.front(), hi = f.front();
   for (const Curve* c : {&f, &g}) {
     for (const Point2 p : c->points()) {
-      lo = {std::fmin(lo.x, p.x), std::fmin(lo.y, p.y)};
-      hi = {std::fmax(hi.x, p.x), std::fmax(hi.y, p.y)};
+      lo = {bernstein::min2(lo.x, p.x), bernstein::min2(lo.y, p.y)};
+      hi = {bernstein::max2(hi.x, p.x), bernstein::max2(hi.y, p.y)};
     }
   }
   // Halves first: lo + hi may overflow.
   const Point2 center = {lo.x / 2 + hi.x / 2, lo.y / 2 + hi.y / 2};
-  const double extent = std::fmax(hi.x / 2 - lo.x / 2, hi.y / 2 - lo.y / 2);
+  const double extent = bernstein::max2(hi.x / 2 - lo.x / 2, hi.y / 2 - lo.y / 2);
   WorkingFrame frame;
   if (!(extent > 0.0)) {
     frame.origin = f.front();  // every control point of both curves is this point
@@ -35,7 +35,7 @@ WorkingFrame working_frame(const Curve& f, const Curve& g) {
   frame.origin = {std::nearbyint(center.x / grid) * grid, std::nearbyint(center.y / grid) * grid};
   double m = 0.0;
   for (const Curve* c : {&f, &g}) {
-    for (const Point2 p : c->points()) m = std::fmax(m, max_abs_coordinate(p - frame.origin));
+    for (const Point2 p : c->points()) m = bernstein::max2(m, max_abs_coordinate(p - frame.origin));
   }
   frame.scale = m > 0.0 ? std::ldexp(1.0, -(std::ilogb(m) + 1)) : 1.0;
   return frame;
@@ -44,18 +44,25 @@ WorkingFrame working_frame(const Curve& f, const Curve& g) {
 WorkingCurve to_working(const Curve& curve, WorkingFrame frame) {
   WorkingCurve w;
   w.degree = curve.degree();
-  for (const Point2 p : curve.points()) {
+  const std::size_t count = curve.points().size();
+  w.x.resize(count);
+  w.y.resize(count);
+  w.x_lo.resize(count);
+  w.y_lo.resize(count);
+  w.x_dd.resize(count);
+  w.y_dd.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const Point2 p = curve.points()[i];
     const TwoTerm<double> x = two_sum(p.x, -frame.origin.x);
     const TwoTerm<double> y = two_sum(p.y, -frame.origin.y);
-    w.x.push_back(x.hi * frame.scale);
-    w.y.push_back(y.hi * frame.scale);
-    w.x_lo.push_back(x.lo * frame.scale);
-    w.y_lo.push_back(y.lo * frame.scale);
-    w.x_dd.push_back({w.x.back(), w.x_lo.back()});
-    w.y_dd.push_back({w.y.back(), w.y_lo.back()});
-    w.magnitude = std::fmax(w.magnitude, std::fmax(std::fabs(w.x.back()), std::fabs(w.y.back())));
-    w.frame_error =
-        std::fmax(w.frame_error, std::fmax(std::fabs(w.x_lo.back()), std::fabs(w.y_lo.back())));
+    w.x[i] = x.hi * frame.scale;
+    w.y[i] = y.hi * frame.scale;
+    w.x_lo[i] = x.lo * frame.scale;
+    w.y_lo[i] = y.lo * frame.scale;
+    w.x_dd[i] = {w.x[i], w.x_lo[i]};
+    w.y_dd[i] = {w.y[i], w.y_lo[i]};
+    w.magnitude = bernstein::max2(w.magnitude, bernstein::max2(std::fabs(w.x[i]), std::fabs(w.y[i])));
+    w.frame_error = bernstein::max2(w.frame_error, bernstein::max2(std::fabs(w.x_lo[i]), std::fabs(w.y_lo[i])));
   }
   w.is_point = true;
   for (std::size_t i = 1; i < w.x.size(); ++i) {
@@ -83,7 +90,7 @@ Piece compensated_piece(const WorkingCurve& f, double a, double b, Point2 center
   for (std::size_t i = 0; i < xs.size(); ++i) {
     p.x[i] = dd::to_double(dd::sub(xs[i], dd::from(center.x)));
     p.y[i] = dd::to_double(dd::sub(ys[i], dd::from(center.y)));
-    local = std::fmax(local, std::fmax(std::fabs(p.x[i]), std::fabs(p.y[i])));
+    local = bernstein::max2(local, bernstein::max2(std::fabs(p.x[i]), std::fabs(p.y[i])));
   }
   p.error = 1.01 * kU * local + (12.0 * f.degree + 4.0) * kU * kU * f.magnitude + 0x1p-1000;
   return p;

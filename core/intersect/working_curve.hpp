@@ -29,9 +29,9 @@ struct WorkingFrame {
 /// which is far below any tolerance here.)
 struct WorkingCurve {
   int degree = 0;
-  std::vector<double> x, y;        ///< hi parts
-  std::vector<double> x_lo, y_lo;  ///< lo parts
-  std::vector<dd::Real> x_dd, y_dd;  ///< hi + lo as double-doubles
+  Coeffs x, y;        ///< hi parts
+  Coeffs x_lo, y_lo;  ///< lo parts
+  SmallArray<dd::Real> x_dd, y_dd;  ///< hi + lo as double-doubles
   double magnitude = 0.0;    ///< max |hi| over all coordinates (<= about 1)
   double frame_error = 0.0;  ///< max |lo|: how far hi is from the exact working curve
   bool is_point = false;     ///< every control point is the same point, exactly
