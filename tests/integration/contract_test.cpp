@@ -266,6 +266,21 @@ TEST_F(ContractTest, EveryExampleIsAnsweredAsDocumented) {
         EXPECT_EQ(mismatch(json::parse(e.response_body, nullptr, false), contract().at(where).at("value")), "");
         answered += e.status >= 200 && e.status < 300;
       }
+      // No response example without its request: one of the same name above, or the raw
+      // body in its x-request-body (for shared responses such as MalformedJson).
+      for (const auto& [status, ref] : contract().at(op.location + "/responses").items()) {
+        const std::string response = contract().resolve(op.location + "/responses/" + status);
+        for (const auto& [type, content] : member_or_empty(contract().at(response), "content").items()) {
+          for (const auto& [name, example] : member_or_empty(content, "examples").items()) {
+            if (examples.contains(name)) continue;
+            SCOPED_TRACE("response example " + name);
+            ASSERT_TRUE(example.contains("x-request-body")) << "no request gives this example";
+            const auto e = exchange(port(), "POST", path, "application/json", example.at("x-request-body").get<std::string>());
+            EXPECT_EQ(e.status, std::stoi(status)) << e.response_body;
+            EXPECT_EQ(mismatch(json::parse(e.response_body, nullptr, false), example.at("value")), "");
+          }
+        }
+      }
     }
     EXPECT_GE(answered, 1) << "no example of a successful call";
   }
