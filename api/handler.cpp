@@ -24,6 +24,7 @@ constexpr std::array kRoutes = {
     Route{"/polar", &polar_route},
     Route{"/classify", &classify_route},
     Route{"/loop-area", &loop_area_route},
+    Route{"/intersections", &intersections_route},
 };
 
 constexpr std::array<std::string_view, kRoutes.size()> kPaths = [] {

@@ -15,5 +15,6 @@ namespace bezier::api {
 [[nodiscard]] Reply polar_route(const nlohmann::json& request, const Limits& limits);
 [[nodiscard]] Reply classify_route(const nlohmann::json& request, const Limits& limits);
 [[nodiscard]] Reply loop_area_route(const nlohmann::json& request, const Limits& limits);
+[[nodiscard]] Reply intersections_route(const nlohmann::json& request, const Limits& limits);
 
 }  // namespace bezier::api

@@ -85,6 +85,11 @@ std::vector<ExactRoot> exact_end_roots(const Curve& f, const Curve& g, std::span
 }  // namespace
 
 IntersectionResult intersect(const Curve& f, const Curve& g, const IntersectOptions& options) {
+  return intersect_in(f, g, {0.0, 1.0}, {0.0, 1.0}, options);
+}
+
+IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_range, ParamInterval s_range,
+                                const IntersectOptions& options) {
   IntersectionResult result;
   result.stats.method = options.method;
   if (!(options.tolerance >= kMinTolerance)) {
@@ -113,6 +118,7 @@ IntersectionResult intersect(const Curve& f, const Curve& g, const IntersectOpti
     if (const auto line = collinear_intersections(wf, wg)) {
       result.overlaps = line->overlaps;
       for (const CollinearContact& c : line->touches) {
+        if (!t_range.contains(c.t_estimate) || !s_range.contains(c.s_estimate)) continue;
         result.intersections.push_back(make_intersection(wf, wg, frame, c.t_estimate, c.s_estimate, c.t, c.s));
       }
       sort_result(result);
@@ -121,8 +127,9 @@ IntersectionResult intersect(const Curve& f, const Curve& g, const IntersectOpti
   }
   const std::vector<OverlapFinding> overlaps = find_overlaps(wf, wg);
   for (const OverlapFinding& o : overlaps) result.overlaps.push_back(o.overlap);
-  const std::vector<ExactRoot> exact =
+  std::vector<ExactRoot> exact =
       (wf.is_point || wg.is_point) ? std::vector<ExactRoot>{} : exact_end_roots(f, g, overlaps);
+  std::erase_if(exact, [&](const ExactRoot& r) { return !t_range.contains(r.t) || !s_range.contains(r.s); });
 
   SearchInput in;
   in.f = &wf;
@@ -133,6 +140,8 @@ IntersectionResult intersect(const Curve& f, const Curve& g, const IntersectOpti
   in.overlaps = overlaps;
   in.t_free = wf.is_point;
   in.s_free = wg.is_point;
+  in.t_range = wf.is_point ? ParamInterval{0.0, 1.0} : t_range;
+  in.s_range = wg.is_point ? ParamInterval{0.0, 1.0} : s_range;
   const FatCurveOperator op_f2 = fat_curve_operator(wf.degree, 2), op_g2 = fat_curve_operator(wg.degree, 2);
   in.op_f2 = &op_f2;
   in.op_g2 = &op_g2;

@@ -39,4 +39,11 @@ namespace bezier::core {
 [[nodiscard]] IntersectionResult intersect(const Curve& f, const Curve& g,
                                            const IntersectOptions& options = {});
 
+/// The same, restricted to t in t_range and s in s_range (closed sub-intervals of [0, 1];
+/// parameters stay those of the whole curves). Used to put guaranteed intervals around a
+/// known intersection, e.g. the self-intersections of one curve (f = g, with boxes away
+/// from the diagonal t = s). Overlaps are still reported whole.
+[[nodiscard]] IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_range,
+                                              ParamInterval s_range, const IntersectOptions& options = {});
+
 }  // namespace bezier::core

@@ -121,7 +121,8 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
     // s with alpha + beta s in [0, 1], within [0, 1].
     double raw_lo = -alpha / beta, raw_hi = (1 - alpha) / beta;
     if (raw_lo > raw_hi) std::swap(raw_lo, raw_hi);
-    const double s_a = bernstein::max2(0.0, raw_lo), s_b = bernstein::min2(1.0, raw_hi);
+    // (Comparisons, not max/min: -0.0 must come out as 0.)
+    const double s_a = raw_lo <= 0.0 ? 0.0 : raw_lo, s_b = raw_hi >= 1.0 ? 1.0 : raw_hi;
     if (!(s_b - s_a > kShortestOverlap)) continue;
     // Each end is an end of g (s exact) or an end of f (t exact); Newton pins the other.
     double ends_t[2], ends_s[2];

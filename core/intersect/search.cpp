@@ -74,7 +74,10 @@ class Searcher {
   explicit Searcher(const SearchInput& input) : in_(input) { out_.stats.method = input.method; }
 
   SearchOutput run() {
-    stack_.push_back(Box{});
+    Box first;
+    first.t = in_.t_range;
+    first.s = in_.s_range;
+    stack_.push_back(first);
     while (!stack_.empty() && !out_.capped) {
       const Box box = stack_.back();
       stack_.pop_back();

@@ -36,6 +36,9 @@ struct SearchInput {
   std::span<const OverlapFinding> overlaps;
   bool t_free = false;
   bool s_free = false;
+  /// The part of the parameter square searched (default all of it).
+  ParamInterval t_range{0.0, 1.0};
+  ParamInterval s_range{0.0, 1.0};
 };
 
 struct SearchOutput {
