@@ -8,7 +8,8 @@
 // Answer without interval:
 //   {"degree", "loops": [{"t": [t1, t2], "point", "area" (>= 0), "signed_area", "kind"}],
 //    "area": Σ loop areas, "closed": P0 = Pn, "closed_area": number or null,
-//    "overlaps": [{"t_interval", "s_interval"}] (collinear curves that retrace themselves),
+//    "overlaps": [{"t_interval", "s_interval"}] (pieces the curve retraces: collinear curves,
+//                 palindromic control points P_i = P_{n-i}),
 //    "stats": {"method", "work", "max_depth", "newton_iterations"}}
 // Answer with interval (no loop search):
 //   {"degree", "interval": [t1, t2], "area": |A|, "signed_area": A, "chord": [B(t1), B(t2)],
@@ -96,7 +97,7 @@ Reply loops_answer(const core::Curve& curve, const Limits& limits) {
         ProblemKind::work_cap,
         "the self-intersection search examined " + std::to_string(result.stats.work) +
             " parameter boxes, the per-request cap, without finishing (a curve that "
-            "retraces itself without being a straight line needs unbounded work)");
+            "retraces part of itself, other than a line or a palindrome, needs unbounded work)");
   }
   nlohmann::json loops = nlohmann::json::array();
   for (const core::Loop& loop : result.loops) {

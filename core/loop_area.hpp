@@ -35,8 +35,8 @@ struct LoopAreaResult {
   bool closed = false;
   /// The whole closed curve's signed area (closed_area()); nullopt when not closed.
   std::optional<double> closed_area;
-  /// Collinear curves retrace themselves instead of forming loops (status degenerate);
-  /// they enclose no area.
+  /// Pieces the curve retraces (collinear curves, palindromic control points; status
+  /// degenerate): they enclose no area. The loops of a palindromic curve are still listed.
   std::vector<SelfOverlap> overlaps;
   SelfIntersectionStatus status = SelfIntersectionStatus::ok;
   SelfIntersectionStats stats;

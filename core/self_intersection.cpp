@@ -9,6 +9,7 @@
 #include "core/evaluate.hpp"
 #include "core/self_intersection_refine.hpp"
 #include "core/self_intersection_search.hpp"
+#include "core/subdivide.hpp"
 
 namespace bezier::core {
 
@@ -183,6 +184,53 @@ SelfIntersectionResult collinear_result(const CurveFacts& facts, const Collinear
   return result;
 }
 
+/// P_i = P_{n-i} for every i: then B(1 - t) = B(t) (the Bernstein basis is symmetric), and
+/// the curve runs out along B([0, 1/2]) and back over the same points.
+bool is_palindrome(std::span<const Point2> p) {
+  for (std::size_t i = 0, j = p.size() - 1; i < j; ++i, --j) {
+    if (!(p[i] == p[j])) return false;
+  }
+  return true;
+}
+
+/// A palindromic curve retraces itself: the overlap [0, 1/2] x [1/2, 1] (B(t) = B(1 - t)),
+/// and for each self-intersection (a, b) of the outbound half B on [0, 1/2] (found on that
+/// half, reparametrised to [0, 1]) the four pairs it makes with the way back: (a, b),
+/// (a, 1 - b), (b, 1 - a) and (1 - b, 1 - a). The general search cannot see this: the
+/// continuum of pairs (t, 1 - t) would exhaust any work budget.
+SelfIntersectionResult retracing_result(const CurveFacts& facts,
+                                        const SelfIntersectionOptions& options) {
+  SelfIntersectionResult result = self_intersections(subdivide(facts.curve, 0.5).left, options);
+  if (result.status != SelfIntersectionStatus::work_cap_reached) {
+    result.status = SelfIntersectionStatus::degenerate;
+  }
+  std::vector<SelfOverlap> overlaps{{0.0, 0.5, 0.5, 1.0}};
+  for (const SelfOverlap& o : result.overlaps) {
+    overlaps.push_back({0.5 * o.t_lo, 0.5 * o.t_hi, 0.5 * o.s_lo, 0.5 * o.s_hi});
+    overlaps.push_back({1 - 0.5 * o.s_hi, 1 - 0.5 * o.s_lo, 1 - 0.5 * o.t_hi, 1 - 0.5 * o.t_lo});
+  }
+  std::vector<SelfIntersection> pairs;
+  for (const SelfIntersection& h : result.pairs) {
+    const double a = 0.5 * h.t, b = 0.5 * h.s;
+    const bool tangent = h.kind == SelfIntersectionKind::tangent;
+    for (const auto& [u, v] : {std::pair{a, b}, {a, 1 - b}, {b, 1 - a}, {1 - b, 1 - a}}) {
+      pairs.push_back(finished_pair(facts, u, v, tangent));
+    }
+  }
+  const auto by_t = [](const auto& x, const auto& y) { return x.t != y.t ? x.t < y.t : x.s < y.s; };
+  std::sort(pairs.begin(), pairs.end(), by_t);
+  // b = 1/2 (a pair at the fold) gives each pair twice.
+  pairs.erase(std::unique(pairs.begin(), pairs.end(),
+                          [](const auto& x, const auto& y) { return x.t == y.t && x.s == y.s; }),
+              pairs.end());
+  std::sort(overlaps.begin(), overlaps.end(), [](const SelfOverlap& x, const SelfOverlap& y) {
+    return x.t_lo != y.t_lo ? x.t_lo < y.t_lo : x.s_lo < y.s_lo;
+  });
+  result.pairs = std::move(pairs);
+  result.overlaps = std::move(overlaps);
+  return result;
+}
+
 /// Cubics: the exact closed form of cubic_double_point() (exact decisions, and t = 0 or 1
 /// exactly when the loop closes at an end), polished by Newton to full precision.
 SelfIntersectionResult closed_form_cubic(const CurveFacts& facts) {
@@ -232,6 +280,8 @@ SelfIntersectionResult self_intersections(const Curve& curve,
   SelfIntersectionResult result;
   if (const auto frame = collinear_frame(points, facts.dist_tol)) {
     result = collinear_result(facts, *frame, options);
+  } else if (is_palindrome(points)) {
+    result = retracing_result(facts, options);
   } else if (curve.degree() == 3 && options.cubic_closed_form) {
     result = closed_form_cubic(facts);
   } else {

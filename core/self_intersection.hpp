@@ -26,9 +26,10 @@ struct SelfIntersection {
 };
 
 /// A continuum of self-intersections: the curve retraces itself, B on [t_lo, t_hi] runs
-/// over the same points as B on [s_lo, s_hi] (t_hi <= s_lo). Only collinear curves (every
-/// control point within the distance tolerance of one line) and single points produce
-/// these; for a point, t and s both cover [0, 1].
+/// over the same points as B on [s_lo, s_hi] (t_hi <= s_lo). Reported for collinear curves
+/// (every control point within the distance tolerance of one line), single points (t and s
+/// both cover [0, 1]) and palindromic control points (P_i = P_{n-i}: B(1 - t) = B(t), the
+/// overlap [0, 1/2] x [1/2, 1]).
 struct SelfOverlap {
   double t_lo = 0.0;
   double t_hi = 0.0;
@@ -38,7 +39,7 @@ struct SelfOverlap {
 
 enum class SelfIntersectionStatus {
   ok,                ///< every self-intersection is in `pairs`
-  degenerate,        ///< the curve is collinear or a point: see `overlaps`
+  degenerate,        ///< the curve retraces itself (see `overlaps`); `pairs` are the rest
   work_cap_reached,  ///< the work budget ran out: `pairs` holds what was found, maybe not all
 };
 
@@ -111,7 +112,9 @@ struct SelfIntersectionOptions {
 ///    separated are tangential-contact candidates, refined by refine_contact.
 /// Results are refined to full double precision (Newton with quadratic convergence), moved
 /// to exactly t = 0 or s = 1 when the end point satisfies B(t) = B(s) as well, and merged
-/// when found twice. Collinear curves are reported as overlaps (status degenerate).
+/// when found twice. Curves that retrace themselves get a named branch each (status
+/// degenerate, see SelfOverlap): collinear ones a 1-D analysis, palindromic control points
+/// (B(1 - t) = B(t)) the self-intersections of the outbound half and their mirror images.
 ///
 /// Resolution: next to a cusp, |B(s) - B(t)| stays at rounding level for s - t up to about
 /// 1e-5, so pairs there are accepted only when rounding could not move them onto the
@@ -120,8 +123,9 @@ struct SelfIntersectionOptions {
 /// reported. The exact cubic closed form has no such limit. Distinct pairs closer than
 /// 1e-10 in both t and s are merged.
 /// Tangential contacts are located to about half the digits when the branches have the
-/// same curvature there. Non-collinear curves that retrace themselves (improper
-/// parametrisations such as C(4t(1 - t))) exhaust the work budget.
+/// same curvature there. Other curves that retrace part of themselves (improper
+/// parametrisations C(p(t)) with p not symmetric about 1/2, e.g. p = (t - 1/4)^2) exhaust the
+/// work budget.
 ///
 /// The approach of classifying boxes of the (t, s) square follows the divided-difference
 /// view of self-intersection (Pekerman, Elber, Kim, "Self-intersection detection and

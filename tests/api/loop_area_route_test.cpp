@@ -172,9 +172,20 @@ TEST(LoopAreaRoute, WorkCapIsA422Problem) {
   // The interval form does no search and is not capped.
   limits.max_work = 1;
   call(std::string(R"({"points":)") + kDegree7 + R"(,"interval":[0.1,0.9]})", 200, limits);
-  // A curve retracing itself (B(t) = C(4t(1-t)), C quadratic) exhausts the default cap.
-  const json cap = call(R"({"points":[[0,0],[3,1.5],[4,5],[3,1.5],[0,0]]})", 422);
+  // A curve retracing part of itself (B = C(4 (t - 1/4)^2), C quadratic: B(1/4 - x) =
+  // B(1/4 + x)) exhausts the default cap.
+  const json cap = call(
+      R"({"points":[[0.75,0.5625],[-0.75,-0.9375],[-0.25,1.5625],[2.25,-3.9375],[6.75,18.5625]]})",
+      422);
   EXPECT_EQ(cap["type"], "urn:bezier-service:problem:work-cap");
+}
+
+TEST(LoopAreaRoute, PalindromicCurveRetracesItself) {
+  // P_i = P_{4-i}: B(1 - t) = B(t), out along a parabola and back.
+  const json r = call(R"({"points":[[0,0],[3,1.5],[4,5],[3,1.5],[0,0]]})", 200);
+  EXPECT_EQ(r["loops"], json::array());
+  EXPECT_EQ(r["overlaps"], json::parse(R"([{"t_interval":[0.0,0.5],"s_interval":[0.5,1.0]}])"));
+  EXPECT_EQ(r["closed"], true);
 }
 
 TEST(LoopAreaRoute, MalformedBodies) {

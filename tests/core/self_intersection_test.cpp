@@ -351,23 +351,76 @@ TEST(SelfIntersection, CollinearCurvesReportOverlaps) {
   EXPECT_EQ(point.overlaps[0].s_hi, 1.0);
 }
 
-TEST(SelfIntersection, WorkCapIsReportedNotHidden) {
-  // B(t) = C(4t(1 - t)) for a quadratic C: the curve runs out and back along the same
-  // parabola, a continuum of pairs (t, 1 - t) that no finite subdivision resolves.
-  const Poly t_poly{Rational(0), Rational(4), Rational(-4)};  // p(t) = 4t - 4t^2
-  // C(p) = 3 (p, p^2 + p / 2) in the power basis (the 3 keeps the control points dyadic).
-  const Poly p2 = test::poly_mul(t_poly, t_poly);
-  Poly cy = p2;
-  for (std::size_t k = 0; k < t_poly.size(); ++k) cy[k] += t_poly[k] / Rational(2);
-  for (Rational& v : cy) v *= Rational(3);
-  Poly cx = t_poly;
-  for (Rational& v : cx) v *= Rational(3);
+/// B(t) = 3 C(p(t)) for C(p) = (p, p^2 + p / 2) and a quadratic p(t) (power form).
+Curve composed_with_quadratic(const Poly& p) {
+  const Poly p2 = test::poly_mul(p, p);
+  Poly cy = p2, cx = p;
+  for (std::size_t k = 0; k < p.size(); ++k) cy[k] += p[k] / Rational(2);
   cx.resize(cy.size(), Rational(0));
+  for (Rational& v : cx) v *= Rational(3);
+  for (Rational& v : cy) v *= Rational(3);
   const auto c = test::exact_curve(test::bernstein_from_power(cx, cy));
+  EXPECT_TRUE(c.has_value());
+  return c.value_or(Curve({{0, 0}, {1, 0}}));
+}
+
+TEST(SelfIntersection, PalindromicControlPointsRetraceTheCurve) {
+  // p(t) = 4t(1 - t) is symmetric about 1/2, so B(1 - t) = B(t): the control points read
+  // the same backwards, and the curve runs out along a parabola and back.
+  const Curve c = composed_with_quadratic({Rational(0), Rational(4), Rational(-4)});
+  ASSERT_EQ(c[0], c[4]);
+  ASSERT_EQ(c[1], c[3]);
+  const SelfIntersectionResult r = self_intersections(c);
+  EXPECT_EQ(r.status, SelfIntersectionStatus::degenerate);
+  EXPECT_TRUE(r.pairs.empty());  // the parabola itself does not cross itself
+  ASSERT_EQ(r.overlaps.size(), 1u);
+  EXPECT_EQ(r.overlaps[0].t_lo, 0.0);
+  EXPECT_EQ(r.overlaps[0].t_hi, 0.5);
+  EXPECT_EQ(r.overlaps[0].s_lo, 0.5);
+  EXPECT_EQ(r.overlaps[0].s_hi, 1.0);
+}
+
+TEST(SelfIntersection, PalindromeOfALoopHasFourPairsPerLoop) {
+  // B(t) = H(4t(1 - t)) for the cubic H = (0,0), (1,1), (-1/2,1), (1/2,0). H's power form
+  // a h^3 + b h^2 + c h has a = (5, 0), b = (-15/2, -3), c = (3, 3), so its double point
+  // h1 + h2 = -cross(a, c) / cross(a, b) = 1 and h1 h2 = 1 - cross(b, c) / cross(a, b) =
+  // 1/10: h = (1 ∓ sqrt(3/5)) / 2. 4t(1 - t) = h gives t = (1 - sqrt(1 - h)) / 2 on the way
+  // out and 1 - t on the way back: four pairs.
+  const Curve h({{0, 0}, {1, 1}, {-0.5, 1}, {0.5, 0}});
+  const test::PowerCurve hp = test::power_form(h);
+  const Poly phi{Rational(0), Rational(4), Rational(-4)};
+  Poly x{Rational(0)}, y{Rational(0)}, power{Rational(1)};
+  for (std::size_t k = 0; k < hp.x.size(); ++k) {
+    x = test::poly_sub(x, test::poly_mul(power, {-hp.x[k]}));
+    y = test::poly_sub(y, test::poly_mul(power, {-hp.y[k]}));
+    power = test::poly_mul(power, phi);
+  }
+  for (Rational& v : x) v *= Rational(15);  // keeps the degree-6 control points dyadic
+  for (Rational& v : y) v *= Rational(15);
+  const auto c = test::exact_curve(test::bernstein_from_power(x, y));
   ASSERT_TRUE(c.has_value());
+  const double h1 = (1 - std::sqrt(0.6)) / 2, h2 = (1 + std::sqrt(0.6)) / 2;
+  const double a = (1 - std::sqrt(1 - h1)) / 2, b = (1 - std::sqrt(1 - h2)) / 2;
+  const SelfIntersectionResult r = self_intersections(*c);
+  EXPECT_EQ(r.status, SelfIntersectionStatus::degenerate);
+  ASSERT_EQ(r.overlaps.size(), 1u);
+  const double expected[4][2] = {{a, b}, {a, 1 - b}, {b, 1 - a}, {1 - b, 1 - a}};
+  ASSERT_EQ(r.pairs.size(), 4u);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(r.pairs[i].t, expected[i][0], 1e-14) << i;
+    EXPECT_NEAR(r.pairs[i].s, expected[i][1], 1e-14) << i;
+  }
+}
+
+TEST(SelfIntersection, WorkCapIsReportedNotHidden) {
+  // p(t) = 4 (t - 1/4)^2 is symmetric about 1/4: B(1/4 - x) = B(1/4 + x) for x in
+  // [0, 1/4], a continuum of pairs that no finite subdivision resolves, and the control
+  // points are no palindrome.
+  const Curve c = composed_with_quadratic({q(1, 4), Rational(-2), Rational(4)});
+  ASSERT_NE(c[0], c[4]);
   SelfIntersectionOptions options;
   options.max_work = 2000;
-  const SelfIntersectionResult r = self_intersections(*c, options);
+  const SelfIntersectionResult r = self_intersections(c, options);
   EXPECT_EQ(r.status, SelfIntersectionStatus::work_cap_reached);
   EXPECT_EQ(r.stats.work, 2000);
 }
