@@ -1,5 +1,8 @@
 #include "service/config.hpp"
 
+#include <cstdlib>
+#include <sstream>
+
 #include <CLI/CLI.hpp>
 
 namespace bezier::service {

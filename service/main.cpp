@@ -4,6 +4,7 @@
 #include <condition_variable>
 #include <mutex>
 #include <thread>
+#include <cstdlib>
 
 #include <spdlog/spdlog.h>
 
@@ -31,11 +32,11 @@ int main(int argc, char** argv) {
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
   std::signal(SIGPIPE, SIG_IGN);
 
-  auto logger = make_logger(config);
-  Server server(config, logger);
+  Log log(make_logger(config), config.log_format);
+  Server server(config, log);
   const int port = server.bind();
   if (port < 0) {
-    logger->critical("cannot bind {}:{}", config.host, config.port);
+    log.critical("cannot bind {}:{}", config.host, config.port);
     return 1;
   }
 
@@ -45,7 +46,7 @@ int main(int argc, char** argv) {
   std::thread signal_waiter([&] {
     int signal = 0;
     sigwait(&stop_signals, &signal);
-    logger->info("received {}, draining for {} s, then stopping", signal == SIGTERM ? "SIGTERM" : "SIGINT",
+    log.info("received {}, draining for {} s, then stopping", signal == SIGTERM ? "SIGTERM" : "SIGINT",
                  config.drain_seconds);
     server.begin_draining();
     std::this_thread::sleep_for(std::chrono::duration<double>(config.drain_seconds));
@@ -53,7 +54,7 @@ int main(int argc, char** argv) {
     std::unique_lock lock(exit_mutex);
     if (!exit_ready.wait_for(lock, std::chrono::duration<double>(config.shutdown_timeout_seconds),
                              [&] { return served_returned; })) {
-      logger->warn("in-flight requests did not finish within {} s; exiting anyway",
+      log.warn("in-flight requests did not finish within {} s; exiting anyway",
                    config.shutdown_timeout_seconds);
       spdlog::shutdown();
       std::_Exit(1);
@@ -64,7 +65,7 @@ int main(int argc, char** argv) {
   // connections made now wait in the backlog until serve() takes them).
   std::printf("listening on http://%s:%d\n", config.host.c_str(), port);
   std::fflush(stdout);
-  logger->info("threads={} max_connections={} max_degree={} max_body_bytes={}", config.threads,
+  log.info("threads={} max_connections={} max_degree={} max_body_bytes={}", config.threads,
                config.max_connections, config.limits.max_degree, config.limits.max_body_bytes);
   const bool served = server.serve();
   {
@@ -77,7 +78,7 @@ int main(int argc, char** argv) {
     pthread_kill(signal_waiter.native_handle(), SIGTERM);
   }
   signal_waiter.join();
-  logger->info("stopped");
+  log.info("stopped");
   spdlog::shutdown();  // drains the asynchronous log queue
   return served ? 0 : 1;
 }

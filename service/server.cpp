@@ -72,8 +72,7 @@ bool is_get_route(std::string_view path) {
 
 }  // namespace
 
-Server::Server(const Config& config, std::shared_ptr<spdlog::logger> logger)
-    : config_(config), logger_(std::move(logger)) {
+Server::Server(const Config& config, Log log) : config_(config), log_(std::move(log)) {
   // Without TCP_NODELAY each keep-alive answer waits for the peer's delayed ACK
   // (~40 ms): about 290 requests/s per connection instead of tens of thousands.
   http_.set_tcp_nodelay(true);
@@ -99,7 +98,7 @@ int Server::bind() {
   } else if (http_.bind_to_port(config_.host, config_.port)) {
     port = config_.port;
   }
-  if (port >= 0 && !http_.widen_backlog(SOMAXCONN)) logger_->warn("could not widen the listen backlog");
+  if (port >= 0 && !http_.widen_backlog(SOMAXCONN)) log_.warn("could not widen the listen backlog");
   return port;
 }
 
@@ -162,7 +161,7 @@ void Server::install_routes() {
       what = e.what();
     } catch (...) {
     }
-    logger_->error("bug: exception escaped a handler for {} {}: {}", request.method, request.path, what);
+    log_.error("bug: exception escaped a handler for {} {}: {}", request.method, request.path, what);
     write_problem(response, api::ProblemKind::internal, "internal error; it has been logged");
   });
   http_.set_logger([this](const httplib::Request& request, const httplib::Response& response) {
@@ -258,13 +257,14 @@ void Server::log_access(const httplib::Request& request, const httplib::Response
   }
   const std::string_view id = t_request.active ? std::string_view(t_request.id) : std::string_view("-");
   t_request.active = false;
-  if (!logger_->should_log(spdlog::level::info)) return;
+  auto& logger = log_.logger();
+  if (!logger.should_log(spdlog::level::info)) return;
   if (config_.log_format == LogFormat::json) {
-    logger_->info(R"("msg":"access","method":"{}","path":"{}","status":{},"duration_ms":{:.3f},"request_id":"{}")",
+    logger.info(R"("msg":"access","method":"{}","path":"{}","status":{},"duration_ms":{:.3f},"request_id":"{}")",
                   json_escape(request.method), json_escape(request.path), response.status,
                   seconds * 1e3, id);
   } else {
-    logger_->info("{} {} {} {:.3f}ms id={}", request.method, request.path, response.status,
+    logger.info("{} {} {} {:.3f}ms id={}", request.method, request.path, response.status,
                   seconds * 1e3, id);
   }
 }

@@ -7,6 +7,7 @@
 #include <spdlog/logger.h>
 
 #include "service/config.hpp"
+#include "service/log.hpp"
 #include "service/metrics.hpp"
 
 namespace bezier::service {
@@ -26,7 +27,7 @@ class HttpServer : public httplib::Server {
 /// HTTP: methods, content type, body size, authentication, health, metrics, logging.
 class Server {
  public:
-  Server(const Config& config, std::shared_ptr<spdlog::logger> logger);
+  Server(const Config& config, Log log);
 
   /// Binds the listening socket; returns the port (the chosen one for port 0) or -1.
   [[nodiscard]] int bind();
@@ -48,7 +49,7 @@ class Server {
   void log_access(const httplib::Request& request, const httplib::Response& response);
 
   const Config config_;
-  std::shared_ptr<spdlog::logger> logger_;
+  Log log_;
   HttpServer http_;
   Metrics metrics_;
   std::atomic<bool> draining_{false};

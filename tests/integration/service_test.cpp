@@ -236,3 +236,35 @@ TEST(ServiceShutdown, SigintExitsZero) {
 
 }  // namespace
 }  // namespace bezier::test
+
+namespace bezier::test {
+namespace {
+
+using nlohmann::json;
+
+TEST(ServiceLogs, JsonFormatWritesOneJsonObjectPerLine) {
+  ServiceProcess service({"--log-format", "json"});
+  httplib::Client c("127.0.0.1", service.port());
+  ASSERT_TRUE(c.Post("/evaluate", R"({"points":[[0,0],[1,1]],"t":0.5})", "application/json"));
+  ASSERT_TRUE(c.Get("/nope"));
+  service.signal(SIGTERM);
+  ASSERT_EQ(service.wait_exit(), std::optional<int>(0));
+  std::istringstream lines(service.output());
+  int access_lines = 0;
+  int lines_read = 0;
+  for (std::string line; std::getline(lines, line);) {
+    ++lines_read;
+    const json entry = json::parse(line, nullptr, /*allow_exceptions=*/false);
+    ASSERT_TRUE(entry.is_object()) << line;
+    EXPECT_TRUE(entry.contains("time") && entry.contains("level") && entry.contains("msg")) << line;
+    if (entry["msg"] == "access") {
+      ++access_lines;
+      EXPECT_TRUE(entry.contains("status") && entry.contains("request_id") && entry.contains("duration_ms"));
+    }
+  }
+  EXPECT_GE(lines_read, 4);  // start, two access lines, the signal, stopped
+  EXPECT_EQ(access_lines, 2);
+}
+
+}  // namespace
+}  // namespace bezier::test
