@@ -280,7 +280,7 @@ test('errors from the API are shown to the user (degree above the limit)', async
   assert.equal(await page.locator('#errors li').count(), 0, 'the errors go when the input is fixed');
 });
 
-const kCrossing = [[60, 300], [300, 420], [500, 300], [760, 420]];
+const kCrossing = [[620, 240], [20, 100], [20, 300], [560, 240]];
 
 test('loops shaded with their area; the cubic\'s type and canonical point', async () => {
   await page.locator('#examples').selectOption('loop');
@@ -349,10 +349,17 @@ test('second curve: intersections marked, their kind shown on hover', async () =
   await page.mouse.move(5, 5);
   await tooltip.waitFor({state: 'hidden'});
   assert.equal(await page.locator('#intersections li.active').count(), 0);
-  // The picture for the README: the polar of A at t0 = 0.37 beside B's intersections.
+
+  // The picture for the README: A's polar at t0 = 0.37, B's intersections, one hovered.
   await page.locator('#editing input[value="0"]').check({force: true});
   await settle();
+  const last = exact.intersections[exact.intersections.length - 1];
+  const [lx, ly] = await client(last.point);
+  await page.mouse.move(lx, ly);
+  await tooltip.waitFor({state: 'visible'});
+  assert.match(await tooltip.textContent(), new RegExp(`^${last.kind} intersection`));
   if (screenshotPath) await page.screenshot({path: screenshotPath, fullPage: true});
+  await page.mouse.move(5, 5);
 });
 
 test('the PNG download has the drawing and no background', async () => {
