@@ -8,13 +8,18 @@ profile=${1:-run}
 packages=(build-essential cmake ninja-build pkg-config ccache
           libcpp-httplib-dev nlohmann-json3-dev libspdlog-dev libcli11-dev)
 if [ "$profile" = test ]; then
-  packages+=(libgtest-dev libgmock-dev libbenchmark-dev curl python3 python3-yaml python3-kubernetes docker-compose)
+  packages+=(libgtest-dev libgmock-dev libbenchmark-dev curl python3 python3-yaml python3-kubernetes docker-compose
+             chromium chromium-driver)
 fi
 
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# node and npm: the machines come with them; Debian's packages otherwise.
+if [ "$profile" = test ] && ! command -v npm >/dev/null; then
+  missing+=(nodejs npm)
+fi
 if [ ${#missing[@]} -gt 0 ]; then
   echo "installing: ${missing[*]}"
   sudo_cmd=()

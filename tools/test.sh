@@ -5,6 +5,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/install-deps.sh test
 jobs=$(nproc)
+# Node packages of the browser and contract tests, exactly as locked.
+for dir in tests/browser tests/contract; do
+  if [ -f "$dir/package-lock.json" ]; then (cd "$dir" && npm ci --no-audit --no-fund --loglevel=error); fi
+done
 
 cmake -S . -B build/test -G Ninja -DCMAKE_BUILD_TYPE=Release -DBEZIER_WERROR=ON >/dev/null
 cmake --build build/test -j "$jobs"
