@@ -61,7 +61,8 @@ std::optional<CollinearFrame> collinear_frame(std::span<const Point2> points, do
     }
   }
   if (farthest2 == 0.0) return CollinearFrame{origin, {}};
-  const double bound = dist_tol * length(direction);  // |cross| / |direction| <= dist_tol
+  // |cross| / |direction| <= dist_tol; sqrt rather than hypot: the caller normalises.
+  const double bound = dist_tol * std::sqrt(farthest2);
   for (const Point2 p : points) {
     if (!(std::fabs(cross(p - origin, direction)) <= bound)) return std::nullopt;
   }

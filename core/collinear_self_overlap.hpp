@@ -21,6 +21,8 @@ struct CollinearFrame {
 /// the control point farthest from P_0 (all points equal: direction zero); nullopt when the
 /// curve is not collinear at that tolerance. A curve that thin is a segment traversed back
 /// and forth as far as double precision can tell, and its self-intersections are continua.
+/// Expects coordinates below 2^500 in magnitude (squared lengths must not overflow);
+/// self_intersections() scales extreme inputs by a power of two first.
 [[nodiscard]] std::optional<CollinearFrame> collinear_frame(std::span<const Point2> points,
                                                             double dist_tol);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "core/collinear_self_overlap.hpp"
 #include "core/cubic_double_point.hpp"
@@ -232,13 +233,19 @@ SelfIntersectionResult retracing_result(const CurveFacts& facts,
 }
 
 /// Cubics: the exact closed form of cubic_double_point() (exact decisions, and t = 0 or 1
-/// exactly when the loop closes at an end), polished by Newton to full precision.
-SelfIntersectionResult closed_form_cubic(const CurveFacts& facts) {
+/// exactly when the loop closes at an end), polished by one Newton step to full precision.
+/// nullopt when the cubic has no loop on [0, 1] other than a closed curve's trivial pair;
+/// the caller then still checks for a collinear or palindromic (retracing) cubic, which the
+/// closed form does not describe. The point is the closed form's (the mean of B(t1) and
+/// B(t2), exactly P0 or P3 at an exact end; the polish moves t by ulps), and the kind is
+/// transversal: the only singular points a cubic can have are a node, a cusp (no pair) and
+/// an isolated point (no real pair), so two branches through a double point cross.
+std::optional<SelfIntersectionResult> closed_form_cubic(const CurveFacts& facts) {
+  const auto dp = cubic_double_point(std::span<const Point2, 4>(facts.points.data(), 4));
+  if (!dp || !dp->on_segment) return std::nullopt;
+  if (facts.closed && dp->t1 == 0.0 && dp->t2 == 1.0) return std::nullopt;  // the trivial pair
   SelfIntersectionResult result;
   result.stats.method = SelfIntersectionMethod::closed_form_cubic;
-  const auto dp = cubic_double_point(std::span<const Point2, 4>(facts.points.data(), 4));
-  if (!dp || !dp->on_segment) return result;
-  if (facts.closed && dp->t1 == 0.0 && dp->t2 == 1.0) return result;  // the trivial pair
   double u = dp->t1, v = dp->t2;
   const PairRefinement polished =
       refine_double_point(facts.points, u, v, {0.0, 1.0, 0.0, 1.0}, facts.rounding, 8);
@@ -249,9 +256,7 @@ SelfIntersectionResult closed_form_cubic(const CurveFacts& facts) {
     if (u != 0.0) u = polished.u;
     if (v != 1.0) v = polished.v;
   }
-  result.pairs.push_back(finished_pair(facts, u, v, false));
-  if (u == 0.0) result.pairs.back().point = facts.points[0];
-  if (v == 1.0) result.pairs.back().point = facts.points[3];
+  result.pairs.push_back({u, v, dp->point, SelfIntersectionKind::transversal});
   return result;
 }
 
@@ -259,31 +264,42 @@ SelfIntersectionResult closed_form_cubic(const CurveFacts& facts) {
 
 SelfIntersectionResult self_intersections(const Curve& curve,
                                           const SelfIntersectionOptions& options) {
-  // Work on the curve scaled by 2^k so that its largest coordinate lies in [1, 2): exact
-  // (barring underflow of coordinates 2^-1000 below the largest), leaves every parameter
-  // unchanged, and lets the inner loops use sqrt(v·v) without overflow.
+  // Squared lengths in the inner loops (sqrt(v·v), not the slower overflow-safe hypot) need
+  // coordinates within about 2^±300: outside that range, work on the curve scaled by 2^k
+  // so that its largest coordinate lies in [1, 2). Scaling by a power of two is exact
+  // (barring underflow of coordinates 2^-1000 below the largest) and every step of the
+  // method scales with it, so parameters come out the same either way.
   const double original_scale = scale(curve);
-  const int k = original_scale > 0.0 ? -std::ilogb(original_scale) : 0;
-  // 2^k as two normal factors (k reaches 1074 for subnormal input); products with powers of
-  // two are exact.
+  const bool moderate = 0x1p-300 <= original_scale && original_scale <= 0x1p300;
+  const int k = moderate || original_scale == 0.0 ? 0 : -std::ilogb(original_scale);
+  // 2^k as two normal factors (k reaches 1074 for subnormal input).
   const double f1 = std::ldexp(1.0, k / 2), f2 = std::ldexp(1.0, k - k / 2);
-  std::vector<Point2> scaled;
-  scaled.reserve(curve.points().size());
-  for (const Point2 p : curve.points()) scaled.push_back((p * f1) * f2);
-  const Curve normalized(std::move(scaled));
-  const std::span<const Point2> points = normalized.points();
-  const double s = std::ldexp(original_scale, k);
+  std::optional<Curve> rescaled;
+  if (k != 0) {
+    std::vector<Point2> scaled;
+    scaled.reserve(curve.points().size());
+    for (const Point2 p : curve.points()) scaled.push_back((p * f1) * f2);
+    rescaled.emplace(std::move(scaled));
+  }
+  const Curve& work_curve = rescaled ? *rescaled : curve;
+  const std::span<const Point2> points = work_curve.points();
+  const double s = k != 0 ? (original_scale * f1) * f2 : original_scale;
   const double rounding = 4.0 * static_cast<double>(points.size()) * kUnitRoundoff * s;
-  const CurveFacts facts{normalized,           points,   s,
+  const CurveFacts facts{work_curve,           points,   s,
                          options.dist_rel * s, rounding, curve.front() == curve.back()};
 
+  const bool cubic_fast_path = curve.degree() == 3 && options.cubic_closed_form;
+  std::optional<SelfIntersectionResult> cubic_loop;
+  if (cubic_fast_path) cubic_loop = closed_form_cubic(facts);
   SelfIntersectionResult result;
-  if (const auto frame = collinear_frame(points, facts.dist_tol)) {
+  if (cubic_loop) {
+    result = std::move(*cubic_loop);
+  } else if (const auto frame = collinear_frame(points, facts.dist_tol)) {
     result = collinear_result(facts, *frame, options);
   } else if (is_palindrome(points)) {
     result = retracing_result(facts, options);
-  } else if (curve.degree() == 3 && options.cubic_closed_form) {
-    result = closed_form_cubic(facts);
+  } else if (cubic_fast_path) {
+    result.stats.method = SelfIntersectionMethod::closed_form_cubic;  // no loop
   } else {
     const SelfIntersectionSearchOutcome found = search_self_intersections(
         points,
@@ -297,7 +313,9 @@ SelfIntersectionResult self_intersections(const Curve& curve,
     result.pairs = clean_up(std::move(candidates), facts);
     if (found.work_cap_reached) result.status = SelfIntersectionStatus::work_cap_reached;
   }
-  for (SelfIntersection& pair : result.pairs) pair.point = (pair.point / f1) / f2;
+  if (k != 0) {
+    for (SelfIntersection& pair : result.pairs) pair.point = (pair.point / f1) / f2;
+  }
   return result;
 }
 

@@ -7,11 +7,11 @@
 
 namespace bezier::core {
 
-// The functions here expect coordinates of moderate magnitude: self_intersections() scales
-// the control points by a power of two (exact) so that the largest coordinate lies in
-// [1, 2), and lengths are then sqrt(v·v) instead of the slower overflow-safe hypot.
+// The functions here expect coordinates of moderate magnitude (within about 2^±300):
+// self_intersections() scales other input by a power of two (exact), and lengths are then
+// sqrt(v·v) instead of the slower overflow-safe hypot.
 
-/// |v| = sqrt(v·v), for normalised coordinates (no overflow protection).
+/// |v| = sqrt(v·v), for coordinates of moderate magnitude (no overflow protection).
 [[nodiscard]] inline double norm(Point2 v) noexcept {
   return std::sqrt(dot(v, v));
 }
