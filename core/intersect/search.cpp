@@ -37,6 +37,13 @@ Halves halves(ParamInterval iv) noexcept {
   return {{{iv.lo, m}, {m, iv.hi}}, 2};
 }
 
+/// Boxes wider than this are never declared "coincident to within rounding": a contact of
+/// order 3 reaches its precision floor near 1e-8 (double-precision local coordinates hold
+/// the curves' gap c d^3 down to about u |f'| d), while wider coincident boxes are
+/// improper overlaps (the same point set traced along a non-linear reparametrisation),
+/// which the search must not report as one contact; they run into the work cap instead.
+constexpr double kFloorWidth = 0x1p-20;
+
 /// The sine of the angle between two pieces' chords is below this: they run nearly parallel,
 /// and the implicit clip is worth its cost (a few hundred flops for cubics).
 constexpr double kParallelSine = 1.0 / 16;
@@ -180,10 +187,12 @@ class Searcher {
             f_ok_ = g_ok_ = false;
             continue;
           }
-          emit(box, false);
-          return;
+          if (box.t.width() <= kFloorWidth && box.s.width() <= kFloorWidth) {
+            emit(box, false);  // precision floor
+            return;
+          }
         }
-        if (box.compensated && !td && !sd &&
+        if (box.compensated && !td && !sd && box.t.width() <= kFloorWidth && box.s.width() <= kFloorWidth &&
             coincide_at_precision(*in_.f, *in_.g, box.t, box.s, evaluate_with_tangent(*in_.f, box.t.lo).point)) {
           emit(box, false);
           return;
@@ -233,7 +242,7 @@ class Searcher {
           box.along = !box.along;
           continue;
         }
-        if (box.compensated && !td && !sd &&
+        if (box.compensated && !td && !sd && box.t.width() <= kFloorWidth && box.s.width() <= kFloorWidth &&
             coincide_at_precision(*in_.f, *in_.g, box.t, box.s, evaluate_with_tangent(*in_.f, box.t.lo).point)) {
           emit(box, false);  // the curves agree to within rounding here: a high-order contact
           return;
@@ -251,15 +260,18 @@ class Searcher {
             continue;
           }
           // Rounding decides, even in compensated pieces. When one piece is much longer
-          // than the other, halving it still helps (its fat line was the blunt one);
-          // otherwise this is the precision floor.
+          // than the other, halving it still helps (its fat line was the blunt one); a wide
+          // box is halved too (the pieces may coincide along a stretch: an improper
+          // overlap); otherwise this is the precision floor.
           const double ef = piece_extent(f_piece_), eg = piece_extent(g_piece_);
           if (!td && !sd && (ef > 8 * eg || eg > 8 * ef)) {
             split(box, ef > eg, eg >= ef);
             return;
           }
-          emit(box, false);
-          return;
+          if (box.t.width() <= kFloorWidth && box.s.width() <= kFloorWidth) {
+            emit(box, false);
+            return;
+          }
         }
         if (in_.method == IntersectMethod::hybrid) {
           split(box, !td, !sd);
