@@ -57,16 +57,17 @@ double exact_residual(const Curve& curve, double u, double v) {
   return norm(evaluate(curve, v) - evaluate(curve, u));
 }
 
-/// Moves u to 0 (v to 1) when B(0) = B(v) (B(u) = B(1)) holds as well as B(u) = B(v) did,
-/// up to rounding: a loop closing exactly at an end must report the end exactly.
-void snap_to_ends(Candidate& c, const CurveFacts& facts) {
+/// The candidate with u moved to 0 (v to 1) when B(0) = B(v) (B(u) = B(1)) holds as well as
+/// B(u) = B(v) did, up to rounding: a loop closing exactly at an end reports the end exactly.
+Candidate snapped_to_ends(Candidate c, const CurveFacts& facts) {
   constexpr double kNearEnd = 0x1p-20;
   const bool near_start = c.u != 0.0 && std::fabs(c.u) <= kNearEnd;
   const bool near_end = c.v != 1.0 && std::fabs(c.v - 1.0) <= kNearEnd;
-  if (!near_start && !near_end) return;
+  if (!near_start && !near_end) return c;
   const double here = std::max(exact_residual(facts.curve, c.u, c.v), facts.rounding);
   if (near_start && exact_residual(facts.curve, 0.0, c.v) <= here) c.u = 0.0;
   if (near_end && exact_residual(facts.curve, c.u, 1.0) <= here) c.v = 1.0;
+  return c;
 }
 
 /// The pair as reported: the double point as the mean of B(t) and B(s), and the kind from
@@ -88,49 +89,65 @@ SelfIntersection finished_pair(const CurveFacts& facts, double u, double v, bool
 
 /// Snaps, filters (outside [0,1], t >= s, the trivial pair of a closed curve), sorts and
 /// merges the candidates, then computes points and kinds.
-std::vector<SelfIntersection> clean_up(std::vector<Candidate> candidates, const CurveFacts& facts) {
+std::vector<SelfIntersection> clean_up(const std::vector<Candidate>& candidates,
+                                       const CurveFacts& facts) {
+  const auto by_u = [](const Candidate& a, const Candidate& b) {
+    return a.u != b.u ? a.u < b.u : a.v < b.v;
+  };
   std::vector<Candidate> kept;
-  for (Candidate c : candidates) {
-    snap_to_ends(c, facts);
+  for (const Candidate& raw : candidates) {
+    const Candidate c = snapped_to_ends(raw, facts);
     if (!(0.0 <= c.u && c.u < c.v && c.v <= 1.0)) continue;
     if (facts.closed && c.u == 0.0 && c.v == 1.0) continue;
     kept.push_back(c);
   }
-  std::sort(kept.begin(), kept.end(), [](const Candidate& a, const Candidate& b) {
-    return a.u != b.u ? a.u < b.u : a.v < b.v;
-  });
+  std::sort(kept.begin(), kept.end(), by_u);
   std::vector<Candidate> merged;
   for (const Candidate& c : kept) {
+    // `merged` is sorted by u too: only its tail can be within the merge distance.
     bool duplicate = false;
-    for (Candidate& m : merged) {
-      const double tol = (c.contact || m.contact) ? kMergeContacts : kMergeCrossings;
-      if (std::fabs(c.u - m.u) <= tol && std::fabs(c.v - m.v) <= tol) {
+    for (auto m = merged.rbegin(); m != merged.rend() && c.u - m->u <= kMergeContacts; ++m) {
+      const double tol = (c.contact || m->contact) ? kMergeContacts : kMergeCrossings;
+      if (std::fabs(c.u - m->u) <= tol && std::fabs(c.v - m->v) <= tol) {
         // Keep the better one; a Newton crossing beats a contact estimate.
-        if ((m.contact && !c.contact) || (m.contact == c.contact && c.residual < m.residual)) m = c;
+        if ((m->contact && !c.contact) || (m->contact == c.contact && c.residual < m->residual)) {
+          *m = c;
+        }
         duplicate = true;
         break;
       }
     }
     if (!duplicate) merged.push_back(c);
   }
-  std::sort(merged.begin(), merged.end(), [](const Candidate& a, const Candidate& b) {
-    return a.u != b.u ? a.u < b.u : a.v < b.v;
-  });
+  std::sort(merged.begin(), merged.end(), by_u);
   std::vector<SelfIntersection> pairs;
   for (const Candidate& c : merged) pairs.push_back(finished_pair(facts, c.u, c.v, c.contact));
   return pairs;
 }
 
-/// Groups contact boxes that touch (within one box width) into clusters.
-std::vector<ParameterBox> cluster(std::vector<ParameterBox> boxes) {
+// Costs of the contact stage in units of the work budget (parameter boxes): a refinement
+// takes up to ~60 Newton steps, about what 8 boxes cost; 64 cluster comparisons one box.
+constexpr std::int64_t kRefinementWork = 8;
+constexpr std::int64_t kComparisonsPerWork = 64;
+
+/// Contact boxes grouped into clusters, and the work that took.
+struct Clusters {
+  std::vector<ParameterBox> boxes;
+  std::int64_t work = 0;
+};
+
+/// Contact boxes that touch (within one box width) grouped into clusters, each the bounding
+/// box of its members; nullopt when the comparisons exceed `budget` work units.
+std::optional<Clusters> cluster(std::vector<ParameterBox> boxes, std::int64_t budget) {
   std::sort(boxes.begin(), boxes.end(),
             [](const ParameterBox& a, const ParameterBox& b) { return a.u_lo < b.u_lo; });
+  std::int64_t comparisons = 0;
   std::vector<ParameterBox> clusters;
   for (const ParameterBox& b : boxes) {
     const double w = std::max(b.u_hi - b.u_lo, b.v_hi - b.v_lo);
     bool joined = false;
     for (auto it = clusters.rbegin(); it != clusters.rend(); ++it) {
-      if (it->u_hi + w < b.u_lo) continue;  // sorted by u_lo: older clusters may still reach
+      if (++comparisons > budget * kComparisonsPerWork) return std::nullopt;
       if (b.v_lo <= it->v_hi + w && it->v_lo <= b.v_hi + w && b.u_lo <= it->u_hi + w) {
         *it = {std::min(it->u_lo, b.u_lo), std::max(it->u_hi, b.u_hi), std::min(it->v_lo, b.v_lo),
                std::max(it->v_hi, b.v_hi)};
@@ -140,19 +157,40 @@ std::vector<ParameterBox> cluster(std::vector<ParameterBox> boxes) {
     }
     if (!joined) clusters.push_back(b);
   }
-  return clusters;
+  return Clusters{std::move(clusters), comparisons / kComparisonsPerWork};
 }
+
+/// What resolving the contact boxes gave, and cost.
+struct ContactResolution {
+  std::vector<Candidate> candidates;
+  int newton_runs = 0;
+  int newton_iterations = 0;
+  std::int64_t work = 0;
+  bool work_cap_reached = false;
+};
 
 /// One candidate per cluster of contact boxes: Newton on F first (a crossing at a tiny
 /// angle also ends up here), else the tangential-contact refinement; kept when the two
 /// branches meet to within dist_tol and the pair is clear of the diagonal (near a cusp the
-/// closest pair slides to u = v).
-void resolve_contacts(const SelfIntersectionSearchOutcome& found, const CurveFacts& facts,
-                      std::vector<Candidate>& candidates, SelfIntersectionStats& stats) {
+/// closest pair slides to u = v). Stops at `budget` work units.
+ContactResolution resolve_contacts(const std::vector<ParameterBox>& boxes, const CurveFacts& facts,
+                                   std::int64_t budget) {
+  ContactResolution out;
+  const auto clusters = cluster(boxes, budget);
+  if (!clusters) {
+    out.work = budget;
+    out.work_cap_reached = true;
+    return out;
+  }
+  out.work = clusters->work;
   double width = 0.0;
-  for (const ParameterBox& b : found.contact_boxes)
-    width = std::max({width, b.u_hi - b.u_lo, b.v_hi - b.v_lo});
-  for (const ParameterBox& c : cluster(found.contact_boxes)) {
+  for (const ParameterBox& b : boxes) width = std::max({width, b.u_hi - b.u_lo, b.v_hi - b.v_lo});
+  for (const ParameterBox& c : clusters->boxes) {
+    if (out.work + kRefinementWork > budget) {
+      out.work_cap_reached = true;
+      break;
+    }
+    out.work += kRefinementWork;
     const ParameterBox region{std::max(0.0, c.u_lo - width), std::min(1.0, c.u_hi + width),
                               std::max(0.0, c.v_lo - width), std::min(1.0, c.v_hi + width)};
     const double u0 = 0.5 * (c.u_lo + c.u_hi), v0 = 0.5 * (c.v_lo + c.v_hi);
@@ -161,12 +199,13 @@ void resolve_contacts(const SelfIntersectionSearchOutcome& found, const CurveFac
     // Jacobian (an exact start does): then locate the touching point instead.
     const bool contact = !(r.converged && resolved(facts, r.u, r.v));
     if (contact) r = refine_contact(facts.points, u0, v0, region);
-    ++stats.newton_runs;
-    stats.newton_iterations += r.iterations;
+    ++out.newton_runs;
+    out.newton_iterations += r.iterations;
     if (r.residual <= facts.dist_tol && r.v - r.u > 4.0 * width) {
-      candidates.push_back({r.u, r.v, r.residual, contact});
+      out.candidates.push_back({r.u, r.v, r.residual, contact});
     }
   }
+  return out;
 }
 
 SelfIntersectionResult collinear_result(const CurveFacts& facts, const CollinearFrame& frame,
@@ -307,11 +346,23 @@ SelfIntersectionResult self_intersections(const Curve& curve,
     result.stats = found.stats;
     result.stats.method = SelfIntersectionMethod::subdivision;
     std::vector<Candidate> candidates;
-    for (const PairRefinement& r : found.crossings)
+    for (const PairRefinement& r : found.crossings) {
       candidates.push_back({r.u, r.v, r.residual, false});
-    resolve_contacts(found, facts, candidates, result.stats);
-    result.pairs = clean_up(std::move(candidates), facts);
-    if (found.work_cap_reached) result.status = SelfIntersectionStatus::work_cap_reached;
+    }
+    bool capped = found.work_cap_reached;
+    // After a capped search the contact boxes are an arbitrary part of a pathological
+    // input's (typically a retraced piece's): not worth refining.
+    if (!capped && !found.contact_boxes.empty()) {
+      const ContactResolution contacts =
+          resolve_contacts(found.contact_boxes, facts, options.max_work - found.stats.work);
+      candidates.insert(candidates.end(), contacts.candidates.begin(), contacts.candidates.end());
+      result.stats.work += contacts.work;
+      result.stats.newton_runs += contacts.newton_runs;
+      result.stats.newton_iterations += contacts.newton_iterations;
+      capped = contacts.work_cap_reached;
+    }
+    result.pairs = clean_up(candidates, facts);
+    if (capped) result.status = SelfIntersectionStatus::work_cap_reached;
   }
   if (k != 0) {
     for (SelfIntersection& pair : result.pairs) pair.point = (pair.point / f1) / f2;
