@@ -70,8 +70,13 @@ Candidate snapped_to_ends(Candidate c, const CurveFacts& facts) {
   return c;
 }
 
-/// The pair as reported: the double point as the mean of B(t) and B(s), and the kind from
-/// the tangents there (a contact is tangent by construction unless a tangent vanishes).
+/// The pair as reported. A transversal pair gets one last Newton step whose residual
+/// F = B(s) - B(t) comes from the compensated evaluate() (mixed-precision iterative
+/// refinement): plain de Casteljau's residual is only good to about n u S, the compensated
+/// one to about u |B|, so the step lands within about an ulp of a well-conditioned root.
+/// Parameters already exactly at an end stay there. The double point is the mean of B(t)
+/// and B(s), both compensated; the kind comes from the tangents (a contact is tangent by
+/// construction unless a tangent vanishes).
 SelfIntersection finished_pair(const CurveFacts& facts, double u, double v, bool contact) {
   const CurveJet ju = curve_jet(facts.points, u);
   const CurveJet jv = curve_jet(facts.points, v);
@@ -84,7 +89,25 @@ SelfIntersection finished_pair(const CurveFacts& facts, double u, double v, bool
   } else if (contact || std::fabs(cross(ju.d1, jv.d1)) <= kTangentSine * lu * lv) {
     kind = SelfIntersectionKind::tangent;
   }
-  return {u, v, 0.5 * (ju.point + jv.point), kind};
+  Point2 bu = evaluate(facts.curve, u), bv = evaluate(facts.curve, v);
+  if (kind == SelfIntersectionKind::transversal) {
+    const Point2 f = bv - bu, a = -ju.d1;
+    const double det = cross(a, jv.d1);
+    const double du = cross(-f, jv.d1) / det, dv = cross(a, -f) / det;
+    // A correction at rounding level only; anything larger means the pair was not settled.
+    constexpr double kPolish = 0x1p-40;
+    if (std::fabs(du) <= kPolish && std::fabs(dv) <= kPolish) {
+      const double nu = (u == 0.0 || u == 1.0) ? u : u + du;
+      const double nv = (v == 0.0 || v == 1.0) ? v : v + dv;
+      if (nu != u || nv != v) {
+        u = nu;
+        v = nv;
+        bu = evaluate(facts.curve, u);
+        bv = evaluate(facts.curve, v);
+      }
+    }
+  }
+  return {u, v, 0.5 * (bu + bv), kind};
 }
 
 /// Snaps, filters (outside [0,1], t >= s, the trivial pair of a closed curve), sorts and
