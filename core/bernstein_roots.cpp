@@ -83,11 +83,33 @@ BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth) {
     stack.push_back({job.a, m, job.depth + 1});
   }
   if (c.back() == 0.0) out.roots.push_back(1.0);
+  // Roots reported at the depth limit (a root on a split point, a cluster) are polished by
+  // Newton's method, kept only while |p| decreases and the step stays tiny.
+  std::vector<double> derivative(static_cast<std::size_t>(std::max(n, 1)), 0.0);
+  for (int i = 0; i < n; ++i) derivative[static_cast<std::size_t>(i)] = n * (c[static_cast<std::size_t>(i) + 1] - c[static_cast<std::size_t>(i)]);
+  for (double& r : out.roots) {
+    if (n == 0) break;
+    for (int i = 0; i < 4; ++i) {
+      const double v = bernstein::evaluate(c, r), d = bernstein::evaluate(derivative, r);
+      if (v == 0.0 || !(d != 0.0)) break;
+      const double next = r - v / d;
+      if (!(next >= 0.0 && next <= 1.0) || std::fabs(next - r) > 0x1p-30 ||
+          !(std::fabs(bernstein::evaluate(c, next)) < std::fabs(v))) {
+        break;
+      }
+      r = next;
+    }
+  }
   std::sort(out.roots.begin(), out.roots.end());
-  // The same root may come from two neighbouring intervals (a root on a split point).
+  // The same root may come from two neighbouring intervals (a root on a split point): keep
+  // the one where |p| is smallest (an exact zero wins).
   std::vector<double> unique;
   for (const double r : out.roots) {
-    if (unique.empty() || r - unique.back() > 0x1p-40) unique.push_back(r);
+    if (!unique.empty() && r - unique.back() <= 0x1p-30) {
+      if (std::fabs(bernstein::evaluate(c, r)) < std::fabs(bernstein::evaluate(c, unique.back()))) unique.back() = r;
+      continue;
+    }
+    unique.push_back(r);
   }
   out.roots = std::move(unique);
   return out;

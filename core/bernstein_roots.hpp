@@ -20,8 +20,9 @@ struct BernsteinRoots {
 /// sign change beyond their rounding bound holds no root; one sign change means exactly
 /// one root, found by bisection to full precision (every bisection step is a sign of p
 /// evaluated by de Casteljau); more sign changes split the interval in two. A cluster that
-/// is still unresolved at width 2^-max_depth is reported once, at its midpoint. Exact zeros
-/// at 0 and 1 are reported exactly. Bounded: at most 2^max_depth intervals, in practice a
+/// is still unresolved at width 2^-max_depth is reported once, at its midpoint, then
+/// polished by Newton's method. Exact zeros at 0 and 1 are reported exactly; roots closer
+/// than 2^-30 to each other are reported once. Bounded: at most 2^max_depth intervals, in practice a
 /// few per root.
 [[nodiscard]] BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth = 40);
 

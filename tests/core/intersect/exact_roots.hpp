@@ -58,8 +58,9 @@ inline std::optional<ExactRoot> exact_newton(const core::Curve& f, const core::C
     // f' dt - g' ds = -r
     const Rational det = a.tangent.y * b.tangent.x - a.tangent.x * b.tangent.y;  // det [f', -g']
     if (det == Rational(0)) return std::nullopt;
-    const Rational dt = (r.y * b.tangent.x - r.x * b.tangent.y) / det;
-    const Rational ds = (a.tangent.x * r.y - a.tangent.y * r.x) / det;
+    // Cramer's rule: dt = det [-r, -g'] / det, ds = det [f', -r] / det.
+    const Rational dt = (r.x * b.tangent.y - b.tangent.x * r.y) / det;
+    const Rational ds = (r.x * a.tangent.y - a.tangent.x * r.y) / det;
     t = truncate(t + dt);
     s = truncate(s + ds);
   }
