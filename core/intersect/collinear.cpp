@@ -97,8 +97,21 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f, c
       const double w0 = std::max(std::min(pf.u0, pf.u1), std::min(pg.u0, pg.u1));
       const double w1 = std::min(std::max(pf.u0, pf.u1), std::max(pg.u0, pg.u1));
       if (w1 < w0 - kTouch) continue;
-      const double ta = invert(u, pf, w0), tb = invert(u, pf, w1);
-      const double sa = invert(v, pg, w0), sb = invert(v, pg, w1);
+      double ta = invert(u, pf, w0), tb = invert(u, pf, w1);
+      double sa = invert(v, pg, w0), sb = invert(v, pg, w1);
+      // Each end of the shared range is an end of one of the two pieces, where that
+      // curve's parameter is exact; the other parameter, from bisection on the rounded
+      // positions, is pinned down by Newton's method on the exact point.
+      const auto refine = [&](double w, double& t, double& s) {
+        const bool from_f = w == pf.u0 || w == pf.u1;
+        if (from_f) {
+          s = locate_on_curve(g, evaluate_dd(f, t), s);
+        } else {
+          t = locate_on_curve(f, evaluate_dd(g, s), t);
+        }
+      };
+      refine(w0, ta, sa);
+      refine(w1, tb, sb);
       if (w1 - w0 > kTouch) {
         Overlap o;
         o.t_interval = {std::min(ta, tb), std::max(ta, tb)};

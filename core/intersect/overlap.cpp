@@ -73,7 +73,9 @@ double locate_on_curve(const WorkingCurve& f, PointDD p, double start) {
     const double dd2 = d.x * d.x + d.y * d.y;
     if (!(dd2 > 0)) break;
     const double step = (r.x * d.x + r.y * d.y) / dd2;
-    if (!std::isfinite(step)) break;
+    // A refinement, not a search: a large step means f' nearly vanishes here (a turning
+    // point or cusp), where Gauss-Newton is unreliable; keep the guess.
+    if (!std::isfinite(step) || std::fabs(step) > 0x1p-20) break;
     t -= step;
     if (std::fabs(step) <= 0x1p-60) break;
   }

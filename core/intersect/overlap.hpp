@@ -64,7 +64,9 @@ struct OverlapFinding {
                                          ParamInterval s, Point2 center);
 
 /// Solves f(t) = p for t near `start` (Gauss-Newton on |f(t) - p|^2 with double-double
-/// residuals): the parameter of a point known to lie on f. Result clamped to [0, 1].
+/// residuals): the parameter of a point known to lie on f, refined from a close guess.
+/// Steps larger than 2^-20 end the iteration (f' nearly zero: the guess is kept). Result
+/// clamped to [0, 1].
 [[nodiscard]] double locate_on_curve(const WorkingCurve& f, PointDD p, double start);
 
 }  // namespace bezier::core
