@@ -110,11 +110,14 @@ struct SelfIntersectionOptions {
 ///    on F from the chords' crossing finds it, and a result inside the box is final.
 ///    Otherwise split; pieces flat to within the distance tolerance that still cannot be
 ///    separated are tangential-contact candidates, refined by refine_contact.
-/// Results are refined to full double precision (Newton with quadratic convergence), moved
-/// to exactly t = 0 or s = 1 when the end point satisfies B(t) = B(s) as well, and merged
-/// when found twice. Curves that retrace themselves get a named branch each (status
-/// degenerate, see SelfOverlap): collinear ones a 1-D analysis, palindromic control points
-/// (B(1 - t) = B(t)) the self-intersections of the outbound half and their mirror images.
+/// Results are refined to full double precision (Newton with quadratic convergence, then
+/// one step with the compensated residual of evaluate()), moved to exactly t = 0 or s = 1
+/// when the end point satisfies B(t) = B(s) as well, and merged when found twice. Cubics
+/// take the exact closed form of cubic_double_point.hpp instead of the search (unless
+/// options.cubic_closed_form is off). Curves that retrace themselves get a named branch
+/// each (status degenerate, see SelfOverlap): collinear ones a 1-D analysis, palindromic
+/// control points (B(1 - t) = B(t)) the self-intersections of the outbound half and their
+/// mirror images.
 ///
 /// Resolution: next to a cusp, |B(s) - B(t)| stays at rounding level for s - t up to about
 /// 1e-5, so pairs there are accepted only when rounding could not move them onto the
@@ -122,10 +125,11 @@ struct SelfIntersectionOptions {
 /// roughly 1e-4, area below ~1e-18 of the curve's size) are treated as the cusp and not
 /// reported. The exact cubic closed form has no such limit. Distinct pairs closer than
 /// 1e-10 in both t and s are merged.
-/// Tangential contacts are located to about half the digits when the branches have the
-/// same curvature there. Other curves that retrace part of themselves (improper
-/// parametrisations C(p(t)) with p not symmetric about 1/2, e.g. p = (t - 1/4)^2) exhaust the
-/// work budget.
+/// Tangential contacts are located by refine_contact (to full precision when the branches'
+/// curvatures differ, to about half the digits when they agree). Every stage counts against
+/// options.max_work; running out gives status work_cap_reached, never a long run. Other curves that
+/// retrace part of themselves (improper parametrisations C(p(t)) with p not symmetric about 1/2,
+/// e.g. p = (t - 1/4)^2) exhaust the work budget.
 ///
 /// The approach of classifying boxes of the (t, s) square follows the divided-difference
 /// view of self-intersection (Pekerman, Elber, Kim, "Self-intersection detection and
