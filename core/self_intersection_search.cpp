@@ -153,7 +153,13 @@ void split_half(const Point2* src, Point2* left, Point2* right, std::size_t m) {
 class Search {
  public:
   Search(std::span<const Point2> points, const SelfIntersectionSearchSettings& settings)
-      : points_(points), m_(points.size()), settings_(settings), scratch_(4 * points.size()) {}
+      : points_(points), m_(points.size()), settings_(settings), scratch_(4 * points.size()) {
+    // Depth-first, the stack holds about three boxes per level: room for a typical search
+    // without regrowing.
+    constexpr std::size_t kTypicalBoxes = 64;
+    stack_.reserve(kTypicalBoxes);
+    arena_.reserve(kTypicalBoxes * 2 * m_);
+  }
 
   SelfIntersectionSearchOutcome run() {
     push({0.0, 1.0, 0.0, 1.0, 0, BoxKind::diagonal, 0}, points_.data(), points_.data());
