@@ -8,7 +8,7 @@
 //                     this; at least 2^-46 (about 1.42e-14, what doubles can guarantee) and at
 //                     most 1.
 //   method            optional: "hybrid" (default), "bezier-clipping", "subdivision".
-//   fat_curve_degree  optional, 2 (default) or 3: the hybrid method's fat curves.
+//   fat_curve_degree  optional, 2 or 3 (default): the hybrid method's fat curves.
 // Answer (two curves):
 //   {"intersections": [{"t", "s", "t_interval": [lo, hi], "s_interval": [lo, hi],
 //                       "point": [x, y], "kind": "transversal" | "tangent" | "degenerate",

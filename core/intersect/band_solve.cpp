@@ -123,7 +123,7 @@ std::optional<ParamInterval> kept_interval_by_hulls(std::span<const double> p, d
   const int k = static_cast<int>(p.size()) - 1;
   const double e = 3.02 * k * kU * bernstein::max_abs(p) + 0x1p-1000;
   ParamInterval range{0.0, 1.0};
-  for (int iteration = 0; iteration < 8; ++iteration) {
+  for (int iteration = 0; iteration < 4; ++iteration) {
     const Coeffs q = iteration == 0 ? Coeffs(p) : bernstein::portion<double>(p, range.lo, range.hi);
     const double margin = iteration == 0 ? 0.0 : e;
     const auto clip = bernstein::hull_clip(q, lo - margin, hi + margin);
@@ -196,7 +196,9 @@ double monotone_root(const double* p, const double* c, int k, double level) noex
     if (!(df != 0.0)) break;
     const double next = t - f / df;
     if (!(next >= 0.0 && next <= 1.0)) break;
+    const bool small = std::fabs(next - t) <= 0x1p-40;
     t = next;
+    if (small) break;  // quadratic convergence: already far inside the 2^-32 pad
   }
   return t;
 }
@@ -262,6 +264,10 @@ std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo,
     }
     if (certified && alpha <= beta) return ParamInterval{alpha, beta};
   }
+  // Not monotone. For cubics the trigonometric root formulas cost more than they save
+  // here (such pieces are early, large ones, where the clip keeps most of the interval
+  // anyway): the convex-hull iteration gives the same kind of certain interval.
+  if (k == 3) return kept_interval_by_hulls(p, lo, hi);
   double breaks[8];
   int nb = 0;
   breaks[nb++] = 0.0;

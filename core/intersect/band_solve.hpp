@@ -11,22 +11,27 @@ namespace bezier::core {
 /// degree 1, 2 or 3 given by its Bernstein coefficients: nullopt only when p certainly
 /// avoids the band, otherwise an interval that certainly contains every t where p meets it.
 ///
-/// Method: the boundary of the set is among the real roots of p(t) = lo and p(t) = hi, found
-/// in closed form (linear; the cancellation-free quadratic formula, Numerical Recipes §5.6;
-/// Viète's trigonometric / Cardano's formula for cubics, each root polished by Newton's
-/// method). Segments between consecutive roots are kept when p at their midpoint is in the
-/// band; the hull of the kept segments is widened by 2^-32. Rounding can misplace a root or
-/// miss a pair of nearly double ones, so the result is then certified: on each excluded end
-/// [0, alpha] and [beta, 1], p's Bernstein coefficients (a de Casteljau portion, with its
-/// rounding bound) must all lie strictly below lo or all strictly above hi, which by the
-/// convex hull property proves p avoids the band there. If a certificate fails, the interval
-/// comes from repeated convex-hull clips of p (bernstein::hull_clip) instead, which are
-/// conservative by construction.
+/// Method: the boundary of the set is among the real roots of p(t) = lo and p(t) = hi.
+///  - p monotone (monotone Bernstein coefficients, the usual case once pieces are small):
+///    one root per level, by Newton's method from where the control polygon crosses it,
+///    widened by 2^-32 and certified by one value of p beyond each end (a monotone p
+///    that is outside the band there stays outside up to the end of [0, 1]).
+///  - otherwise, degree <= 2: the roots in closed form (linear; the cancellation-free
+///    quadratic formula, Numerical Recipes §5.6); segments between consecutive roots are
+///    kept when p at their midpoint is in the band; the hull of the kept segments is
+///    widened by 2^-32 and certified: on each excluded end [0, alpha] and [beta, 1], p's
+///    Bernstein coefficients (a de Casteljau portion, with its rounding bound) must all lie
+///    strictly below lo or all strictly above hi, which by the convex hull property proves p
+///    avoids the band there.
+///  - otherwise (non-monotone cubics), and whenever a certificate fails: repeated
+///    convex-hull clips of p (bernstein::hull_clip), conservative by construction.
+/// real_roots_up_to_cubic (Viète / Cardano for cubics) is kept for callers that want the
+/// roots themselves.
 [[nodiscard]] std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo,
                                                         double hi);
 
 /// The same by convex-hull clipping alone, repeated on the kept piece while it shrinks by
-/// more than 20 % (at most 8 times). Any degree.
+/// more than 20 % (at most 4 times). Any degree.
 [[nodiscard]] std::optional<ParamInterval> kept_interval_by_hulls(std::span<const double> p,
                                                                  double lo, double hi);
 

@@ -64,9 +64,33 @@ double invert(const std::vector<double>& u, const MonotonePiece& p, double w) {
   return a + (b - a) / 2;
 }
 
+/// A quick necessary test without square roots: every control point of c within 2 tol of
+/// the line through its first control point and the one farthest from it (the main test
+/// below uses the same construction over both curves, whose line is within tol of all).
+bool roughly_straight(const WorkingCurve& c, double tol) noexcept {
+  const std::size_t n = c.x.size() - 1;
+  Point2 d = {0.0, 0.0};
+  double dd = 0.0;
+  for (std::size_t i = 1; i <= n; ++i) {
+    const Point2 v = {c.x[i] - c.x[0], c.y[i] - c.y[0]};
+    if (dot(v, v) > dd) {
+      dd = dot(v, v);
+      d = v;
+    }
+  }
+  if (dd == 0.0) return true;
+  for (std::size_t i = 1; i < n; ++i) {
+    const double cr = cross(d, Point2{c.x[i] - c.x[0], c.y[i] - c.y[0]});
+    if (cr * cr > 4 * tol * tol * dd) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f, const WorkingCurve& g) {
+  const double quick_tol = overlap_tolerance(std::max(f.degree, g.degree));
+  if (!roughly_straight(f, quick_tol) || !roughly_straight(g, quick_tol)) return std::nullopt;
   // The line through f's first control point and the control point farthest from it.
   const Point2 origin = {f.x[0], f.y[0]};
   Point2 dir = {0.0, 0.0};

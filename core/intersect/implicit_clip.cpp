@@ -30,7 +30,7 @@ Parabola fit_parabola(const Piece& g, const FatCurveOperator& op2) {
   for (int i = 0; i < 3; ++i) out.q[i] = {fx.p[static_cast<std::size_t>(i)], fy.p[static_cast<std::size_t>(i)]};
   // Per coordinate, the difference of the Bernstein polynomials is bounded by delta_x,
   // delta_y (fat_curve includes the rounding of the elevation).
-  out.delta = std::hypot(fx.delta, fy.delta) * (1 + 4 * kU) + root2 * g.error;
+  out.delta = std::sqrt(fx.delta * fx.delta + fy.delta * fy.delta) * (1 + 4 * kU) + root2 * g.error;
   return out;
 }
 
@@ -56,7 +56,10 @@ Clip implicit_clip(const Piece& x, const Piece& other, const FatCurveOperator& o
   const Parabola par = fit_parabola(other, op2);
   const Point2 q0 = par.q[0], q1 = par.q[1], q2 = par.q[2];
   const double area = cross(q1 - q0, q2 - q0);  // D, twice the signed area
-  const double l0 = length(q2 - q1), l1 = length(q2 - q0), l2 = length(q1 - q0);  // |grad D_i|
+  // Working-frame coordinates (|x| <= ~1): the squares neither overflow nor underflow
+  // harmfully, so sqrt(dot) replaces hypot.
+  const auto norm = [](Point2 v) { return std::sqrt(dot(v, v)) * (1 + 4 * kU); };
+  const double l0 = norm(q2 - q1), l1 = norm(q2 - q0), l2 = norm(q1 - q0);  // |grad D_i|
   if (!(std::fabs(area) > 64 * kU * bernstein::max2(l0, bernstein::max2(l1, l2)) * bernstein::max2(l0, bernstein::max2(l1, l2)))) {
     return no_information;  // Q is (nearly) straight: its implicit form degenerates
   }
@@ -68,7 +71,7 @@ Clip implicit_clip(const Piece& x, const Piece& other, const FatCurveOperator& o
     d0[k] = cross(q1 - p, q2 - p);
     d1[k] = cross(q2 - p, q0 - p);
     d2[k] = cross(q0 - p, q1 - p);
-    for (const Point2 q : par.q) reach = bernstein::max2(reach, length(q - p));
+    for (const Point2 q : par.q) reach = bernstein::max2(reach, norm(q - p));
     big = bernstein::max2(big, bernstein::max2(std::fabs(d0[k]), bernstein::max2(std::fabs(d1[k]), std::fabs(d2[k]))));
   }
   // Each D_i at a control point: x's error moves the point by sqrt(2) x.error along a

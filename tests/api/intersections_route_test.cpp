@@ -59,7 +59,7 @@ TEST(IntersectionsRoute, CrossingSegmentsAnswerIsTheKernelsRoundTripped) {
   EXPECT_TRUE(r["overlaps"].empty());
   EXPECT_EQ(r["tolerance"].get<double>(), 1e-12);
   EXPECT_EQ(r["stats"]["method"], "hybrid");
-  EXPECT_EQ(r["stats"]["fat_curve_degree"], 2);
+  EXPECT_EQ(r["stats"]["fat_curve_degree"], 3);
   for (const char* key : {"iterations", "clipping_steps", "subdivisions", "candidate_boxes", "compensated_steps",
                           "newton_iterations", "max_depth"}) {
     EXPECT_TRUE(r["stats"][key].is_number_integer()) << key;
@@ -69,7 +69,7 @@ TEST(IntersectionsRoute, CrossingSegmentsAnswerIsTheKernelsRoundTripped) {
 TEST(IntersectionsRoute, MethodsToleranceAndFatCurveDegreeAreUsed) {
   for (const char* method : {"hybrid", "bezier-clipping", "subdivision"}) {
     const json r = call(std::string(R"({"curves":[{"points":[[0,0],[1,2],[2,0]]},{"points":[[0,0.75],[2,0.75]]}],)") +
-                            R"("method":")" + method + R"(","tolerance":1e-6,"fat_curve_degree":3})",
+                            R"("method":")" + method + R"(","tolerance":1e-6,"fat_curve_degree":2})",
                         200);
     EXPECT_EQ(r["stats"]["method"], method);
     EXPECT_EQ(r["stats"].contains("fat_curve_degree"), std::string(method) == "hybrid");
