@@ -14,8 +14,9 @@
 // Answer with interval (no loop search):
 //   {"degree", "interval": [t1, t2], "area": |A|, "signed_area": A, "chord": [B(t1), B(t2)],
 //    "closed", "closed_area"}
-// Errors: 422 validation problems with JSON Pointers; 422 work-cap problem when the
-// self-intersection search needs more than limits.max_work parameter boxes.
+// Errors: 422 validation problems with JSON Pointers (an area beyond the double range is
+// reported at /points); 422 work-cap problem when the self-intersection search needs more
+// than limits.max_work parameter boxes.
 
 #include <cmath>
 #include <string>
@@ -55,6 +56,14 @@ const char* method_name(core::SelfIntersectionMethod method) {
   return "subdivision";
 }
 
+/// An area beyond the double range (the curve is finite, its area need not be: a loop
+/// 1e200 wide) cannot be written as a JSON number: that request is answered with a problem.
+Reply area_out_of_range() {
+  return validation_reply({{"/points",
+                            "the area is beyond the double range (about 1.8e308): "
+                            "the coordinates are too large"}});
+}
+
 nlohmann::json closed_area_json(const core::Curve& curve) {
   const auto area = core::closed_area(curve);
   return area ? nlohmann::json(*area) : nlohmann::json(nullptr);
@@ -78,6 +87,10 @@ std::optional<std::pair<double, double>> read_interval(RequestReader& reader, co
 
 Reply interval_answer(const core::Curve& curve, double t1, double t2) {
   const double signed_area = core::enclosed_area(curve, t1, t2);
+  const auto closed = core::closed_area(curve);
+  if (!std::isfinite(signed_area) || (closed && !std::isfinite(*closed))) {
+    return area_out_of_range();
+  }
   return json_reply({{"degree", curve.degree()},
                      {"interval", pair_json(t1, t2)},
                      {"area", std::fabs(signed_area)},
@@ -98,6 +111,9 @@ Reply loops_answer(const core::Curve& curve, const Limits& limits) {
         "the self-intersection search examined " + std::to_string(result.stats.work) +
             " parameter boxes, the per-request cap, without finishing (a curve that "
             "retraces part of itself, other than a line or a palindrome, needs unbounded work)");
+  }
+  if (!std::isfinite(result.area) || (result.closed_area && !std::isfinite(*result.closed_area))) {
+    return area_out_of_range();  // the total is infinite when any loop's area is
   }
   nlohmann::json loops = nlohmann::json::array();
   for (const core::Loop& loop : result.loops) {

@@ -2,14 +2,17 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <vector>
 
 #include "core/binomial.hpp"
 
 namespace bezier::core {
 
-double enclosed_area(std::span<const Point2> points) {
-  assert(!points.empty());
+namespace {
+
+/// The double sum of enclosed_area() on the coordinates as given.
+double enclosed_area_as_given(std::span<const Point2> points) {
   const int n = static_cast<int>(points.size()) - 1;
   if (n < 2) return 0.0;  // a point or a segment closed by itself encloses nothing
   // C(n, i) and C(2n - 2, k) once: every weight is then one division (see the header).
@@ -35,48 +38,64 @@ double enclosed_area(std::span<const Point2> points) {
   return area;
 }
 
-namespace {
-
-/// Control points of B on [a, b] reparametrised to [0, 1], written to `out` (n + 1 points):
-/// de Casteljau at b keeps the left half (B on [0, b]), then de Casteljau of that at a / b
-/// keeps the right half (B on [a, b]); for b = 0, the left half at a reversed. Two O(n^2)
-/// triangles instead of portion()'s n + 1 blossoms (O(n^3)), in plain arithmetic: this runs
-/// once per loop. The one rounding in a / b moves the start of the piece along the curve by
-/// about one ulp of a, which changes a loop's area only to second order (at a double point
-/// d/da of the enclosed area is 1/2 cross(B(b) - B(a), B'(a)) = 0).
-void piece_points(std::span<const Point2> points, double a, double b, std::vector<Point2>& out) {
+/// Control points of B on [a, b] reparametrised to [0, 1] (n + 1 points): de Casteljau at
+/// b keeps the left half (B on [0, b]), then de Casteljau of that at a / b keeps the right
+/// half (B on [a, b]); for b = 0, the left half at a reversed. Two O(n^2) triangles instead
+/// of portion()'s n + 1 blossoms (O(n^3)), in plain arithmetic: this runs once per loop.
+/// The one rounding in a / b moves the start of the piece along the curve by about one ulp
+/// of a, which changes a loop's area only to second order (at a double point d/da of the
+/// enclosed area is 1/2 cross(B(b) - B(a), B'(a)) = 0).
+std::vector<Point2> piece_points(std::span<const Point2> points, double a, double b) {
   const std::size_t m = points.size();
   std::vector<Point2> work(points.begin(), points.end());
-  const auto left_half = [&](double t) {  // out <- first entries of each round, from `work`
-    out[0] = work[0];
+  std::vector<Point2> left(m);
+  const auto left_half = [&](double t) {  // left <- first entries of each round of `work`
+    left[0] = work[0];
     for (std::size_t k = 1; k < m; ++k) {
       for (std::size_t i = 0; i + k < m; ++i) work[i] = lerp(work[i], work[i + 1], t);
-      out[k] = work[0];
+      left[k] = work[0];
     }
   };
-  out.resize(m);
   if (b == 0.0) {
     left_half(a);
-    std::reverse(out.begin(), out.end());
-    return;
+    std::reverse(left.begin(), left.end());
+    return left;
   }
   left_half(b);
-  // Right half of `out` at a / b: the working row ends as the right half itself.
-  work.assign(out.begin(), out.end());
+  // Right half of `left` at a / b: the working row ends as the right half itself (entry
+  // m - 1 - k is final after round k).
+  work = left;
   const double t = a / b;
   for (std::size_t k = 1; k < m; ++k) {
     for (std::size_t i = 0; i + k < m; ++i) work[i] = lerp(work[i], work[i + 1], t);
   }
-  out.assign(work.begin(), work.end());
+  return work;
 }
 
 }  // namespace
 
+double enclosed_area(std::span<const Point2> points) {
+  assert(!points.empty());
+  // Differences and their cross products overflow beyond about 2^510 (underflow below
+  // 2^-510) even when the area itself is representable: scale such input by a power of two
+  // (exact) and the area back by its square; an area beyond the double range is then +-inf.
+  double largest = 0.0;
+  for (const Point2 p : points) largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)});
+  if (largest == 0.0 || (0x1p-400 <= largest && largest <= 0x1p400)) {
+    return enclosed_area_as_given(points);
+  }
+  const int k = -std::ilogb(largest);
+  std::vector<Point2> scaled;
+  scaled.reserve(points.size());
+  // 2^k in two normal factors (k reaches 1074 for subnormal input).
+  const double f1 = std::ldexp(1.0, k / 2), f2 = std::ldexp(1.0, k - k / 2);
+  for (const Point2 p : points) scaled.push_back((p * f1) * f2);
+  return std::ldexp(enclosed_area_as_given(scaled), -2 * k);
+}
+
 double enclosed_area(const Curve& curve, double a, double b) {
   if (a == 0.0 && b == 1.0) return enclosed_area(curve.points());
-  std::vector<Point2> piece;
-  piece_points(curve.points(), a, b, piece);
-  return enclosed_area(piece);
+  return enclosed_area(piece_points(curve.points(), a, b));
 }
 
 double enclosed_area(const Curve& curve) {
@@ -89,8 +108,7 @@ double signed_area(const Curve& curve, double a, double b) {
   if (a == 0.0 && b == 1.0) {
     return enclosed_area(curve.points()) + 0.5 * cross(curve.front(), curve.back());
   }
-  std::vector<Point2> piece;
-  piece_points(curve.points(), a, b, piece);
+  const std::vector<Point2> piece = piece_points(curve.points(), a, b);
   return enclosed_area(piece) + 0.5 * cross(piece.front(), piece.back());
 }
 

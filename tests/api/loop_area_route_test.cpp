@@ -154,6 +154,20 @@ TEST(LoopAreaRoute, ValidationErrorsPointAtTheField) {
             (Pointers{"/extra", "/points", "/interval/0"}));
 }
 
+TEST(LoopAreaRoute, AreaBeyondTheDoubleRangeIsAProblemNotANull) {
+  // A curve 1e200 wide has a finite description and an area of order 1e400.
+  EXPECT_EQ(pointers(call(
+                R"({"points":[[0,0],[1e200,1e200],[0,1e200],[1e200,0]],"interval":[0,1]})", 422)),
+            (Pointers{"/points"}));
+  // A loop that size too (the cubic (0,0), (1,1), (-1/2,1), (1/2,0) crosses itself).
+  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1e200,1e200],[-5e199,1e200],[5e199,0]]})", 422)),
+            (Pointers{"/points"}));
+  // 1e150 is fine: areas of order 1e300.
+  const json r =
+      call(R"({"points":[[0,0],[1e150,1e150],[0,1e150],[1e150,0]],"interval":[0,1]})", 200);
+  EXPECT_TRUE(r["area"].is_number());
+}
+
 TEST(LoopAreaRoute, DegreeAboveTheLimit) {
   Limits limits;
   limits.max_degree = 6;

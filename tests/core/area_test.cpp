@@ -133,6 +133,29 @@ TEST(Area, ScalingByTwoToTheKIsExact) {
   }
 }
 
+TEST(Area, ExactScalingHoldsToTheEdgesOfTheDoubleRange) {
+  // Coordinates near 2^520 would overflow the cross products of their differences, and
+  // near 2^-530 underflow them, if taken as given; the area itself is 2^1040 / 2^-1060
+  // times the unscaled one: the first overflows to infinity (with its sign, not NaN), the
+  // second is a subnormal.
+  test::Mulberry32 rng(18);
+  const Curve c = random_dyadic_curve(rng, 6);
+  const double a = enclosed_area(c);
+  const auto scaled = [&](int k) {
+    std::vector<Point2> pts;
+    for (const Point2 p : c.points()) pts.push_back({std::ldexp(p.x, k), std::ldexp(p.y, k)});
+    return Curve(pts);
+  };
+  EXPECT_EQ(enclosed_area(scaled(500)), std::ldexp(a, 1000));
+  EXPECT_EQ(enclosed_area(scaled(-500)), std::ldexp(a, -1000));
+  EXPECT_EQ(enclosed_area(scaled(-530)), std::ldexp(a, -1060));
+  const double huge = enclosed_area(scaled(520));
+  EXPECT_TRUE(std::isinf(huge));
+  EXPECT_EQ(std::signbit(huge), std::signbit(a));
+  // Differences of +-1e308 coordinates overflow if taken as given.
+  EXPECT_TRUE(std::isinf(enclosed_area(Curve({{-1e308, 0}, {1e308, 1e308}, {1e308, -1e308}}))));
+}
+
 TEST(Area, ScalesWithTheSquareOfAnyFactor) {
   test::Mulberry32 rng(13);
   const Curve c = random_dyadic_curve(rng, 6);
