@@ -123,10 +123,10 @@ std::optional<ParamInterval> kept_interval_by_hulls(std::span<const double> p, d
   const int k = static_cast<int>(p.size()) - 1;
   const double e = 3.02 * k * kU * bernstein::max_abs(p) + 0x1p-1000;
   ParamInterval range{0.0, 1.0};
-  for (int iteration = 0; iteration < 4; ++iteration) {
-    const Coeffs q = iteration == 0 ? Coeffs(p) : bernstein::portion<double>(p, range.lo, range.hi);
-    const double margin = iteration == 0 ? 0.0 : e;
-    const auto clip = bernstein::hull_clip(q, lo - margin, hi + margin);
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    // The first pass clips p itself (exact coefficients, no margin).
+    const auto clip = iteration == 0 ? bernstein::hull_clip(p, lo, hi)
+                                     : bernstein::hull_clip(bernstein::portion<double>(p, range.lo, range.hi), lo - e, hi + e);
     if (!clip) return std::nullopt;
     const double w = range.hi - range.lo;
     ParamInterval next = range;

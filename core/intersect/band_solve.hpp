@@ -31,7 +31,7 @@ namespace bezier::core {
                                                         double hi);
 
 /// The same by convex-hull clipping alone, repeated on the kept piece while it shrinks by
-/// more than 20 % (at most 4 times). Any degree.
+/// more than 20 % (at most 3 times). Any degree.
 [[nodiscard]] std::optional<ParamInterval> kept_interval_by_hulls(std::span<const double> p,
                                                                  double lo, double hi);
 

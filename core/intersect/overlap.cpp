@@ -14,17 +14,17 @@ constexpr double kU = bernstein::kU;
 /// Overlaps shorter than this (in s) are left to the search.
 constexpr double kShortestOverlap = 0x1p-30;
 
-/// Monomial coefficients a_k = C(n,k) Σ_{i<=k} (-1)^(k-i) C(k,i) P_i of one coordinate.
+/// Monomial coefficients a_k = C(n,k) Δ^k P_0 of one coordinate (Δ^k: the k-th forward
+/// difference of the control points; Farin, §5.4), by repeated differences in place.
 Coeffs monomial(std::span<const double> c) {
-  const int n = static_cast<int>(c.size()) - 1;
+  const std::size_t n = c.size() - 1;
+  Coeffs d(c);
   Coeffs a(c.size(), 0.0);
-  for (int k = 0; k <= n; ++k) {
-    double sum = 0.0;
-    for (int i = 0; i <= k; ++i) {
-      const double term = binomial(k, i) * c[static_cast<std::size_t>(i)];
-      sum += ((k - i) % 2 == 0) ? term : -term;
-    }
-    a[static_cast<std::size_t>(k)] = binomial(n, k) * sum;
+  double choose = 1.0;  // C(n, k), exact for the degrees accepted
+  for (std::size_t k = 0; k <= n; ++k) {
+    a[k] = choose * d[0];
+    for (std::size_t i = 0; i + k < n; ++i) d[i] = d[i + 1] - d[i];
+    choose = choose * static_cast<double>(n - k) / static_cast<double>(k + 1);
   }
   return a;
 }
