@@ -1,5 +1,6 @@
 #include "core/intersect/working_curve.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/intersect/bernstein1d.hpp"
@@ -37,7 +38,10 @@ WorkingFrame working_frame(const Curve& f, const Curve& g) {
   for (const Curve* c : {&f, &g}) {
     for (const Point2 p : c->points()) m = bernstein::max2(m, max_abs_coordinate(p - frame.origin));
   }
-  frame.scale = m > 0.0 ? std::ldexp(1.0, -(std::ilogb(m) + 1)) : 1.0;
+  // 2^-(e + 1) with 2^e <= m; the exponent is clamped so that the scale itself stays a
+  // normal double (subnormal inputs then get working coordinates of about 1e-3, still fine).
+  const int exponent = m > 0.0 ? std::clamp(-(std::ilogb(m) + 1), -1022, 1022) : 0;
+  frame.scale = std::ldexp(1.0, exponent);
   return frame;
 }
 

@@ -313,6 +313,21 @@ TEST(IntersectHardCases, DecimalScalingsGiveTheSameParametersUpToRounding) {
   }
 }
 
+TEST(IntersectHardCases, ExtremeMagnitudes) {
+  // Near the top of the double range and in the subnormal range (2^-1060: the coordinates,
+  // multiples of 2^-2 there, are still exact).
+  const Curve f({{0.0, 0.0}, {1.0, 2.0}, {2.0, 0.0}});
+  const Curve g({{0.0, 0.75}, {2.0, 0.75}});
+  for (const double scale : {0x1p1000, 1e300, 0x1p-1060}) {
+    SCOPED_TRACE(scale);
+    const IntersectionResult r = run(transformed(f, scale, {0, 0}), transformed(g, scale, {0, 0}));
+    ASSERT_EQ(r.intersections.size(), 2u);
+    EXPECT_TRUE(r.intersections[0].t_interval.contains(0.25));
+    EXPECT_TRUE(r.intersections[1].t_interval.contains(0.75));
+    EXPECT_NEAR(r.intersections[0].t, 0.25, 1e-15);
+  }
+}
+
 // --- Budget and tolerance ----------------------------------------------------------------
 
 TEST(IntersectHardCases, ImproperReparametrisationHitsTheWorkCapNotAHang) {
