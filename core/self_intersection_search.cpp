@@ -266,13 +266,13 @@ class Search {
         root.v < box.c - kSlack || root.v > box.d + kSlack) {
       return false;
     }
-    // The box holds at most one pair and Newton found it; if rounding could move it onto
-    // the diagonal, it is a cusp seen through rounding errors: the box is done either way.
-    if (is_resolved_double_point(points_, root.u, root.v, settings_.rounding)) {
-      out_.crossings.push_back(root);
-    } else {
-      ++out_.stats.cusp_regions;
-    }
+    // The box holds at most one pair and Newton found it, unless rounding could move it
+    // onto the diagonal: then it is a cusp seen through rounding errors, or two branches
+    // meeting at so small an angle that the pair is a tangential contact in all but
+    // rounding. Either way the box is split on until its pieces are flat, and the contact
+    // stage decides.
+    if (!is_resolved_double_point(points_, root.u, root.v, settings_.rounding)) return false;
+    out_.crossings.push_back(root);
     return true;
   }
 

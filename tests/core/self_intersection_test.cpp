@@ -260,6 +260,36 @@ TEST(SelfIntersection, TangentialSelfContactIsFoundOnce) {
   EXPECT_NEAR(m.pairs[0].s, 0.75, 1e-7);
 }
 
+TEST(SelfIntersection, NearTangencyIsTwoCrossingsOrNoneOrOneContact) {
+  // x = 5 s ((s^2 - 1/16)^2 + e), y = 5 s^2. For e < 0 the branches s and -s cross where
+  // (s^2 - 1/16)^2 = -e, twice and at a tiny angle; for e > 0 they miss by 10 |e| / 4 in x;
+  // for |e| at rounding level they touch as far as doubles can tell.
+  const auto curve = [](const Rational& e) {
+    const Rational d2 = q(1, 16);
+    return from_power_in_s({Rational(0), Rational(5) * (d2 * d2 + e), Rational(0),
+                            Rational(-10) * d2, Rational(0), Rational(5)},
+                           {Rational(0), Rational(0), Rational(5)}, q(1, 2));
+  };
+  for (const int k : {20, 40}) {
+    const double root_e = std::ldexp(1.0, -k / 2);  // sqrt(|e|)
+    const SelfIntersectionResult crossing =
+        self_intersections(curve(-Rational(std::ldexp(1.0, -k))));
+    ASSERT_EQ(crossing.pairs.size(), 2u) << k;
+    const double s_out = std::sqrt(1.0 / 16 + root_e), s_in = std::sqrt(1.0 / 16 - root_e);
+    EXPECT_NEAR(crossing.pairs[0].t, 0.5 - s_out, 1e-12);
+    EXPECT_NEAR(crossing.pairs[0].s, 0.5 + s_out, 1e-12);
+    EXPECT_NEAR(crossing.pairs[1].t, 0.5 - s_in, 1e-12);
+    EXPECT_NEAR(crossing.pairs[1].s, 0.5 + s_in, 1e-12);
+    EXPECT_EQ(crossing.pairs[0].kind, SelfIntersectionKind::transversal);
+
+    EXPECT_TRUE(self_intersections(curve(Rational(std::ldexp(1.0, -k)))).pairs.empty()) << k;
+  }
+  const SelfIntersectionResult touch = self_intersections(curve(Rational(std::ldexp(1.0, -52))));
+  ASSERT_EQ(touch.pairs.size(), 1u);
+  EXPECT_EQ(touch.pairs[0].kind, SelfIntersectionKind::tangent);
+  EXPECT_NEAR(touch.pairs[0].t, 0.25, 1e-9);
+}
+
 TEST(SelfIntersection, SeveralLoopsOnOneCurve) {
   const Curve c = nested_loops_quintic(q(1, 8), q(3, 8));
   const SelfIntersectionResult r = self_intersections(c);
