@@ -66,7 +66,7 @@ int degree_arg(const benchmark::State& state) { return static_cast<int>(state.ra
 
 // The textbook algorithm: n rounds of P_i <- (1 - t) P_i + t P_{i+1} on a stack copy.
 Point2 plain_casteljau(const Curve& curve, double t) {
-  std::array<Point2, 32> w{};
+  std::array<Point2, 32> w;  // not value-initialised: only the first n + 1 are written and read
   const int n = curve.degree();
   for (int i = 0; i <= n; ++i) w[static_cast<std::size_t>(i)] = curve[i];
   for (int level = n; level > 0; --level) {
