@@ -46,7 +46,9 @@ struct IntersectionsRequest {
   core::IntersectOptions options;
 };
 
-nlohmann::json interval_json(core::ParamInterval iv) { return pair_json(iv.lo, iv.hi); }
+nlohmann::json interval_json(core::ParamInterval iv) {
+  return pair_json(iv.lo, iv.hi);
+}
 
 nlohmann::json intersection_json(const core::Intersection& x) {
   return {{"t", x.t},
@@ -67,8 +69,10 @@ Reply work_cap_reply(std::int64_t work) {
 }
 
 Reply two_curves_answer(const IntersectionsRequest& request) {
-  const core::IntersectionResult r = core::intersect(request.curves[0], request.curves[1], request.options);
-  if (r.status == core::IntersectStatus::work_cap_reached) return work_cap_reply(r.stats.iterations);
+  const core::IntersectionResult r =
+      core::intersect(request.curves[0], request.curves[1], request.options);
+  if (r.status == core::IntersectStatus::work_cap_reached)
+    return work_cap_reply(r.stats.iterations);
   if (r.status == core::IntersectStatus::tolerance_too_small) {
     return validation_reply({{"/tolerance", "below what doubles can guarantee"}});
   }
@@ -88,7 +92,8 @@ Reply two_curves_answer(const IntersectionsRequest& request) {
                           {"compensated_steps", r.stats.compensated_steps},
                           {"newton_iterations", r.stats.newton_iterations},
                           {"max_depth", r.stats.max_depth}};
-  if (r.stats.method == core::IntersectMethod::hybrid) stats["fat_curve_degree"] = request.options.fat_curve_degree;
+  if (r.stats.method == core::IntersectMethod::hybrid)
+    stats["fat_curve_degree"] = request.options.fat_curve_degree;
   return json_reply({{"intersections", std::move(intersections)},
                      {"overlaps", std::move(overlaps)},
                      {"tolerance", request.options.tolerance},
@@ -145,7 +150,8 @@ CertifiedPair certified_pair(const core::Curve& curve, const core::SelfIntersect
   const core::IntersectionResult r =
       core::intersect_in(curve, curve, {std::max(0.0, pair.t - w), std::min(1.0, pair.t + w)},
                          {std::max(0.0, pair.s - w), std::min(1.0, pair.s + w)}, local);
-  if (r.status != core::IntersectStatus::ok || r.intersections.size() != 1) return {x, r.stats.iterations};
+  if (r.status != core::IntersectStatus::ok || r.intersections.size() != 1)
+    return {x, r.stats.iterations};
   return {r.intersections.front(), r.stats.iterations};
 }
 
@@ -154,11 +160,13 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   core::SelfIntersectionOptions options;
   options.max_work = limits.max_work;
   const core::SelfIntersectionResult r = core::self_intersections(curve, options);
-  if (r.status == core::SelfIntersectionStatus::work_cap_reached) return work_cap_reply(r.stats.work);
+  if (r.status == core::SelfIntersectionStatus::work_cap_reached)
+    return work_cap_reply(r.stats.work);
   std::int64_t certification_work = 0;
   nlohmann::json intersections = nlohmann::json::array();
   for (const core::SelfIntersection& pair : r.pairs) {
-    const CertifiedPair c = certified_pair(curve, pair, request.options, limits.max_work - certification_work);
+    const CertifiedPair c =
+        certified_pair(curve, pair, request.options, limits.max_work - certification_work);
     certification_work += c.work;
     intersections.push_back(intersection_json(c.intersection));
   }
@@ -199,7 +207,8 @@ Reply intersections_route(const nlohmann::json& request, const Limits& limits) {
         }
         reader.reject_unknown_fields(c, {"points"}, at);
         if (const auto* points = reader.required(c, "points", at)) {
-          if (auto curve = reader.curve2(*points, pointer_to(at, "points"))) parsed.curves.push_back(std::move(*curve));
+          if (auto curve = reader.curve2(*points, pointer_to(at, "points")))
+            parsed.curves.push_back(std::move(*curve));
         }
       }
     }
@@ -208,22 +217,24 @@ Reply intersections_route(const nlohmann::json& request, const Limits& limits) {
     if (const auto v = reader.number(*tolerance, "/tolerance")) {
       if (!(core::kMinTolerance <= *v && *v <= 1.0)) {
         Json lo = core::kMinTolerance;
-        reader.fail("/tolerance", "must lie in [" + lo.dump() + ", 1]: intervals narrower than " + lo.dump() +
-                                      " cannot be guaranteed in double precision");
+        reader.fail("/tolerance", "must lie in [" + lo.dump() + ", 1]: intervals narrower than " +
+                                      lo.dump() + " cannot be guaranteed in double precision");
       } else {
         parsed.options.tolerance = *v;
       }
     }
   }
   if (const auto* method = RequestReader::optional(request, "method")) {
-    if (const auto m = reader.one_of(*method, "/method", {"hybrid", "bezier-clipping", "subdivision"})) {
+    if (const auto m =
+            reader.one_of(*method, "/method", {"hybrid", "bezier-clipping", "subdivision"})) {
       parsed.options.method = *m == "hybrid"            ? core::IntersectMethod::hybrid
                               : *m == "bezier-clipping" ? core::IntersectMethod::bezier_clipping
                                                         : core::IntersectMethod::subdivision;
     }
   }
   if (const auto* k = RequestReader::optional(request, "fat_curve_degree")) {
-    if (const auto v = reader.integer(*k, "/fat_curve_degree", 2, 3)) parsed.options.fat_curve_degree = *v;
+    if (const auto v = reader.integer(*k, "/fat_curve_degree", 2, 3))
+      parsed.options.fat_curve_degree = *v;
   }
   if (!reader.ok()) return validation_reply(reader.take_errors());
   return parsed.curves.size() == 1 ? one_curve_answer(parsed, limits) : two_curves_answer(parsed);

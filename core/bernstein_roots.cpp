@@ -86,7 +86,9 @@ BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth) {
   // Roots reported at the depth limit (a root on a split point, a cluster) are polished by
   // Newton's method, kept only while |p| decreases and the step stays tiny.
   std::vector<double> derivative(static_cast<std::size_t>(std::max(n, 1)), 0.0);
-  for (int i = 0; i < n; ++i) derivative[static_cast<std::size_t>(i)] = n * (c[static_cast<std::size_t>(i) + 1] - c[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < n; ++i)
+    derivative[static_cast<std::size_t>(i)] =
+        n * (c[static_cast<std::size_t>(i) + 1] - c[static_cast<std::size_t>(i)]);
   for (double& r : out.roots) {
     if (n == 0) break;
     for (int i = 0; i < 4; ++i) {
@@ -106,7 +108,8 @@ BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth) {
   std::vector<double> unique;
   for (const double r : out.roots) {
     if (!unique.empty() && r - unique.back() <= 0x1p-30) {
-      if (std::fabs(bernstein::evaluate(c, r)) < std::fabs(bernstein::evaluate(c, unique.back()))) unique.back() = r;
+      if (std::fabs(bernstein::evaluate(c, r)) < std::fabs(bernstein::evaluate(c, unique.back())))
+        unique.back() = r;
       continue;
     }
     unique.push_back(r);

@@ -22,8 +22,8 @@ struct BernsteinRoots {
 /// evaluated by de Casteljau); more sign changes split the interval in two. A cluster that
 /// is still unresolved at width 2^-max_depth is reported once, at its midpoint, then
 /// polished by Newton's method. Exact zeros at 0 and 1 are reported exactly; roots closer
-/// than 2^-30 to each other are reported once. Bounded: at most 2^max_depth intervals, in practice a
-/// few per root.
+/// than 2^-30 to each other are reported once. Bounded: at most 2^max_depth intervals, in practice
+/// a few per root.
 [[nodiscard]] BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth = 40);
 
 }  // namespace bezier::core

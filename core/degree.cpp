@@ -23,7 +23,9 @@ struct Matrix {
   }
 };
 
-long double binomial_ld(int n, int k) { return static_cast<long double>(binomial(n, k)); }
+long double binomial_ld(int n, int k) {
+  return static_cast<long double>(binomial(n, k));
+}
 
 /// Solves A X = B for X (A square, B with several columns) by Gaussian elimination with
 /// partial pivoting. A is a Gram matrix of a basis, so it is symmetric positive definite
@@ -67,7 +69,9 @@ constexpr long double const_binomial(int n, int k) {
   return c;
 }
 
-constexpr long double const_abs(long double x) { return x < 0 ? -x : x; }
+constexpr long double const_abs(long double x) {
+  return x < 0 ? -x : x;
+}
 
 struct ReductionTable {
   // [k - 2][n] -> (k + 1) x (n + 1) entries, row-major.
@@ -82,10 +86,12 @@ constexpr ReductionTable make_reduction_table() {
       long double b[4][kTableDegree + 1] = {};
       for (int i = 0; i <= k; ++i) {
         for (int j = 0; j <= k; ++j) {
-          a[i][j] = const_binomial(k, i) * const_binomial(k, j) / ((2 * k + 1) * const_binomial(2 * k, i + j));
+          a[i][j] = const_binomial(k, i) * const_binomial(k, j) /
+                    ((2 * k + 1) * const_binomial(2 * k, i + j));
         }
         for (int j = 0; j <= n; ++j) {
-          b[i][j] = const_binomial(k, i) * const_binomial(n, j) / ((k + n + 1) * const_binomial(k + n, i + j));
+          b[i][j] = const_binomial(k, i) * const_binomial(n, j) /
+                    ((k + n + 1) * const_binomial(k + n, i + j));
         }
       }
       for (int col = 0; col <= k; ++col) {
@@ -110,7 +116,8 @@ constexpr ReductionTable make_reduction_table() {
         }
       }
       for (int i = 0; i <= k; ++i) {
-        for (int j = 0; j <= n; ++j) table.entries[k - 2][n][i * (n + 1) + j] = static_cast<double>(x[i][j]);
+        for (int j = 0; j <= n; ++j)
+          table.entries[k - 2][n][i * (n + 1) + j] = static_cast<double>(x[i][j]);
       }
     }
   }
@@ -156,7 +163,8 @@ const double* elevation_table(int from, int to) noexcept {
 
 BernsteinMatrix elevation_matrix(int from, int to) {
   assert(0 <= from && from <= to);
-  BernsteinMatrix m{to + 1, from + 1, std::vector<double>(static_cast<std::size_t>((to + 1) * (from + 1)), 0.0)};
+  BernsteinMatrix m{to + 1, from + 1,
+                    std::vector<double>(static_cast<std::size_t>((to + 1) * (from + 1)), 0.0)};
   for (int i = 0; i <= to; ++i) {
     for (int j = 0; j <= from; ++j) {
       if (i - j < 0 || i - j > to - from) continue;

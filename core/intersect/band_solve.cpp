@@ -95,9 +95,11 @@ bool certainly_outside(std::span<const double> q, double lo, double hi, double e
 
 }  // namespace
 
-CubicRoots real_roots_up_to_cubic(double c0, double c1, double c2, double c3, double lo, double hi) {
+CubicRoots real_roots_up_to_cubic(double c0, double c1, double c2, double c3, double lo,
+                                  double hi) {
   CubicRoots out;
-  const double scale = bernstein::max2(bernstein::max2(std::fabs(c0), std::fabs(c1)), bernstein::max2(std::fabs(c2), std::fabs(c3)));
+  const double scale = bernstein::max2(bernstein::max2(std::fabs(c0), std::fabs(c1)),
+                                       bernstein::max2(std::fabs(c2), std::fabs(c3)));
   if (scale == 0.0) return out;
   double raw[3];
   int count = 0;
@@ -119,14 +121,17 @@ CubicRoots real_roots_up_to_cubic(double c0, double c1, double c2, double c3, do
   return out;
 }
 
-std::optional<ParamInterval> kept_interval_by_hulls(std::span<const double> p, double lo, double hi) {
+std::optional<ParamInterval> kept_interval_by_hulls(std::span<const double> p, double lo,
+                                                    double hi) {
   const int k = static_cast<int>(p.size()) - 1;
   const double e = 3.02 * k * kU * bernstein::max_abs(p) + 0x1p-1000;
   ParamInterval range{0.0, 1.0};
   for (int iteration = 0; iteration < 3; ++iteration) {
     // The first pass clips p itself (exact coefficients, no margin).
-    const auto clip = iteration == 0 ? bernstein::hull_clip(p, lo, hi)
-                                     : bernstein::hull_clip(bernstein::portion<double>(p, range.lo, range.hi), lo - e, hi + e);
+    const auto clip = iteration == 0
+                          ? bernstein::hull_clip(p, lo, hi)
+                          : bernstein::hull_clip(bernstein::portion<double>(p, range.lo, range.hi),
+                                                 lo - e, hi + e);
     if (!clip) return std::nullopt;
     const double w = range.hi - range.lo;
     ParamInterval next = range;
@@ -241,7 +246,8 @@ std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo,
     // where it leaves it; an end of [0, 1] already inside needs no root.
     const double enter = increasing ? lo : hi, leave = increasing ? hi : lo;
     const bool starts_inside = increasing ? p[0] >= lo : p[0] <= hi;
-    const bool ends_inside = increasing ? p[static_cast<std::size_t>(k)] <= hi : p[static_cast<std::size_t>(k)] >= lo;
+    const bool ends_inside =
+        increasing ? p[static_cast<std::size_t>(k)] <= hi : p[static_cast<std::size_t>(k)] >= lo;
     double alpha = 0.0, beta = 1.0;
     bool certified = true;
     if (!starts_inside) {
@@ -272,8 +278,10 @@ std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo,
   int nb = 0;
   breaks[nb++] = 0.0;
   for (const double level : {lo, hi}) {
-    const CubicRoots r = real_roots_up_to_cubic(c[0] - level, c[1], c[2], c[3], -0x1p-20, 1 + 0x1p-20);
-    for (int i = 0; i < r.count; ++i) breaks[nb++] = r.t[i] < 0.0 ? 0.0 : (r.t[i] > 1.0 ? 1.0 : r.t[i]);
+    const CubicRoots r =
+        real_roots_up_to_cubic(c[0] - level, c[1], c[2], c[3], -0x1p-20, 1 + 0x1p-20);
+    for (int i = 0; i < r.count; ++i)
+      breaks[nb++] = r.t[i] < 0.0 ? 0.0 : (r.t[i] > 1.0 ? 1.0 : r.t[i]);
   }
   breaks[nb++] = 1.0;
   sort_small(breaks, nb);
@@ -293,7 +301,8 @@ std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo,
   const Ends ends = end_pieces(p.data(), k, alpha, beta);
   const std::span<const double> left(ends.left, static_cast<std::size_t>(k + 1));
   const std::span<const double> right(ends.right, static_cast<std::size_t>(k + 1));
-  if ((alpha > 0.0 && !certainly_outside(left, lo, hi, e)) || (beta < 1.0 && !certainly_outside(right, lo, hi, e))) {
+  if ((alpha > 0.0 && !certainly_outside(left, lo, hi, e)) ||
+      (beta < 1.0 && !certainly_outside(right, lo, hi, e))) {
     return kept_interval_by_hulls(p, lo, hi);
   }
   return ParamInterval{alpha, beta};

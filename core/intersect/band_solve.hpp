@@ -28,12 +28,12 @@ namespace bezier::core {
 /// real_roots_up_to_cubic (Viète / Cardano for cubics) is kept for callers that want the
 /// roots themselves.
 [[nodiscard]] std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo,
-                                                        double hi);
+                                                         double hi);
 
 /// The same by convex-hull clipping alone, repeated on the kept piece while it shrinks by
 /// more than 20 % (at most 3 times). Any degree.
 [[nodiscard]] std::optional<ParamInterval> kept_interval_by_hulls(std::span<const double> p,
-                                                                 double lo, double hi);
+                                                                  double lo, double hi);
 
 /// Real roots of c0 + c1 t + c2 t^2 + c3 t^3 = 0 in [lo, hi] (any of c1..c3 may be zero;
 /// an identically zero polynomial has no isolated roots and gives none), ascending.
@@ -42,6 +42,6 @@ struct CubicRoots {
   int count = 0;
 };
 [[nodiscard]] CubicRoots real_roots_up_to_cubic(double c0, double c1, double c2, double c3,
-                                               double lo, double hi);
+                                                double lo, double hi);
 
 }  // namespace bezier::core

@@ -16,8 +16,12 @@ inline constexpr double kU = 0x1p-53;
 
 /// (1 - t) a + t b in doubles, the de Casteljau step. For t in [0,1] its rounding error is
 /// at most 3.01 u max(|a|, |b|): 1 - t, the two products and the sum each round once.
-[[nodiscard]] inline double lerp(double a, double b, double t) noexcept { return (1.0 - t) * a + t * b; }
-[[nodiscard]] inline dd::Real lerp(dd::Real a, dd::Real b, double t) noexcept { return dd::lerp(a, b, t); }
+[[nodiscard]] inline double lerp(double a, double b, double t) noexcept {
+  return (1.0 - t) * a + t * b;
+}
+[[nodiscard]] inline dd::Real lerp(dd::Real a, dd::Real b, double t) noexcept {
+  return dd::lerp(a, b, t);
+}
 
 /// The coefficients of the same polynomial restricted to [a, b] and reparametrised to
 /// [0, 1]: coefficient i is the blossom value b(a^(n-i), b^i) (Ramshaw 1987), computed from
@@ -103,8 +107,12 @@ template <class T>
 
 /// max(a, b) and min(a, b) without std::fmax's NaN handling (a library call in GCC): for
 /// the hot loops, on values known to be finite.
-[[nodiscard]] constexpr double max2(double a, double b) noexcept { return a > b ? a : b; }
-[[nodiscard]] constexpr double min2(double a, double b) noexcept { return a < b ? a : b; }
+[[nodiscard]] constexpr double max2(double a, double b) noexcept {
+  return a > b ? a : b;
+}
+[[nodiscard]] constexpr double min2(double a, double b) noexcept {
+  return a < b ? a : b;
+}
 
 /// Largest |c_i|.
 [[nodiscard]] inline double max_abs(std::span<const double> c) noexcept {
@@ -122,13 +130,16 @@ template <class T>
 /// (nullopt) exactly when every c_i < lo or every c_i > hi. This is the clip of
 /// Sederberg & Nishita (1990), without building the hull.
 [[nodiscard]] inline std::optional<ParamInterval> hull_clip(std::span<const double> c, double lo,
-                                                           double hi) {
+                                                            double hi) {
   const std::size_t n = c.size() - 1;
   bool any_below = false, any_above = false, any_inside = false;
   for (const double v : c) {
-    if (v < lo) any_below = true;
-    else if (v > hi) any_above = true;
-    else any_inside = true;
+    if (v < lo)
+      any_below = true;
+    else if (v > hi)
+      any_above = true;
+    else
+      any_inside = true;
   }
   if (!any_inside && !(any_below && any_above)) return std::nullopt;
   if (!any_below && !any_above) return ParamInterval{0.0, 1.0};

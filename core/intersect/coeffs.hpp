@@ -22,16 +22,20 @@ class SmallArray {
   SmallArray(const SmallArray& other) { *this = other; }
   SmallArray& operator=(const SmallArray& other) {
     if (this == &other) return *this;
-    if (other.size_ > kInline) heap_ = other.heap_;
-    else std::copy(other.inline_, other.inline_ + other.size_, inline_);
+    if (other.size_ > kInline)
+      heap_ = other.heap_;
+    else
+      std::copy(other.inline_, other.inline_ + other.size_, inline_);
     size_ = other.size_;
     return *this;
   }
   SmallArray(SmallArray&& other) noexcept { *this = std::move(other); }
   SmallArray& operator=(SmallArray&& other) noexcept {
     if (this == &other) return *this;
-    if (other.size_ > kInline) heap_ = std::move(other.heap_);
-    else std::copy(other.inline_, other.inline_ + other.size_, inline_);
+    if (other.size_ > kInline)
+      heap_ = std::move(other.heap_);
+    else
+      std::copy(other.inline_, other.inline_ + other.size_, inline_);
     size_ = other.size_;
     return *this;
   }
@@ -49,8 +53,10 @@ class SmallArray {
   }
 
   void resize(std::size_t n, T value = T{}) {
-    if (n > kInline) heap_.assign(n, value);
-    else std::fill(inline_, inline_ + n, value);
+    if (n > kInline)
+      heap_.assign(n, value);
+    else
+      std::fill(inline_, inline_ + n, value);
     size_ = n;
   }
 

@@ -58,8 +58,10 @@ double invert(const std::vector<double>& u, const MonotonePiece& p, double w) {
     const double m = a + (b - a) / 2;
     if (!(a < m && m < b)) break;
     const double v = bernstein::evaluate(u, m);
-    if ((v < w) == increasing) a = m;
-    else b = m;
+    if ((v < w) == increasing)
+      a = m;
+    else
+      b = m;
   }
   return a + (b - a) / 2;
 }
@@ -88,7 +90,8 @@ bool roughly_straight(const WorkingCurve& c, double tol) noexcept {
 
 }  // namespace
 
-std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f, const WorkingCurve& g) {
+std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
+                                                        const WorkingCurve& g) {
   const double quick_tol = overlap_tolerance(std::max(f.degree, g.degree));
   if (!roughly_straight(f, quick_tol) || !roughly_straight(g, quick_tol)) return std::nullopt;
   // The line through f's first control point and the control point farthest from it.
@@ -148,20 +151,27 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f, c
       const double tm = ta / 2 + tb / 2, sm = sa / 2 + sb / 2;
       bool known = false;
       for (const Overlap& o : out.overlaps) {
-        known = known || ((std::fabs(tm - o.t_interval.lo) <= kTouch || std::fabs(tm - o.t_interval.hi) <= kTouch) &&
-                          (std::fabs(sm - o.s_interval.lo) <= kTouch || std::fabs(sm - o.s_interval.hi) <= kTouch));
+        known = known || ((std::fabs(tm - o.t_interval.lo) <= kTouch ||
+                           std::fabs(tm - o.t_interval.hi) <= kTouch) &&
+                          (std::fabs(sm - o.s_interval.lo) <= kTouch ||
+                           std::fabs(sm - o.s_interval.hi) <= kTouch));
       }
       for (const CollinearContact& c : out.touches) {
-        known = known || (std::fabs(tm - c.t_estimate) <= kTouch && std::fabs(sm - c.s_estimate) <= kTouch);
+        known = known ||
+                (std::fabs(tm - c.t_estimate) <= kTouch && std::fabs(sm - c.s_estimate) <= kTouch);
       }
-      if (!known) out.touches.push_back({{std::min(ta, tb), std::max(ta, tb)}, {std::min(sa, sb), std::max(sa, sb)}, tm, sm});
+      if (!known)
+        out.touches.push_back(
+            {{std::min(ta, tb), std::max(ta, tb)}, {std::min(sa, sb), std::max(sa, sb)}, tm, sm});
     }
   }
   // A touch found before the overlap that ends there.
   std::erase_if(out.touches, [&](const CollinearContact& c) {
     for (const Overlap& o : out.overlaps) {
-      const bool t_end = std::fabs(c.t_estimate - o.t_interval.lo) <= kTouch || std::fabs(c.t_estimate - o.t_interval.hi) <= kTouch;
-      const bool s_end = std::fabs(c.s_estimate - o.s_interval.lo) <= kTouch || std::fabs(c.s_estimate - o.s_interval.hi) <= kTouch;
+      const bool t_end = std::fabs(c.t_estimate - o.t_interval.lo) <= kTouch ||
+                         std::fabs(c.t_estimate - o.t_interval.hi) <= kTouch;
+      const bool s_end = std::fabs(c.s_estimate - o.s_interval.lo) <= kTouch ||
+                         std::fabs(c.s_estimate - o.s_interval.hi) <= kTouch;
       if (t_end && s_end) return true;
     }
     return false;

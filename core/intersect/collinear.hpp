@@ -32,6 +32,6 @@ struct CollinearOutcome {
 /// then applies; collinear curves on different lines cross at most at isolated points).
 /// Precondition: neither curve is a single point.
 [[nodiscard]] std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
-                                                                     const WorkingCurve& g);
+                                                                      const WorkingCurve& g);
 
 }  // namespace bezier::core

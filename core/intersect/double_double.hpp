@@ -17,7 +17,9 @@ struct Real {
 };
 
 /// Exact value of a double.
-[[nodiscard]] constexpr Real from(double x) noexcept { return {x, 0.0}; }
+[[nodiscard]] constexpr Real from(double x) noexcept {
+  return {x, 0.0};
+}
 
 /// hi + lo renormalised, assuming |a| >= |b| or a = 0 (Dekker's Fast2Sum, exact).
 [[nodiscard]] constexpr Real fast_two_sum(double a, double b) noexcept {
@@ -34,8 +36,12 @@ struct Real {
   return v;
 }
 
-[[nodiscard]] inline Real neg(Real a) noexcept { return {-a.hi, -a.lo}; }
-[[nodiscard]] inline Real sub(Real a, Real b) noexcept { return add(a, neg(b)); }
+[[nodiscard]] inline Real neg(Real a) noexcept {
+  return {-a.hi, -a.lo};
+}
+[[nodiscard]] inline Real sub(Real a, Real b) noexcept {
+  return add(a, neg(b));
+}
 
 /// a b for a double b, relative error <= 2 u^2 (Joldes et al., Algorithm 9).
 [[nodiscard]] inline Real mul(Real a, double b) noexcept {
@@ -58,6 +64,8 @@ struct Real {
 }
 
 /// The value rounded to a double.
-[[nodiscard]] constexpr double to_double(Real a) noexcept { return a.hi + a.lo; }
+[[nodiscard]] constexpr double to_double(Real a) noexcept {
+  return a.hi + a.lo;
+}
 
 }  // namespace bezier::core::dd

@@ -58,8 +58,8 @@ FatCurve fat_curve(const FatCurveOperator& op, std::span<const double> a) {
   return out;
 }
 
-std::optional<ParamInterval> fat_curve_clip(const FatCurveOperator& op, const DistanceCoefficients& d,
-                                            double lo, double hi) {
+std::optional<ParamInterval> fat_curve_clip(const FatCurveOperator& op,
+                                            const DistanceCoefficients& d, double lo, double hi) {
   const FatCurve fc = fat_curve(op, d.a);
   const double widen = fc.delta + d.error;
   return kept_interval(fc.p, lo - widen, hi + widen);

@@ -52,7 +52,7 @@ struct FatCurve {
 /// coefficients' error) of the band; roots of degree-k polynomials, closed form
 /// (kept_interval). nullopt when the piece certainly misses the band.
 [[nodiscard]] std::optional<ParamInterval> fat_curve_clip(const FatCurveOperator& op,
-                                                         const DistanceCoefficients& d,
-                                                         double lo, double hi);
+                                                          const DistanceCoefficients& d, double lo,
+                                                          double hi);
 
 }  // namespace bezier::core

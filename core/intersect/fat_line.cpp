@@ -14,12 +14,15 @@ constexpr double kU = bernstein::kU;
 double reach(const Piece& p, Point2 origin) noexcept {
   double r = 0.0;
   for (std::size_t i = 0; i < p.x.size(); ++i) {
-    r = bernstein::max2(r, bernstein::max2(std::fabs(p.x[i] - origin.x), std::fabs(p.y[i] - origin.y)));
+    r = bernstein::max2(
+        r, bernstein::max2(std::fabs(p.x[i] - origin.x), std::fabs(p.y[i] - origin.y)));
   }
   return r;
 }
 
-Point2 chord(const Piece& p) noexcept { return {p.x.back() - p.x[0], p.y.back() - p.y[0]}; }
+Point2 chord(const Piece& p) noexcept {
+  return {p.x.back() - p.x[0], p.y.back() - p.y[0]};
+}
 
 }  // namespace
 
@@ -71,7 +74,8 @@ FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection directio
     // points), which adds e; the interior ones are within e of d_j, scaled by c <= 1.
     double c = 0.5;
     if (m == 3) {
-      const bool opposite = (dist[1] - e > 0 && dist[2] + e < 0) || (dist[1] + e < 0 && dist[2] - e > 0);
+      const bool opposite =
+          (dist[1] - e > 0 && dist[2] + e < 0) || (dist[1] + e < 0 && dist[2] - e > 0);
       c = opposite ? 4.0 / 9.0 : 0.75;
     }
     for (std::size_t j = 1; j < m; ++j) {

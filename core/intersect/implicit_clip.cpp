@@ -22,12 +22,14 @@ Parabola fit_parabola(const Piece& g, const FatCurveOperator& op2) {
   const int m = g.degree();
   const double root2 = std::sqrt(2.0) * (1 + kU);
   if (m == 2) {
-    for (int i = 0; i < 3; ++i) out.q[i] = {g.x[static_cast<std::size_t>(i)], g.y[static_cast<std::size_t>(i)]};
+    for (int i = 0; i < 3; ++i)
+      out.q[i] = {g.x[static_cast<std::size_t>(i)], g.y[static_cast<std::size_t>(i)]};
     out.delta = root2 * g.error;
     return out;
   }
   const FatCurve fx = fat_curve(op2, g.x), fy = fat_curve(op2, g.y);
-  for (int i = 0; i < 3; ++i) out.q[i] = {fx.p[static_cast<std::size_t>(i)], fy.p[static_cast<std::size_t>(i)]};
+  for (int i = 0; i < 3; ++i)
+    out.q[i] = {fx.p[static_cast<std::size_t>(i)], fy.p[static_cast<std::size_t>(i)]};
   // Per coordinate, the difference of the Bernstein polynomials is bounded by delta_x,
   // delta_y (fat_curve includes the rounding of the elevation).
   out.delta = std::sqrt(fx.delta * fx.delta + fy.delta * fy.delta) * (1 + 4 * kU) + root2 * g.error;
@@ -40,8 +42,9 @@ Coeffs product(const Coeffs& a, const Coeffs& b) {
   Coeffs out(static_cast<std::size_t>(2 * n + 1), 0.0);
   for (int i = 0; i <= n; ++i) {
     for (int j = 0; j <= n; ++j) {
-      out[static_cast<std::size_t>(i + j)] += binomial(n, i) * binomial(n, j) * a[static_cast<std::size_t>(i)] *
-                                               b[static_cast<std::size_t>(j)];
+      out[static_cast<std::size_t>(i + j)] += binomial(n, i) * binomial(n, j) *
+                                              a[static_cast<std::size_t>(i)] *
+                                              b[static_cast<std::size_t>(j)];
     }
   }
   for (int k = 0; k <= 2 * n; ++k) out[static_cast<std::size_t>(k)] /= binomial(2 * n, k);
@@ -60,7 +63,8 @@ Clip implicit_clip(const Piece& x, const Piece& other, const FatCurveOperator& o
   // harmfully, so sqrt(dot) replaces hypot.
   const auto norm = [](Point2 v) { return std::sqrt(dot(v, v)) * (1 + 4 * kU); };
   const double l0 = norm(q2 - q1), l1 = norm(q2 - q0), l2 = norm(q1 - q0);  // |grad D_i|
-  if (!(std::fabs(area) > 64 * kU * bernstein::max2(l0, bernstein::max2(l1, l2)) * bernstein::max2(l0, bernstein::max2(l1, l2)))) {
+  if (!(std::fabs(area) > 64 * kU * bernstein::max2(l0, bernstein::max2(l1, l2)) *
+                              bernstein::max2(l0, bernstein::max2(l1, l2)))) {
     return no_information;  // Q is (nearly) straight: its implicit form degenerates
   }
   const std::size_t n1 = x.x.size();
@@ -72,7 +76,9 @@ Clip implicit_clip(const Piece& x, const Piece& other, const FatCurveOperator& o
     d1[k] = cross(q2 - p, q0 - p);
     d2[k] = cross(q0 - p, q1 - p);
     for (const Point2 q : par.q) reach = bernstein::max2(reach, norm(q - p));
-    big = bernstein::max2(big, bernstein::max2(std::fabs(d0[k]), bernstein::max2(std::fabs(d1[k]), std::fabs(d2[k]))));
+    big = bernstein::max2(
+        big,
+        bernstein::max2(std::fabs(d0[k]), bernstein::max2(std::fabs(d1[k]), std::fabs(d2[k]))));
   }
   // Each D_i at a control point: x's error moves the point by sqrt(2) x.error along a
   // gradient of length <= max l_i; the two differences, two products and the difference of

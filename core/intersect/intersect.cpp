@@ -1,10 +1,10 @@
 #include "core/intersect/intersect.hpp"
-#include "core/intersect/bernstein1d.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
+#include "core/intersect/bernstein1d.hpp"
 #include "core/intersect/collinear.hpp"
 #include "core/intersect/fat_curve.hpp"
 #include "core/intersect/kind.hpp"
@@ -43,9 +43,10 @@ Intersection make_intersection(const WorkingCurve& f, const WorkingCurve& g, Wor
 }
 
 void sort_result(IntersectionResult& r) {
-  std::sort(r.intersections.begin(), r.intersections.end(), [](const Intersection& a, const Intersection& b) {
-    return a.t != b.t ? a.t < b.t : a.s < b.s;
-  });
+  std::sort(r.intersections.begin(), r.intersections.end(),
+            [](const Intersection& a, const Intersection& b) {
+              return a.t != b.t ? a.t < b.t : a.s < b.s;
+            });
   std::sort(r.overlaps.begin(), r.overlaps.end(), [](const Overlap& a, const Overlap& b) {
     return a.t_interval.lo != b.t_interval.lo ? a.t_interval.lo < b.t_interval.lo
                                               : a.s_interval.lo < b.s_interval.lo;
@@ -67,7 +68,8 @@ bool control_boxes_disjoint(const Curve& f, const Curve& g) noexcept {
 }
 
 /// End points of f and g equal bit for bit: exact roots, unless they lie on an overlap.
-std::vector<ExactRoot> exact_end_roots(const Curve& f, const Curve& g, std::span<const OverlapFinding> overlaps) {
+std::vector<ExactRoot> exact_end_roots(const Curve& f, const Curve& g,
+                                       std::span<const OverlapFinding> overlaps) {
   std::vector<ExactRoot> roots;
   for (const double t : {0.0, 1.0}) {
     for (const double s : {0.0, 1.0}) {
@@ -88,8 +90,8 @@ IntersectionResult intersect(const Curve& f, const Curve& g, const IntersectOpti
   return intersect_in(f, g, {0.0, 1.0}, {0.0, 1.0}, options);
 }
 
-IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_range, ParamInterval s_range,
-                                const IntersectOptions& options) {
+IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_range,
+                                ParamInterval s_range, const IntersectOptions& options) {
   IntersectionResult result;
   result.stats.method = options.method;
   if (!(options.tolerance >= kMinTolerance)) {
@@ -119,7 +121,8 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
       result.overlaps = line->overlaps;
       for (const CollinearContact& c : line->touches) {
         if (!t_range.contains(c.t_estimate) || !s_range.contains(c.s_estimate)) continue;
-        result.intersections.push_back(make_intersection(wf, wg, frame, c.t_estimate, c.s_estimate, c.t, c.s));
+        result.intersections.push_back(
+            make_intersection(wf, wg, frame, c.t_estimate, c.s_estimate, c.t, c.s));
       }
       sort_result(result);
       return result;
@@ -129,7 +132,8 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   for (const OverlapFinding& o : overlaps) result.overlaps.push_back(o.overlap);
   std::vector<ExactRoot> exact =
       (wf.is_point || wg.is_point) ? std::vector<ExactRoot>{} : exact_end_roots(f, g, overlaps);
-  std::erase_if(exact, [&](const ExactRoot& r) { return !t_range.contains(r.t) || !s_range.contains(r.s); });
+  std::erase_if(
+      exact, [&](const ExactRoot& r) { return !t_range.contains(r.t) || !s_range.contains(r.s); });
 
   SearchInput in;
   in.f = &wf;
@@ -142,7 +146,8 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   in.s_free = wg.is_point;
   in.t_range = wf.is_point ? ParamInterval{0.0, 1.0} : t_range;
   in.s_range = wg.is_point ? ParamInterval{0.0, 1.0} : s_range;
-  const FatCurveOperator op_f2 = fat_curve_operator(wf.degree, 2), op_g2 = fat_curve_operator(wg.degree, 2);
+  const FatCurveOperator op_f2 = fat_curve_operator(wf.degree, 2),
+                         op_g2 = fat_curve_operator(wg.degree, 2);
   in.op_f2 = &op_f2;
   in.op_g2 = &op_g2;
   FatCurveOperator op_f, op_g;

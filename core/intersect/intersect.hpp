@@ -44,6 +44,7 @@ namespace bezier::core {
 /// known intersection, e.g. the self-intersections of one curve (f = g, with boxes away
 /// from the diagonal t = s). Overlaps are still reported whole.
 [[nodiscard]] IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_range,
-                                              ParamInterval s_range, const IntersectOptions& options = {});
+                                              ParamInterval s_range,
+                                              const IntersectOptions& options = {});
 
 }  // namespace bezier::core

@@ -30,11 +30,17 @@ std::size_t find(std::vector<std::size_t>& parent, std::size_t i) {
 
 std::vector<Contact> merge_candidates(std::span<const SearchCandidate> candidates,
                                       std::span<const ExactRoot> exact_roots, double gap) {
+  // The common cases, without the sweep's bookkeeping.
+  if (candidates.empty() && exact_roots.empty()) return {};
+  if (candidates.size() == 1 && exact_roots.empty()) {
+    return {Contact{candidates[0].t, candidates[0].s, candidates[0].resolved, 1, false, {}}};
+  }
   std::vector<Item> items;
   items.reserve(candidates.size() + exact_roots.size());
   for (const SearchCandidate& c : candidates) items.push_back({c.t, c.s, c.resolved, false, {}});
   for (const ExactRoot& r : exact_roots) items.push_back({{r.t, r.t}, {r.s, r.s}, true, true, r});
-  std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.t.lo < b.t.lo; });
+  std::sort(items.begin(), items.end(),
+            [](const Item& a, const Item& b) { return a.t.lo < b.t.lo; });
   std::vector<std::size_t> parent(items.size());
   std::iota(parent.begin(), parent.end(), std::size_t{0});
   for (std::size_t i = 0; i < items.size(); ++i) {

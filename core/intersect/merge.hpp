@@ -16,8 +16,8 @@ struct ExactRoot {
 
 /// One contact between the curves: the union of candidate boxes that touch each other.
 struct Contact {
-  ParamInterval t;  ///< hull of the boxes' t intervals
-  ParamInterval s;  ///< hull of the boxes' s intervals
+  ParamInterval t;       ///< hull of the boxes' t intervals
+  ParamInterval s;       ///< hull of the boxes' s intervals
   bool resolved = true;  ///< every box reached the search width
   int boxes = 0;
   bool exact = false;  ///< holds an exact root (below)

@@ -36,7 +36,8 @@ int true_degree(const Coeffs& ax, const Coeffs& ay, double magnitude) {
   const int n = static_cast<int>(ax.size()) - 1;
   for (int k = n; k >= 1; --k) {
     const double tol = 64 * binomial(n, k) * std::ldexp(1.0, k) * kU * magnitude;
-    const double v = bernstein::max2(std::fabs(ax[static_cast<std::size_t>(k)]), std::fabs(ay[static_cast<std::size_t>(k)]));
+    const double v = bernstein::max2(std::fabs(ax[static_cast<std::size_t>(k)]),
+                                     std::fabs(ay[static_cast<std::size_t>(k)]));
     if (v > tol) return k;
   }
   return 0;
@@ -63,7 +64,9 @@ std::vector<double> piece(std::span<const double> c, double a, double b) {
 
 }  // namespace
 
-double overlap_tolerance(int degree) noexcept { return 0x1p-42 * bernstein::max2(1, degree); }
+double overlap_tolerance(int degree) noexcept {
+  return 0x1p-42 * bernstein::max2(1, degree);
+}
 
 double locate_on_curve(const WorkingCurve& f, PointDD p, double start) {
   double t = start;
@@ -117,7 +120,8 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
     if (!std::isfinite(alpha)) continue;
     const double next = std::pow(beta, d - 1) * (at(a_other, d - 1) + d * alpha * at(a_other, d));
     if (!(std::fabs(at(b_other, d - 1) - next) <=
-          0x1p-20 * (std::fabs(at(b_other, d - 1)) + std::fabs(next) + std::fabs(at(b_other, d))))) {
+          0x1p-20 *
+              (std::fabs(at(b_other, d - 1)) + std::fabs(next) + std::fabs(at(b_other, d))))) {
       continue;
     }
     // s with alpha + beta s in [0, 1], within [0, 1].
@@ -134,7 +138,8 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
       const double phi = alpha + beta * s_end[e];
       if (s_exact[e]) {
         ends_s[e] = s_end[e];
-        ends_t[e] = locate_on_curve(f, evaluate_dd(g, s_end[e]), bernstein::min2(1.0, bernstein::max2(0.0, phi)));
+        ends_t[e] = locate_on_curve(f, evaluate_dd(g, s_end[e]),
+                                    bernstein::min2(1.0, bernstein::max2(0.0, phi)));
       } else {
         ends_t[e] = (e == 0) == (beta > 0) ? 0.0 : 1.0;
         ends_s[e] = locate_on_curve(g, evaluate_dd(f, ends_t[e]), s_end[e]);
@@ -149,13 +154,15 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
     const std::vector<double> qy = elevated(piece(g.y, ends_s[0], ends_s[1]), degree);
     double gap = 0.0;
     for (std::size_t i = 0; i < px.size(); ++i) {
-      gap = bernstein::max2(gap, bernstein::max2(std::fabs(px[i] - qx[i]), std::fabs(py[i] - qy[i])));
+      gap =
+          bernstein::max2(gap, bernstein::max2(std::fabs(px[i] - qx[i]), std::fabs(py[i] - qy[i])));
     }
     if (!(gap <= overlap_tolerance(degree))) continue;
     OverlapFinding found;
     found.map.beta = (ends_t[1] - ends_t[0]) / (ends_s[1] - ends_s[0]);
     found.map.alpha = ends_t[0] - found.map.beta * ends_s[0];
-    found.overlap.t_interval = {bernstein::min2(ends_t[0], ends_t[1]), bernstein::max2(ends_t[0], ends_t[1])};
+    found.overlap.t_interval = {bernstein::min2(ends_t[0], ends_t[1]),
+                                bernstein::max2(ends_t[0], ends_t[1])};
     found.overlap.s_interval = {ends_s[0], ends_s[1]};
     found.overlap.reversed = found.map.beta < 0;
     out.push_back(found);
@@ -192,7 +199,8 @@ bool covered_by_overlap(const WorkingCurve& f, const CoincidenceMap& map, ParamI
       {qx[hx.size()] - qx[0], qy[hx.size()] - qy[0]},
       {hx[0], hy[0]},
       {hx[last], hy[last]},
-      {n0 > 0 && n1 > 0 ? hx[0] / n0 + hx[last] / n1 : 0.0, n0 > 0 && n1 > 0 ? hy[0] / n0 + hy[last] / n1 : 0.0},
+      {n0 > 0 && n1 > 0 ? hx[0] / n0 + hx[last] / n1 : 0.0,
+       n0 > 0 && n1 > 0 ? hy[0] / n0 + hy[last] / n1 : 0.0},
   };
   for (const Point2 d : candidates) {
     const double d1 = std::fabs(d.x) + std::fabs(d.y);
@@ -209,7 +217,8 @@ bool coincide_at_precision(const WorkingCurve& f, const WorkingCurve& g, ParamIn
   // The local scale: the piece of f in the box's frame, and its rounding.
   const Piece fp = compensated_piece(f, t.lo, t.hi, center);
   double size = 0.0;
-  for (std::size_t i = 0; i < fp.x.size(); ++i) size = bernstein::max2(size, bernstein::max2(std::fabs(fp.x[i]), std::fabs(fp.y[i])));
+  for (std::size_t i = 0; i < fp.x.size(); ++i)
+    size = bernstein::max2(size, bernstein::max2(std::fabs(fp.x[i]), std::fabs(fp.y[i])));
   const double floor = 16.0 * std::max(f.degree, g.degree) * (kU * size + fp.error);
   const Point2 fchord = {fp.x.back() - fp.x[0], fp.y.back() - fp.y[0]};
   const Point2 gchord = evaluate_with_tangent(g, s.hi).point - evaluate_with_tangent(g, s.lo).point;

@@ -38,7 +38,8 @@ struct OverlapFinding {
 /// within overlap_tolerance. Overlaps shorter than 2^-30 in s are left to the search, which
 /// reports them as contacts. Improper parametrisations (g(s) = f(q(s)) with q of degree
 /// >= 2) are not detected here; the search then runs into its work cap.
-[[nodiscard]] std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCurve& g);
+[[nodiscard]] std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f,
+                                                        const WorkingCurve& g);
 
 /// True when every intersection inside the box t x s lies on the overlap's diagonal
 /// t = alpha + beta s, so the box holds nothing but overlap points and can be dropped: the
@@ -60,8 +61,8 @@ struct OverlapFinding {
 /// contact of order >= 3, where they stay within c d^3 of each other), and the search stops
 /// refining the box: it is reported, unresolved. Sampling is enough for that decision,
 /// because it never drops a box.
-[[nodiscard]] bool coincide_at_precision(const WorkingCurve& f, const WorkingCurve& g, ParamInterval t,
-                                         ParamInterval s, Point2 center);
+[[nodiscard]] bool coincide_at_precision(const WorkingCurve& f, const WorkingCurve& g,
+                                         ParamInterval t, ParamInterval s, Point2 center);
 
 /// Solves f(t) = p for t near `start` (Gauss-Newton on |f(t) - p|^2 with double-double
 /// residuals): the parameter of a point known to lie on f, refined from a close guess.

@@ -1,9 +1,9 @@
 #include "core/intersect/refine.hpp"
-#include "core/intersect/bernstein1d.hpp"
 
 #include <algorithm>
 #include <cmath>
 
+#include "core/intersect/bernstein1d.hpp"
 #include "core/intersect/kind.hpp"
 
 namespace bezier::core {
@@ -20,7 +20,9 @@ Point2 residual(const WorkingCurve& f, const WorkingCurve& g, double t, double s
   return {dd::to_double(dd::sub(a.x, b.x)), dd::to_double(dd::sub(a.y, b.y))};
 }
 
-double clamp_to(ParamInterval iv, double x) noexcept { return std::clamp(x, iv.lo, iv.hi); }
+double clamp_to(ParamInterval iv, double x) noexcept {
+  return std::clamp(x, iv.lo, iv.hi);
+}
 
 struct Newton {
   double t, s;
@@ -75,7 +77,8 @@ Newton transversal(const WorkingCurve& f, const WorkingCurve& g, const Contact& 
 }
 
 /// Newton on cross(f', g') = 0, (f - g) · f' = 0.
-Newton tangency(const WorkingCurve& f, const WorkingCurve& g, const Contact& c, double t0, double s0) {
+Newton tangency(const WorkingCurve& f, const WorkingCurve& g, const Contact& c, double t0,
+                double s0) {
   Newton n{t0, s0};
   for (int i = 0; i < kTangencyIterations; ++i) {
     const PointAndTangent ft = evaluate_with_tangent(f, n.t), gt = evaluate_with_tangent(g, n.s);
@@ -109,7 +112,8 @@ Refinement refine_contact(const WorkingCurve& f, const WorkingCurve& g, const Co
   const Newton n = transversal(f, g, contact, t_free, s_free);
   Refinement out{n.t, n.s, n.iterations, false};
   if (t_free || s_free) return out;
-  const Point2 df = evaluate_with_tangent(f, n.t).tangent, dg = evaluate_with_tangent(g, n.s).tangent;
+  const Point2 df = evaluate_with_tangent(f, n.t).tangent,
+               dg = evaluate_with_tangent(g, n.s).tangent;
   if (n.converged && sine_between(df, dg) > tangent_sine) return out;
   const Newton tn = tangency(f, g, contact, n.t, n.s);
   out.iterations += tn.iterations;

@@ -9,7 +9,7 @@ namespace bezier::core {
 struct Refinement {
   double t = 0.0;
   double s = 0.0;
-  int iterations = 0;         ///< Newton iterations in all
+  int iterations = 0;            ///< Newton iterations in all
   bool tangency_system = false;  ///< found by the tangency system, not by f(t) = g(s)
 };
 

@@ -91,18 +91,18 @@ enum class IntersectMethod {
 
 /// The outcome of a call.
 enum class IntersectStatus {
-  ok,                  ///< every intersection and overlap is reported
-  work_cap_reached,    ///< the work budget ran out: the result is incomplete (the API answers 422)
-  tolerance_too_small, ///< the requested tolerance is below what doubles resolve (API: 422)
+  ok,                   ///< every intersection and overlap is reported
+  work_cap_reached,     ///< the work budget ran out: the result is incomplete (the API answers 422)
+  tolerance_too_small,  ///< the requested tolerance is below what doubles resolve (API: 422)
 };
 
 /// What the search cost, so methods can be compared (seed 003 §3).
 struct IntersectStats {
   IntersectMethod method = IntersectMethod::hybrid;
-  std::int64_t iterations = 0;      ///< box steps taken (the unit of the work budget)
-  std::int64_t clipping_steps = 0;  ///< clips of one curve against the other's fat line
-  std::int64_t subdivisions = 0;    ///< boxes split in halves
-  std::int64_t candidate_boxes = 0; ///< boxes that converged (or hit the precision floor)
+  std::int64_t iterations = 0;         ///< box steps taken (the unit of the work budget)
+  std::int64_t clipping_steps = 0;     ///< clips of one curve against the other's fat line
+  std::int64_t subdivisions = 0;       ///< boxes split in halves
+  std::int64_t candidate_boxes = 0;    ///< boxes that converged (or hit the precision floor)
   std::int64_t compensated_steps = 0;  ///< steps computed in double-double pieces (near tangencies)
   std::int64_t newton_iterations = 0;  ///< Newton iterations in the final refinement
   int max_depth = 0;                   ///< deepest box (clips + halvings from [0,1]^2)

@@ -1,11 +1,11 @@
 #include "core/intersect/search.hpp"
-#include "core/intersect/bernstein1d.hpp"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <optional>
 
+#include "core/intersect/bernstein1d.hpp"
 #include "core/intersect/bezier_clip.hpp"
 #include "core/intersect/hybrid.hpp"
 #include "core/intersect/implicit_clip.hpp"
@@ -67,12 +67,40 @@ double piece_extent(const Piece& p) noexcept {
 }
 
 /// The intersection of two kept intervals (both contain every root), or nothing.
-std::optional<ParamInterval> intersect_kept(std::optional<ParamInterval> a, std::optional<ParamInterval> b) {
+std::optional<ParamInterval> intersect_kept(std::optional<ParamInterval> a,
+                                            std::optional<ParamInterval> b) {
   if (!a || !b) return std::nullopt;
   const ParamInterval r{bernstein::max2(a->lo, b->lo), bernstein::min2(a->hi, b->hi)};
   if (r.hi < r.lo) return std::nullopt;
   return r;
 }
+
+/// A stack of boxes, inline for the first 32 (most searches never have more pending) and on
+/// the heap beyond: no allocation per call in the common case.
+class BoxStack {
+ public:
+  void push(const Box& b) {
+    if (size_ < kInline)
+      inline_[size_] = b;
+    else
+      overflow_.push_back(b);
+    ++size_;
+  }
+  Box pop() {
+    --size_;
+    if (size_ < kInline) return inline_[size_];
+    const Box b = overflow_.back();
+    overflow_.pop_back();
+    return b;
+  }
+  [[nodiscard]] bool empty() const noexcept { return size_ == 0; }
+
+ private:
+  static constexpr std::size_t kInline = 32;
+  Box inline_[kInline];
+  std::vector<Box> overflow_;
+  std::size_t size_ = 0;
+};
 
 /// One call's search state: the stack of boxes, the counters and the results. Nothing here
 /// outlives the call.
@@ -84,18 +112,21 @@ class Searcher {
     Box first;
     first.t = in_.t_range;
     first.s = in_.s_range;
-    stack_.push_back(first);
+    stack_.push(first);
     while (!stack_.empty() && !out_.capped) {
-      const Box box = stack_.back();
-      stack_.pop_back();
+      const Box box = stack_.pop();
       process(box);
     }
     return std::move(out_);
   }
 
  private:
-  [[nodiscard]] bool t_done(const Box& b) const noexcept { return in_.t_free || b.t.width() <= in_.width; }
-  [[nodiscard]] bool s_done(const Box& b) const noexcept { return in_.s_free || b.s.width() <= in_.width; }
+  [[nodiscard]] bool t_done(const Box& b) const noexcept {
+    return in_.t_free || b.t.width() <= in_.width;
+  }
+  [[nodiscard]] bool s_done(const Box& b) const noexcept {
+    return in_.s_free || b.s.width() <= in_.width;
+  }
 
   void emit(const Box& b, bool resolved) {
     out_.candidates.push_back({b.t, b.s, resolved && t_done(b) && s_done(b)});
@@ -118,7 +149,7 @@ class Searcher {
         child.s = ss.parts[j];
         child.depth = b.depth + 1;
         child.along = false;
-        stack_.push_back(child);
+        stack_.push(child);
       }
     }
   }
@@ -178,7 +209,8 @@ class Searcher {
         const Separation sep = separation(f_piece_, g_piece_);
         if (sep.separated) return;
         if (nearly_parallel(f_piece_, g_piece_) &&
-            (!implicit_clip(f_piece_, g_piece_, *in_.op_g2).kept || !implicit_clip(g_piece_, f_piece_, *in_.op_f2).kept)) {
+            (!implicit_clip(f_piece_, g_piece_, *in_.op_g2).kept ||
+             !implicit_clip(g_piece_, f_piece_, *in_.op_f2).kept)) {
           return;
         }
         if (sep.noisy) {
@@ -192,8 +224,10 @@ class Searcher {
             return;
           }
         }
-        if (box.compensated && !td && !sd && box.t.width() <= kFloorWidth && box.s.width() <= kFloorWidth &&
-            coincide_at_precision(*in_.f, *in_.g, box.t, box.s, evaluate_with_tangent(*in_.f, box.t.lo).point)) {
+        if (box.compensated && !td && !sd && box.t.width() <= kFloorWidth &&
+            box.s.width() <= kFloorWidth &&
+            coincide_at_precision(*in_.f, *in_.g, box.t, box.s,
+                                  evaluate_with_tangent(*in_.f, box.t.lo).point)) {
           emit(box, false);
           return;
         }
@@ -232,9 +266,12 @@ class Searcher {
         // Keep what the clip removed (it is sound), then decide how to go on.
         if (next.width() < domain.width()) {
           domain = next;
-          if (box.compensated) f_ok_ = g_ok_ = false;
-          else if (clip_s) g_ok_ = false;
-          else f_ok_ = false;
+          if (box.compensated)
+            f_ok_ = g_ok_ = false;
+          else if (clip_s)
+            g_ok_ = false;
+          else
+            f_ok_ = false;
         }
         if (!tried_alternative && is_point_like(other)) {
           // A point-like piece defines no line: try the other direction through it.
@@ -242,8 +279,10 @@ class Searcher {
           box.along = !box.along;
           continue;
         }
-        if (box.compensated && !td && !sd && box.t.width() <= kFloorWidth && box.s.width() <= kFloorWidth &&
-            coincide_at_precision(*in_.f, *in_.g, box.t, box.s, evaluate_with_tangent(*in_.f, box.t.lo).point)) {
+        if (box.compensated && !td && !sd && box.t.width() <= kFloorWidth &&
+            box.s.width() <= kFloorWidth &&
+            coincide_at_precision(*in_.f, *in_.g, box.t, box.s,
+                                  evaluate_with_tangent(*in_.f, box.t.lo).point)) {
           emit(box, false);  // the curves agree to within rounding here: a high-order contact
           return;
         }
@@ -283,9 +322,12 @@ class Searcher {
       }
       tried_alternative = tried_other = false;
       domain = next;
-      if (box.compensated) f_ok_ = g_ok_ = false;
-      else if (clip_s) g_ok_ = false;
-      else f_ok_ = false;
+      if (box.compensated)
+        f_ok_ = g_ok_ = false;
+      else if (clip_s)
+        g_ok_ = false;
+      else
+        f_ok_ = false;
       box.clip_s = !clip_s;
       ++box.depth;
     }
@@ -293,7 +335,7 @@ class Searcher {
 
   const SearchInput& in_;
   SearchOutput out_;
-  std::vector<Box> stack_;
+  BoxStack stack_;
   Piece f_piece_, g_piece_;
   bool f_ok_ = false, g_ok_ = false;
 };
@@ -302,7 +344,8 @@ class Searcher {
 
 SearchOutput search(const SearchInput& input) {
   assert(input.f != nullptr && input.g != nullptr);
-  assert(input.method == IntersectMethod::subdivision || (input.op_f != nullptr && input.op_g != nullptr));
+  assert(input.method == IntersectMethod::subdivision ||
+         (input.op_f != nullptr && input.op_g != nullptr));
   return Searcher(input).run();
 }
 

@@ -65,8 +65,10 @@ WorkingCurve to_working(const Curve& curve, WorkingFrame frame) {
     w.y_lo[i] = y.lo * frame.scale;
     w.x_dd[i] = {w.x[i], w.x_lo[i]};
     w.y_dd[i] = {w.y[i], w.y_lo[i]};
-    w.magnitude = bernstein::max2(w.magnitude, bernstein::max2(std::fabs(w.x[i]), std::fabs(w.y[i])));
-    w.frame_error = bernstein::max2(w.frame_error, bernstein::max2(std::fabs(w.x_lo[i]), std::fabs(w.y_lo[i])));
+    w.magnitude =
+        bernstein::max2(w.magnitude, bernstein::max2(std::fabs(w.x[i]), std::fabs(w.y[i])));
+    w.frame_error =
+        bernstein::max2(w.frame_error, bernstein::max2(std::fabs(w.x_lo[i]), std::fabs(w.y_lo[i])));
   }
   w.is_point = true;
   for (std::size_t i = 1; i < w.x.size(); ++i) {

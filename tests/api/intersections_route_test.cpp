@@ -18,12 +18,15 @@ namespace {
 
 using nlohmann::json;
 
-Reply post(const std::string& body, const Limits& limits = Limits{}) { return handle("/intersections", body, limits); }
+Reply post(const std::string& body, const Limits& limits = Limits{}) {
+  return handle("/intersections", body, limits);
+}
 
 json call(const std::string& body, int expected_status, const Limits& limits = Limits{}) {
   const Reply reply = post(body, limits);
   EXPECT_EQ(reply.status, expected_status) << reply.body;
-  EXPECT_EQ(reply.content_type, expected_status == 200 ? "application/json" : "application/problem+json");
+  EXPECT_EQ(reply.content_type,
+            expected_status == 200 ? "application/json" : "application/problem+json");
   return json::parse(reply.body);
 }
 
@@ -40,11 +43,13 @@ std::vector<std::string> errors_of(const std::string& body, const Limits& limits
 
 using Pointers = std::vector<std::string>;
 
-constexpr const char* kCrossing = R"({"curves":[{"points":[[0,0],[2,2]]},{"points":[[0,2],[2,0]]}]})";
+constexpr const char* kCrossing =
+    R"({"curves":[{"points":[[0,0],[2,2]]},{"points":[[0,2],[2,0]]}]})";
 
 TEST(IntersectionsRoute, CrossingSegmentsAnswerIsTheKernelsRoundTripped) {
   const json r = call(kCrossing, 200);
-  const core::IntersectionResult k = core::intersect(core::Curve({{0, 0}, {2, 2}}), core::Curve({{0, 2}, {2, 0}}));
+  const core::IntersectionResult k =
+      core::intersect(core::Curve({{0, 0}, {2, 2}}), core::Curve({{0, 2}, {2, 0}}));
   ASSERT_EQ(r["intersections"].size(), 1u);
   const json& x = r["intersections"][0];
   EXPECT_EQ(x["t"].get<double>(), 0.5);
@@ -60,17 +65,19 @@ TEST(IntersectionsRoute, CrossingSegmentsAnswerIsTheKernelsRoundTripped) {
   EXPECT_EQ(r["tolerance"].get<double>(), 1e-12);
   EXPECT_EQ(r["stats"]["method"], "hybrid");
   EXPECT_EQ(r["stats"]["fat_curve_degree"], 3);
-  for (const char* key : {"iterations", "clipping_steps", "subdivisions", "candidate_boxes", "compensated_steps",
-                          "newton_iterations", "max_depth"}) {
+  for (const char* key : {"iterations", "clipping_steps", "subdivisions", "candidate_boxes",
+                          "compensated_steps", "newton_iterations", "max_depth"}) {
     EXPECT_TRUE(r["stats"][key].is_number_integer()) << key;
   }
 }
 
 TEST(IntersectionsRoute, MethodsToleranceAndFatCurveDegreeAreUsed) {
   for (const char* method : {"hybrid", "bezier-clipping", "subdivision"}) {
-    const json r = call(std::string(R"({"curves":[{"points":[[0,0],[1,2],[2,0]]},{"points":[[0,0.75],[2,0.75]]}],)") +
-                            R"("method":")" + method + R"(","tolerance":1e-6,"fat_curve_degree":2})",
-                        200);
+    const json r =
+        call(std::string(
+                 R"({"curves":[{"points":[[0,0],[1,2],[2,0]]},{"points":[[0,0.75],[2,0.75]]}],)") +
+                 R"("method":")" + method + R"(","tolerance":1e-6,"fat_curve_degree":2})",
+             200);
     EXPECT_EQ(r["stats"]["method"], method);
     EXPECT_EQ(r["stats"].contains("fat_curve_degree"), std::string(method) == "hybrid");
     EXPECT_EQ(r["tolerance"].get<double>(), 1e-6);
@@ -85,7 +92,8 @@ TEST(IntersectionsRoute, MethodsToleranceAndFatCurveDegreeAreUsed) {
 }
 
 TEST(IntersectionsRoute, TangencyIsReportedOnce) {
-  const json r = call(R"({"curves":[{"points":[[0,0],[1,2],[2,0]]},{"points":[[0,1],[2,1]]}]})", 200);
+  const json r =
+      call(R"({"curves":[{"points":[[0,0],[1,2],[2,0]]},{"points":[[0,1],[2,1]]}]})", 200);
   ASSERT_EQ(r["intersections"].size(), 1u);
   EXPECT_EQ(r["intersections"][0]["kind"], "tangent");
   EXPECT_EQ(r["intersections"][0]["t"].get<double>(), 0.5);
@@ -98,7 +106,8 @@ TEST(IntersectionsRoute, OverlapsAreIntervalPairs) {
   EXPECT_EQ(r["overlaps"][0]["t_interval"], json::array({0.5, 1.0}));
   EXPECT_EQ(r["overlaps"][0]["s_interval"], json::array({0.0, 0.5}));
   EXPECT_EQ(r["overlaps"][0]["reversed"], false);
-  const json rev = call(R"({"curves":[{"points":[[0,0],[1,2],[2,0]]},{"points":[[2,0],[1,2],[0,0]]}]})", 200);
+  const json rev =
+      call(R"({"curves":[{"points":[[0,0],[1,2],[2,0]]},{"points":[[2,0],[1,2],[0,0]]}]})", 200);
   ASSERT_EQ(rev["overlaps"].size(), 1u);
   EXPECT_EQ(rev["overlaps"][0]["reversed"], true);
   EXPECT_EQ(rev["overlaps"][0]["s_interval"], json::array({0.0, 1.0}));
@@ -127,46 +136,64 @@ TEST(IntersectionsRoute, ValidationErrorsPointAtTheField) {
   EXPECT_EQ(errors_of("{}"), (Pointers{"/curves"}));
   EXPECT_EQ(errors_of(R"({"curves":{}})"), (Pointers{"/curves"}));
   EXPECT_EQ(errors_of(R"({"curves":[]})"), (Pointers{"/curves"}));
-  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]},{"points":[[0,0],[1,1]]},{"points":[[0,0],[1,1]]}]})"),
-            (Pointers{"/curves"}));
+  EXPECT_EQ(
+      errors_of(
+          R"({"curves":[{"points":[[0,0],[1,1]]},{"points":[[0,0],[1,1]]},{"points":[[0,0],[1,1]]}]})"),
+      (Pointers{"/curves"}));
   EXPECT_EQ(errors_of(R"({"curves":[[[0,0],[1,1]]]})"), (Pointers{"/curves/0"}));
-  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]},{}]})"), (Pointers{"/curves/1/points"}));
+  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]},{}]})"),
+            (Pointers{"/curves/1/points"}));
   EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]],"p":1}]})"), (Pointers{"/curves/0/p"}));
   EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]},{"points":[[0,0],[1,1],[2,"x"]]}]})"),
             (Pointers{"/curves/1/points/2/1"}));
   EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0]]}]})"), (Pointers{"/curves/0/points"}));
-  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"tolerance":"small"})"), (Pointers{"/tolerance"}));
-  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"tolerance":1e-15})"), (Pointers{"/tolerance"}));
-  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"tolerance":0})"), (Pointers{"/tolerance"}));
-  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"tolerance":2})"), (Pointers{"/tolerance"}));
-  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"method":"newton"})"), (Pointers{"/method"}));
-  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"fat_curve_degree":4})"), (Pointers{"/fat_curve_degree"}));
-  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"fat_curve_degree":2.5})"), (Pointers{"/fat_curve_degree"}));
+  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"tolerance":"small"})"),
+            (Pointers{"/tolerance"}));
+  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"tolerance":1e-15})"),
+            (Pointers{"/tolerance"}));
+  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"tolerance":0})"),
+            (Pointers{"/tolerance"}));
+  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"tolerance":2})"),
+            (Pointers{"/tolerance"}));
+  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"method":"newton"})"),
+            (Pointers{"/method"}));
+  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"fat_curve_degree":4})"),
+            (Pointers{"/fat_curve_degree"}));
+  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"fat_curve_degree":2.5})"),
+            (Pointers{"/fat_curve_degree"}));
   EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1]]}],"curve":1})"), (Pointers{"/curve"}));
   // All problems at once, in request order of the checks.
-  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0]]}],"tolerance":-1,"method":1,"fat_curve_degree":"3"})"),
-            (Pointers{"/curves/0/points", "/tolerance", "/method", "/fat_curve_degree"}));
+  EXPECT_EQ(
+      errors_of(
+          R"({"curves":[{"points":[[0,0]]}],"tolerance":-1,"method":1,"fat_curve_degree":"3"})"),
+      (Pointers{"/curves/0/points", "/tolerance", "/method", "/fat_curve_degree"}));
   // The smallest tolerance accepted is 2^-46.
-  EXPECT_EQ(call(std::string(R"({"curves":[{"points":[[0,0],[2,2]]},{"points":[[0,2],[2,0]]}],"tolerance":)") +
-                     json(core::kMinTolerance).dump() + "}",
-                 200)["intersections"]
-                .size(),
-            1u);
+  EXPECT_EQ(
+      call(std::string(
+               R"({"curves":[{"points":[[0,0],[2,2]]},{"points":[[0,2],[2,0]]}],"tolerance":)") +
+               json(core::kMinTolerance).dump() + "}",
+           200)["intersections"]
+          .size(),
+      1u);
 }
 
 TEST(IntersectionsRoute, DegreeAboveTheLimitIsRejected) {
   Limits limits;
   limits.max_degree = 3;
-  EXPECT_EQ(errors_of(R"({"curves":[{"points":[[0,0],[1,1],[2,0],[3,1],[4,0]]},{"points":[[0,0],[1,1]]}]})", limits),
-            (Pointers{"/curves/0/points"}));
+  EXPECT_EQ(
+      errors_of(
+          R"({"curves":[{"points":[[0,0],[1,1],[2,0],[3,1],[4,0]]},{"points":[[0,0],[1,1]]}]})",
+          limits),
+      (Pointers{"/curves/0/points"}));
 }
 
 TEST(IntersectionsRoute, WorkCapAnswers422NotAHang) {
   // g(s) = f(4s(1 - s)) runs along f and back (the spec's "retraced" example).
   Limits limits;
   limits.max_work = 5000;
-  const json problem =
-      call(R"({"curves":[{"points":[[0,0],[3,6],[6,0]]},{"points":[[0,0],[6,12],[8,-16],[6,12],[0,0]]}]})", 422, limits);
+  const json problem = call(
+      R"({"curves":[{"points":[[0,0],[3,6],[6,0]]},{"points":[[0,0],[6,12],[8,-16],[6,12],[0,0]]}]})",
+      422, limits);
   EXPECT_EQ(problem["type"], "urn:bezier-service:problem:work-cap");
   EXPECT_EQ(problem["status"], 422);
   EXPECT_NE(problem["detail"].get<std::string>().find("5000"), std::string::npos);
@@ -182,7 +209,9 @@ TEST(IntersectionsRoute, PythonBezierFixturesEndToEnd) {
   int cases = 0;
   for (const auto& c : test::python_bezier::cases()) {
     SCOPED_TRACE("case " + std::to_string(c.id));
-    const json body = {{"curves", {{{"points", points_json(curves.at(c.curve1))}}, {{"points", points_json(curves.at(c.curve2))}}}}};
+    const json body = {{"curves",
+                        {{{"points", points_json(curves.at(c.curve1))}},
+                         {{"points", points_json(curves.at(c.curve2))}}}}};
     const json r = call(body.dump(), 200);
     if (c.type == "no-intersection") {
       EXPECT_TRUE(r["intersections"].empty());
@@ -193,7 +222,8 @@ TEST(IntersectionsRoute, PythonBezierFixturesEndToEnd) {
       for (std::size_t i = 0; i < c.t.size(); ++i) {
         bool found = false;
         for (const json& x : r["intersections"]) {
-          found = found || (std::fabs(x["t"].get<double>() - c.t[i]) < 1e-6 && std::fabs(x["s"].get<double>() - c.s[i]) < 1e-6);
+          found = found || (std::fabs(x["t"].get<double>() - c.t[i]) < 1e-6 &&
+                            std::fabs(x["s"].get<double>() - c.s[i]) < 1e-6);
         }
         EXPECT_TRUE(found) << c.t[i] << " " << c.s[i];
       }

@@ -67,8 +67,8 @@ void run(benchmark::State& state, const std::vector<Pair>& pairs, IntersectMetho
   state.counters["steps_per_pair"] = static_cast<double>(steps) / n;
   state.counters["not_ok"] = static_cast<double>(failed);
   // CPU seconds per pair (printed with an SI prefix: "2.7u" is 2.7 microseconds).
-  state.counters["time_per_pair"] = benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate |
-                                                              benchmark::Counter::kInvert);
+  state.counters["time_per_pair"] = benchmark::Counter(
+      n, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 const std::vector<Pair>& cubic_pairs() {
@@ -76,7 +76,9 @@ const std::vector<Pair>& cubic_pairs() {
   return pairs;
 }
 
-void BM_IntersectCubicPairs_Hybrid(benchmark::State& state) { run(state, cubic_pairs(), IntersectMethod::hybrid); }
+void BM_IntersectCubicPairs_Hybrid(benchmark::State& state) {
+  run(state, cubic_pairs(), IntersectMethod::hybrid);
+}
 void BM_IntersectCubicPairs_BezierClipping(benchmark::State& state) {
   run(state, cubic_pairs(), IntersectMethod::bezier_clipping);
 }
@@ -97,11 +99,15 @@ const std::vector<Pair>& degree10_pairs() {
   return pairs;
 }
 
-void BM_IntersectDegree7_Hybrid(benchmark::State& state) { run(state, degree7_pairs(), IntersectMethod::hybrid); }
+void BM_IntersectDegree7_Hybrid(benchmark::State& state) {
+  run(state, degree7_pairs(), IntersectMethod::hybrid);
+}
 void BM_IntersectDegree7_BezierClipping(benchmark::State& state) {
   run(state, degree7_pairs(), IntersectMethod::bezier_clipping);
 }
-void BM_IntersectDegree10_Hybrid(benchmark::State& state) { run(state, degree10_pairs(), IntersectMethod::hybrid); }
+void BM_IntersectDegree10_Hybrid(benchmark::State& state) {
+  run(state, degree10_pairs(), IntersectMethod::hybrid);
+}
 void BM_IntersectDegree10_BezierClipping(benchmark::State& state) {
   run(state, degree10_pairs(), IntersectMethod::bezier_clipping);
 }

@@ -3,10 +3,10 @@
 // function, the kept intervals contain every parameter where the band can be met, and the
 // local-to-global map rounds outward. Exact checks in rationals at many sample points.
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "core/bernstein_roots.hpp"
 #include "core/binomial.hpp"
@@ -34,7 +34,8 @@ Curve random_curve(test::Mulberry32& rng, int degree) {
 
 /// N · (p - O) exactly.
 Rational exact_distance(const FatLine& line, const test::RPoint2& p) {
-  return Rational(line.normal.x) * (p.x - Rational(line.origin.x)) + Rational(line.normal.y) * (p.y - Rational(line.origin.y));
+  return Rational(line.normal.x) * (p.x - Rational(line.origin.x)) +
+         Rational(line.normal.y) * (p.y - Rational(line.origin.y));
 }
 
 /// Bernstein polynomial value in rationals.
@@ -119,7 +120,8 @@ TEST(ClipComponents, KeptIntervalContainsEveryParameterInTheBand) {
       const Rational v = exact_value(p, Rational(t));
       if (Rational(lo) <= v && v <= Rational(hi)) {
         ASSERT_TRUE(kept.has_value()) << "trial " << trial << " t " << t;
-        EXPECT_TRUE(kept->contains(t)) << "trial " << trial << " t " << t << " kept " << kept->lo << " " << kept->hi;
+        EXPECT_TRUE(kept->contains(t))
+            << "trial " << trial << " t " << t << " kept " << kept->lo << " " << kept->hi;
         ASSERT_TRUE(hulls.has_value());
         EXPECT_TRUE(hulls->contains(t));
       }
@@ -201,8 +203,8 @@ TEST(BernsteinRoots, RootsOfAPolynomialBuiltFromThem) {
   for (int i = 0; i <= n; ++i) {
     Rational sum(0);
     for (int j = 0; j <= i; ++j) {
-      sum += Rational(static_cast<long long>(binomial(i, j))) / Rational(static_cast<long long>(binomial(n, j))) *
-             power[static_cast<std::size_t>(j)];
+      sum += Rational(static_cast<long long>(binomial(i, j))) /
+             Rational(static_cast<long long>(binomial(n, j))) * power[static_cast<std::size_t>(j)];
     }
     b.push_back(sum.to_double());
   }

@@ -1,10 +1,10 @@
 // core/degree.hpp: elevation and L2-best reduction, against exact rational computations
 // of the same definitions (Gram systems solved in rationals).
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "core/binomial.hpp"
 #include "core/degree.hpp"
@@ -16,18 +16,23 @@ namespace {
 
 using test::Rational;
 
-Rational rbinomial(int n, int k) { return Rational(static_cast<long long>(binomial(n, k))); }
+Rational rbinomial(int n, int k) {
+  return Rational(static_cast<long long>(binomial(n, k)));
+}
 
 /// The L2 reduction matrix in exact rationals: G_k R = M, Gaussian elimination without
 /// pivoting (G_k is positive definite).
 std::vector<std::vector<Rational>> exact_reduction(int n, int k) {
-  std::vector<std::vector<Rational>> a(static_cast<std::size_t>(k + 1)), b(static_cast<std::size_t>(k + 1));
+  std::vector<std::vector<Rational>> a(static_cast<std::size_t>(k + 1)),
+      b(static_cast<std::size_t>(k + 1));
   for (int i = 0; i <= k; ++i) {
     for (int j = 0; j <= k; ++j) {
-      a[i].push_back(rbinomial(k, i) * rbinomial(k, j) / (Rational(2 * k + 1) * rbinomial(2 * k, i + j)));
+      a[i].push_back(rbinomial(k, i) * rbinomial(k, j) /
+                     (Rational(2 * k + 1) * rbinomial(2 * k, i + j)));
     }
     for (int j = 0; j <= n; ++j) {
-      b[i].push_back(rbinomial(k, i) * rbinomial(n, j) / (Rational(k + n + 1) * rbinomial(k + n, i + j)));
+      b[i].push_back(rbinomial(k, i) * rbinomial(n, j) /
+                     (Rational(k + n + 1) * rbinomial(k + n, i + j)));
     }
   }
   for (int c = 0; c <= k; ++c) {
@@ -37,7 +42,9 @@ std::vector<std::vector<Rational>> exact_reduction(int n, int k) {
       for (int j = 0; j <= n; ++j) b[r][j] -= factor * b[c][j];
     }
   }
-  std::vector<std::vector<Rational>> x(static_cast<std::size_t>(k + 1), std::vector<Rational>(static_cast<std::size_t>(n + 1), Rational(0)));
+  std::vector<std::vector<Rational>> x(
+      static_cast<std::size_t>(k + 1),
+      std::vector<Rational>(static_cast<std::size_t>(n + 1), Rational(0)));
   for (int r = k; r >= 0; --r) {
     for (int j = 0; j <= n; ++j) {
       Rational sum = b[r][j];
@@ -73,7 +80,8 @@ TEST(DegreeReduction, TablesAgreeWithTheMatrices) {
       const double* table = l2_reduction_table(n, k);
       ASSERT_NE(table, nullptr);
       const BernsteinMatrix m = l2_reduction_matrix(n, k);
-      for (int i = 0; i < m.rows * m.cols; ++i) EXPECT_EQ(table[i], m.entries[static_cast<std::size_t>(i)]);
+      for (int i = 0; i < m.rows * m.cols; ++i)
+        EXPECT_EQ(table[i], m.entries[static_cast<std::size_t>(i)]);
     }
   }
   EXPECT_EQ(l2_reduction_table(21, 2), nullptr);
@@ -82,7 +90,8 @@ TEST(DegreeReduction, TablesAgreeWithTheMatrices) {
     for (int to = from; to <= 20; ++to) {
       const BernsteinMatrix m = elevation_matrix(from, to);
       const double* table = elevation_table(from, to);
-      for (int i = 0; i < m.rows * m.cols; ++i) EXPECT_EQ(table[i], m.entries[static_cast<std::size_t>(i)]);
+      for (int i = 0; i < m.rows * m.cols; ++i)
+        EXPECT_EQ(table[i], m.entries[static_cast<std::size_t>(i)]);
     }
   }
 }
@@ -95,7 +104,8 @@ TEST(DegreeReduction, ReductionOfAnElevatedPolynomialGivesItBack) {
     for (double& v : p) v = rng.uniform(-1, 1);
     const std::vector<double> up = elevate_degree(std::span<const double>(p), 9);
     const std::vector<double> back = reduce_degree(std::span<const double>(up), 2);
-    for (int i = 0; i < 3; ++i) EXPECT_NEAR(back[static_cast<std::size_t>(i)], p[static_cast<std::size_t>(i)], 1e-14);
+    for (int i = 0; i < 3; ++i)
+      EXPECT_NEAR(back[static_cast<std::size_t>(i)], p[static_cast<std::size_t>(i)], 1e-14);
   }
 }
 

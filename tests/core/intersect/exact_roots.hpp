@@ -49,8 +49,8 @@ struct ExactRoot {
   Rational s;
 };
 
-inline std::optional<ExactRoot> exact_newton(const core::Curve& f, const core::Curve& g, double t0, double s0,
-                                             int steps = 3) {
+inline std::optional<ExactRoot> exact_newton(const core::Curve& f, const core::Curve& g, double t0,
+                                             double s0, int steps = 3) {
   Rational t(t0), s(s0);
   for (int i = 0; i < steps; ++i) {
     const ExactPointAndTangent a = exact_point_and_tangent(f, t), b = exact_point_and_tangent(g, s);
@@ -68,7 +68,9 @@ inline std::optional<ExactRoot> exact_newton(const core::Curve& f, const core::C
 }
 
 /// lo <= x <= hi exactly.
-inline bool contains(core::ParamInterval iv, const Rational& x) { return Rational(iv.lo) <= x && x <= Rational(iv.hi); }
+inline bool contains(core::ParamInterval iv, const Rational& x) {
+  return Rational(iv.lo) <= x && x <= Rational(iv.hi);
+}
 
 /// max(|f(t) - g(s)|) over the coordinates, exactly, as a double (rounded).
 inline double exact_gap(const core::Curve& f, const core::Curve& g, double t, double s) {

@@ -2,14 +2,14 @@
 // with an independent expectation: exact roots built into the input (dyadic parameters) or
 // exact rational arithmetic. Part 2 is intersect_overlap_cases_test.cpp.
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
-#include "core/curve.hpp"
 #include "core/binomial.hpp"
+#include "core/curve.hpp"
 #include "core/degree.hpp"
 #include "core/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
@@ -25,17 +25,24 @@ using test::Rational;
 const IntersectMethod kMethods[] = {IntersectMethod::hybrid, IntersectMethod::bezier_clipping,
                                     IntersectMethod::subdivision};
 
-IntersectionResult run(const Curve& f, const Curve& g, IntersectMethod method = IntersectMethod::hybrid) {
+IntersectionResult run(const Curve& f, const Curve& g,
+                       IntersectMethod method = IntersectMethod::hybrid) {
   IntersectOptions options;
   options.method = method;
   return intersect(f, g, options);
 }
 
-std::string name(IntersectMethod m) { return std::string(to_string(m)); }
+std::string name(IntersectMethod m) {
+  return std::string(to_string(m));
+}
 
 /// f(t) = (t, (t - 1/2)^2) and the horizontal line y = h from x = 0 to x = 1.
-Curve parabola() { return Curve({{0.0, 0.25}, {0.5, -0.25}, {1.0, 0.25}}); }
-Curve horizontal(double h) { return Curve({{0.0, h}, {1.0, h}}); }
+Curve parabola() {
+  return Curve({{0.0, 0.25}, {0.5, -0.25}, {1.0, 0.25}});
+}
+Curve horizontal(double h) {
+  return Curve({{0.0, h}, {1.0, h}});
+}
 
 // --- Tangencies ----------------------------------------------------------------------
 

@@ -3,14 +3,14 @@
 // arithmetic or a construction whose answer is known (portions, reversals, degree
 // elevation, an independent sign count). Part 1 is intersect_hard_cases_test.cpp.
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
-#include "core/curve.hpp"
 #include "core/binomial.hpp"
+#include "core/curve.hpp"
 #include "core/degree.hpp"
 #include "core/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
@@ -26,23 +26,32 @@ using test::Rational;
 const IntersectMethod kMethods[] = {IntersectMethod::hybrid, IntersectMethod::bezier_clipping,
                                     IntersectMethod::subdivision};
 
-IntersectionResult run(const Curve& f, const Curve& g, IntersectMethod method = IntersectMethod::hybrid) {
+IntersectionResult run(const Curve& f, const Curve& g,
+                       IntersectMethod method = IntersectMethod::hybrid) {
   IntersectOptions options;
   options.method = method;
   return intersect(f, g, options);
 }
 
-std::string name(IntersectMethod m) { return std::string(to_string(m)); }
+std::string name(IntersectMethod m) {
+  return std::string(to_string(m));
+}
 
 /// f(t) = (t, (t - 1/2)^2) and the horizontal line y = h from x = 0 to x = 1.
-Curve parabola() { return Curve({{0.0, 0.25}, {0.5, -0.25}, {1.0, 0.25}}); }
-Curve horizontal(double h) { return Curve({{0.0, h}, {1.0, h}}); }
+Curve parabola() {
+  return Curve({{0.0, 0.25}, {0.5, -0.25}, {1.0, 0.25}});
+}
+Curve horizontal(double h) {
+  return Curve({{0.0, h}, {1.0, h}});
+}
 
 // --- Overlaps ------------------------------------------------------------------------
 
 /// A cubic with dyadic control points: its portions at dyadic parameters and its degree
 /// elevations are exact in doubles (checked below in rationals).
-Curve dyadic_cubic() { return Curve({{0.0, 0.0}, {0.25, 1.0}, {0.75, -0.5}, {1.0, 0.5}}); }
+Curve dyadic_cubic() {
+  return Curve({{0.0, 0.0}, {0.25, 1.0}, {0.75, -0.5}, {1.0, 0.5}});
+}
 
 Curve exact_portion(const Curve& c, double a, double b) {
   std::vector<Point2> pts;
@@ -58,7 +67,8 @@ Curve exact_portion(const Curve& c, double a, double b) {
   return Curve(std::move(pts));
 }
 
-void expect_single_overlap(const IntersectionResult& r, ParamInterval t, ParamInterval s, bool reversed) {
+void expect_single_overlap(const IntersectionResult& r, ParamInterval t, ParamInterval s,
+                           bool reversed) {
   ASSERT_EQ(r.status, IntersectStatus::ok);
   EXPECT_TRUE(r.intersections.empty());
   ASSERT_EQ(r.overlaps.size(), 1u);
@@ -208,7 +218,8 @@ std::vector<double> chebyshev10() {
   for (int k = 0; k <= 10; ++k) {
     // (2u - 1)^k = Σ_j C(k, j) 2^j u^j (-1)^(k-j)
     for (int j = 0; j <= k; ++j) {
-      Rational term = Rational(c[k]) * Rational(static_cast<long long>(binomial(k, j))) * Rational(1LL << j);
+      Rational term =
+          Rational(c[k]) * Rational(static_cast<long long>(binomial(k, j))) * Rational(1LL << j);
       if ((k - j) % 2 == 1) term = -term;
       power[static_cast<std::size_t>(j)] += term;
     }
@@ -217,8 +228,8 @@ std::vector<double> chebyshev10() {
   for (int i = 0; i <= 10; ++i) {  // b_i = Σ_{j<=i} C(i, j) / C(10, j) a_j
     Rational sum(0);
     for (int j = 0; j <= i; ++j) {
-      sum += Rational(static_cast<long long>(binomial(i, j))) / Rational(static_cast<long long>(binomial(10, j))) *
-             power[static_cast<std::size_t>(j)];
+      sum += Rational(static_cast<long long>(binomial(i, j))) /
+             Rational(static_cast<long long>(binomial(10, j))) * power[static_cast<std::size_t>(j)];
     }
     b.push_back(sum.to_double());
   }
@@ -280,8 +291,9 @@ TEST(IntersectHardCases, TranslationAndPowerOfTwoScalingGiveTheSameBits) {
   const Curve g({{0.0, 0.5}, {0.5, -0.75}, {0.625, 1.25}, {1.0, 0.0}});
   const IntersectionResult base = run(f, g);
   ASSERT_GE(base.intersections.size(), 2u);
-  for (const auto& [scale, shift] : {std::pair{1.0, Point2{1e7, -1e7}}, std::pair{0x1p27, Point2{0, 0}},
-                                     std::pair{0x1p-27, Point2{0, 0}}, std::pair{0x1p-27, Point2{3 * 0x1p-30, -0x1p-29}}}) {
+  for (const auto& [scale, shift] :
+       {std::pair{1.0, Point2{1e7, -1e7}}, std::pair{0x1p27, Point2{0, 0}},
+        std::pair{0x1p-27, Point2{0, 0}}, std::pair{0x1p-27, Point2{3 * 0x1p-30, -0x1p-29}}}) {
     SCOPED_TRACE(std::to_string(scale) + " " + std::to_string(shift.x));
     const IntersectionResult r = run(transformed(f, scale, shift), transformed(g, scale, shift));
     ASSERT_EQ(r.intersections.size(), base.intersections.size());
@@ -302,12 +314,14 @@ TEST(IntersectHardCases, DecimalScalingsGiveTheSameParametersUpToRounding) {
   for (const double scale : {1e-8, 1e8}) {
     for (const IntersectMethod m : kMethods) {
       SCOPED_TRACE(std::to_string(scale) + " " + name(m));
-      const IntersectionResult r = run(transformed(f, scale, {0, 0}), transformed(g, scale, {0, 0}), m);
+      const IntersectionResult r =
+          run(transformed(f, scale, {0, 0}), transformed(g, scale, {0, 0}), m);
       ASSERT_EQ(r.intersections.size(), base.intersections.size());
       for (std::size_t i = 0; i < r.intersections.size(); ++i) {
         EXPECT_NEAR(r.intersections[i].t, base.intersections[i].t, 1e-14);
         EXPECT_NEAR(r.intersections[i].s, base.intersections[i].s, 1e-14);
-        EXPECT_NEAR(r.intersections[i].point.x, base.intersections[i].point.x * scale, 1e-14 * scale);
+        EXPECT_NEAR(r.intersections[i].point.x, base.intersections[i].point.x * scale,
+                    1e-14 * scale);
       }
     }
   }
@@ -344,7 +358,8 @@ TEST(IntersectHardCases, ImproperReparametrisationHitsTheWorkCapNotAHang) {
   (void)f;
   IntersectOptions options;
   options.max_work = 3000;
-  const IntersectionResult r = intersect(Curve({{0.0, 0.0}, {0.5, 1.0}, {1.0, 0.0}}), Curve(pts), options);
+  const IntersectionResult r =
+      intersect(Curve({{0.0, 0.0}, {0.5, 1.0}, {1.0, 0.0}}), Curve(pts), options);
   EXPECT_EQ(r.status, IntersectStatus::work_cap_reached);
   EXPECT_LE(r.stats.iterations, options.max_work);
 }
@@ -352,7 +367,8 @@ TEST(IntersectHardCases, ImproperReparametrisationHitsTheWorkCapNotAHang) {
 TEST(IntersectHardCases, ToleranceBelowDoublePrecisionIsRefused) {
   IntersectOptions options;
   options.tolerance = 1e-15;
-  EXPECT_EQ(intersect(parabola(), horizontal(0.0), options).status, IntersectStatus::tolerance_too_small);
+  EXPECT_EQ(intersect(parabola(), horizontal(0.0), options).status,
+            IntersectStatus::tolerance_too_small);
   options.tolerance = kMinTolerance;
   const IntersectionResult r = intersect(Curve({{0, 0}, {1, 1}}), Curve({{0, 1}, {1, 0}}), options);
   EXPECT_EQ(r.status, IntersectStatus::ok);

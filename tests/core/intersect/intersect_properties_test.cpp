@@ -8,11 +8,11 @@
 // how results of different computations are matched here (the estimates can differ by the
 // root's conditioning times the rounding, which is unbounded near tangencies).
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "core/intersect/intersect.hpp"
 #include "tests/core/intersect/exact_roots.hpp"
@@ -31,9 +31,13 @@ Curve random_curve(test::Mulberry32& rng, int degree) {
   return Curve(std::move(pts));
 }
 
-bool overlapping(ParamInterval a, ParamInterval b) { return a.lo <= b.hi && b.lo <= a.hi; }
+bool overlapping(ParamInterval a, ParamInterval b) {
+  return a.lo <= b.hi && b.lo <= a.hi;
+}
 
-ParamInterval flipped(ParamInterval iv) { return {1.0 - iv.hi, 1.0 - iv.lo}; }
+ParamInterval flipped(ParamInterval iv) {
+  return {1.0 - iv.hi, 1.0 - iv.lo};
+}
 
 /// Every intersection of `a` has one in `b` whose intervals overlap (after mapping a's
 /// intervals by `map`), and the counts are equal.
@@ -80,7 +84,9 @@ TEST(IntersectProperties, SwappingTheCurvesSwapsTAndS) {
     SCOPED_TRACE(p.name);
     const IntersectionResult a = intersect(p.f, p.g), b = intersect(p.g, p.f);
     ASSERT_EQ(a.status, IntersectStatus::ok);
-    expect_same_roots(a, b, [](const Intersection& x) { return std::pair{x.s_interval, x.t_interval}; });
+    expect_same_roots(a, b, [](const Intersection& x) {
+      return std::pair{x.s_interval, x.t_interval};
+    });
   }
 }
 
@@ -88,9 +94,13 @@ TEST(IntersectProperties, ReversingACurveMapsTToOneMinusT) {
   for (const Pair& p : pairs()) {
     SCOPED_TRACE(p.name);
     const IntersectionResult a = intersect(p.f, p.g), b = intersect(reversed(p.f), p.g);
-    expect_same_roots(a, b, [](const Intersection& x) { return std::pair{flipped(x.t_interval), x.s_interval}; });
+    expect_same_roots(a, b, [](const Intersection& x) {
+      return std::pair{flipped(x.t_interval), x.s_interval};
+    });
     const IntersectionResult c = intersect(p.f, reversed(p.g));
-    expect_same_roots(a, c, [](const Intersection& x) { return std::pair{x.t_interval, flipped(x.s_interval)}; });
+    expect_same_roots(a, c, [](const Intersection& x) {
+      return std::pair{x.t_interval, flipped(x.s_interval)};
+    });
   }
 }
 
@@ -99,13 +109,16 @@ TEST(IntersectProperties, AnAffineMapOfBothCurvesKeepsTheParameters) {
   // have exactly the same roots.
   const auto map = [](const Curve& c) {
     std::vector<Point2> pts;
-    for (const Point2 q : c.points()) pts.push_back({(3 * q.x - 2 * q.y + 5) / 4, (q.x + 4 * q.y - 1) / 4});
+    for (const Point2 q : c.points())
+      pts.push_back({(3 * q.x - 2 * q.y + 5) / 4, (q.x + 4 * q.y - 1) / 4});
     return Curve(std::move(pts));
   };
   for (const Pair& p : pairs()) {
     SCOPED_TRACE(p.name);
     const IntersectionResult a = intersect(p.f, p.g), b = intersect(map(p.f), map(p.g));
-    expect_same_roots(a, b, [](const Intersection& x) { return std::pair{x.t_interval, x.s_interval}; });
+    expect_same_roots(a, b, [](const Intersection& x) {
+      return std::pair{x.t_interval, x.s_interval};
+    });
   }
 }
 
@@ -150,10 +163,13 @@ TEST(IntersectProperties, IntervalsContainTheExactRoot) {
       if (x.kind != IntersectionKind::transversal) continue;
       const auto root = test::exact_newton(p.f, p.g, x.t, x.s);
       ASSERT_TRUE(root.has_value());
-      EXPECT_TRUE(test::contains(x.t_interval, root->t)) << x.t_interval.lo << " " << x.t_interval.hi;
-      EXPECT_TRUE(test::contains(x.s_interval, root->s)) << x.s_interval.lo << " " << x.s_interval.hi;
+      EXPECT_TRUE(test::contains(x.t_interval, root->t))
+          << x.t_interval.lo << " " << x.t_interval.hi;
+      EXPECT_TRUE(test::contains(x.s_interval, root->s))
+          << x.s_interval.lo << " " << x.s_interval.hi;
       // The estimate is the root correctly rounded, or next to it.
-      EXPECT_LE(std::fabs(x.t - root->t.to_double()), 2 * std::nextafter(x.t, 2.0) - 2 * x.t + 1e-300);
+      EXPECT_LE(std::fabs(x.t - root->t.to_double()),
+                2 * std::nextafter(x.t, 2.0) - 2 * x.t + 1e-300);
       EXPECT_LT(x.t_interval.width(), 1e-12);
       ++checked;
     }

@@ -8,18 +8,19 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "core/curve.hpp"
 #include "tests/support/exact.hpp"
 
 namespace bezier::test::python_bezier {
 
-inline std::string fixture_dir() { return std::string(BEZIER_SOURCE_DIR) + "/tests/fixtures/python-bezier/"; }
+inline std::string fixture_dir() {
+  return std::string(BEZIER_SOURCE_DIR) + "/tests/fixtures/python-bezier/";
+}
 
 inline nlohmann::json read_json(const std::string& name) {
   std::ifstream in(fixture_dir() + name);
@@ -45,7 +46,8 @@ inline std::map<std::string, core::Curve> curves() {
   for (const auto& [id, value] : all.items()) {
     const auto& cp = value.at("control_points");
     std::vector<core::Point2> pts;
-    for (std::size_t i = 0; i < cp[0].size(); ++i) pts.push_back({number(cp[0][i]), number(cp[1][i])});
+    for (std::size_t i = 0; i < cp[0].size(); ++i)
+      pts.push_back({number(cp[0][i]), number(cp[1][i])});
     out.emplace(id, core::Curve(std::move(pts)));
   }
   return out;
@@ -54,7 +56,7 @@ inline std::map<std::string, core::Curve> curves() {
 struct Case {
   int id = 0;
   std::string curve1, curve2, type, note;
-  std::vector<double> t, s;        ///< curve1_params, curve2_params (same order)
+  std::vector<double> t, s;          ///< curve1_params, curve2_params (same order)
   std::vector<core::Point2> points;  ///< the intersection points
 };
 
@@ -71,7 +73,8 @@ inline std::vector<Case> cases() {
     for (const auto& v : c.at("curve1_params")) k.t.push_back(number(v));
     for (const auto& v : c.at("curve2_params")) k.s.push_back(number(v));
     const auto& pts = c.at("intersections");
-    for (std::size_t i = 0; i < pts[0].size(); ++i) k.points.push_back({number(pts[0][i]), number(pts[1][i])});
+    for (std::size_t i = 0; i < pts[0].size(); ++i)
+      k.points.push_back({number(pts[0][i]), number(pts[1][i])});
     out.push_back(std::move(k));
   }
   return out;

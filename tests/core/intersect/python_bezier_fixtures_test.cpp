@@ -2,14 +2,15 @@
 // tests/functional/, Apache License 2.0; copied to tests/fixtures/python-bezier/ with its
 // README), run through all three methods.
 
-#include <cmath>
-#include <string>
+#include "tests/core/intersect/python_bezier_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include "core/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
-#include "tests/core/intersect/python_bezier_fixtures.hpp"
 
 namespace bezier::core {
 namespace {
@@ -24,7 +25,9 @@ bool holds(ParamInterval iv, double x) {
 
 /// Contacts where the curves share tangent and curvature (the fixtures' notes say so):
 /// rounding keeps their intervals wider than the tolerance (Intersection::resolved).
-bool same_curvature(const pb::Case& c) { return c.note.find("same curvature") != std::string::npos; }
+bool same_curvature(const pb::Case& c) {
+  return c.note.find("same curvature") != std::string::npos;
+}
 
 class PythonBezierFixtures : public ::testing::TestWithParam<IntersectMethod> {
  protected:
@@ -48,7 +51,9 @@ class PythonBezierFixtures : public ::testing::TestWithParam<IntersectMethod> {
 std::map<std::string, Curve>* PythonBezierFixtures::curves_ = nullptr;
 std::vector<pb::Case>* PythonBezierFixtures::cases_ = nullptr;
 
-TEST_P(PythonBezierFixtures, AllFiftyThreeCasesAreRead) { EXPECT_EQ(cases_->size(), 53u); }
+TEST_P(PythonBezierFixtures, AllFiftyThreeCasesAreRead) {
+  EXPECT_EQ(cases_->size(), 53u);
+}
 
 TEST_P(PythonBezierFixtures, StandardAndTangentCasesAtTheirStatedParameters) {
   for (const pb::Case& c : *cases_) {
@@ -122,12 +127,11 @@ TEST_P(PythonBezierFixtures, CoincidentCasesAreOverlapsNotPoints) {
     // The listed pairs bound a shared piece when the curves agree between them; otherwise
     // (cases 33-35: the shared piece of the parent curve lies outside [0,1]^2) they are
     // single points.
-    const bool range = c.t.size() == 2 &&
-                       [&] {
-                         const Point2 a = evaluate(f, (c.t[0] + c.t[1]) / 2);
-                         const Point2 b = evaluate(g, (c.s[0] + c.s[1]) / 2);
-                         return std::fabs(a.x - b.x) + std::fabs(a.y - b.y) < 1e-12;
-                       }();
+    const bool range = c.t.size() == 2 && [&] {
+      const Point2 a = evaluate(f, (c.t[0] + c.t[1]) / 2);
+      const Point2 b = evaluate(g, (c.s[0] + c.s[1]) / 2);
+      return std::fabs(a.x - b.x) + std::fabs(a.y - b.y) < 1e-12;
+    }();
     if (range) {
       ASSERT_EQ(r.overlaps.size(), 1u);
       EXPECT_TRUE(r.intersections.empty());
@@ -149,7 +153,8 @@ TEST_P(PythonBezierFixtures, CoincidentCasesAreOverlapsNotPoints) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, PythonBezierFixtures,
-                         ::testing::Values(IntersectMethod::hybrid, IntersectMethod::bezier_clipping,
+                         ::testing::Values(IntersectMethod::hybrid,
+                                           IntersectMethod::bezier_clipping,
                                            IntersectMethod::subdivision),
                          [](const auto& param_info) {
                            std::string name(to_string(param_info.param));
