@@ -1,0 +1,55 @@
+// The costliest requests at the default limits (issue 6, item 1), timed through
+// api::handle: JSON parsing, validation, the kernel and the JSON answer, no sockets. The
+// requests and the curves they use are described in worst_case_inputs.hpp.
+//
+//   ninja -C build bezier_bench
+//   build/tests/bezier_bench --benchmark_filter=WorstCase --benchmark_min_time=0.2
+//
+// Counters: status (200, or 422 when a work cap answered), reply_bytes. The target is
+// < 100 ms per request on this machine. Cases that hit the intersection work cap take
+// seconds each: filter them out (e.g. --benchmark_filter='WorstCase/(evaluate|polar|self|loop)')
+// for a quick run. BEZIER_BENCH_MAX_WORK=<steps> replaces Limits::max_work, to measure what
+// another default would cost and which requests it would turn into 422s.
+
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "api/handler.hpp"
+#include "tests/bench/worst_case_inputs.hpp"
+
+namespace {
+
+bezier::api::Limits bench_limits() {
+  bezier::api::Limits limits;
+  if (const char* v = std::getenv("BEZIER_BENCH_MAX_WORK")) limits.max_work = std::strtoll(v, nullptr, 10);
+  return limits;
+}
+
+void run(benchmark::State& state, const bezier::test::worst_case::Request& request) {
+  const bezier::api::Limits limits = bench_limits();
+  int status = 0;
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    const bezier::api::Reply reply = bezier::api::handle(request.path, request.body, limits);
+    status = reply.status;
+    bytes = reply.body.size();
+    benchmark::DoNotOptimize(reply.body.data());
+  }
+  state.counters["status"] = status;
+  state.counters["reply_bytes"] = static_cast<double>(bytes);
+  state.counters["max_work"] = static_cast<double>(limits.max_work);
+}
+
+// Registered at start-up, one benchmark per request.
+const bool registered = [] {
+  for (const auto& request : bezier::test::worst_case::requests()) {
+    benchmark::RegisterBenchmark(("BM_WorstCase/" + request.name).c_str(),
+                                 [request](benchmark::State& state) { run(state, request); })
+        ->Unit(benchmark::kMillisecond);
+  }
+  return true;
+}();
+
+}  // namespace

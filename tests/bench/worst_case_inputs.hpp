@@ -1,0 +1,256 @@
+#pragma once
+
+// The costliest requests we know at the default limits (issue 6, item 1: max_degree 20,
+// max_t_values 10000, max_work 200000): request bodies for api::handle, built from
+// closed forms and seeded random curves, timed by tests/bench/worst_case_bench.cpp.
+//
+// The curves:
+//   * random(seed, n): control points uniform in [0,1]^2 from mulberry32 (DESIGN §5);
+//   * chebyshev(n): T_n(2t - 1), whose Bernstein coefficients are
+//     (-1)^(n-k) C(2n, 2k) / C(n, k) (Farouki & Rajan 1988 give the conversion; checked
+//     against T_2: 1, -3, 1); it oscillates n times between -1 and 1 on [0, 1] with
+//     coefficients up to C(40, 20) / C(20, 10) ~ 7.5e5 at n = 20: heavily cancelling;
+//   * (1 - 2t)^n: Bernstein coefficients (-1)^k, one root of multiplicity n at t = 1/2;
+//   * A∘φ: a curve composed with a polynomial reparametrisation φ in Bernstein form,
+//     computed exactly in rationals (product rule for Bernstein polynomials,
+//     r_k = Σ_{i+j=k} C(m,i) C(n,j) / C(m+n,k) p_i q_j) and rounded once per coordinate:
+//     the same point set as A traced at another speed (non-linear when φ is), or, when φ is
+//     not monotone, a curve that retraces itself.
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/curve.hpp"
+#include "core/degree.hpp"
+#include "core/polar.hpp"
+#include "tests/support/exact.hpp"
+#include "tests/support/mulberry32.hpp"
+
+namespace bezier::test::worst_case {
+
+using core::Curve;
+using core::Point2;
+
+/// One request: where it goes and its body.
+struct Request {
+  std::string name;
+  std::string path;
+  std::string body;
+};
+
+inline long long binomial_ll(int n, int k) {
+  long long c = 1;
+  for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;  // exact at every step
+  return c;
+}
+
+inline Curve random_curve(std::uint32_t seed, int degree) {
+  Mulberry32 rng(seed);
+  std::vector<Point2> pts(static_cast<std::size_t>(degree) + 1);
+  for (Point2& p : pts) p = {rng.next(), rng.next()};
+  return Curve(std::move(pts));
+}
+
+/// Bernstein coefficients of T_n(2t - 1), rounded once each.
+inline std::vector<double> chebyshev(int n) {
+  std::vector<double> c;
+  for (int k = 0; k <= n; ++k) {
+    const Rational v = Rational(binomial_ll(2 * n, 2 * k)) / Rational(binomial_ll(n, k));
+    c.push_back(((n - k) % 2 == 0 ? v : -v).to_double());
+  }
+  return c;
+}
+
+/// Bernstein coefficients of t on [0, 1] at degree n: k / n.
+inline std::vector<double> identity(int n) {
+  std::vector<double> c;
+  for (int k = 0; k <= n; ++k) c.push_back(static_cast<double>(k) / n);
+  return c;
+}
+
+inline Curve from_coordinates(const std::vector<double>& x, const std::vector<double>& y) {
+  std::vector<Point2> pts;
+  for (std::size_t i = 0; i < x.size(); ++i) pts.push_back({x[i], y[i]});
+  return Curve(std::move(pts));
+}
+
+/// The product of two Bernstein polynomials, exactly.
+inline std::vector<Rational> bernstein_product(const std::vector<Rational>& p, const std::vector<Rational>& q) {
+  const int m = static_cast<int>(p.size()) - 1, n = static_cast<int>(q.size()) - 1;
+  std::vector<Rational> r(static_cast<std::size_t>(m + n) + 1, Rational(0));
+  for (int i = 0; i <= m; ++i) {
+    for (int j = 0; j <= n; ++j) {
+      r[static_cast<std::size_t>(i + j)] += Rational(binomial_ll(m, i) * binomial_ll(n, j)) /
+                                            Rational(binomial_ll(m + n, i + j)) * p[static_cast<std::size_t>(i)] *
+                                            q[static_cast<std::size_t>(j)];
+    }
+  }
+  return r;
+}
+
+/// A∘φ for φ given by its Bernstein coefficients (degree d): a curve of degree n d, its
+/// control points rounded once from the exact composition.
+inline Curve compose(const Curve& a, const std::vector<double>& phi) {
+  const int n = a.degree();
+  std::vector<Rational> u, one_minus_u;
+  for (const double c : phi) {
+    u.emplace_back(c);
+    one_minus_u.push_back(Rational(1) - Rational(c));
+  }
+  // powers[i] = u^i, co_powers[i] = (1 - u)^i, as Bernstein coefficient vectors.
+  std::vector<std::vector<Rational>> powers{{Rational(1)}}, co_powers{{Rational(1)}};
+  for (int i = 1; i <= n; ++i) {
+    powers.push_back(bernstein_product(powers.back(), u));
+    co_powers.push_back(bernstein_product(co_powers.back(), one_minus_u));
+  }
+  const std::size_t size = static_cast<std::size_t>(n) * (phi.size() - 1) + 1;
+  std::vector<Rational> x(size, Rational(0)), y(size, Rational(0));
+  for (int i = 0; i <= n; ++i) {
+    const std::vector<Rational> basis = bernstein_product(powers[static_cast<std::size_t>(i)],
+                                                          co_powers[static_cast<std::size_t>(n - i)]);
+    const Rational c(binomial_ll(n, i));
+    for (std::size_t k = 0; k < size; ++k) {
+      x[k] += c * Rational(a[i].x) * basis[k];
+      y[k] += c * Rational(a[i].y) * basis[k];
+    }
+  }
+  std::vector<Point2> pts;
+  for (std::size_t k = 0; k < size; ++k) pts.push_back({x[k].to_double(), y[k].to_double()});
+  return Curve(std::move(pts));
+}
+
+/// The curve moved by (dx, dy).
+inline Curve translated(const Curve& c, double dx, double dy) {
+  std::vector<Point2> pts;
+  for (const Point2& p : c.points()) pts.push_back({p.x + dx, p.y + dy});
+  return Curve(std::move(pts));
+}
+
+/// Every y coordinate moved up by one ulp.
+inline Curve ulp_perturbed(const Curve& c) {
+  std::vector<Point2> pts;
+  for (const Point2& p : c.points()) pts.push_back({p.x, std::nextafter(p.y, 2.0)});
+  return Curve(std::move(pts));
+}
+
+inline nlohmann::json points_json(const Curve& c) {
+  nlohmann::json pts = nlohmann::json::array();
+  for (const Point2& p : c.points()) pts.push_back({p.x, p.y});
+  return pts;
+}
+
+inline nlohmann::json points3_json(const Curve& c, double z_scale) {
+  nlohmann::json pts = nlohmann::json::array();
+  for (const Point2& p : c.points()) pts.push_back({p.x, p.y, z_scale * (p.x - p.y)});
+  return pts;
+}
+
+/// The named curves the requests are built from.
+struct Curves {
+  Curve random20 = random_curve(20, 20);
+  Curve random10 = random_curve(10, 10);
+  Curve random6 = random_curve(6, 6);
+  Curve wave = from_coordinates(identity(20), chebyshev(20));            // (t, T_20(2t-1))
+  Curve wave_t = from_coordinates(chebyshev(20), identity(20));          // (T_20(2s-1), s)
+  Curve lissajous = from_coordinates(chebyshev(20), core::elevate_degree(chebyshev(19), 20));
+  Curve contact20 = [] {                                                 // (t, (1-2t)^20)
+    std::vector<double> y;
+    for (int k = 0; k <= 20; ++k) y.push_back(k % 2 == 0 ? 1.0 : -1.0);
+    return from_coordinates(identity(20), y);
+  }();
+  Curve axis20 = from_coordinates(identity(20), std::vector<double>(21, 0.0));  // the x axis
+  Curve retrace_slow = compose(random10, {0.0, 0.25, 1.0});   // A10 at another, non-linear, speed
+  Curve retrace_fast = compose(random10, {0.0, 0.75, 1.0});
+  Curve palindrome = compose(random10, {0.0, 2.0, 0.0});      // A10 there and back: B(1-t) = B(t)
+  Curve fold = compose(random6, {0.0, 1.2, -0.2, 0.6});       // A6 forth, back, forth again
+  Curve zigzag = [] {                                          // collinear, doubling back 20 times
+    std::vector<Point2> pts;
+    for (int k = 0; k <= 20; ++k) pts.push_back(k % 2 == 0 ? Point2{0.0, 0.0} : Point2{1.0, 2.0});
+    return Curve(std::move(pts));
+  }();
+};
+
+inline std::string two_curves(const Curve& a, const Curve& b, const std::string& method, double tolerance = 1e-12) {
+  nlohmann::json body = {{"curves", {{{"points", points_json(a)}}, {{"points", points_json(b)}}}},
+                         {"method", method}};
+  if (tolerance != 1e-12) body["tolerance"] = tolerance;
+  return body.dump();
+}
+
+inline std::string one_curve(const Curve& a) { return nlohmann::json{{"curves", {{{"points", points_json(a)}}}}}.dump(); }
+
+/// Every request, in the order the benchmark registers them.
+inline std::vector<Request> requests() {
+  const Curves c;
+  std::vector<Request> r;
+
+  // /evaluate and /polar: the most parameters with the most work per parameter.
+  std::vector<double> ts(10000), far(10000);
+  Mulberry32 rng(99);
+  for (double& t : ts) t = rng.next();
+  for (double& t : far) t = rng.uniform(-1e15, 1e15);
+  r.push_back({"evaluate/deg20_samples10000", "/evaluate",
+               nlohmann::json{{"points", points_json(c.random20)}, {"samples", 10000}}.dump()});
+  r.push_back({"evaluate/deg20_samples10000_deriv20", "/evaluate",
+               nlohmann::json{{"points", points_json(c.random20)}, {"samples", 10000}, {"derivatives", 20}}.dump()});
+  r.push_back({"evaluate/deg20_samples10000_deriv20_3d", "/evaluate",
+               nlohmann::json{{"points", points3_json(c.random20, 1.0)}, {"samples", 10000}, {"derivatives", 20}}.dump()});
+  r.push_back({"evaluate/deg20_t10000_deriv20_split", "/evaluate",
+               nlohmann::json{{"points", points_json(c.random20)}, {"t", ts}, {"derivatives", 20}, {"split", 0.5}}.dump()});
+  r.push_back({"evaluate/deg20_t10000_far_deriv20", "/evaluate",
+               nlohmann::json{{"points", points_json(c.random20)}, {"t", far}, {"derivatives", 20}}.dump()});
+  r.push_back({"polar/deg20_t0x19_samples10000_3d", "/polar",
+               nlohmann::json{{"points", points3_json(c.random20, 1.0)},
+                              {"t0", std::vector<double>(ts.begin(), ts.begin() + 19)},
+                              {"samples", 10000}}.dump()});
+  r.push_back({"polar/deg20_t0_samples10000", "/polar",
+               nlohmann::json{{"points", points_json(c.random20)}, {"t0", 0.3}, {"samples", 10000}}.dump()});
+
+  // /intersections, two curves, every method.
+  const std::pair<const char*, std::pair<const Curve*, const Curve*>> pairs_[] = {
+      {"identical_deg20", {&c.random20, &c.random20}},
+      {"ulp_apart_deg20", {&c.random20, nullptr}},
+      {"retrace_nonlinear_deg20", {&c.retrace_slow, &c.retrace_fast}},
+      {"wave_grid_400", {&c.wave, &c.wave_t}},
+      {"contact_order20", {&c.contact20, &c.axis20}},
+  };
+  const Curve ulp = ulp_perturbed(c.random20);
+  const Curve reversed = core::reversed(c.random20);
+  const Curve piece = core::portion(c.random20, 0.25, 0.75);
+  for (const char* method : {"hybrid", "bezier-clipping", "subdivision"}) {
+    const std::string m = method;
+    for (const auto& [name, curves] : pairs_) {
+      const Curve& b = curves.second ? *curves.second : ulp;
+      r.push_back({"intersections/" + m + "/" + name, "/intersections", two_curves(*curves.first, b, m)});
+    }
+    r.push_back({"intersections/" + m + "/reversed_deg20", "/intersections", two_curves(c.random20, reversed, m)});
+    r.push_back({"intersections/" + m + "/piece_deg20", "/intersections", two_curves(c.random20, piece, m)});
+    for (const double gap : {1e-12, 1e-9, 1e-6}) {
+      char name[64];
+      std::snprintf(name, sizeof name, "/gap_%.0e_deg20", gap);
+      r.push_back({"intersections/" + m + name, "/intersections",
+                   two_curves(c.random20, translated(c.random20, 0.0, gap), m)});
+    }
+  }
+  r.push_back({"intersections/hybrid/wave_grid_400_tol_min", "/intersections",
+               two_curves(c.wave, c.wave_t, "hybrid", 0x1p-46)});
+
+  // Self-intersections (/intersections with one curve) and /loop-area on the same curves.
+  const std::pair<const char*, const Curve*> singles[] = {
+      {"random_deg20", &c.random20}, {"lissajous_20_19", &c.lissajous}, {"palindrome_deg20", &c.palindrome},
+      {"fold_deg18", &c.fold},       {"zigzag_deg20", &c.zigzag},       {"wave_deg20", &c.wave},
+  };
+  for (const auto& [name, curve] : singles) {
+    r.push_back({std::string("self/") + name, "/intersections", one_curve(*curve)});
+    r.push_back({std::string("loop_area/") + name, "/loop-area", nlohmann::json{{"points", points_json(*curve)}}.dump()});
+  }
+  return r;
+}
+
+}  // namespace bezier::test::worst_case
