@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/binomial.hpp"
+#include "core/subdivide.hpp"
 
 namespace bezier::core {
 
@@ -38,38 +39,18 @@ double enclosed_area_as_given(std::span<const Point2> points) {
   return area;
 }
 
-/// Control points of B on [a, b] reparametrised to [0, 1] (n + 1 points): de Casteljau at
-/// b keeps the left half (B on [0, b]), then de Casteljau of that at a / b keeps the right
-/// half (B on [a, b]); for b = 0, the left half at a reversed. Two O(n^2) triangles instead
-/// of portion()'s n + 1 blossoms (O(n^3)), in plain arithmetic: this runs once per loop.
-/// The one rounding in a / b moves the start of the piece along the curve by about one ulp
-/// of a, which changes a loop's area only to second order (at a double point d/da of the
-/// enclosed area is 1/2 cross(B(b) - B(a), B'(a)) = 0).
-std::vector<Point2> piece_points(std::span<const Point2> points, double a, double b) {
-  const std::size_t m = points.size();
-  std::vector<Point2> work(points.begin(), points.end());
-  std::vector<Point2> left(m);
-  const auto left_half = [&](double t) {  // left <- first entries of each round of `work`
-    left[0] = work[0];
-    for (std::size_t k = 1; k < m; ++k) {
-      for (std::size_t i = 0; i + k < m; ++i) work[i] = lerp(work[i], work[i + 1], t);
-      left[k] = work[0];
-    }
-  };
-  if (b == 0.0) {
-    left_half(a);
-    std::reverse(left.begin(), left.end());
-    return left;
-  }
-  left_half(b);
-  // Right half of `left` at a / b: the working row ends as the right half itself (entry
-  // m - 1 - k is final after round k).
-  work = left;
-  const double t = a / b;
-  for (std::size_t k = 1; k < m; ++k) {
-    for (std::size_t i = 0; i + k < m; ++i) work[i] = lerp(work[i], work[i + 1], t);
-  }
-  return work;
+/// B on [a, b] reparametrised to [0, 1]: subdivide() at b keeps the left half (B on
+/// [0, b]), then subdivide() of that at a / b keeps the right half (B on [a, b]); for
+/// b = 0 (then a < 0), the left half at a reversed. Two O(n^2) compensated triangles (each new
+/// control point within about one rounding) instead of portion()'s n + 1 blossoms (O(n^3)). The one
+/// rounding in a / b moves the start of the piece along the curve by about an ulp of a, which
+/// changes a loop's area only to second order (at a double point d/da of the enclosed area is 1/2
+/// cross(B(b) - B(a), B'(a)) = 0).
+Curve piece(const Curve& curve, double a, double b) {
+  // A reversed interval is the forward one reversed: no extrapolation at a / b > 1.
+  if (a > b) return reversed(piece(curve, b, a));
+  if (b == 0.0) return reversed(subdivide(curve, a).left);
+  return subdivide(subdivide(curve, b).left, a / b).right;
 }
 
 }  // namespace
@@ -95,7 +76,7 @@ double enclosed_area(std::span<const Point2> points) {
 
 double enclosed_area(const Curve& curve, double a, double b) {
   if (a == 0.0 && b == 1.0) return enclosed_area(curve.points());
-  return enclosed_area(piece_points(curve.points(), a, b));
+  return enclosed_area(piece(curve, a, b).points());
 }
 
 double enclosed_area(const Curve& curve) {
@@ -108,8 +89,8 @@ double signed_area(const Curve& curve, double a, double b) {
   if (a == 0.0 && b == 1.0) {
     return enclosed_area(curve.points()) + 0.5 * cross(curve.front(), curve.back());
   }
-  const std::vector<Point2> piece = piece_points(curve.points(), a, b);
-  return enclosed_area(piece) + 0.5 * cross(piece.front(), piece.back());
+  const Curve p = piece(curve, a, b);
+  return enclosed_area(p.points()) + 0.5 * cross(p.front(), p.back());
 }
 
 double signed_area(const Curve& curve) {

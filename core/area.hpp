@@ -33,7 +33,7 @@ namespace bezier::core {
 /// Signed area enclosed by B on [a, b] and the chord from B(b) back to B(a): the area of
 /// the closed path "curve from B(a) to B(b), then straight back". For a self-intersection
 /// pair (B(t1) = B(t2)) this is the signed area of the loop. Computed as enclosed_area of
-/// the control points of B on [a, b] (what portion() gives, here by two de Casteljau
+/// the control points of B on [a, b] (what portion() gives, here by two compensated
 /// subdivisions, at b and then at a / b: O(n^2)). Any finite a, b (a > b reverses the path
 /// and flips the sign; a = b gives 0). Positive counter-clockwise.
 [[nodiscard]] double enclosed_area(const Curve& curve, double a, double b);
