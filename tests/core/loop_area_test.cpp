@@ -59,6 +59,20 @@ TEST(LoopArea, Degree7ExampleAgainstTheExactIntegral) {
   EXPECT_FALSE(r.closed_area.has_value());
 }
 
+TEST(LoopArea, AreasAreAccurateToAboutAnUlp) {
+  // (-9,0), (13,16), (-13,16), (9,0): x(t) = 0 at t = 1/4 and 3/4, where y = 9 on both
+  // branches, so the loop is [1/4, 3/4] exactly and its area an exact rational (12/5).
+  const Curve c({{-9, 0}, {13, 16}, {-13, 16}, {9, 0}});
+  const Rational exact = test::exact_enclosed_area(test::power_form(c), q(1, 4), q(3, 4));
+  EXPECT_EQ(exact, q(12, 5));
+  const LoopAreaResult r = loop_area(c);
+  ASSERT_EQ(r.loops.size(), 1u);
+  EXPECT_EQ(r.loops[0].t1, 0.25);
+  EXPECT_EQ(r.loops[0].t2, 0.75);
+  const double ulp = std::nextafter(2.4, 3.0) - 2.4;
+  EXPECT_NEAR(r.loops[0].signed_area, exact.to_double(), 2 * ulp);
+}
+
 TEST(LoopArea, TinyLoopHasItsClosedFormArea) {
   // x = 3 (s^3 - d^2 s), y = 3 s^2: loop on s in [-d, d] with area
   // 1/2 ∫ (x y' - x' y) ds = -9/2 ∫_{-d}^{d} (s^4 + d^2 s^2) ds = -(24/5) d^5.
