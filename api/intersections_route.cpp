@@ -34,6 +34,7 @@
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
+#include "core/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
 #include "core/self_intersection.hpp"
 
@@ -172,9 +173,13 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   }
   nlohmann::json overlaps = nlohmann::json::array();
   for (const core::SelfOverlap& o : r.overlaps) {
+    // The pieces run the same way when B(t_lo) is B(s_lo), backwards when it is B(s_hi).
+    const core::Point2 a = core::evaluate(curve, o.t_lo);
+    const double same = core::length(a - core::evaluate(curve, o.s_lo));
+    const double opposite = core::length(a - core::evaluate(curve, o.s_hi));
     overlaps.push_back({{"t_interval", pair_json(o.t_lo, o.t_hi)},
                         {"s_interval", pair_json(o.s_lo, o.s_hi)},
-                        {"reversed", false}});
+                        {"reversed", opposite < same}});
   }
   return json_reply({{"intersections", std::move(intersections)},
                      {"overlaps", std::move(overlaps)},

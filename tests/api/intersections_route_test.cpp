@@ -128,6 +128,14 @@ TEST(IntersectionsRoute, OneCurveGivesItsSelfIntersectionsWithCertifiedIntervals
   EXPECT_EQ(x["kind"], "transversal");
   EXPECT_NEAR(x["point"][1].get<double>(), 9.0, 1e-14);
   EXPECT_TRUE(r["stats"]["method"].is_string());
+  // A straight curve doubling back retraces itself: B(t) = (4t(1 - t) + t^2, 0) (control
+  // points 0, 2, 1 on the x axis) goes from 0 to 4/3 (t = 2/3) and back to 1, so B on
+  // [1/3, 2/3] and B on [2/3, 1] are the same points, run in opposite directions.
+  const json back = call(R"({"curves":[{"points":[[0,0],[2,0],[1,0]]}]})", 200);
+  ASSERT_EQ(back["overlaps"].size(), 1u);
+  EXPECT_NEAR(back["overlaps"][0]["t_interval"][0].get<double>(), 1.0 / 3, 1e-12);
+  EXPECT_NEAR(back["overlaps"][0]["s_interval"][1].get<double>(), 1.0, 1e-12);
+  EXPECT_EQ(back["overlaps"][0]["reversed"], true);
   // No self-intersection: empty.
   EXPECT_TRUE(call(R"({"curves":[{"points":[[0,0],[1,2],[2,0]]}]})", 200)["intersections"].empty());
 }
