@@ -6,7 +6,6 @@
 #include <cmath>
 #include <vector>
 
-#include "core/cubic_double_point.hpp"
 #include "core/evaluate.hpp"
 #include "tests/support/exact.hpp"
 #include "tests/support/exact_bezier.hpp"
