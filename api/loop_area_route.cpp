@@ -19,7 +19,9 @@
 // than limits.max_work parameter boxes.
 
 #include <cmath>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
