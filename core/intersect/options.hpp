@@ -26,7 +26,7 @@ struct IntersectOptions {
 
 /// The smallest tolerance accepted: 2^-46 (about 1.4e-14, 64 ulps of 1). Every clipping
 /// step widens its interval outward by a few ulps so that rounding can never lose a root
-/// (see clip_map.hpp), and the intervals of a contact found from two sides are merged, so
+/// (map_to_domain in clip.hpp), and the intervals of a contact found from two sides are merged, so
 /// narrower intervals cannot be guaranteed in double precision.
 inline constexpr double kMinTolerance = 0x1p-46;
 
