@@ -11,13 +11,13 @@
 // generates from one example what it can reach. The contract test requires the union
 // over an operation's examples to cover every site.
 
+#include "tests/support/openapi_validator.hpp"  // first: see there
+
 #include <set>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
-
-#include "tests/support/openapi_validator.hpp"
 
 namespace bezier::test {
 

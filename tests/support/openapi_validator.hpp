@@ -9,17 +9,30 @@
 // the part of OpenAPI 3.1 / JSON Schema 2020-12 that draft 7 reads the same way: no
 // prefixItems, no constraints beside a $ref, `type: [x, 'null']` for nullable.
 //
-// Usage (any test that talks to the service):
-//   #include <httplib.h>                                // first, for the Result overload
+// Usage (any test that talks to the service); this header must be the FIRST include of
+// the test file (see below), and it brings <httplib.h> itself:
 //   #include "tests/support/openapi_validator.hpp"
+//   ...
 //   const auto r = client.Post("/evaluate", body, "application/json");
 //   bezier::test::expect_conforms("POST", "/evaluate", "application/json", body, r);
 
-// GCC 12 at -O3 reports a false -Wrestrict in valijson's JSON Pointer code
-// (std::string::replace inlined into the schema parser's callers), so the whole header,
-// where those calls are, is compiled without it.
+// GCC 12 at -O3 reports false warnings in code this header instantiates: -Wrestrict in
+// valijson's JSON Pointer code (std::string::replace inlined), and, with
+// -fsanitize=address,undefined, -Wmaybe-uninitialized in libstdc++'s <regex> (a
+// std::function moved in regex_automaton.h; valijson supports `pattern`). GCC decides by
+// the pragma state where the warned-about line was read, so <functional> and <regex>
+// must be read first here, under these pragmas: hence "first include".
+#if defined(_GLIBCXX_STD_FUNCTION_H) || defined(_GLIBCXX_REGEX) || defined(CPPHTTPLIB_HTTPLIB_H)
+#error "include tests/support/openapi_validator.hpp before any other header (GCC 12 false warnings in <regex>)"
+#endif
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wrestrict"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+#include <functional>
+#include <regex>
+
+#include <httplib.h>
 
 #include <cmath>
 #include <cstdio>
@@ -379,7 +392,6 @@ inline void expect_conforms(const std::string& method, const std::string& path,
   expect_conforms(e);
 }
 
-#ifdef CPPHTTPLIB_HTTPLIB_H
 /// From an httplib result, headers included (an unanswered request is a failure too).
 inline void expect_conforms(const std::string& method, const std::string& path,
                             const std::string& request_content_type,
@@ -404,7 +416,6 @@ inline void expect_conforms(const std::string& method, const std::string& path,
   }
   expect_conforms(e);
 }
-#endif
 
 }  // namespace bezier::test
 
