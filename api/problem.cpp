@@ -1,5 +1,8 @@
 #include "api/problem.hpp"
 
+#include <cmath>
+#include <optional>
+
 namespace bezier::api {
 
 namespace {
@@ -65,7 +68,36 @@ Reply validation_reply(std::vector<FieldError> errors) {
   return problem_reply(ProblemKind::validation, std::move(detail), std::move(errors));
 }
 
+namespace {
+
+// The JSON Pointer of the first non-finite number in `value`, if any.
+std::optional<std::string> first_non_finite(const nlohmann::json& value, const std::string& at) {
+  if (value.is_number_float()) {
+    if (!std::isfinite(value.get<double>())) return at;
+  } else if (value.is_array()) {
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      if (auto found = first_non_finite(value[i], at + "/" + std::to_string(i))) return found;
+    }
+  } else if (value.is_object()) {
+    for (const auto& [key, member] : value.items()) {
+      if (auto found = first_non_finite(member, at + "/" + key)) return found;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 Reply json_reply(const nlohmann::json& body) {
+  // Finite input can still give a result beyond the double range (B(2) of a segment to
+  // 1e308, a derivative of alternating ±1e308 points). JSON has no infinity and nlohmann
+  // would write null in its place: the request is answered as unanswerable instead.
+  if (const auto where = first_non_finite(body, "")) {
+    return problem_reply(ProblemKind::validation,
+                         "the result overflows the double range (answer field '" + *where + "')",
+                         {{"/points", "coordinates too large for this computation: a result "
+                                      "overflows the double range"}});
+  }
   // nlohmann writes doubles as the shortest string that reads back to the same double.
   return {200, "application/json", body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)};
 }

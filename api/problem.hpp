@@ -44,7 +44,8 @@ enum class ProblemKind {
 /// 422 with every field error found in the request.
 [[nodiscard]] Reply validation_reply(std::vector<FieldError> errors);
 
-/// 200 application/json with the numbers written so they round-trip.
+/// 200 application/json with the numbers written so they round-trip; a 422 instead when
+/// a number of the answer is not finite (a result beyond the double range).
 [[nodiscard]] Reply json_reply(const nlohmann::json& body);
 
 /// The HTTP status of a problem kind.
