@@ -8,7 +8,7 @@ profile=${1:-run}
 packages=(build-essential cmake ninja-build pkg-config ccache
           libcpp-httplib-dev nlohmann-json3-dev libspdlog-dev libcli11-dev)
 if [ "$profile" = test ]; then
-  packages+=(libgtest-dev libgmock-dev libbenchmark-dev curl python3 python3-yaml python3-kubernetes docker-compose
+  packages+=(libgtest-dev libgmock-dev libbenchmark-dev libvalijson-dev curl python3 python3-yaml python3-kubernetes docker-compose
              chromium chromium-driver)
 fi
 

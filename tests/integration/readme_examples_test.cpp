@@ -1,5 +1,8 @@
 // Every `curl` example in README.md is sent to the real service, and its answer must be
-// the JSON the README shows, so the documentation cannot drift from the service.
+// the JSON the README shows, so the documentation cannot drift from the service; each
+// exchange must also conform to api/openapi.yaml.
+#include "tests/support/openapi_validator.hpp"  // first: see there
+
 #include <httplib.h>
 
 #include <fstream>
@@ -61,6 +64,7 @@ TEST(ReadmeExamples, EveryCurlExampleGivesTheDocumentedAnswer) {
     ASSERT_FALSE(ex.expected.empty()) << "no ```json answer after the example";
     const auto r = client.Post(ex.path.c_str(), ex.body, "application/json");
     ASSERT_TRUE(r);
+    expect_conforms("POST", ex.path, "application/json", ex.body, r);
     // `stats` (iteration counts) describe how a method converged, not the answer: they
     // may change with tuning, so they are left out of the comparison.
     auto got = nlohmann::json::parse(r->body);

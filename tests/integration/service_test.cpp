@@ -1,4 +1,7 @@
-// Starts the built bezier-service on a free port and talks HTTP to it.
+// Starts the built bezier-service on a free port and talks HTTP to it. Every exchange
+// of the fixture is also checked against api/openapi.yaml (expect_conforms).
+#include "tests/support/openapi_validator.hpp"  // first: see there
+
 #include <httplib.h>
 
 #include <fstream>
@@ -32,7 +35,15 @@ class ServiceTest : public ::testing::Test {
 
   static httplib::Result post(const std::string& path, const std::string& body,
                               const std::string& type = "application/json") {
-    return client().Post(path.c_str(), body, type.c_str());
+    auto r = client().Post(path.c_str(), body, type.c_str());
+    expect_conforms("POST", path, type, body, r);
+    return r;
+  }
+
+  static httplib::Result get(const std::string& path, const httplib::Headers& headers = {}) {
+    auto r = client().Get(path.c_str(), headers);
+    expect_conforms("GET", path, "", "", r);
+    return r;
   }
 
   // Every error is problem+json with the RFC 9457 members and the status repeated.
@@ -110,7 +121,7 @@ TEST_F(ServiceTest, BodiesOverTheLimitAre413) {
   const std::string huge = R"({"t":0.5,"points":[[0,0],[1,1]],"pad":")" + std::string(1000000, 'x') + "\"}";
   expect_problem(post("/evaluate", huge), 413);
   // The service keeps serving.
-  const auto r = client().Get("/healthz");
+  const auto r = get("/healthz");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
 }
@@ -129,10 +140,11 @@ TEST_F(ServiceTest, WrongContentTypeIs415) {
 }
 
 TEST_F(ServiceTest, WrongMethodIs405WithAllow) {
-  const auto r = client().Get("/evaluate");
+  const auto r = get("/evaluate");
   expect_problem(r, 405);
   EXPECT_EQ(r->get_header_value("Allow"), "POST");
   const auto put = client().Put("/polar", "{}", "application/json");
+  expect_conforms("PUT", "/polar", "application/json", "{}", put);
   expect_problem(put, 405);
   const auto post_health = post("/healthz", "{}");
   expect_problem(post_health, 405);
@@ -140,18 +152,18 @@ TEST_F(ServiceTest, WrongMethodIs405WithAllow) {
 }
 
 TEST_F(ServiceTest, UnknownRouteIs404) {
-  expect_problem(client().Get("/nope"), 404);
+  expect_problem(get("/nope"), 404);
   expect_problem(post("/nope", "{}"), 404);
 }
 
 TEST_F(ServiceTest, HealthReadinessAndSpec) {
-  auto r = client().Get("/healthz");
+  auto r = get("/healthz");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
-  r = client().Get("/readyz");
+  r = get("/readyz");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
-  r = client().Get("/openapi.yaml");
+  r = get("/openapi.yaml");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
   std::ifstream file(std::string(BEZIER_SOURCE_DIR) + "/api/openapi.yaml", std::ios::binary);
@@ -163,7 +175,7 @@ TEST_F(ServiceTest, HealthReadinessAndSpec) {
 TEST_F(ServiceTest, MetricsCountRequestsByRouteAndStatus) {
   ASSERT_TRUE(post("/evaluate", R"({"points":[[0,0],[1,1]],"t":0.5})"));
   ASSERT_TRUE(post("/evaluate", R"({"points":[[0,0],[1,1]]})"));
-  const auto r = client().Get("/metrics");
+  const auto r = get("/metrics");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
   EXPECT_NE(r->body.find(R"(bezier_requests_total{route="/evaluate",status="200"})"), std::string::npos);
@@ -179,7 +191,7 @@ TEST_F(ServiceTest, MetricsCountRequestsByRouteAndStatus) {
 
 TEST_F(ServiceTest, RequestIdIsEchoedAndLogged) {
   httplib::Headers headers = {{"X-Request-Id", "test-id-42"}};
-  const auto r = client().Get("/healthz", headers);
+  const auto r = get("/healthz", headers);
   ASSERT_TRUE(r);
   EXPECT_EQ(r->get_header_value("X-Request-Id"), "test-id-42");
   // The access line is written after the answer; give the log a moment to arrive.
