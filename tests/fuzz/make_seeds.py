@@ -1,0 +1,137 @@
+#!/usr/bin/env python3
+"""Writes the hand-made seed inputs of the kernel fuzz targets into tests/fuzz/corpus/.
+
+The targets decode their input with libFuzzer's FuzzedDataProvider, which takes integers
+from the END of the input, most significant byte first. So a seed is the list of values
+the target will consume, each encoded as the provider reads it, and the whole list
+reversed. The decoders are in fuzz_support.hpp (NumberSource) and in each *_fuzzer.cpp;
+keep this file in step with them.
+
+Run from anywhere: python3 tests/fuzz/make_seeds.py   (it rewrites only its own files,
+named seed_*; files libFuzzer adds to a corpus have SHA-1 names).
+"""
+
+import os
+import struct
+from fractions import Fraction
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+class Seed:
+    """The values a target consumes, in order."""
+
+    def __init__(self):
+        self.consumed = []  # bytes in consumption order
+
+    def byte(self, b):
+        self.consumed.append(b & 0xFF)
+        return self
+
+    def int_in_range(self, value, lo, hi):
+        """ConsumeIntegralInRange(lo, hi) returning `value` (ranges below 256: one byte)."""
+        assert lo <= value <= hi and hi - lo < 256
+        return self.byte(value - lo)
+
+    def int16(self, value):
+        """ConsumeIntegral<int16_t>: two bytes, value = -32768 + (hi << 8 | lo)."""
+        raw = value + 32768
+        return self.byte(raw >> 8).byte(raw & 0xFF)
+
+    def number(self, x):
+        """A NumberSource double: a small integer (selector 1) or k / 2^j (selector 2)."""
+        x = Fraction(x)
+        if x.denominator == 1 and -8 <= x <= 8:
+            return self.byte(1).int_in_range(int(x), -8, 8)
+        j = 0
+        while (x * 2**j).denominator != 1:
+            j += 1
+        k = x * 2**j
+        assert k.denominator == 1 and -32768 <= k <= 32767 and j <= 20, x
+        return self.byte(2).int16(int(k)).int_in_range(j, 0, 20)
+
+    def raw_double(self, x):
+        """A NumberSource double from its IEEE bits (selector 0)."""
+        bits = struct.unpack(">Q", struct.pack(">d", x))[0]
+        self.byte(0)
+        for shift in range(56, -1, -8):
+            self.byte(bits >> shift)
+        return self
+
+    def points(self, pts):
+        for x, y in pts:
+            self.number(x).number(y)
+        return self
+
+    def data(self):
+        return bytes(reversed(self.consumed))
+
+
+def write(target, name, seed):
+    folder = os.path.join(HERE, "corpus", target)
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "seed_" + name), "wb") as f:
+        f.write(seed.data())
+
+
+# intersect_fuzzer: config (method = c % 3, fat curve 3 if c & 4, tolerance index
+# (c >> 3) % 8, 0 = 1e-12), flags (1 symmetry, 2 scaling, 4 tame), scale exponent,
+# degree of f, degree of g (b % 5 for b < 224), then the points of f and of g.
+def intersect_seed(name, f, g, method=0, fat3=False, tolerance_index=0, flags=7, scale=3):
+    config = next(c for c in range(256)
+                  if c % 3 == method and bool(c & 4) == fat3 and (c >> 3) % 8 == tolerance_index)
+    seed = Seed().byte(config).byte(flags).int_in_range(scale, -60, 60)
+    seed.byte(len(f) - 1).byte(len(g) - 1).points(f).points(g)
+    write("intersect_fuzzer", name, seed)
+
+
+S_CURVE = [(0, 0), (1, 4), (3, -4), (4, 0)]
+for method, label in [(0, "hybrid"), (1, "clipping"), (2, "subdivision")]:
+    intersect_seed("lines_" + label, [(0, 0), (4, 4)], [(0, 4), (4, 0)], method)
+    intersect_seed("s_curve_line_" + label, S_CURVE, [(-1, 0), (5, 0)], method)
+intersect_seed("tangent_parabola", [(0, 0), (2, 4), (4, 0)], [(0, 2), (4, 2)], fat3=True)
+intersect_seed("overlap_identical", S_CURVE, S_CURVE)
+intersect_seed("overlap_reversed_piece", S_CURVE, list(reversed(S_CURVE)), method=1)
+intersect_seed("closed_lens", [(0, 0), (1, 2), (3, 2), (4, 0)], [(4, 0), (3, -2), (1, -2), (0, 0)])
+intersect_seed("point_on_line", [(2, 1)], [(0, 0), (4, 2)])
+intersect_seed("collinear_segments", [(0, 0), (4, 0)], [(2, 0), (6, 0)], method=2)
+intersect_seed("quartics_dyadic", [(0, 0), (0.5, 3), (1.25, -3), (2.75, 3), (4, 0)],
+               [(0, 1), (1.5, -2.5), (2, 3.5), (3.5, -1), (4, 1.125)], fat3=True, tolerance_index=2)
+intersect_seed("wild_far_apart", [(0, 0), (1, 1)], [(2, 2), (3, 0)], flags=3)
+
+# self_intersection_fuzzer: flags (1 general method instead of the cubic closed form,
+# 2 scaling, 4 compare methods, 8 tame), scale exponent, degree byte (1 + b % 5 for
+# b < 224), then the points.
+def self_seed(name, pts, flags=0b1110, scale=-5):
+    seed = Seed().byte(flags).int_in_range(scale, -60, 60).byte(len(pts) - 2).points(pts)
+    write("self_intersection_fuzzer", name, seed)
+
+
+self_seed("cubic_loop", [(0, 0), (2, 2), (-1, 2), (1, 0)])
+self_seed("cubic_loop_general", [(0, 0), (2, 2), (-1, 2), (1, 0)], flags=0b1111)
+self_seed("cubic_cusp", [(0, 0), (1, 1), (0, 1), (1, 0)])
+self_seed("cubic_loop_at_start", [(0, 0), (0, 1), (1, 1), (-3, -6)])
+self_seed("quartic_closed", [(0, 0), (4, 4), (-2, 4), (2, -2), (0, 0)])
+self_seed("quintic_two_loops", [(0, 0), (4, 4), (-2, 4), (6, -4), (0, -4), (4, 0)])
+self_seed("collinear_retracing", [(0, 0), (2, 0), (-1, 0), (1, 0)])
+self_seed("point", [(1, 1), (1, 1), (1, 1)])
+self_seed("line", [(0, 0), (3, 1)])
+
+# classify_fuzzer: scale exponent (-40..40), then the four points.
+def classify_seed(name, pts, scale=7):
+    write("classify_fuzzer", name, Seed().int_in_range(scale, -40, 40).points(pts))
+
+
+START = [(0, 0), (0, 1), (1, 1)]  # the canonical frame: P3 is the canonical point
+classify_seed("arch", START + [(1, 0)])
+classify_seed("cusp", [(0, 0), (1, 1), (0, 1), (1, 0)])
+classify_seed("loop", START + [(-1, Fraction(-1, 2))])
+classify_seed("loop_at_start", START + [(-3, -6)])
+classify_seed("loop_at_end", [(-3, -6), (1, 1), (0, 1), (0, 0)])
+classify_seed("single_inflection", START + [(0, 2)])
+classify_seed("double_inflection", START + [(0, Fraction(7, 8))])
+classify_seed("quadratic", START + [(3, 0)])
+classify_seed("line", [(0, 0), (1, 1), (3, 3), (2, 2)])
+classify_seed("point", [(5, 5)] * 4)
+classify_seed("closed", [(0, 0), (2, 2), (-1, 2), (0, 0)])
+classify_seed("collinear_start", [(0, 0), (1, 0), (2, 0), (1, 3)])
