@@ -2,7 +2,8 @@
 # HTTP load figures for the README and BENCHMARKS.md: wrk at 64 connections against
 # a freshly started bezier-service, /evaluate (one cubic, one t) then /healthz, while a
 # 65th client probes /healthz every 100 ms. A req/s figure counts only if that probe is
-# answered throughout (every connection served).
+# answered throughout (every connection served). The service's RSS is sampled every second
+# during each run (first and last sample, smallest and largest), to show it stays flat.
 #   tests/bench/http/load.sh [service-binary] [seconds] [connections]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -32,16 +33,34 @@ probe() {  # prints the slowest of the probe's answers, in ms, and failures
   echo "probe: slowest /healthz answer ${worst} ms, failed probes: $failed"
 }
 
+rss_sampler() {  # until $1 disappears: first, last, smallest and largest RSS (kB), 1 s apart
+  local first="" last="" min="" max="" r
+  while [ -e "$1" ]; do
+    r=$(ps -o rss= -p $pid | tr -d ' ')
+    [ -n "$r" ] || break
+    [ -n "$first" ] || first=$r
+    last=$r
+    { [ -z "$min" ] || [ "$r" -lt "$min" ]; } && min=$r
+    { [ -z "$max" ] || [ "$r" -gt "$max" ]; } && max=$r
+    sleep 1
+  done
+  echo "rss during the run: first $first kB, last $last kB, min $min kB, max $max kB"
+}
+
+echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
 for route in evaluate healthz; do
   flag=$(mktemp)
   probe "$flag" > "$flag.out" &
   probe_pid=$!
+  rss_sampler "$flag" > "$flag.rss" &
+  rss_pid=$!
   echo "== wrk -t2 -c$connections -d${seconds}s --latency -s $route.lua $url/$route"
   wrk -t2 -c"$connections" -d"${seconds}s" --latency -s "$here/$route.lua" "$url/$route" |
     grep -E "Requests/sec|requests in|Non-2xx|Socket errors|50%|99%"
   rm -f "$flag"
-  wait $probe_pid
-  cat "$flag.out"
-  rm -f "$flag.out"
+  wait $probe_pid $rss_pid
+  cat "$flag.out" "$flag.rss"
+  rm -f "$flag.out" "$flag.rss"
 done
 echo "rss after: $(ps -o rss= -p $pid) kB"
+echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
