@@ -7,4 +7,5 @@ tools/install-deps.sh run
 cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DBEZIER_BUILD_TESTS=OFF -DBEZIER_BUILD_BENCHMARKS=OFF >/dev/null
 cmake --build build/release --target bezier-service
-exec build/release/service/bezier-service --host 127.0.0.1 --port 8080 "$@"
+# The defaults are 127.0.0.1:8080; flags given here (--port 9000) override them.
+exec build/release/service/bezier-service "$@"
