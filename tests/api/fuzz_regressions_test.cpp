@@ -1,13 +1,23 @@
-// Regression tests for what fuzzing the API found (docs/FUZZING.md lists the findings, the
-// fuzz target and the input that found each). Each test is named after its finding.
+// Regression tests for what fuzzing found (docs/FUZZING.md lists the findings, the fuzz
+// target and the input that found each), through the API and in the kernel. Each test is
+// named after its finding. The expected values are the contracts of the headers (and, for
+// F6, the double point in closed form), never numbers copied from a run.
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <span>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "api/handler.hpp"
+#include "core/classify.hpp"
+#include "core/evaluate.hpp"
+#include "core/intersect/intersect.hpp"
+#include "core/self_intersection.hpp"
 
 namespace bezier::api {
 namespace {
@@ -74,3 +84,196 @@ TEST(FuzzRegressions, F1_OverflowingIntervalAreaIsNotWrittenAsNull) {
 
 }  // namespace
 }  // namespace bezier::api
+
+namespace bezier::core {
+namespace {
+
+// Whether (t, s) lies in the box of a reported intersection or in a reported overlap.
+bool covered(const IntersectionResult& r, double t, double s) {
+  for (const auto& x : r.intersections) {
+    if (x.t_interval.contains(t) && x.s_interval.contains(s)) return true;
+  }
+  for (const auto& o : r.overlaps) {
+    if (o.t_interval.contains(t) && o.s_interval.contains(s)) return true;
+  }
+  return false;
+}
+
+// The contract of Intersection (result.hpp): intervals narrower than the tolerance whenever
+// `resolved`, the estimate inside them, the point finite.
+void expect_intersection_contract(const IntersectionResult& r, double tolerance) {
+  for (const auto& x : r.intersections) {
+    EXPECT_TRUE(x.t_interval.contains(x.t) && x.s_interval.contains(x.s)) << x.t << " " << x.s;
+    EXPECT_TRUE(std::isfinite(x.point.x) && std::isfinite(x.point.y)) << x.t << " " << x.s;
+    if (x.resolved) {
+      EXPECT_LT(x.t_interval.width(), tolerance) << "t in [" << x.t_interval.lo << ", " << x.t_interval.hi << "]";
+      EXPECT_LT(x.s_interval.width(), tolerance) << "s in [" << x.s_interval.lo << ", " << x.s_interval.hi << "]";
+    }
+  }
+}
+
+// F2, found by intersect_fuzzer: a curve smaller than about 2^-44 of the other is handled
+// as a point, its parameter interval is [0, 1] (or a half of it), and the intersection is
+// still flagged `resolved`. Here f is the segment y = 2x of length ~2^-48 through the
+// origin and g the segment y = x / 2 through it: one transversal crossing, at t = s = 1/2.
+TEST(FuzzRegressions, F2_TinyCurveIsNotReportedResolvedWithItsWholeInterval) {
+  const Curve f({{-0x1p-50, -0x1p-49}, {0.0, 0.0}, {0x1p-50, 0x1p-49}});
+  const Curve g({{-1.0, -0.5}, {1.0, 0.5}});
+  IntersectOptions options;
+  options.tolerance = 1e-9;
+  const IntersectionResult r = intersect(f, g, options);
+  ASSERT_EQ(r.status, IntersectStatus::ok);
+  ASSERT_EQ(r.intersections.size(), 1u);
+  EXPECT_TRUE(covered(r, 0.5, 0.5));
+  expect_intersection_contract(r, options.tolerance);
+}
+
+// F3, found by intersect_fuzzer (with assertions on, as the fuzz build has them): Bézier
+// clipping with a degree-0 curve calls fat_curve_operator(0, 0), whose assertion k >= 1
+// aborts. The point (0, 0) is the end f(1) of the segment.
+TEST(FuzzRegressions, F3_BezierClippingAcceptsAPointCurve) {
+  const Curve f({{1.0, 0.0}, {0.0, 0.0}});
+  const Curve g(std::vector<Point2>{{0.0, 0.0}});
+  IntersectOptions options;
+  options.method = IntersectMethod::bezier_clipping;
+  const IntersectionResult r = intersect(f, g, options);
+  ASSERT_EQ(r.status, IntersectStatus::ok);
+  EXPECT_TRUE(covered(r, 1.0, 0.5));
+}
+
+// F4, found by intersect_fuzzer: f starts exactly where g ends; g is 2^-29 long and f 2^24:
+// g is below the working frame's resolution and handled as a point; the one intersection,
+// f(0) = g(1) = (0, 0) bit for bit, is not reported, while two contacts that are not
+// intersections are ((0, 0) and (0, 1/2): g there is 1.7e-9 and 4e-10 away from f).
+TEST(FuzzRegressions, F4_EndPointRootOfATinyCurveIsReported) {
+  const Curve f({{0.0, 0.0}, {0.0, -0x1p24}});
+  const Curve g({{0x1.d4p-30, 0.0}, {0.0, 0.0}, {0.0, 0.0}});
+  IntersectOptions options;
+  options.tolerance = 1e-9;
+  options.method = IntersectMethod::bezier_clipping;
+  const IntersectionResult r = intersect(f, g, options);
+  ASSERT_EQ(r.status, IntersectStatus::ok);
+  EXPECT_TRUE(covered(r, 0.0, 1.0));
+  // Swapped, the same single intersection.
+  const IntersectionResult w = intersect(g, f, options);
+  EXPECT_TRUE(covered(w, 1.0, 0.0));
+  EXPECT_EQ(r.intersections.size(), w.intersections.size());
+}
+
+// F5, found by intersect_fuzzer: subnormal coordinates. Two segments 1e-310 long meeting
+// at the origin, f(1) = g(0) = (0, 0): the kernel answered (1, 1) with a NaN point (the
+// working frame's power-of-two scale overflowed). Fixed meanwhile by 1107d08 (scale
+// clamped to normal doubles); kept as a regression test.
+TEST(FuzzRegressions, F5_SubnormalCoordinatesGiveFinitePointsAndTheRightRoot) {
+  const Curve f({{1e-310, 0.0}, {0.0, 0.0}});
+  const Curve g({{0.0, 0.0}, {0.0, 1e-310}});
+  const IntersectionResult r = intersect(f, g);
+  ASSERT_EQ(r.status, IntersectStatus::ok);
+  EXPECT_TRUE(covered(r, 1.0, 0.0));
+  expect_intersection_contract(r, IntersectOptions{}.tolerance);
+}
+
+// F5 through the API: a NaN point would be written as null (or, since F1's fix, turn a
+// valid request into a 422); the answer is the intersection at the origin.
+TEST(FuzzRegressions, F5_SubnormalSegmentsThroughTheApi) {
+  const api::Reply reply = api::handle(
+      "/intersections", R"({"curves":[{"points":[[1e-310,0],[0,0]]},{"points":[[0,0],[0,1e-310]]}]})",
+      api::Limits{});
+  ASSERT_EQ(reply.status, 200) << reply.body;
+  const auto answer = nlohmann::json::parse(reply.body);
+  ASSERT_EQ(answer["intersections"].size(), 1u) << reply.body;
+  EXPECT_EQ(answer["intersections"][0]["point"], nlohmann::json::parse("[0.0, 0.0]")) << reply.body;
+}
+
+// F6, found by self_intersection_fuzzer: the cubic closed form's Newton polish walks away
+// from an ill-conditioned double point (a nearly collinear cubic) and still counts as
+// converged. In closed form (cubic_double_point.hpp's derivation): with a = P1 − P0,
+// b = P2 − 2P1 + P0, c = P3 − 3P2 + 3P1 − P0, t + s = −(a × c)/(b × c) = 6/5 and
+// t s = 6/25 whatever the 2^-50 offset, so t, s = 3/5 ∓ √3/5, and the point is
+// (−19/125, 19/125) up to the offset.
+TEST(FuzzRegressions, F6_ClosedFormDoublePointIsNotPolishedAway) {
+  const Curve c({{1.0, -1.0}, {-1.0, 1.0}, {-1.0, 1.0 - 0x1p-50}, {0.0, 0.0}});
+  const SelfIntersectionResult r = self_intersections(c);
+  ASSERT_EQ(r.pairs.size(), 1u);
+  EXPECT_NEAR(r.pairs[0].t, 0.6 - std::sqrt(3.0) / 5, 1e-9);
+  EXPECT_NEAR(r.pairs[0].s, 0.6 + std::sqrt(3.0) / 5, 1e-9);
+  EXPECT_NEAR(r.pairs[0].point.x, -19.0 / 125, 1e-9);
+  EXPECT_NEAR(r.pairs[0].point.y, 19.0 / 125, 1e-9);
+}
+
+// The largest |B(t) − B(s)| over the pairs, relative to the curve's scale.
+double worst_relative_gap(const Curve& c, const SelfIntersectionResult& r) {
+  double worst = 0.0;
+  for (const auto& p : r.pairs) {
+    const Point2 a = evaluate(c, p.t), b = evaluate(c, p.s);
+    worst = std::fmax(worst, std::fmax(std::fabs(a.x - b.x), std::fabs(a.y - b.y)) / scale(c));
+  }
+  return worst;
+}
+
+// F8, found by self_intersection_fuzzer: next to an end where B' vanishes (here P3 = P4 =
+// P5, so B(s) − B(1) = O((1 − s)^3)) the general method accepts a pair far from any double
+// point: |B(t) − B(s)| = 0.74 on a curve of scale 2208 (reported as transversal).
+TEST(FuzzRegressions, F8_PairsNextToAFlatEndAreDoublePoints) {
+  const Curve c({{0.0, 0x1.2afp-25},
+                 {0x1.2afp-25, -0x1.14p+11},
+                 {0x1.2affb3030fbp+7, 0x1.1p-31},
+                 {0.0, 0.0},
+                 {0.0, 0.0},
+                 {0.0, 0.0}});
+  const SelfIntersectionResult r = self_intersections(c);
+  ASSERT_EQ(r.status, SelfIntersectionStatus::ok);
+  EXPECT_LT(worst_relative_gap(c, r), 1e-9);
+}
+
+// F9, found by self_intersection_fuzzer: with coordinates spanning more than 2^400 the
+// classification is not exact, and the cubic with P2 = P3 (B'(1) = 0: a cusp at t = 1 by
+// DESIGN §1, whatever the other points) came out as loop-at-end with t1 = t2 = 1, which
+// self_intersections() passed on as the pair (1, 1).
+TEST(FuzzRegressions, F9_CuspAtTheEndIsNotALoopOfWidthZero) {
+  const std::array<Point2, 4> p = {Point2{-8.0, 0x1.0000000d6fbfcp-895}, Point2{0x1.0000000d6fbfcp-896, 0x1.0000000d6fbf8p-895},
+                                   Point2{0.0, 0.0}, Point2{0.0, 0.0}};
+  const CubicClassification k = classify(std::span<const Point2, 4>(p));
+  EXPECT_EQ(k.type, CubicType::cusp);
+  if (k.self_intersection) {
+    EXPECT_LT(k.self_intersection->t1, k.self_intersection->t2);
+  }
+  const SelfIntersectionResult r = self_intersections(Curve(std::vector<Point2>(p.begin(), p.end())));
+  for (const auto& pair : r.pairs) {
+    EXPECT_LT(pair.t, pair.s);
+  }
+}
+
+// F10, found by intersect_fuzzer: two curves on the line y = −x, f from (1, −1) to
+// (−1/2, 1/2) with P1 = P2 = P3 (f'(1) = 0) and g from (−1/2, 1/2) to (0, 0). g lies on f:
+// the overlap is t in [t0, 1] (f(t0) = (0, 0), 1 − t0 = 3^(-1/3)) with s in [0, 1]
+// reversed, and f(1) = g(0) bit for bit. The overlap stops 5e-8 short of t = 1 and a cloud
+// of three zero-width contacts sits next to it; (1, 0) is in none of them.
+TEST(FuzzRegressions, F10_OverlapReachesAFlatEnd) {
+  const Curve f({{1.0, -1.0}, {-0.5, 0.5}, {-0.5, 0.5}, {-0.5, 0.5}});
+  const Curve g({{-0.5, 0.5}, {-0.5, 0.5}, {0.0, 0.0}, {0.0, 0.0}});
+  const IntersectionResult r = intersect(f, g);
+  ASSERT_EQ(r.status, IntersectStatus::ok);
+  EXPECT_TRUE(covered(r, 1.0, 0.0));
+  ASSERT_EQ(r.overlaps.size(), 1u);
+  EXPECT_NEAR(r.overlaps[0].t_interval.lo, 1.0 - std::cbrt(1.0 / 3.0), 1e-12);
+  EXPECT_NEAR(r.overlaps[0].t_interval.hi, 1.0, 1e-12);
+}
+
+// F11, found by intersect_fuzzer: g touches the segment f at f's end with third-order
+// contact (P0, P1, P2 of g on the line y = 1, so g's y is 1 − s^3 near s = 0): one
+// contact, f(1) = g(0) exactly, reported as two (unresolved) boxes.
+TEST(FuzzRegressions, F11_HighOrderContactIsReportedOnce) {
+  const Curve f({{1.0, 1.0}, {-1.0, 1.0}});
+  const Curve g({{-1.0, 1.0}, {0x1.fc38p+6, 1.0}, {-1.0, 1.0}, {0.0, 0.0}});
+  IntersectOptions options;
+  options.tolerance = 1e-9;
+  options.method = IntersectMethod::bezier_clipping;
+  const IntersectionResult r = intersect(f, g, options);
+  ASSERT_EQ(r.status, IntersectStatus::ok);
+  EXPECT_EQ(r.intersections.size(), 1u);
+  EXPECT_TRUE(covered(r, 1.0, 0.0));
+}
+
+}  // namespace
+}  // namespace bezier::core
