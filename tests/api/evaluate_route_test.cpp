@@ -155,6 +155,18 @@ TEST(EvaluateRoute, TValueAndSampleLimits) {
   EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":[]})", 422)), (std::vector<std::string>{"/t"}));
 }
 
+TEST(EvaluateRoute, AnswerPointsLimitCountsDerivatives) {
+  Limits limits;
+  limits.max_t_values = 6;
+  // 2 t values x (2 derivatives + 1) = 6 points: at the limit.
+  call(R"({"points":[[0,0],[1,1],[2,0]],"t":[0,1],"derivatives":2})", 200, limits);
+  // 3 x 3 = 9 points: above it, reported at /derivatives.
+  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1],[2,0]],"t":[0,0.5,1],"derivatives":2})", 422, limits)),
+            (std::vector<std::string>{"/derivatives"}));
+  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1],[2,0]],"samples":4,"derivatives":1})", 422, limits)),
+            (std::vector<std::string>{"/derivatives"}));
+}
+
 TEST(EvaluateRoute, TAndSamplesAreExclusive) {
   EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":0,"samples":2})", 422)),
             (std::vector<std::string>{"/samples"}));
