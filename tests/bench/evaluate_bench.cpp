@@ -14,7 +14,6 @@
 
 #include <benchmark/benchmark.h>
 
-#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -65,17 +64,21 @@ Input3 input3(int degree) {
 int degree_arg(const benchmark::State& state) { return static_cast<int>(state.range(0)); }
 
 // The textbook algorithm: n rounds of P_i <- (1 - t) P_i + t P_{i+1} on a stack copy.
+// Plain double arrays: Point2's member initialisers would zero all 32 entries per call.
 Point2 plain_casteljau(const Curve& curve, double t) {
-  std::array<Point2, 32> w;  // not value-initialised: only the first n + 1 are written and read
+  double x[32], y[32];  // only the first n + 1 are written and read (degree <= 31)
   const int n = curve.degree();
-  for (int i = 0; i <= n; ++i) w[static_cast<std::size_t>(i)] = curve[i];
+  for (int i = 0; i <= n; ++i) {
+    x[i] = curve[i].x;
+    y[i] = curve[i].y;
+  }
   for (int level = n; level > 0; --level) {
     for (int i = 0; i < level; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      w[k] = (1.0 - t) * w[k] + t * w[k + 1];
+      x[i] = (1.0 - t) * x[i] + t * x[i + 1];
+      y[i] = (1.0 - t) * y[i] + t * y[i + 1];
     }
   }
-  return w[0];
+  return {x[0], y[0]};
 }
 
 // ---------------------------------------------------------------------------------------
