@@ -156,6 +156,7 @@ struct Curves {
   Curve random20 = random_curve(20, 20);
   Curve random10 = random_curve(10, 10);
   Curve random6 = random_curve(6, 6);
+  Curve random3 = random_curve(3, 3);
   Curve wave = from_coordinates(identity(20), chebyshev(20));            // (t, T_20(2t-1))
   Curve wave_t = from_coordinates(chebyshev(20), identity(20));          // (T_20(2s-1), s)
   Curve lissajous = from_coordinates(chebyshev(20), core::elevate_degree(chebyshev(19), 20));
@@ -236,6 +237,14 @@ inline std::vector<Request> requests() {
       std::snprintf(name, sizeof name, "/gap_%.0e_deg20", gap);
       r.push_back({"intersections/" + m + name, "/intersections",
                    two_curves(c.random20, translated(c.random20, 0.0, gap), m)});
+    }
+    // Even two cubics: a copy 1e-12 above its original (too close to be resolved as
+    // crossings, too far to be an overlap).
+    for (const double gap : {1e-12, 1e-9}) {
+      char name[64];
+      std::snprintf(name, sizeof name, "/gap_%.0e_cubic", gap);
+      r.push_back({"intersections/" + m + name, "/intersections",
+                   two_curves(c.random3, translated(c.random3, 0.0, gap), m)});
     }
   }
   r.push_back({"intersections/hybrid/wave_grid_400_tol_min", "/intersections",
