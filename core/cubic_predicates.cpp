@@ -172,6 +172,20 @@ CubicPredicates cubic_predicates_exact(std::span<const Point2, 4> p) {
   out.l1 = l1.estimate();
   out.sign = {d1.sign(), d2.sign(),   d3.sign(), vertex.sign(),
               i1.sign(), disc.sign(), l0.sign(), l1.sign()};
+  if (!out.exact && p[2] == p[3]) {
+    // P2 = P3 (B'(1) = 0): w = v, so d2 = −2 d1, d3 = d1 and then d2 + 2 d3 = I(1) = disc
+    // = l1 = 0, l0 = d1², identically. With coordinates lost to underflow the products
+    // above are not exact and can break these identities (a cusp at t = 1 read as a loop
+    // closing there with t1 = t2 = 1); restore them from d1.
+    const double e1 = out.d1;
+    const int s1 = out.sign.d1;
+    out.d2 = -2.0 * e1;
+    out.d3 = e1;
+    out.disc = 0.0;
+    out.l0 = e1 * e1;
+    out.l1 = 0.0;
+    out.sign = {s1, -s1, s1, 0, 0, 0, s1 * s1, 0};
+  }
   return out;
 }
 

@@ -120,6 +120,9 @@ std::vector<SelfIntersection> clean_up(const std::vector<Candidate>& candidates,
     const Candidate c = snapped_to_ends(raw, facts);
     if (!(0.0 <= c.u && c.u < c.v && c.v <= 1.0)) continue;
     if (facts.closed && c.u == 0.0 && c.v == 1.0) continue;
+    // A crossing must be a double point: next to an end where B' vanishes Newton can stop
+    // (small steps, flat F) far from one. Contacts were checked against dist_tol already.
+    if (!c.contact && exact_residual(facts.curve, c.u, c.v) > facts.dist_tol) continue;
     kept.push_back(c);
   }
   std::sort(kept.begin(), kept.end(), by_u);
@@ -304,6 +307,7 @@ std::optional<SelfIntersectionResult> closed_form_cubic(const CurveFacts& facts)
   const auto dp = cubic_double_point(std::span<const Point2, 4>(facts.points.data(), 4));
   if (!dp || !dp->on_segment) return std::nullopt;
   if (facts.closed && dp->t1 == 0.0 && dp->t2 == 1.0) return std::nullopt;  // the trivial pair
+  if (!(dp->t1 < dp->t2)) return std::nullopt;  // a loop of width zero is no pair (t < s)
   SelfIntersectionResult result;
   result.stats.method = SelfIntersectionMethod::closed_form_cubic;
   double u = dp->t1, v = dp->t2;
@@ -312,9 +316,15 @@ std::optional<SelfIntersectionResult> closed_form_cubic(const CurveFacts& facts)
   ++result.stats.newton_runs;
   result.stats.newton_iterations += polished.iterations;
   if (polished.converged && polished.u < polished.v) {
-    // Ends decided exactly stay exact.
-    if (u != 0.0) u = polished.u;
-    if (v != 1.0) v = polished.v;
+    // Ends decided exactly stay exact. The polish is kept only when it does not increase
+    // the compensated residual |B(v) - B(u)|: on an ill-conditioned (nearly collinear)
+    // cubic Newton can walk away from the closed form's root and still report converged.
+    const double nu = u != 0.0 ? polished.u : u;
+    const double nv = v != 1.0 ? polished.v : v;
+    if (exact_residual(facts.curve, nu, nv) <= exact_residual(facts.curve, u, v)) {
+      u = nu;
+      v = nv;
+    }
   }
   result.pairs.push_back({u, v, dp->point, SelfIntersectionKind::transversal});
   return result;

@@ -195,9 +195,7 @@ TEST(FuzzRegressions, F5_SubnormalSegmentsThroughTheApi) {
 // b = P2 − 2P1 + P0, c = P3 − 3P2 + 3P1 − P0, t + s = −(a × c)/(b × c) = 6/5 and
 // t s = 6/25 whatever the 2^-50 offset, so t, s = 3/5 ∓ √3/5, and the point is
 // (−19/125, 19/125) up to the offset.
-// Open: the kernel still fails this (docs/FUZZING.md; issue 6 notes). Enabled again with
-// its fix; DISABLED_ keeps it compiled and listed by gtest as disabled meanwhile.
-TEST(FuzzRegressions, DISABLED_F6_ClosedFormDoublePointIsNotPolishedAway) {
+TEST(FuzzRegressions, F6_ClosedFormDoublePointIsNotPolishedAway) {
   const Curve c({{1.0, -1.0}, {-1.0, 1.0}, {-1.0, 1.0 - 0x1p-50}, {0.0, 0.0}});
   const SelfIntersectionResult r = self_intersections(c);
   ASSERT_EQ(r.pairs.size(), 1u);
@@ -220,9 +218,7 @@ double worst_relative_gap(const Curve& c, const SelfIntersectionResult& r) {
 // F8, found by self_intersection_fuzzer: next to an end where B' vanishes (here P3 = P4 =
 // P5, so B(s) − B(1) = O((1 − s)^3)) the general method accepts a pair far from any double
 // point: |B(t) − B(s)| = 0.74 on a curve of scale 2208 (reported as transversal).
-// Open: the kernel still fails this (docs/FUZZING.md; issue 6 notes). Enabled again with
-// its fix; DISABLED_ keeps it compiled and listed by gtest as disabled meanwhile.
-TEST(FuzzRegressions, DISABLED_F8_PairsNextToAFlatEndAreDoublePoints) {
+TEST(FuzzRegressions, F8_PairsNextToAFlatEndAreDoublePoints) {
   const Curve c({{0.0, 0x1.2afp-25},
                  {0x1.2afp-25, -0x1.14p+11},
                  {0x1.2affb3030fbp+7, 0x1.1p-31},
@@ -238,9 +234,7 @@ TEST(FuzzRegressions, DISABLED_F8_PairsNextToAFlatEndAreDoublePoints) {
 // classification is not exact, and the cubic with P2 = P3 (B'(1) = 0: a cusp at t = 1 by
 // DESIGN §1, whatever the other points) came out as loop-at-end with t1 = t2 = 1, which
 // self_intersections() passed on as the pair (1, 1).
-// Open: the kernel still fails this (docs/FUZZING.md; issue 6 notes). Enabled again with
-// its fix; DISABLED_ keeps it compiled and listed by gtest as disabled meanwhile.
-TEST(FuzzRegressions, DISABLED_F9_CuspAtTheEndIsNotALoopOfWidthZero) {
+TEST(FuzzRegressions, F9_CuspAtTheEndIsNotALoopOfWidthZero) {
   const std::array<Point2, 4> p = {Point2{-8.0, 0x1.0000000d6fbfcp-895}, Point2{0x1.0000000d6fbfcp-896, 0x1.0000000d6fbf8p-895},
                                    Point2{0.0, 0.0}, Point2{0.0, 0.0}};
   const CubicClassification k = classify(std::span<const Point2, 4>(p));
