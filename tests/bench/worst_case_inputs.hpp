@@ -202,6 +202,9 @@ inline std::vector<Request> requests() {
                nlohmann::json{{"points", points_json(c.random20)}, {"samples", 10000}, {"derivatives", 20}}.dump()});
   r.push_back({"evaluate/deg20_samples10000_deriv20_3d", "/evaluate",
                nlohmann::json{{"points", points3_json(c.random20, 1.0)}, {"samples", 10000}, {"derivatives", 20}}.dump()});
+  // The most derivatives the t-values x (derivatives + 1) <= max_t_values rule allows.
+  r.push_back({"evaluate/deg20_samples476_deriv20_3d", "/evaluate",
+               nlohmann::json{{"points", points3_json(c.random20, 1.0)}, {"samples", 476}, {"derivatives", 20}}.dump()});
   r.push_back({"evaluate/deg20_t10000_deriv20_split", "/evaluate",
                nlohmann::json{{"points", points_json(c.random20)}, {"t", ts}, {"derivatives", 20}, {"split", 0.5}}.dump()});
   r.push_back({"evaluate/deg20_t10000_far_deriv20", "/evaluate",
