@@ -111,6 +111,7 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
       x.t_interval = x.s_interval = {0.0, 1.0};
       x.point = f.front();
       x.kind = IntersectionKind::degenerate;
+      x.resolved = false;  // every t and s: the intervals are [0, 1]
       result.intersections.push_back(x);
     }
     return result;
@@ -121,8 +122,11 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
       result.overlaps = line->overlaps;
       for (const CollinearContact& c : line->touches) {
         if (!t_range.contains(c.t_estimate) || !s_range.contains(c.s_estimate)) continue;
-        result.intersections.push_back(
-            make_intersection(wf, wg, frame, c.t_estimate, c.s_estimate, c.t, c.s));
+        Intersection x = make_intersection(wf, wg, frame, c.t_estimate, c.s_estimate, c.t, c.s);
+        // A curve within the line tolerance of a point touches with all of its parameter
+        // range: resolved only when both ranges are narrower than the tolerance (F2).
+        x.resolved = c.t.width() < options.tolerance && c.s.width() < options.tolerance;
+        result.intersections.push_back(x);
       }
       sort_result(result);
       return result;
@@ -168,8 +172,9 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
     result.stats.newton_iterations += r.iterations;
     Intersection x = make_intersection(wf, wg, frame, r.t, r.s, c.t, c.s);
     if (in.t_free || in.s_free) x.kind = IntersectionKind::degenerate;
-    x.resolved = c.resolved && (in.t_free || c.t.width() < options.tolerance) &&
-                 (in.s_free || c.s.width() < options.tolerance);
+    // A curve handled as a point keeps the whole (or half) parameter interval: it is not
+    // resolved then, whatever the other curve's box (Intersection's contract; finding F2).
+    x.resolved = c.resolved && c.t.width() < options.tolerance && c.s.width() < options.tolerance;
     result.intersections.push_back(x);
   }
   sort_result(result);

@@ -116,9 +116,7 @@ void expect_intersection_contract(const IntersectionResult& r, double tolerance)
 // as a point, its parameter interval is [0, 1] (or a half of it), and the intersection is
 // still flagged `resolved`. Here f is the segment y = 2x of length ~2^-48 through the
 // origin and g the segment y = x / 2 through it: one transversal crossing, at t = s = 1/2.
-// Open: the kernel still fails this (docs/FUZZING.md; issue 6 notes). Enabled again with
-// its fix; DISABLED_ keeps it compiled and listed by gtest as disabled meanwhile.
-TEST(FuzzRegressions, DISABLED_F2_TinyCurveIsNotReportedResolvedWithItsWholeInterval) {
+TEST(FuzzRegressions, F2_TinyCurveIsNotReportedResolvedWithItsWholeInterval) {
   const Curve f({{-0x1p-50, -0x1p-49}, {0.0, 0.0}, {0x1p-50, 0x1p-49}});
   const Curve g({{-1.0, -0.5}, {1.0, 0.5}});
   IntersectOptions options;
