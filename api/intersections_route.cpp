@@ -101,18 +101,6 @@ Reply two_curves_answer(const IntersectionsRequest& request) {
                      {"stats", std::move(stats)}});
 }
 
-const char* self_method_name(core::SelfIntersectionMethod method) {
-  switch (method) {
-    case core::SelfIntersectionMethod::closed_form_cubic:
-      return "closed-form-cubic";
-    case core::SelfIntersectionMethod::collinear:
-      return "collinear";
-    case core::SelfIntersectionMethod::subdivision:
-      break;
-  }
-  return "subdivision";
-}
-
 core::IntersectionKind kind_of(core::SelfIntersectionKind kind) {
   switch (kind) {
     case core::SelfIntersectionKind::tangent:
@@ -185,7 +173,7 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
                      {"overlaps", std::move(overlaps)},
                      {"tolerance", request.options.tolerance},
                      {"stats",
-                      {{"method", self_method_name(r.stats.method)},
+                      {{"method", core::method_name(r.stats.method)},
                        {"work", r.stats.work},
                        {"max_depth", r.stats.max_depth},
                        {"newton_iterations", r.stats.newton_iterations},

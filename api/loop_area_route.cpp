@@ -46,18 +46,6 @@ const char* kind_name(core::SelfIntersectionKind kind) {
   return "transversal";
 }
 
-const char* method_name(core::SelfIntersectionMethod method) {
-  switch (method) {
-    case core::SelfIntersectionMethod::closed_form_cubic:
-      return "closed-form-cubic";
-    case core::SelfIntersectionMethod::collinear:
-      return "collinear";
-    case core::SelfIntersectionMethod::subdivision:
-      break;
-  }
-  return "subdivision";
-}
-
 /// An area beyond the double range (the curve is finite, its area need not be: a loop
 /// 1e200 wide) cannot be written as a JSON number: that request is answered with a problem.
 Reply area_out_of_range() {
@@ -138,7 +126,7 @@ Reply loops_answer(const core::Curve& curve, const Limits& limits) {
                                                         : nlohmann::json(nullptr)},
                      {"overlaps", std::move(overlaps)},
                      {"stats",
-                      {{"method", method_name(result.stats.method)},
+                      {{"method", core::method_name(result.stats.method)},
                        {"work", result.stats.work},
                        {"max_depth", result.stats.max_depth},
                        {"newton_iterations", result.stats.newton_iterations}}}});

@@ -49,6 +49,19 @@ enum class SelfIntersectionMethod {
   collinear,          ///< 1-D analysis of a collinear curve
 };
 
+/// The method's name as the API writes it: "closed-form-cubic", "subdivision", "collinear".
+[[nodiscard]] constexpr const char* method_name(SelfIntersectionMethod method) noexcept {
+  switch (method) {
+    case SelfIntersectionMethod::closed_form_cubic:
+      return "closed-form-cubic";
+    case SelfIntersectionMethod::collinear:
+      return "collinear";
+    case SelfIntersectionMethod::subdivision:
+      break;
+  }
+  return "subdivision";
+}
+
 /// What the search cost; for benchmarks and the API's `stats`.
 struct SelfIntersectionStats {
   SelfIntersectionMethod method = SelfIntersectionMethod::subdivision;
