@@ -175,6 +175,18 @@ TEST(FuzzRegressions, F5_SubnormalCoordinatesGiveFinitePointsAndTheRightRoot) {
   expect_intersection_contract(r, IntersectOptions{}.tolerance);
 }
 
+// F5b (F5 again after 1107d08; disabled until fixed), found by intersect_fuzzer: coordinates a few subnormal steps
+// from zero. A point (a degree-1 curve with equal points) at the origin and a segment from
+// (-2e-323, 0) to it: the search spends the whole work budget and reports NaN points.
+TEST(FuzzRegressions, DISABLED_F5b_SegmentFourSubnormalStepsLong) {
+  const Curve f({{0.0, 0.0}, {0.0, 0.0}});
+  const Curve g({{-0x0.0000000000004p-1022, 0.0}, {0.0, 0.0}});
+  const IntersectionResult r = intersect(f, g);
+  ASSERT_EQ(r.status, IntersectStatus::ok);
+  EXPECT_TRUE(covered(r, 0.5, 1.0));
+  expect_intersection_contract(r, IntersectOptions{}.tolerance);
+}
+
 // F5 through the API: a NaN point would be written as null (or, since F1's fix, turn a
 // valid request into a 422); the answer is the intersection at the origin.
 TEST(FuzzRegressions, F5_SubnormalSegmentsThroughTheApi) {
@@ -201,6 +213,20 @@ TEST(FuzzRegressions, F6_ClosedFormDoublePointIsNotPolishedAway) {
   EXPECT_NEAR(r.pairs[0].s, 0.6 + std::sqrt(3.0) / 5, 1e-9);
   EXPECT_NEAR(r.pairs[0].point.x, -19.0 / 125, 1e-9);
   EXPECT_NEAR(r.pairs[0].point.y, 19.0 / 125, 1e-9);
+}
+
+// F6 again, next to a cusp: the cusp cubic (0,0), (1,1), (0,1), (1,0) with P3 moved 3 ulps
+// to the left has a loop of parameter width about 1.6e-8 (the perturbation's square root,
+// 2 sqrt(3 * 2^-53 / ...)); the polish moved it to 0.433 .. 0.567, where B(t) and B(s) are
+// 2.4e-3 apart. The pair must be a double point, and narrow.
+TEST(FuzzRegressions, F6_DoublePointNextToACuspIsNotPolishedAway) {
+  const Curve c({{0.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}, {0x1.ffffffffffffdp-1, 0.0}});
+  const SelfIntersectionResult r = self_intersections(c);
+  for (const auto& p : r.pairs) {
+    const Point2 a = evaluate(c, p.t), b = evaluate(c, p.s);
+    EXPECT_LT(std::fmax(std::fabs(a.x - b.x), std::fabs(a.y - b.y)), 1e-12) << p.t << " " << p.s;
+    EXPECT_LT(p.s - p.t, 1e-6) << p.t << " " << p.s;
+  }
 }
 
 // The largest |B(t) − B(s)| over the pairs, relative to the curve's scale.
