@@ -7,11 +7,10 @@
 
 #include <array>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <span>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "api/handler.hpp"
 #include "core/classify.hpp"
@@ -107,8 +106,10 @@ void expect_intersection_contract(const IntersectionResult& r, double tolerance)
     EXPECT_TRUE(x.t_interval.contains(x.t) && x.s_interval.contains(x.s)) << x.t << " " << x.s;
     EXPECT_TRUE(std::isfinite(x.point.x) && std::isfinite(x.point.y)) << x.t << " " << x.s;
     if (x.resolved) {
-      EXPECT_LT(x.t_interval.width(), tolerance) << "t in [" << x.t_interval.lo << ", " << x.t_interval.hi << "]";
-      EXPECT_LT(x.s_interval.width(), tolerance) << "s in [" << x.s_interval.lo << ", " << x.s_interval.hi << "]";
+      EXPECT_LT(x.t_interval.width(), tolerance)
+          << "t in [" << x.t_interval.lo << ", " << x.t_interval.hi << "]";
+      EXPECT_LT(x.s_interval.width(), tolerance)
+          << "s in [" << x.s_interval.lo << ", " << x.s_interval.hi << "]";
     }
   }
 }
@@ -176,8 +177,9 @@ TEST(FuzzRegressions, F5_SubnormalCoordinatesGiveFinitePointsAndTheRightRoot) {
   expect_intersection_contract(r, IntersectOptions{}.tolerance);
 }
 
-// F5b (F5 again after 1107d08; disabled until fixed), found by intersect_fuzzer: coordinates a few subnormal steps
-// from zero. A point (a degree-1 curve with equal points) at the origin and a segment from
+// F5b (F5 again after 1107d08; disabled until fixed), found by intersect_fuzzer: coordinates a few
+// subnormal steps from zero. A point (a degree-1 curve with equal points) at the origin and a
+// segment from
 // (-2e-323, 0) to it: the search spends the whole work budget and reports NaN points.
 TEST(FuzzRegressions, DISABLED_F5b_SegmentFourSubnormalStepsLong) {
   const Curve f({{0.0, 0.0}, {0.0, 0.0}});
@@ -192,8 +194,8 @@ TEST(FuzzRegressions, DISABLED_F5b_SegmentFourSubnormalStepsLong) {
 // valid request into a 422); the answer is the intersection at the origin.
 TEST(FuzzRegressions, F5_SubnormalSegmentsThroughTheApi) {
   const api::Reply reply = api::handle(
-      "/intersections", R"({"curves":[{"points":[[1e-310,0],[0,0]]},{"points":[[0,0],[0,1e-310]]}]})",
-      api::Limits{});
+      "/intersections",
+      R"({"curves":[{"points":[[1e-310,0],[0,0]]},{"points":[[0,0],[0,1e-310]]}]})", api::Limits{});
   ASSERT_EQ(reply.status, 200) << reply.body;
   const auto answer = nlohmann::json::parse(reply.body);
   ASSERT_EQ(answer["intersections"].size(), 1u) << reply.body;
@@ -230,27 +232,28 @@ TEST(FuzzRegressions, F6_DoublePointNextToACuspIsNotPolishedAway) {
   }
 }
 
-// F12 (disabled until fixed), found by self_intersection_fuzzer comparing the methods after 86fab32: the
-// general method (subdivision) misses the loop of this cubic and reports status ok. The
-// loop is certain: the closed form decides it exactly (cubic_double_point.hpp), at t about
-// 0.04 and s about 0.998, where the branches cross at a small angle.
+// F12 (disabled until fixed), found by self_intersection_fuzzer comparing the methods after
+// 86fab32: the general method (subdivision) misses the loop of this cubic and reports status ok.
+// The loop is certain: the closed form decides it exactly (cubic_double_point.hpp), at t about 0.04
+// and s about 0.998, where the branches cross at a small angle.
 TEST(FuzzRegressions, DISABLED_F12_GeneralMethodFindsTheLoopTheClosedFormFinds) {
-  const std::array<Point2, 4> p = {Point2{1.0, 0.5}, Point2{-8.0, -4.0}, Point2{0x1.12d00000080afp+29, 0x1.785p+13},
-                                   Point2{0.0, 0.0}};
+  const std::array<Point2, 4> p = {Point2{1.0, 0.5}, Point2{-8.0, -4.0},
+                                   Point2{0x1.12d00000080afp+29, 0x1.785p+13}, Point2{0.0, 0.0}};
   const auto dp = cubic_double_point(std::span<const Point2, 4>(p));
   ASSERT_TRUE(dp.has_value() && dp->on_segment);
   SelfIntersectionOptions general;
   general.cubic_closed_form = false;
-  const SelfIntersectionResult r = self_intersections(Curve(std::vector<Point2>(p.begin(), p.end())), general);
+  const SelfIntersectionResult r =
+      self_intersections(Curve(std::vector<Point2>(p.begin(), p.end())), general);
   ASSERT_EQ(r.status, SelfIntersectionStatus::ok);
   ASSERT_EQ(r.pairs.size(), 1u);
   EXPECT_NEAR(r.pairs[0].t, dp->t1, 1e-9);
   EXPECT_NEAR(r.pairs[0].s, dp->t2, 1e-9);
 }
 
-// F13 (disabled until fixed), found by intersect_fuzzer (UBSan): coordinates next to the largest double. The
-// working frame's largest offset overflows to infinity and `std::ilogb(m) + 1` overflows
-// an int (working_curve.cpp:43, undefined behaviour; the sanitizer build aborts). The
+// F13 (disabled until fixed), found by intersect_fuzzer (UBSan): coordinates next to the largest
+// double. The working frame's largest offset overflows to infinity and `std::ilogb(m) + 1`
+// overflows an int (working_curve.cpp:43, undefined behaviour; the sanitizer build aborts). The
 // answer: f ends where g (a point) is, t = 1.
 TEST(FuzzRegressions, DISABLED_F13_CoordinatesNextToTheLargestDouble) {
   const Curve f({{0.0, -1.79e308}, {1.79e308, -1.79e308}});
@@ -261,10 +264,10 @@ TEST(FuzzRegressions, DISABLED_F13_CoordinatesNextToTheLargestDouble) {
   expect_intersection_contract(r, IntersectOptions{}.tolerance);
 }
 
-// F15 (disabled until fixed), found by self_intersection_fuzzer: coordinates spanning more than 2^400:
-// the cubic's closed form is not exact (CubicPredicates::exact false), and the pair it
-// gives need not be a double point: here (0, 1) on an open curve, |B(0) − B(1)| = 0.027
-// on a curve of size 8.
+// F15 (disabled until fixed), found by self_intersection_fuzzer: coordinates spanning more than
+// 2^400: the cubic's closed form is not exact (CubicPredicates::exact false), and the pair it gives
+// need not be a double point: here (0, 1) on an open curve, |B(0) − B(1)| = 0.027 on a curve of
+// size 8.
 TEST(FuzzRegressions, DISABLED_F15_InexactClosedFormGivesDoublePoints) {
   const Curve c({{0x1.c18000418p-6, 0x0.00000838p-1022},
                  {-4.0, 0x1.383832e61e7afp-935},
@@ -273,7 +276,8 @@ TEST(FuzzRegressions, DISABLED_F15_InexactClosedFormGivesDoublePoints) {
   const SelfIntersectionResult r = self_intersections(c);
   for (const auto& p : r.pairs) {
     const Point2 a = evaluate(c, p.t), b = evaluate(c, p.s);
-    EXPECT_LT(std::fmax(std::fabs(a.x - b.x), std::fabs(a.y - b.y)), 1e-12 * scale(c)) << p.t << " " << p.s;
+    EXPECT_LT(std::fmax(std::fabs(a.x - b.x), std::fabs(a.y - b.y)), 1e-12 * scale(c))
+        << p.t << " " << p.s;
   }
 }
 
@@ -307,14 +311,16 @@ TEST(FuzzRegressions, F8_PairsNextToAFlatEndAreDoublePoints) {
 // DESIGN §1, whatever the other points) came out as loop-at-end with t1 = t2 = 1, which
 // self_intersections() passed on as the pair (1, 1).
 TEST(FuzzRegressions, F9_CuspAtTheEndIsNotALoopOfWidthZero) {
-  const std::array<Point2, 4> p = {Point2{-8.0, 0x1.0000000d6fbfcp-895}, Point2{0x1.0000000d6fbfcp-896, 0x1.0000000d6fbf8p-895},
+  const std::array<Point2, 4> p = {Point2{-8.0, 0x1.0000000d6fbfcp-895},
+                                   Point2{0x1.0000000d6fbfcp-896, 0x1.0000000d6fbf8p-895},
                                    Point2{0.0, 0.0}, Point2{0.0, 0.0}};
   const CubicClassification k = classify(std::span<const Point2, 4>(p));
   EXPECT_EQ(k.type, CubicType::cusp);
   if (k.self_intersection) {
     EXPECT_LT(k.self_intersection->t1, k.self_intersection->t2);
   }
-  const SelfIntersectionResult r = self_intersections(Curve(std::vector<Point2>(p.begin(), p.end())));
+  const SelfIntersectionResult r =
+      self_intersections(Curve(std::vector<Point2>(p.begin(), p.end())));
   for (const auto& pair : r.pairs) {
     EXPECT_LT(pair.t, pair.s);
   }

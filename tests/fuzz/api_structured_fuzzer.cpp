@@ -16,10 +16,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
-
-#include <nlohmann/json.hpp>
 
 #include "api/handler.hpp"
 #include "api/limits.hpp"
@@ -264,14 +263,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       break;
   }
   const std::string body = request.dump();
-  if (bezier::fuzz::print_inputs()) std::fprintf(stderr, "%.*s %s\n", static_cast<int>(path.size()), path.data(), body.c_str());
+  if (bezier::fuzz::print_inputs())
+    std::fprintf(stderr, "%.*s %s\n", static_cast<int>(path.size()), path.data(), body.c_str());
   const bezier::api::Reply reply = bezier::api::handle(path, body, limits);
   bezier::fuzz::check_reply(body, reply);
   check(reply.status != 400, [&] { return "400 for a JSON object: " + reply.body; });
   if (builder.valid()) {
     // Besides 200: the work cap, and (since finding F1) a result beyond the double range.
     const bool work_cap = reply.status == 422 && reply.body.find("work-cap") != std::string::npos;
-    const bool overflow = reply.status == 422 && reply.body.find("double range") != std::string::npos;
+    const bool overflow =
+        reply.status == 422 && reply.body.find("double range") != std::string::npos;
     check(reply.status == 200 || work_cap || overflow, [&] {
       return "a request within the documented rules was rejected: " + body + "\n  -> " +
              reply.body.substr(0, 2000);

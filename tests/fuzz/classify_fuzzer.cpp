@@ -47,24 +47,33 @@ std::string describe(const Cubic& p) {
   return s + "]";
 }
 
-std::string type_name(CubicType t) { return std::string(bezier::core::name(t)); }
+std::string type_name(CubicType t) {
+  return std::string(bezier::core::name(t));
+}
 
 bool is_loop(CubicType t) {
   return t == CubicType::loop || t == CubicType::loop_at_start || t == CubicType::loop_at_end;
 }
 
-bool in_unit(double t) { return 0.0 <= t && t <= 1.0; }
+bool in_unit(double t) {
+  return 0.0 <= t && t <= 1.0;
+}
 
 void check_fields(const Cubic& p, const CubicClassification& c) {
   const auto ctx = [&] { return type_name(c.type) + " for " + describe(p); };
-  check(c.cusp.has_value() == (c.type == CubicType::cusp), [&] { return "cusp field vs type " + ctx(); });
+  check(c.cusp.has_value() == (c.type == CubicType::cusp),
+        [&] { return "cusp field vs type " + ctx(); });
   if (c.cusp) check(in_unit(*c.cusp), [&] { return "cusp outside [0,1]: " + ctx(); });
-  check(c.self_intersection.has_value() == is_loop(c.type), [&] { return "double point vs type " + ctx(); });
+  check(c.self_intersection.has_value() == is_loop(c.type),
+        [&] { return "double point vs type " + ctx(); });
   if (const auto& d = c.self_intersection) {
-    check(d->on_segment && in_unit(d->t1) && in_unit(d->t2) && d->t1 <= d->t2 && bezier::fuzz::is_finite(d->point),
+    check(d->on_segment && in_unit(d->t1) && in_unit(d->t2) && d->t1 <= d->t2 &&
+              bezier::fuzz::is_finite(d->point),
           [&] { return "double point not on the segment or not ordered: " + ctx(); });
-    if (c.type == CubicType::loop_at_start) check(d->t1 == 0.0, [&] { return "loop-at-start with t1 != 0: " + ctx(); });
-    if (c.type == CubicType::loop_at_end) check(d->t2 == 1.0, [&] { return "loop-at-end with t2 != 1: " + ctx(); });
+    if (c.type == CubicType::loop_at_start)
+      check(d->t1 == 0.0, [&] { return "loop-at-start with t1 != 0: " + ctx(); });
+    if (c.type == CubicType::loop_at_end)
+      check(d->t2 == 1.0, [&] { return "loop-at-end with t2 != 1: " + ctx(); });
   }
   const auto inflections = c.inflections.values();
   check(inflections.size() <= 2, [&] { return "more than 2 inflections: " + ctx(); });
@@ -72,7 +81,9 @@ void check_fields(const Cubic& p, const CubicClassification& c) {
     check(in_unit(inflections[i]), [&] { return "inflection outside [0,1]: " + ctx(); });
     // Non-decreasing: two distinct roots closer than an ulp round to the same double
     // (found by this target: a cubic next to the cusp at t = 1 got inflections {1, 1}).
-    if (i > 0) check(inflections[i - 1] <= inflections[i], [&] { return "inflections decreasing: " + ctx(); });
+    if (i > 0)
+      check(inflections[i - 1] <= inflections[i],
+            [&] { return "inflections decreasing: " + ctx(); });
   }
   std::size_t expected_inflections = 3;  // 3: not determined by the type
   switch (c.type) {
@@ -92,17 +103,23 @@ void check_fields(const Cubic& p, const CubicClassification& c) {
       break;
   }
   if (expected_inflections != 3) {
-    check(inflections.size() == expected_inflections, [&] { return "inflection count vs type " + ctx(); });
+    check(inflections.size() == expected_inflections,
+          [&] { return "inflection count vs type " + ctx(); });
   }
   const auto lb = c.loop_blinn;
-  check((c.type == CubicType::point) == (lb == LoopBlinnClass::point), [&] { return "Loop-Blinn point " + ctx(); });
-  check((c.type == CubicType::line) == (lb == LoopBlinnClass::line), [&] { return "Loop-Blinn line " + ctx(); });
+  check((c.type == CubicType::point) == (lb == LoopBlinnClass::point),
+        [&] { return "Loop-Blinn point " + ctx(); });
+  check((c.type == CubicType::line) == (lb == LoopBlinnClass::line),
+        [&] { return "Loop-Blinn line " + ctx(); });
   check((c.type == CubicType::quadratic) == (lb == LoopBlinnClass::quadratic),
         [&] { return "Loop-Blinn quadratic " + ctx(); });
-  if (c.type == CubicType::cusp) check(lb == LoopBlinnClass::cusp, [&] { return "cusp not in the cusp class " + ctx(); });
-  if (is_loop(c.type)) check(lb == LoopBlinnClass::loop, [&] { return "loop not in the loop class " + ctx(); });
+  if (c.type == CubicType::cusp)
+    check(lb == LoopBlinnClass::cusp, [&] { return "cusp not in the cusp class " + ctx(); });
+  if (is_loop(c.type))
+    check(lb == LoopBlinnClass::loop, [&] { return "loop not in the loop class " + ctx(); });
   if (c.canonical_point) {
-    check(bezier::fuzz::is_finite(*c.canonical_point), [&] { return "non-finite canonical point " + ctx(); });
+    check(bezier::fuzz::is_finite(*c.canonical_point),
+          [&] { return "non-finite canonical point " + ctx(); });
   }
 }
 
@@ -160,11 +177,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (c.exact && use_oracle) {
     const CubicType expected = bezier::test::exact_type(p);
     check(c.type == expected, [&] {
-      return "type " + type_name(c.type) + ", exact oracle says " + type_name(expected) + ": " + describe(p);
+      return "type " + type_name(c.type) + ", exact oracle says " + type_name(expected) + ": " +
+             describe(p);
     });
   }
   if (use_oracle && collinear_start(p)) {
-    check(!c.canonical_point.has_value(), [&] { return "canonical point for collinear P0, P1, P2: " + describe(p); });
+    check(!c.canonical_point.has_value(),
+          [&] { return "canonical point for collinear P0, P1, P2: " + describe(p); });
   }
 
   const auto same_type = [&](const Cubic& q, CubicType expected, const char* what) {
@@ -172,13 +191,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     check_fields(q, d);
     if (!(c.exact && d.exact)) return;
     check(d.type == expected, [&] {
-      return std::string(what) + ": " + type_name(d.type) + " instead of " + type_name(expected) + " for " +
-             describe(p);
+      return std::string(what) + ": " + type_name(d.type) + " instead of " + type_name(expected) +
+             " for " + describe(p);
     });
   };
   const auto swapped = mapped(p, [](Point2 q) { return std::optional<Point2>(Point2{q.y, q.x}); });
   same_type(*swapped, c.type, "x <-> y");
-  const auto negated = mapped(p, [](Point2 q) { return std::optional<Point2>(Point2{-q.x, -q.y}); });
+  const auto negated = mapped(p, [](Point2 q) {
+    return std::optional<Point2>(Point2{-q.x, -q.y});
+  });
   same_type(*negated, c.type, "negated");
   const auto scaled = mapped(p, [&](Point2 q) -> std::optional<Point2> {
     const Point2 r{std::ldexp(q.x, scale_exponent), std::ldexp(q.y, scale_exponent)};

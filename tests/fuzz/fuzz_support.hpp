@@ -98,7 +98,7 @@ class NumberSource {
         const auto k = data_.ConsumeIntegral<std::int16_t>();
         return std::ldexp(static_cast<double>(k), -data_.ConsumeIntegralInRange<int>(0, 20));
       }
-      case 3:  // a previous number again (coincident and collinear points) ...
+      case 3:    // a previous number again (coincident and collinear points) ...
       case 4: {  // ... or a few ulps away from it (near-degenerate input)
         if (previous_.empty()) return 0.0;
         double x = previous_[data_.ConsumeIntegralInRange<std::size_t>(0, previous_.size() - 1)];
@@ -151,6 +151,8 @@ class NumberSource {
 }
 
 /// Whether every coordinate is finite.
-[[nodiscard]] inline bool is_finite(const core::Point2& p) noexcept { return core::is_finite(p); }
+[[nodiscard]] inline bool is_finite(const core::Point2& p) noexcept {
+  return core::is_finite(p);
+}
 
 }  // namespace bezier::fuzz

@@ -8,10 +8,9 @@
 // null).
 
 #include <array>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
-
-#include <nlohmann/json.hpp>
 
 #include "api/problem.hpp"
 #include "tests/fuzz/fuzz_support.hpp"
@@ -62,8 +61,8 @@ inline void check_reply(std::string_view body, const api::Reply& reply) {
   bool allowed = false;
   for (const int s : kAllowed) allowed = allowed || reply.status == s;
   check(allowed, [&] {
-    return "status " + std::to_string(reply.status) + " is not one a POST body may get: " +
-           reply.body.substr(0, 2000);
+    return "status " + std::to_string(reply.status) +
+           " is not one a POST body may get: " + reply.body.substr(0, 2000);
   });
 
   const auto answer = nlohmann::json::parse(reply.body, nullptr, /*allow_exceptions=*/false);
@@ -74,9 +73,8 @@ inline void check_reply(std::string_view body, const api::Reply& reply) {
   // beyond the double range, which the API reports as 422 field errors).
   const auto request = nlohmann::json::parse(body, nullptr, /*allow_exceptions=*/false);
   if (!request.is_discarded()) {
-    check(request.is_object() == (reply.status != 400), [&] {
-      return "400 must mean exactly 'body is not a JSON object'; got " + reply.body;
-    });
+    check(request.is_object() == (reply.status != 400),
+          [&] { return "400 must mean exactly 'body is not a JSON object'; got " + reply.body; });
   }
 
   if (reply.status == 200) {
@@ -94,14 +92,18 @@ inline void check_reply(std::string_view body, const api::Reply& reply) {
   for (const char* key : {"type", "title", "detail"}) {
     check(answer.contains(key) && answer[key].is_string() &&
               !answer[key].get_ref<const std::string&>().empty(),
-          [&] { return std::string("problem body without a non-empty string '") + key + "': " + reply.body; });
+          [&] {
+            return std::string("problem body without a non-empty string '") + key +
+                   "': " + reply.body;
+          });
   }
   check(answer.contains("status") && answer["status"].is_number_integer() &&
             answer["status"].get<int>() == reply.status,
         [&] { return "problem 'status' differs from the HTTP status: " + reply.body; });
   if (answer.contains("errors")) {
     const auto& errors = answer["errors"];
-    check(reply.status == 422, [&] { return "'errors' on a status other than 422: " + reply.body; });
+    check(reply.status == 422,
+          [&] { return "'errors' on a status other than 422: " + reply.body; });
     check(errors.is_array() && !errors.empty(), "'errors' is not a non-empty array");
     for (const auto& e : errors) {
       check(e.is_object() && e.contains("pointer") && e["pointer"].is_string() &&
