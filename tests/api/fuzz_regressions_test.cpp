@@ -281,6 +281,80 @@ TEST(FuzzRegressions, DISABLED_F15_InexactClosedFormGivesDoublePoints) {
   }
 }
 
+// F16 (disabled until fixed), found by self_intersection_fuzzer: pairs outside the unit
+// square, and the trivial pair of a closed curve leaking out. (a) A cubic that almost
+// closes (P3 a few ulps from P0): the pair (-7.9e-16, 1 + 1.6e-13). (b) A closed quintic
+// (P0 = P5 = (0, 0), P1 = P2 = P3 on the far side): (-9e-25, 1), the trivial pair with t
+// below 0, so it is not recognised as trivial. (c) A closed degree-20 curve whose last 13
+// points are the origin: (0, 0.9978), the trivial pair moved along the flat end (B(s) is
+// 2e-32 there), and its s moves by 4e-6 when the curve is scaled by 2^6.
+void expect_no_trivial_or_outside_pairs(const Curve& c) {
+  const SelfIntersectionResult r = self_intersections(c);
+  for (const auto& p : r.pairs) {
+    EXPECT_TRUE(0.0 <= p.t && p.t < p.s && p.s <= 1.0) << p.t << " " << p.s;
+    if (c.front() == c.back()) {
+      EXPECT_FALSE(p.t < 1e-6 && p.s > 0.99) << "the trivial pair: " << p.t << " " << p.s;
+    }
+  }
+}
+
+TEST(FuzzRegressions, DISABLED_F16_PairsStayInTheUnitSquare) {
+  expect_no_trivial_or_outside_pairs(Curve({{0x1.020202020202p-21, 0x1.020202020202p-21},
+                                            {0x1.0e1df20202006p-21, 0.0},
+                                            {0x1.020202020202p-21, 0x1.003ec54545454p-21},
+                                            {0x1.020202020201fp-21, 0x1.020202020201cp-21}}));
+  expect_no_trivial_or_outside_pairs(Curve({{0.0, 0.0},
+                                            {-0x1.fp+14, 0x1.fp+14},
+                                            {-0x1p+26, 0x1.e48d4484a48p+6},
+                                            {0x1.4000024243224p-9, 0x1p+26},
+                                            {-0x1.6f6f6f6facp-1, 0x1.ef3p-23},
+                                            {0.0, 0.0}}));
+  std::vector<Point2> flat_end = {{0.0, 0.0},
+                                  {0x1.d93f794p+10, 0.0},
+                                  {0.0, 0.0},
+                                  {0x1p+20, 0.0},
+                                  {0.0, 0.0},
+                                  {0x1.bca0b868p-19, -0x1.e291f459f9e29p-11},
+                                  {-0x1.e291f459f9e29p-12, 0x1.01a9f4561e0f6p+3},
+                                  {0x1.1ap-30, 0.0}};
+  flat_end.resize(21, Point2{0.0, 0.0});
+  expect_no_trivial_or_outside_pairs(Curve(flat_end));
+}
+
+// F18 (disabled until fixed), found by self_intersection_fuzzer: a degree-20 curve's double
+// point at t = 0.000195 reported twice, the copies 1.4e-9 apart in s (above the 1e-10 merge
+// distance), the second 1.8e-9 off the curve's other branch.
+TEST(FuzzRegressions, DISABLED_F18_DoublePointReportedOnce) {
+  const Curve c({{1.0, 1.0},
+                 {-0x1.fffffep+7, -0x1.fffffep+7},
+                 {-0x1.fffffep+6, 0x1.fffffep+6},
+                 {-0x1.fffffe0000002p+7, -0x1.fffffe0000002p+7},
+                 {-0x1.fffffe0000001p+7, -0x1.fffffe0000001p+6},
+                 {1.0, -0x1p+29},
+                 {-0x1.cp+2, 2.0},
+                 {0x1.ffffffffffffep+0, -0x1.cp+2},
+                 {2.0, 0x1.0000000000004p+0},
+                 {0x1.ddd8p+5, -0x1.44291044p+16},
+                 {-0x1.fffffe0000002p+7, 0x1.fffffe0000002p+7},
+                 {-0x1.44437a04p-12, -0x1.fffffe0000002p+7},
+                 {0x1.dddddf7f79778p-2, 0x1.dddddf7f79778p-3},
+                 {0.0, 0x1.872bb1f1ap+21},
+                 {0x1.03b0010c40009p-31, -0x1.82787c0000185p-1},
+                 {0x1.1ap-30, 0.0},
+                 {0.0, 0.0},
+                 {0.0, 0.0},
+                 {0.0, 0.0},
+                 {0.0, 0.0},
+                 {0.0, 0.0}});
+  const SelfIntersectionResult r = self_intersections(c);
+  for (std::size_t i = 1; i < r.pairs.size(); ++i) {
+    const auto& a = r.pairs[i - 1];
+    const auto& b = r.pairs[i];
+    EXPECT_FALSE(std::fabs(a.t - b.t) < 1e-6 && std::fabs(a.s - b.s) < 1e-6)
+        << "(" << a.t << ", " << a.s << ") and (" << b.t << ", " << b.s << ")";
+  }
+}
+
 // The largest |B(t) − B(s)| over the pairs, relative to the curve's scale.
 double worst_relative_gap(const Curve& c, const SelfIntersectionResult& r) {
   double worst = 0.0;
