@@ -355,6 +355,25 @@ TEST(FuzzRegressions, DISABLED_F18_DoublePointReportedOnce) {
   }
 }
 
+// F19 (disabled until fixed), found by intersect_fuzzer (swap symmetry): g starts on the
+// segment f, at x = 1.4e-7, and leaves it at an angle of 2.4e-7. In the order (f, g) the
+// answer is an overlap t in [0, 2.2e-9], s in [0, 1.8e-8]; in the order (g, f) the single
+// crossing (s = 0 on g). The two orders must agree.
+TEST(FuzzRegressions, DISABLED_F19_SwappingTheCurvesGivesTheSameKindOfAnswer) {
+  const Curve f({{0.0, 0.0}, {64.0, 0.0}});
+  const Curve g({{0x1.3p-23, 0.0}, {-8.0, 0x1p-19}});
+  IntersectOptions options;
+  options.tolerance = 0x1.0624dd2f1a9fcp-10;
+  options.method = IntersectMethod::bezier_clipping;
+  options.fat_curve_degree = 3;
+  const IntersectionResult r = intersect(f, g, options);
+  const IntersectionResult w = intersect(g, f, options);
+  EXPECT_EQ(r.overlaps.size(), w.overlaps.size());
+  EXPECT_EQ(r.intersections.size(), w.intersections.size());
+  EXPECT_TRUE(covered(r, 0x1.3p-23 / 64, 0.0));
+  EXPECT_TRUE(covered(w, 0.0, 0x1.3p-23 / 64));
+}
+
 // The largest |B(t) − B(s)| over the pairs, relative to the curve's scale.
 double worst_relative_gap(const Curve& c, const SelfIntersectionResult& r) {
   double worst = 0.0;
