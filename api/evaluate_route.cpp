@@ -1,5 +1,3 @@
-#include <limits>
-
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
@@ -10,8 +8,6 @@
 namespace bezier::api {
 
 namespace {
-
-constexpr double kAnyFinite = std::numeric_limits<double>::max();
 
 struct EvaluateRequest {
   std::vector<double> ts;

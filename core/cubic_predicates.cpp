@@ -98,10 +98,12 @@ CubicPredicates cubic_predicates(std::span<const Point2, 4> p) {
   const double bound4 = (630.0 * a + 13836.0 * unit) * unit + 27.0 * kUnitRoundoff * a * a;
   const double smallest4 = std::min(std::min(std::fabs(disc), std::fabs(l0)), std::fabs(l1));
 
-  // Bitwise &: six well-predicted tests without six branches.
-  const bool all_certain = is_certain(d1, e1) & is_certain(d2, e2) & is_certain(d3, e3) &
-                           is_certain(vertex, e_vertex) & is_certain(i1, e_i1) &
-                           is_certain(smallest4, bound4);
+  // Bitwise & (on ints: clang's -Wbitwise-instead-of-logical): six well-predicted tests
+  // without six branches.
+  const bool all_certain =
+      (int{is_certain(d1, e1)} & int{is_certain(d2, e2)} & int{is_certain(d3, e3)} &
+       int{is_certain(vertex, e_vertex)} & int{is_certain(i1, e_i1)} &
+       int{is_certain(smallest4, bound4)}) != 0;
   // Near an edge (or a degenerate configuration: some value is zero) the filter cannot
   // decide; the exact path decides everything, and its approximations are the better ones.
   if (!all_certain) return cubic_predicates_exact(p);
