@@ -156,9 +156,12 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   in.op_g2 = &op_g2;
   FatCurveOperator op_f, op_g;
   if (options.method != IntersectMethod::subdivision) {
+    // Bézier clipping bounds the distance function itself: no reduction (k >= n; a point
+    // curve, n = 0, still takes k = 1, the operator's least degree: finding F3).
+    const bool hybrid = options.method == IntersectMethod::hybrid;
     const int k = std::clamp(options.fat_curve_degree, 1, 3);
-    op_f = fat_curve_operator(wf.degree, options.method == IntersectMethod::hybrid ? k : wf.degree);
-    op_g = fat_curve_operator(wg.degree, options.method == IntersectMethod::hybrid ? k : wg.degree);
+    op_f = fat_curve_operator(wf.degree, hybrid ? k : std::max(wf.degree, 1));
+    op_g = fat_curve_operator(wg.degree, hybrid ? k : std::max(wg.degree, 1));
     in.op_f = &op_f;
     in.op_g = &op_g;
   }

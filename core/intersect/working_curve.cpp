@@ -10,6 +10,24 @@ namespace bezier::core {
 namespace {
 
 constexpr double kU = bernstein::kU;
+/// The exponent of the smallest subnormal double, 2^-1074.
+constexpr int kSmallestExponent = -1074;
+
+/// The multiple of `grid` nearest to x, or the one next to it towards zero when the nearest
+/// is beyond the largest double (x within half a grid step of it, finding F13).
+double grid_point(double x, double grid) noexcept {
+  const double nearest = std::nearbyint(x / grid) * grid;
+  return std::isfinite(nearest) ? nearest : std::trunc(x / grid) * grid;
+}
+
+/// Multiplication by 2^e as two factors (2^e itself may be beyond the double range): exact
+/// whenever the result is a normal double.
+struct PowerOfTwo {
+  double first, second;
+  explicit PowerOfTwo(int e) noexcept
+      : first(std::ldexp(1.0, e / 2)), second(std::ldexp(1.0, e - e / 2)) {}
+  [[nodiscard]] double times(double x) const noexcept { return x * first * second; }
+};
 
 }  // namespace
 
@@ -31,17 +49,17 @@ WorkingFrame working_frame(const Curve& f, const Curve& g) {
   }
   // A grid of a sixteenth of the extent: the origin has few significant bits, so inputs on
   // any finer grid subtract from it exactly, and translating the inputs by a multiple of
-  // the grid translates the origin by the same amount.
-  const double grid = std::ldexp(1.0, std::ilogb(extent) - 4);
-  frame.origin = {std::nearbyint(center.x / grid) * grid, std::nearbyint(center.y / grid) * grid};
+  // the grid translates the origin by the same amount. (Never finer than the smallest
+  // subnormal: a grid of 0 would make the origin NaN, finding F5b.)
+  const double grid = std::ldexp(1.0, std::max(std::ilogb(extent) - 4, kSmallestExponent));
+  frame.origin = {grid_point(center.x, grid), grid_point(center.y, grid)};
   double m = 0.0;
   for (const Curve* c : {&f, &g}) {
     for (const Point2 p : c->points()) m = bernstein::max2(m, max_abs_coordinate(p - frame.origin));
   }
-  // 2^-(e + 1) with 2^e <= m; the exponent is clamped so that the scale itself stays a
-  // normal double (subnormal inputs then get working coordinates of about 1e-3, still fine).
-  const int exponent = m > 0.0 ? std::clamp(-(std::ilogb(m) + 1), -1022, 1022) : 0;
-  frame.scale = std::ldexp(1.0, exponent);
+  // 2^-(e + 1) with 2^e <= m (m is finite and nonzero: the origin lies within a grid step
+  // of the centre, and some coordinate differs from it by at least half the extent).
+  frame.exponent = -(std::ilogb(m) + 1);
   return frame;
 }
 
@@ -55,14 +73,15 @@ WorkingCurve to_working(const Curve& curve, WorkingFrame frame) {
   w.y_lo.resize(count);
   w.x_dd.resize(count);
   w.y_dd.resize(count);
+  const PowerOfTwo scale(frame.exponent);
   for (std::size_t i = 0; i < count; ++i) {
     const Point2 p = curve.points()[i];
     const TwoTerm<double> x = two_sum(p.x, -frame.origin.x);
     const TwoTerm<double> y = two_sum(p.y, -frame.origin.y);
-    w.x[i] = x.hi * frame.scale;
-    w.y[i] = y.hi * frame.scale;
-    w.x_lo[i] = x.lo * frame.scale;
-    w.y_lo[i] = y.lo * frame.scale;
+    w.x[i] = scale.times(x.hi);
+    w.y[i] = scale.times(y.hi);
+    w.x_lo[i] = scale.times(x.lo);
+    w.y_lo[i] = scale.times(y.lo);
     w.x_dd[i] = {w.x[i], w.x_lo[i]};
     w.y_dd[i] = {w.y[i], w.y_lo[i]};
     w.magnitude =
@@ -141,7 +160,8 @@ Point2 second_derivative(const WorkingCurve& f, double t) {
 }
 
 Point2 from_working(Point2 p, WorkingFrame frame) noexcept {
-  return {p.x / frame.scale + frame.origin.x, p.y / frame.scale + frame.origin.y};
+  const PowerOfTwo unscale(-frame.exponent);
+  return {unscale.times(p.x) + frame.origin.x, unscale.times(p.y) + frame.origin.y};
 }
 
 }  // namespace bezier::core

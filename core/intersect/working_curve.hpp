@@ -8,18 +8,20 @@
 
 namespace bezier::core {
 
-/// The frame the search works in: p -> (p - origin) * scale, with scale a power of two so
-/// that the largest working coordinate is about 1. Translating or scaling both inputs by a
-/// power of two moves the frame with them, so the search sees the same numbers (DESIGN §1:
-/// answers do not change under translation and uniform scaling).
+/// The frame the search works in: p -> (p - origin) * 2^exponent, so that the largest
+/// working coordinate is about 1. Translating or scaling both inputs by a power of two moves
+/// the frame with them, so the search sees the same numbers (DESIGN §1: answers do not
+/// change under translation and uniform scaling). The exponent spans the whole double range
+/// (about -1024 for coordinates next to the largest double, up to 1074 for subnormal ones),
+/// more than one double can scale by, so it is kept as an integer.
 struct WorkingFrame {
   Point2 origin;
-  double scale = 1.0;
+  int exponent = 0;
 };
 
 /// The frame of a pair of curves: origin at the centre of their common bounding box,
 /// rounded to 12 significant bits (so that coordinates on a coarser grid subtract exactly),
-/// scale 2^-e with 2^e >= the largest centred coordinate.
+/// exponent -e with 2^e >= the largest centred coordinate.
 [[nodiscard]] WorkingFrame working_frame(const Curve& f, const Curve& g);
 
 /// A curve in the working frame, held exactly: coordinate = hi + lo, where hi is the

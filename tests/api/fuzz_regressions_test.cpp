@@ -131,16 +131,29 @@ TEST(FuzzRegressions, F2_TinyCurveIsNotReportedResolvedWithItsWholeInterval) {
 }
 
 // F3, found by intersect_fuzzer (with assertions on, as the fuzz build has them): Bézier
-// clipping with a degree-0 curve calls fat_curve_operator(0, 0), whose assertion k >= 1
-// aborts. The point (0, 0) is the end f(1) of the segment.
+// clipping with a degree-0 curve called fat_curve_operator(0, 0), whose assertion k >= 1
+// aborts (release builds, these tests', skip the assertion; the fuzz build checks it). The
+// point (0, 0) is the end f(1) of the segment f(t) = (1 - t, 0), so t = 1 exactly, and g's
+// parameter is free: one contact, s in [0, 1].
 TEST(FuzzRegressions, F3_BezierClippingAcceptsAPointCurve) {
   const Curve f({{1.0, 0.0}, {0.0, 0.0}});
   const Curve g(std::vector<Point2>{{0.0, 0.0}});
   IntersectOptions options;
   options.method = IntersectMethod::bezier_clipping;
-  const IntersectionResult r = intersect(f, g, options);
-  ASSERT_EQ(r.status, IntersectStatus::ok);
-  EXPECT_TRUE(covered(r, 1.0, 0.5));
+  for (const bool swapped : {false, true}) {
+    const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    ASSERT_EQ(r.intersections.size(), 1u);
+    const Intersection& x = r.intersections[0];
+    const ParamInterval on_f = swapped ? x.s_interval : x.t_interval;
+    const ParamInterval on_g = swapped ? x.t_interval : x.s_interval;
+    EXPECT_TRUE(on_f.contains(1.0));
+    EXPECT_LT(on_f.width(), options.tolerance);
+    EXPECT_EQ(on_g, (ParamInterval{0.0, 1.0}));
+    EXPECT_EQ(x.kind, IntersectionKind::degenerate);
+    EXPECT_FALSE(x.resolved);
+    expect_intersection_contract(r, options.tolerance);
+  }
 }
 
 // F4, found by intersect_fuzzer: f starts exactly where g ends; g is 2^-29 long and f 2^24:
@@ -177,17 +190,27 @@ TEST(FuzzRegressions, F5_SubnormalCoordinatesGiveFinitePointsAndTheRightRoot) {
   expect_intersection_contract(r, IntersectOptions{}.tolerance);
 }
 
-// F5b (F5 again after 1107d08; disabled until fixed), found by intersect_fuzzer: coordinates a few
-// subnormal steps from zero. A point (a degree-1 curve with equal points) at the origin and a
-// segment from
-// (-2e-323, 0) to it: the search spends the whole work budget and reports NaN points.
-TEST(FuzzRegressions, DISABLED_F5b_SegmentFourSubnormalStepsLong) {
+// F5b (F5 again after 1107d08), found by intersect_fuzzer: coordinates a few subnormal steps
+// from zero. A point (a degree-1 curve with equal points) at the origin and the segment
+// g(s) = (-4 (1 - s) 2^-1074, 0) ending there: the working frame's grid (a sixteenth of the
+// extent) underflowed to 0 and its origin became NaN, so the search spent the whole work
+// budget and reported NaN points. The answer: s = 1 exactly, t free, the point the origin.
+TEST(FuzzRegressions, F5b_SegmentFourSubnormalStepsLong) {
   const Curve f({{0.0, 0.0}, {0.0, 0.0}});
   const Curve g({{-0x0.0000000000004p-1022, 0.0}, {0.0, 0.0}});
-  const IntersectionResult r = intersect(f, g);
-  ASSERT_EQ(r.status, IntersectStatus::ok);
-  EXPECT_TRUE(covered(r, 0.5, 1.0));
-  expect_intersection_contract(r, IntersectOptions{}.tolerance);
+  for (const bool swapped : {false, true}) {
+    const IntersectionResult r = swapped ? intersect(g, f) : intersect(f, g);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    ASSERT_EQ(r.intersections.size(), 1u);
+    EXPECT_TRUE(swapped ? covered(r, 1.0, 0.5) : covered(r, 0.5, 1.0));
+    const Intersection& x = r.intersections[0];
+    EXPECT_LT((swapped ? x.t_interval : x.s_interval).width(), IntersectOptions{}.tolerance);
+    EXPECT_EQ(swapped ? x.s_interval : x.t_interval, (ParamInterval{0.0, 1.0}));
+    // Within a subnormal step of the origin (the mean of f(t) and g(s), rounded).
+    EXPECT_LE(std::fabs(x.point.x), 0x1p-1074);
+    EXPECT_EQ(x.point.y, 0.0);
+    expect_intersection_contract(r, IntersectOptions{}.tolerance);
+  }
 }
 
 // F5 through the API: a NaN point would be written as null (or, since F1's fix, turn a
@@ -251,16 +274,23 @@ TEST(FuzzRegressions, DISABLED_F12_GeneralMethodFindsTheLoopTheClosedFormFinds) 
   EXPECT_NEAR(r.pairs[0].s, dp->t2, 1e-9);
 }
 
-// F13 (disabled until fixed), found by intersect_fuzzer (UBSan): coordinates next to the largest
-// double. The working frame's largest offset overflows to infinity and `std::ilogb(m) + 1`
-// overflows an int (working_curve.cpp:43, undefined behaviour; the sanitizer build aborts). The
-// answer: f ends where g (a point) is, t = 1.
-TEST(FuzzRegressions, DISABLED_F13_CoordinatesNextToTheLargestDouble) {
+// F13, found by intersect_fuzzer (UBSan): coordinates next to the largest double. The working
+// frame's origin, rounded to its grid, was beyond the largest double, so the offsets were infinite
+// and `std::ilogb(m) + 1` overflowed an int (undefined behaviour; in release the search spent the
+// whole work budget). The answer: f(t) = (1.79e308 t, -1.79e308) ends where g (a point) is, t = 1,
+// s free.
+TEST(FuzzRegressions, F13_CoordinatesNextToTheLargestDouble) {
   const Curve f({{0.0, -1.79e308}, {1.79e308, -1.79e308}});
   const Curve g({{1.79e308, -1.79e308}, {1.79e308, -1.79e308}});
   const IntersectionResult r = intersect(f, g);
   ASSERT_EQ(r.status, IntersectStatus::ok);
+  ASSERT_EQ(r.intersections.size(), 1u);
   EXPECT_TRUE(covered(r, 1.0, 0.5));
+  const Intersection& x = r.intersections[0];
+  EXPECT_LT(x.t_interval.width(), IntersectOptions{}.tolerance);
+  EXPECT_EQ(x.s_interval, (ParamInterval{0.0, 1.0}));
+  EXPECT_NEAR(x.point.x, 1.79e308, 1.79e308 * 1e-15);
+  EXPECT_EQ(x.point.y, -1.79e308);
   expect_intersection_contract(r, IntersectOptions{}.tolerance);
 }
 

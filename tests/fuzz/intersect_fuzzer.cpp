@@ -118,17 +118,6 @@ bool nearly_collinear(const Curve& f, const Curve& g) {
   return true;
 }
 
-/// Whether a coordinate of c is a nonzero number within 2^-1060 of zero (a few dozen
-/// subnormal steps): finding F5b (as are curves whose coordinates are all subnormal).
-bool has_tiny_subnormal(const Curve& c) {
-  for (const Point2& p : c.points()) {
-    for (const double v : {p.x, p.y}) {
-      if (v != 0.0 && std::fabs(v) < 0x1p-1060) return true;
-    }
-  }
-  return false;
-}
-
 /// Whether c' vanishes at an end (P0 = P1 or P(n-1) = Pn): see finding F10.
 bool has_flat_end(const Curve& c) {
   return c.degree() >= 1 && (c[0] == c[1] || c[c.degree() - 1] == c.back());
@@ -147,13 +136,6 @@ void check_result(const Curve& f, const Curve& g, const IntersectOptions& option
     return "unexpected status " + std::to_string(static_cast<int>(r.status)) + ": " + context();
   });
 
-  // Finding F5b: coordinates a few subnormal steps from zero still give NaN points and a
-  // spent work budget (1107d08 fixed the rest of the subnormal range); run for the
-  // sanitizers, do not check.
-  if (has_tiny_subnormal(f) || has_tiny_subnormal(g) ||
-      std::fmax(bezier::core::scale(f), bezier::core::scale(g)) < 0x1p-1022) {
-    return;
-  }
   const double scale = std::fmax(bezier::core::scale(f), bezier::core::scale(g));
   // (At least a few subnormal steps: a segment one subnormal long has two points.)
   const double rounding = std::fmax(0x1p-40 * (f.degree() + g.degree() + 2) * scale, 0x1p-1070);
@@ -295,14 +277,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Curve f = bezier::fuzz::finite_curve(numbers, n);
   const Curve g = bezier::fuzz::finite_curve(numbers, m);
 
-  // Finding F3: Bézier clipping with a degree-0 curve trips the assertion k >= 1 in
-  // fat_curve_operator (tests/api/fuzz_regressions_test.cpp); other methods take those.
-  if (options.method == bezier::core::IntersectMethod::bezier_clipping && (n == 0 || m == 0)) {
-    options.method = bezier::core::IntersectMethod::hybrid;
-  }
-  // Finding F13: coordinates next to the largest double overflow the working frame
-  // (undefined behaviour, an int overflow in working_curve.cpp); not fed until fixed.
-  if (std::fmax(bezier::core::scale(f), bezier::core::scale(g)) > 0x1p1020) return -1;
   if (bezier::fuzz::print_inputs()) {
     std::fprintf(stderr, "%s (wild %d, symmetry %d, scaling 2^%d: %d)\n",
                  describe(f, g, options).c_str(), wild, check_symmetry, scale_exponent,
