@@ -43,6 +43,15 @@ int true_degree(const Coeffs& ax, const Coeffs& ay, double magnitude) {
   return 0;
 }
 
+/// How far the monomial coefficient a_k of a curve may be from that of a curve whose
+/// control points are within overlap_tolerance(degree) of its own: C(n, k) 2^k times that
+/// distance (a_k is C(n, k) times a k-th forward difference), plus the rounding of the
+/// conversion and of the working frame (as in true_degree).
+double coefficient_error(const WorkingCurve& c, int k, int degree) {
+  const double points = overlap_tolerance(degree) + 64 * kU * c.magnitude + c.frame_error;
+  return binomial(c.degree, k) * std::ldexp(1.0, k) * points;
+}
+
 struct Residual {
   double x, y;
 };
@@ -99,10 +108,22 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
   const Coeffs& b = use_x ? gx : gy;
   const Coeffs& a_other = use_x ? fy : fx;
   const Coeffs& b_other = use_x ? gy : gx;
-  // A cheap necessary condition first (most pairs stop here): the other coordinate's top
-  // coefficients must scale by the same beta^d, to within the conversion's rounding.
-  const double top_tol = 0x1p-20 * bernstein::max2(std::fabs(at(b, d)), std::fabs(at(b_other, d)));
+  // Necessary conditions first (most pairs stop here), on the coefficients of the whole
+  // curves: g's top coefficients are beta^d times f's in both coordinates, and the next
+  // ones differ from f's (mapped by beta^(d-1)) along f's top coefficient vector. They hold
+  // to within what overlap_tolerance allows of the control points, plus the conversion's
+  // rounding (coefficient_error), with every quotient's error carried through. The
+  // verification below looks at the overlapping pieces only, which cannot tell a short
+  // piece of a coincident curve from a curve that leaves at a small angle (finding F19:
+  // segments 2.4e-7 rad apart, which a tolerance of 2^-20 on these tests let through).
+  const int top_degree = std::max(f.degree, g.degree);
+  const auto f_error = [&](int k) { return coefficient_error(f, k, top_degree); };
+  const auto g_error = [&](int k) { return coefficient_error(g, k, top_degree); };
   const double r = at(b, d) / at(a, d);
+  const double r_rel_error = g_error(d) / std::fabs(at(b, d)) + f_error(d) / std::fabs(at(a, d));
+  const double top_tol =
+      4 * (g_error(d) + std::fabs(r) * (f_error(d) + std::fabs(at(a_other, d)) * r_rel_error));
+  if (!(std::fabs(at(b_other, d) - r * at(a_other, d)) <= top_tol)) return out;
   std::vector<double> betas;
   if (d == 3) {
     betas.push_back(std::cbrt(r));
@@ -114,16 +135,18 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
   }
   for (const double beta : betas) {
     if (!(std::isfinite(beta) && beta != 0.0)) continue;
-    const double beta_d = std::pow(beta, d);
-    if (!(std::fabs(at(b_other, d) - beta_d * at(a_other, d)) <= top_tol)) continue;
+    const double beta_k = std::pow(std::fabs(beta), d - 1);  // |beta|^(d-1)
     const double alpha = (at(b, d - 1) / std::pow(beta, d - 1) - at(a, d - 1)) / (d * at(a, d));
     if (!std::isfinite(alpha)) continue;
     const double next = std::pow(beta, d - 1) * (at(a_other, d - 1) + d * alpha * at(a_other, d));
-    if (!(std::fabs(at(b_other, d - 1) - next) <=
-          0x1p-20 *
-              (std::fabs(at(b_other, d - 1)) + std::fabs(next) + std::fabs(at(b_other, d))))) {
-      continue;
-    }
+    // The errors of g's coefficients, of f's mapped by beta^(d-1), of beta^(d-1) itself
+    // (relative (d - 1)/d of r's), and of alpha (the chosen coordinate's, carried over by
+    // |a_other_d| <= |a_d|), in g's scale.
+    const double next_tol =
+        4 * (g_error(d - 1) * 2 + beta_k * f_error(d - 1) * 2 +
+             r_rel_error * (std::fabs(at(b, d - 1)) + std::fabs(at(b_other, d - 1))) +
+             beta_k * std::fabs(alpha) * d * f_error(d) * 2);
+    if (!(std::fabs(at(b_other, d - 1) - next) <= next_tol)) continue;
     // s with alpha + beta s in [0, 1], within [0, 1].
     double raw_lo = -alpha / beta, raw_hi = (1 - alpha) / beta;
     if (raw_lo > raw_hi) std::swap(raw_lo, raw_hi);

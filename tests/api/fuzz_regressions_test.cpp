@@ -385,23 +385,28 @@ TEST(FuzzRegressions, DISABLED_F18_DoublePointReportedOnce) {
   }
 }
 
-// F19 (disabled until fixed), found by intersect_fuzzer (swap symmetry): g starts on the
-// segment f, at x = 1.4e-7, and leaves it at an angle of 2.4e-7. In the order (f, g) the
-// answer is an overlap t in [0, 2.2e-9], s in [0, 1.8e-8]; in the order (g, f) the single
-// crossing (s = 0 on g). The two orders must agree.
-TEST(FuzzRegressions, DISABLED_F19_SwappingTheCurvesGivesTheSameKindOfAnswer) {
+// F19, found by intersect_fuzzer (swap symmetry): g starts on the segment f, at
+// x = 0x1.3p-23, and leaves it at an angle of 2^-22 (g's slope 2^-19 / (8 + 0x1.3p-23)). In
+// the order (f, g) the answer was an overlap t in [0, 2.2e-9], s in [0, 1.8e-8]; in the order
+// (g, f) the single crossing. Two distinct lines cross once: at f(t) = g(0), t = 0x1.3p-29
+// exactly, transversally (the overlap test's tolerance on the lines' directions was 2^-20).
+TEST(FuzzRegressions, F19_SwappingTheCurvesGivesTheSameKindOfAnswer) {
   const Curve f({{0.0, 0.0}, {64.0, 0.0}});
   const Curve g({{0x1.3p-23, 0.0}, {-8.0, 0x1p-19}});
   IntersectOptions options;
   options.tolerance = 0x1.0624dd2f1a9fcp-10;
   options.method = IntersectMethod::bezier_clipping;
   options.fat_curve_degree = 3;
-  const IntersectionResult r = intersect(f, g, options);
-  const IntersectionResult w = intersect(g, f, options);
-  EXPECT_EQ(r.overlaps.size(), w.overlaps.size());
-  EXPECT_EQ(r.intersections.size(), w.intersections.size());
-  EXPECT_TRUE(covered(r, 0x1.3p-23 / 64, 0.0));
-  EXPECT_TRUE(covered(w, 0.0, 0x1.3p-23 / 64));
+  for (const bool swapped : {false, true}) {
+    const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    EXPECT_TRUE(r.overlaps.empty());
+    ASSERT_EQ(r.intersections.size(), 1u);
+    EXPECT_TRUE(swapped ? covered(r, 0.0, 0x1.3p-29) : covered(r, 0x1.3p-29, 0.0));
+    EXPECT_EQ(r.intersections[0].kind, IntersectionKind::transversal);
+    EXPECT_TRUE(r.intersections[0].resolved);
+    expect_intersection_contract(r, options.tolerance);
+  }
 }
 
 // The largest |B(t) − B(s)| over the pairs, relative to the curve's scale.
