@@ -15,7 +15,7 @@
 //                       "resolved": bool}],          sorted by t, then s
 //    "overlaps": [{"t_interval", "s_interval", "reversed"}],
 //    "tolerance": the tolerance used,
-//    "stats": {"method", "fat_curve_degree" (hybrid), "iterations", "clipping_steps",
+//    "stats": {"method", "fat_curve_degree" (hybrid), "iterations", "work", "clipping_steps",
 //              "subdivisions", "candidate_boxes", "compensated_steps", "newton_iterations",
 //              "max_depth"}}
 // Answer (one curve): the same shape with t < s for every pair (the curve's
@@ -25,7 +25,8 @@
 // "newton_iterations", "certification_iterations"}; `method` and `fat_curve_degree` do not
 // apply there and are ignored.
 // Errors: 422 validation problems with JSON Pointers (tolerance out of range included);
-// 422 work-cap problem when the search needs more than limits.max_work steps.
+// 422 work-cap problem when the search needs more than limits.max_work work units (steps
+// charged by their cost, core/intersect/work_cost.hpp).
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +38,7 @@
 #include "core/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
 #include "core/self_intersection.hpp"
+#include "core/self_intersection_work_cost.hpp"
 
 namespace bezier::api {
 
@@ -61,19 +63,30 @@ nlohmann::json intersection_json(const core::Intersection& x) {
           {"resolved", x.resolved}};
 }
 
-Reply work_cap_reply(std::int64_t work) {
+Reply work_cap_reply(std::int64_t steps, const Limits& limits) {
   return problem_reply(ProblemKind::work_cap,
-                       "the intersection search took " + std::to_string(work) +
-                           " steps, the per-request cap, without finishing (curves that "
-                           "retrace each other along a non-linear reparametrisation need "
-                           "unbounded work)");
+                       "the intersection search took " + std::to_string(steps) +
+                           " steps without finishing and ran out of the per-request work cap of " +
+                           std::to_string(limits.max_work) +
+                           " units (curves that retrace each other along a non-linear "
+                           "reparametrisation, or touch to a high order, need unbounded work)");
 }
 
-Reply two_curves_answer(const IntersectionsRequest& request) {
+Reply self_work_cap_reply(std::int64_t boxes, const Limits& limits) {
+  return problem_reply(ProblemKind::work_cap,
+                       "the self-intersection search examined " + std::to_string(boxes) +
+                           " parameter boxes without finishing and ran out of the per-request "
+                           "work cap of " +
+                           std::to_string(limits.max_work) +
+                           " units (a curve that retraces part of itself, other than a line or "
+                           "a palindrome, needs unbounded work)");
+}
+
+Reply two_curves_answer(const IntersectionsRequest& request, const Limits& limits) {
   const core::IntersectionResult r =
       core::intersect(request.curves[0], request.curves[1], request.options);
   if (r.status == core::IntersectStatus::work_cap_reached)
-    return work_cap_reply(r.stats.iterations);
+    return work_cap_reply(r.stats.iterations, limits);
   if (r.status == core::IntersectStatus::tolerance_too_small) {
     return validation_reply({{"/tolerance", "below what doubles can guarantee"}});
   }
@@ -87,6 +100,7 @@ Reply two_curves_answer(const IntersectionsRequest& request) {
   }
   nlohmann::json stats = {{"method", std::string(core::to_string(r.stats.method))},
                           {"iterations", r.stats.iterations},
+                          {"work", r.stats.work},
                           {"clipping_steps", r.stats.clipping_steps},
                           {"subdivisions", r.stats.subdivisions},
                           {"candidate_boxes", r.stats.candidate_boxes},
@@ -119,7 +133,8 @@ core::IntersectionKind kind_of(core::SelfIntersectionKind kind) {
 /// are used; otherwise the pair is reported as found, with point intervals, unresolved.
 struct CertifiedPair {
   core::Intersection intersection;
-  std::int64_t work = 0;  ///< search steps spent
+  std::int64_t work = 0;   ///< work units spent
+  std::int64_t steps = 0;  ///< search steps taken
 };
 
 CertifiedPair certified_pair(const core::Curve& curve, const core::SelfIntersection& pair,
@@ -133,30 +148,34 @@ CertifiedPair certified_pair(const core::Curve& curve, const core::SelfIntersect
   x.kind = kind_of(pair.kind);
   x.resolved = false;
   const double w = std::min(0x1p-20, (pair.s - pair.t) / 4);
-  if (!(w > 0) || budget <= 0) return {x, 0};
+  if (!(w > 0) || budget <= 0) return {x, 0, 0};
   core::IntersectOptions local = options;
   local.max_work = budget;
   const core::IntersectionResult r =
       core::intersect_in(curve, curve, {std::max(0.0, pair.t - w), std::min(1.0, pair.t + w)},
                          {std::max(0.0, pair.s - w), std::min(1.0, pair.s + w)}, local);
   if (r.status != core::IntersectStatus::ok || r.intersections.size() != 1)
-    return {x, r.stats.iterations};
-  return {r.intersections.front(), r.stats.iterations};
+    return {x, r.stats.work, r.stats.iterations};
+  return {r.intersections.front(), r.stats.work, r.stats.iterations};
 }
 
 Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits) {
   const core::Curve& curve = request.curves[0];
   core::SelfIntersectionOptions options;
-  options.max_work = limits.max_work;
+  options.max_work = core::self_intersection_box_budget(limits.max_work, curve.degree());
   const core::SelfIntersectionResult r = core::self_intersections(curve, options);
   if (r.status == core::SelfIntersectionStatus::work_cap_reached)
-    return work_cap_reply(r.stats.work);
-  std::int64_t certification_work = 0;
+    return self_work_cap_reply(r.stats.work, limits);
+  // The certification searches share what the self-intersection search left of the budget;
+  // a pair they cannot certify within it is reported as found, unresolved.
+  const std::int64_t search_units = r.stats.work * core::self_intersection_box_cost(curve.degree());
+  std::int64_t certification_work = 0, certification_steps = 0;
   nlohmann::json intersections = nlohmann::json::array();
   for (const core::SelfIntersection& pair : r.pairs) {
-    const CertifiedPair c =
-        certified_pair(curve, pair, request.options, limits.max_work - certification_work);
+    const CertifiedPair c = certified_pair(curve, pair, request.options,
+                                           limits.max_work - search_units - certification_work);
     certification_work += c.work;
+    certification_steps += c.steps;
     intersections.push_back(intersection_json(c.intersection));
   }
   nlohmann::json overlaps = nlohmann::json::array();
@@ -177,7 +196,7 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
                        {"work", r.stats.work},
                        {"max_depth", r.stats.max_depth},
                        {"newton_iterations", r.stats.newton_iterations},
-                       {"certification_iterations", certification_work}}}});
+                       {"certification_iterations", certification_steps}}}});
 }
 
 }  // namespace
@@ -230,7 +249,8 @@ Reply intersections_route(const nlohmann::json& request, const Limits& limits) {
       parsed.options.fat_curve_degree = *v;
   }
   if (!reader.ok()) return validation_reply(reader.take_errors());
-  return parsed.curves.size() == 1 ? one_curve_answer(parsed, limits) : two_curves_answer(parsed);
+  return parsed.curves.size() == 1 ? one_curve_answer(parsed, limits)
+                                    : two_curves_answer(parsed, limits);
 }
 
 }  // namespace bezier::api

@@ -14,9 +14,13 @@ struct Limits {
   int max_t_values = 10000;
   /// Largest request body in bytes (the service answers 413 above it).
   std::size_t max_body_bytes = 1 << 20;
-  /// Per-request work cap for iterative kernels, in kernel steps (clipping or
-  /// subdivision steps, candidate boxes). Hitting it answers 422, never a hang.
-  std::int64_t max_work = 200000;
+  /// Per-request work cap for iterative kernels, in work units: each clipping or
+  /// subdivision step, Newton iteration and parameter box is charged by its degrees and
+  /// arithmetic (core/intersect/work_cost.hpp, core/self_intersection_work_cost.hpp), so
+  /// that units are proportional to time; one unit is about 10-20 ns on the reference
+  /// machine, so the default bounds a request's kernel time near 50-80 ms (BENCHMARKS.md §4).
+  /// Hitting it answers 422, never a hang.
+  std::int64_t max_work = 4000000;
 };
 
 }  // namespace bezier::api

@@ -16,7 +16,8 @@
 //    "closed", "closed_area"}
 // Errors: 422 validation problems with JSON Pointers (an area beyond the double range is
 // reported at /points); 422 work-cap problem when the self-intersection search needs more
-// than limits.max_work parameter boxes.
+// than limits.max_work work units (parameter boxes charged by the curve's degree,
+// core/self_intersection_work_cost.hpp).
 
 #include <cmath>
 #include <optional>
@@ -29,6 +30,7 @@
 #include "core/area.hpp"
 #include "core/evaluate.hpp"
 #include "core/loop_area.hpp"
+#include "core/self_intersection_work_cost.hpp"
 
 namespace bezier::api {
 
@@ -93,14 +95,16 @@ Reply interval_answer(const core::Curve& curve, double t1, double t2) {
 
 Reply loops_answer(const core::Curve& curve, const Limits& limits) {
   core::SelfIntersectionOptions options;
-  options.max_work = limits.max_work;
+  options.max_work = core::self_intersection_box_budget(limits.max_work, curve.degree());
   const core::LoopAreaResult result = core::loop_area(curve, options);
   if (result.status == core::SelfIntersectionStatus::work_cap_reached) {
     return problem_reply(
         ProblemKind::work_cap,
         "the self-intersection search examined " + std::to_string(result.stats.work) +
-            " parameter boxes, the per-request cap, without finishing (a curve that "
-            "retraces part of itself, other than a line or a palindrome, needs unbounded work)");
+            " parameter boxes without finishing and ran out of the per-request work cap of " +
+            std::to_string(limits.max_work) +
+            " units (a curve that retraces part of itself, other than a line or a palindrome, "
+            "needs unbounded work)");
   }
   if (!std::isfinite(result.area) || (result.closed_area && !std::isfinite(*result.closed_area))) {
     return area_out_of_range();  // the total is infinite when any loop's area is

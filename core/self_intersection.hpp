@@ -90,7 +90,8 @@ struct SelfIntersectionResult {
 /// Tolerances and budget. The defaults suit any input scale: the distance tolerance is
 /// relative to scale(curve).
 struct SelfIntersectionOptions {
-  /// Most parameter boxes to examine before giving up with work_cap_reached.
+  /// Most parameter boxes to examine before giving up with work_cap_reached (a budget in
+  /// work units converts with self_intersection_box_budget, self_intersection_work_cost.hpp).
   std::int64_t max_work = 200000;
   /// dist_tol = dist_rel * scale(curve): two points closer than this are "the same point"
   /// for tangential contacts and collinearity. 2^-44 is about 256 ulps of the largest

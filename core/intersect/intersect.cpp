@@ -12,6 +12,7 @@
 #include "core/intersect/overlap.hpp"
 #include "core/intersect/refine.hpp"
 #include "core/intersect/search.hpp"
+#include "core/intersect/work_cost.hpp"
 #include "core/intersect/working_curve.hpp"
 
 namespace bezier::core {
@@ -173,6 +174,11 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   for (const Contact& c : merge_candidates(found.candidates, exact, in.width)) {
     const Refinement r = refine_contact(wf, wg, c, in.t_free, in.s_free, kind_tol.tangent_sine);
     result.stats.newton_iterations += r.iterations;
+    result.stats.work += r.iterations * newton_cost(wf.degree, wg.degree);
+    if (result.stats.work > options.max_work) {
+      result.status = IntersectStatus::work_cap_reached;  // many contacts: stop refining
+      break;
+    }
     Intersection x = make_intersection(wf, wg, frame, r.t, r.s, c.t, c.s);
     if (in.t_free || in.s_free) x.kind = IntersectionKind::degenerate;
     // A curve handled as a point keeps the whole (or half) parameter interval: it is not

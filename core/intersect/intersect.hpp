@@ -14,7 +14,7 @@ namespace bezier::core {
 /// `resolved`), with a best estimate (t, s) refined to full double precision, the point and
 /// the kind; every overlap (coincident pieces) as an interval pair instead of points.
 /// Intersections are sorted by t then s, overlaps by t. A tangency or any other contact is
-/// reported once. Status work_cap_reached when options.max_work box steps were not enough
+/// reported once. Status work_cap_reached when options.max_work work units were not enough
 /// (the lists then hold what was found), tolerance_too_small when options.tolerance is
 /// below kMinTolerance (nothing is computed).
 ///

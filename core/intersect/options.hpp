@@ -19,9 +19,10 @@ struct IntersectOptions {
   /// the shared benchmark (tests/bench/intersect_bench.cpp) it needs a third fewer steps
   /// than 2 for cubics and is at least as fast for degrees 7 and 10.
   int fat_curve_degree = 3;
-  /// Most box steps (clips, halvings, bounding-box tests) before giving up with
-  /// IntersectStatus::work_cap_reached. Transversal cubic pairs need a few dozen.
-  std::int64_t max_work = 1000000;
+  /// Most work units (work_cost.hpp: each box step and Newton iteration charged by its
+  /// degrees and arithmetic, so that units are proportional to time) before giving up with
+  /// IntersectStatus::work_cap_reached. Transversal cubic pairs need a few thousand.
+  std::int64_t max_work = 100000000;
 };
 
 /// The smallest tolerance accepted: 2^-46 (about 1.4e-14, 64 ulps of 1). Every clipping

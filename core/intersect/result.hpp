@@ -99,7 +99,8 @@ enum class IntersectStatus {
 /// What the search cost, so methods can be compared (seed 003 §3).
 struct IntersectStats {
   IntersectMethod method = IntersectMethod::hybrid;
-  std::int64_t iterations = 0;         ///< box steps taken (the unit of the work budget)
+  std::int64_t iterations = 0;         ///< box steps taken
+  std::int64_t work = 0;               ///< work units spent (the budget's unit, work_cost.hpp)
   std::int64_t clipping_steps = 0;     ///< clips of one curve against the other's fat line
   std::int64_t subdivisions = 0;       ///< boxes split in halves
   std::int64_t candidate_boxes = 0;    ///< boxes that converged (or hit the precision floor)

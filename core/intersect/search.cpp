@@ -11,6 +11,7 @@
 #include "core/intersect/implicit_clip.hpp"
 #include "core/intersect/kind.hpp"
 #include "core/intersect/subdivision.hpp"
+#include "core/intersect/work_cost.hpp"
 
 namespace bezier::core {
 
@@ -180,11 +181,13 @@ class Searcher {
     bool tried_alternative = false;
     bool tried_other = false;
     for (;;) {
-      if (out_.stats.iterations >= in_.max_work) {
+      const std::int64_t cost = step_cost(in_.f->degree, in_.g->degree, box.compensated);
+      if (out_.stats.work + cost > in_.max_work) {
         out_.capped = true;
         return;
       }
       ++out_.stats.iterations;
+      out_.stats.work += cost;
       out_.stats.max_depth = std::max(out_.stats.max_depth, box.depth);
       const bool td = t_done(box), sd = s_done(box);
       if (!in_.overlaps.empty() && covered(box)) return;
@@ -208,7 +211,9 @@ class Searcher {
       if (in_.method == IntersectMethod::subdivision) {
         const Separation sep = separation(f_piece_, g_piece_);
         if (sep.separated) return;
-        if (nearly_parallel(f_piece_, g_piece_) &&
+        const bool parallel = nearly_parallel(f_piece_, g_piece_);
+        if (parallel) out_.stats.work += implicit_clip_cost(in_.f->degree) + implicit_clip_cost(in_.g->degree);
+        if (parallel &&
             (!implicit_clip(f_piece_, g_piece_, *in_.op_g2).kept ||
              !implicit_clip(g_piece_, f_piece_, *in_.op_f2).kept)) {
           return;
@@ -249,6 +254,7 @@ class Searcher {
       if (clip.kept->width() > threshold && nearly_parallel(x, other)) {
         const Clip fine = implicit_clip(x, other, clip_s ? *in_.op_f2 : *in_.op_g2);
         ++out_.stats.clipping_steps;
+        out_.stats.work += implicit_clip_cost(x.degree());
         clip.kept = intersect_kept(clip.kept, fine.kept);
         if (!clip.kept) return;
         // The finer test decides whether rounding is what keeps the pieces together.

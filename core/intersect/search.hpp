@@ -48,7 +48,8 @@ struct SearchOutput {
 };
 
 /// Every box of [0,1]^2 that may hold an intersection, narrowed to the search width, by
-/// the chosen method. Boxes are kept on an explicit stack; each step is one unit of work.
+/// the chosen method. Boxes are kept on an explicit stack; each step is charged against
+/// max_work by its cost (work_cost.hpp).
 ///
 ///  - hybrid: clip the pieces in turn against each other's fat line with fat curves;
 ///    when a clip keeps more than half of its interval, halve both intervals (seed 003).

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -65,7 +66,7 @@ TEST(IntersectionsRoute, CrossingSegmentsAnswerIsTheKernelsRoundTripped) {
   EXPECT_EQ(r["tolerance"].get<double>(), 1e-12);
   EXPECT_EQ(r["stats"]["method"], "hybrid");
   EXPECT_EQ(r["stats"]["fat_curve_degree"], 3);
-  for (const char* key : {"iterations", "clipping_steps", "subdivisions", "candidate_boxes",
+  for (const char* key : {"iterations", "work", "clipping_steps", "subdivisions", "candidate_boxes",
                           "compensated_steps", "newton_iterations", "max_depth"}) {
     EXPECT_TRUE(r["stats"][key].is_number_integer()) << key;
   }
@@ -204,7 +205,36 @@ TEST(IntersectionsRoute, WorkCapAnswers422NotAHang) {
       422, limits);
   EXPECT_EQ(problem["type"], "urn:bezier-service:problem:work-cap");
   EXPECT_EQ(problem["status"], 422);
-  EXPECT_NE(problem["detail"].get<std::string>().find("5000"), std::string::npos);
+  const std::string detail = problem["detail"].get<std::string>();
+  EXPECT_NE(detail.find("work cap of 5000 units"), std::string::npos) << detail;
+  // The default cap stops it too.
+  const json at_default = call(
+      R"({"curves":[{"points":[[0,0],[3,6],[6,0]]},{"points":[[0,0],[6,12],[8,-16],[6,12],[0,0]]}]})",
+      422);
+  EXPECT_EQ(at_default["type"], "urn:bezier-service:problem:work-cap");
+}
+
+TEST(IntersectionsRoute, WorkSpentStaysWithinTheCap) {
+  // Two cubics crossing: the answer reports the units spent, within the cap.
+  Limits limits;
+  const json r = call(
+      R"({"curves":[{"points":[[0,0],[1,0.1],[2,-0.1],[3,0]]},{"points":[[1.5,-1],[1.6,0],[1.4,0.5],[1.5,1]]}]})",
+      200, limits);
+  EXPECT_GT(r["stats"]["work"].get<std::int64_t>(), r["stats"]["iterations"].get<std::int64_t>());
+  EXPECT_LE(r["stats"]["work"].get<std::int64_t>(), limits.max_work);
+}
+
+TEST(IntersectionsRoute, SelfIntersectionWorkCapAnswers422) {
+  // B = C(4 (t - 1/4)^2), C quadratic: B(1/4 - x) = B(1/4 + x), a continuum of pairs.
+  Limits limits;
+  limits.max_work = 20000;
+  const json problem = call(
+      R"({"curves":[{"points":[[0.75,0.5625],[-0.75,-0.9375],[-0.25,1.5625],[2.25,-3.9375],[6.75,18.5625]]}]})",
+      422, limits);
+  EXPECT_EQ(problem["type"], "urn:bezier-service:problem:work-cap");
+  const std::string detail = problem["detail"].get<std::string>();
+  EXPECT_NE(detail.find("parameter boxes"), std::string::npos) << detail;
+  EXPECT_NE(detail.find("work cap of 20000 units"), std::string::npos) << detail;
 }
 
 TEST(IntersectionsRoute, PythonBezierFixturesEndToEnd) {

@@ -5,6 +5,7 @@
 
 #include "api/handler.hpp"
 #include "core/loop_area.hpp"
+#include "core/self_intersection_work_cost.hpp"
 
 namespace bezier::api {
 namespace {
@@ -176,12 +177,17 @@ TEST(LoopAreaRoute, DegreeAboveTheLimit) {
 }
 
 TEST(LoopAreaRoute, WorkCapIsA422Problem) {
+  // A budget in work units buys parameter boxes at the degree's price: five boxes here.
   Limits limits;
-  limits.max_work = 5;
+  limits.max_work = 5 * core::self_intersection_box_cost(7);
   const json r = call(std::string(R"({"points":)") + kDegree7 + "}", 422, limits);
   EXPECT_EQ(r["type"], "urn:bezier-service:problem:work-cap");
   EXPECT_EQ(r["status"], 422);
-  EXPECT_NE(r["detail"].get<std::string>().find("5 parameter boxes"), std::string::npos);
+  const std::string detail = r["detail"].get<std::string>();
+  EXPECT_NE(detail.find("examined 5 parameter boxes"), std::string::npos) << detail;
+  EXPECT_NE(detail.find("work cap of " + std::to_string(limits.max_work) + " units"),
+            std::string::npos)
+      << detail;
   EXPECT_FALSE(r.contains("errors"));
   // The interval form does no search and is not capped.
   limits.max_work = 1;

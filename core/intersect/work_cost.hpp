@@ -1,0 +1,50 @@
+#pragma once
+
+#include <cstdint>
+
+namespace bezier::core {
+
+// What the two-curve search charges against IntersectOptions::max_work, in work units.
+//
+// A step's cost grows with the degrees and with the arithmetic: rebuilding a piece of degree
+// n is de Casteljau's triangle, about (n + 1)^2 coordinate updates per piece, the implicit
+// clip multiplies two degree-n Bernstein polynomials ((n + 1)^2 products), and compensated
+// pieces do all of it in double-double. Counting steps alone let the cost per step range
+// over 1000x (0.3 us for cubics, 40 us for compensated degree-20 steps), so a cap in steps
+// either cut legitimate searches short or let pathological ones run for seconds. Charging
+// each step by what it computes makes the spent units proportional to time: one unit is
+// about one coordinate update of de Casteljau's algorithm in doubles (the multipliers
+// below are measured, BENCHMARKS.md §4).
+
+/// Compensated (double-double) pieces cost this many times the plain ones: each update is
+/// a two-product and two two-sums instead of one multiply-add, and a compensated step may
+/// also ask whether the curves coincide to within rounding (five samples, each a few
+/// compensated evaluations).
+inline constexpr std::int64_t kCompensatedFactor = 6;
+
+/// A step's fixed part (popping the box, the bounding boxes, the fat line), in units.
+inline constexpr std::int64_t kStepOverhead = 8;
+
+/// One box step on pieces of degrees m and n: both pieces rebuilt and clipped.
+[[nodiscard]] constexpr std::int64_t step_cost(int m, int n, bool compensated) noexcept {
+  const std::int64_t a = m + 1, b = n + 1;
+  const std::int64_t pieces = a * a + b * b;
+  return kStepOverhead + (compensated ? kCompensatedFactor * pieces : pieces);
+}
+
+/// One implicit ("fat parabola") clip of a piece of degree n: the squares and products of
+/// its three degree-n distance polynomials.
+[[nodiscard]] constexpr std::int64_t implicit_clip_cost(int n) noexcept {
+  const std::int64_t a = n + 1;
+  return 2 * a * a;
+}
+
+/// One Newton iteration of the final refinement on curves of degrees m and n: a residual
+/// evaluated in double-double on each curve (half a compensated piece each), and the
+/// tangents in doubles.
+[[nodiscard]] constexpr std::int64_t newton_cost(int m, int n) noexcept {
+  const std::int64_t a = m + 1, b = n + 1;
+  return kStepOverhead + (kCompensatedFactor / 2 + 1) * (a * a + b * b);
+}
+
+}  // namespace bezier::core

@@ -1,0 +1,111 @@
+// The work cost model (core/intersect/work_cost.hpp, core/self_intersection_work_cost.hpp):
+// higher degrees and compensated arithmetic cost more, and a budget in units buys fewer
+// steps the costlier they are. No timing here: BENCHMARKS.md §4 has the calibration.
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "core/degree.hpp"
+#include "core/intersect/intersect.hpp"
+#include "core/intersect/work_cost.hpp"
+#include "core/self_intersection_work_cost.hpp"
+
+namespace bezier::core {
+namespace {
+
+TEST(WorkCost, HigherDegreeCostsMoreInEveryCharge) {
+  for (int m = 1; m <= 20; ++m) {
+    for (int n = 1; n < 20; ++n) {
+      for (const bool compensated : {false, true}) {
+        EXPECT_LT(step_cost(m, n, compensated), step_cost(m, n + 1, compensated)) << m << " " << n;
+        EXPECT_LT(step_cost(n, m, compensated), step_cost(n + 1, m, compensated)) << m << " " << n;
+      }
+      EXPECT_LT(newton_cost(m, n), newton_cost(m, n + 1));
+    }
+    EXPECT_LT(implicit_clip_cost(m), implicit_clip_cost(m + 1));
+    EXPECT_LT(self_intersection_box_cost(m), self_intersection_box_cost(m + 1));
+  }
+}
+
+TEST(WorkCost, CompensatedStepsCostMoreThanPlainOnes) {
+  for (int m = 1; m <= 20; ++m) {
+    for (int n = 1; n <= 20; ++n) EXPECT_GT(step_cost(m, n, true), step_cost(m, n, false));
+  }
+}
+
+TEST(WorkCost, SymmetricInTheTwoCurves) {
+  for (int m = 1; m <= 20; ++m) {
+    for (int n = 1; n <= 20; ++n) {
+      EXPECT_EQ(step_cost(m, n, false), step_cost(n, m, false));
+      EXPECT_EQ(step_cost(m, n, true), step_cost(n, m, true));
+      EXPECT_EQ(newton_cost(m, n), newton_cost(n, m));
+    }
+  }
+}
+
+TEST(WorkCost, BoxBudgetIsWhatTheUnitsBuy) {
+  for (int n = 1; n <= 20; ++n) {
+    const std::int64_t cost = self_intersection_box_cost(n);
+    for (const std::int64_t units : {std::int64_t{0}, std::int64_t{1}, cost - 1, cost, 7 * cost + 3,
+                                     std::int64_t{4000000}}) {
+      const std::int64_t boxes = self_intersection_box_budget(units, n);
+      EXPECT_LE(boxes * cost, units);
+      EXPECT_GT((boxes + 1) * cost, units);
+    }
+    EXPECT_EQ(self_intersection_box_budget(-5, n), 0);
+  }
+}
+
+/// f(q) with q = 4s(1 - s): g runs along the parabola f and back, a non-linear
+/// reparametrisation that no finite search resolves (it always reaches the cap).
+struct Retraced {
+  Curve f{{{0.0, 0.0}, {0.5, 1.0}, {1.0, 0.0}}};
+  Curve g{{{0.0, 0.0}, {1.0, 2.0}, {4.0 / 3.0, -8.0 / 3.0}, {1.0, 2.0}, {0.0, 0.0}}};
+};
+
+TEST(WorkCost, CappedSearchSpendsAtMostTheBudget) {
+  const Retraced c;
+  IntersectOptions options;
+  options.max_work = 200000;
+  const IntersectionResult r = intersect(c.f, c.g, options);
+  ASSERT_EQ(r.status, IntersectStatus::work_cap_reached);
+  // Every step is charged at least its plain cost, and the search stops before a step
+  // would cross the budget (only the last contact's refinement may overshoot it).
+  EXPECT_GE(r.stats.work, r.stats.iterations * step_cost(2, 4, false));
+  EXPECT_LE(r.stats.work - r.stats.newton_iterations * newton_cost(2, 4), options.max_work);
+}
+
+TEST(WorkCost, SameBudgetBuysFewerStepsAtHigherDegree) {
+  // The same two curves, elevated from degrees 2 and 4 to degree 20: the same retracing
+  // geometry, each step on degree-20 pieces.
+  const Retraced c;
+  const Curve f20 = elevate_degree(c.f, 20), g20 = elevate_degree(c.g, 20);
+  IntersectOptions options;
+  options.max_work = 400000;
+  const IntersectionResult low = intersect(c.f, c.g, options);
+  const IntersectionResult high = intersect(f20, g20, options);
+  ASSERT_EQ(low.status, IntersectStatus::work_cap_reached);
+  ASSERT_EQ(high.status, IntersectStatus::work_cap_reached);
+  EXPECT_GT(high.stats.work / high.stats.iterations, low.stats.work / low.stats.iterations);
+  // A degree-20 step costs at least step_cost(20, 20, false); a low one at most a
+  // compensated step with two implicit clips.
+  const std::int64_t low_most = step_cost(2, 4, true) + 2 * implicit_clip_cost(4);
+  EXPECT_LE(high.stats.iterations, options.max_work / step_cost(20, 20, false));
+  EXPECT_GE(low.stats.iterations, (options.max_work - low.stats.newton_iterations * newton_cost(2, 4)) / low_most - 1);
+  EXPECT_LT(high.stats.iterations, low.stats.iterations);
+}
+
+TEST(WorkCost, TransversalCubicsSpendAFewThousandUnits) {
+  // Two cubics crossing once at a right angle: the ordinary case is far below any cap.
+  const Curve f({{0.0, 0.0}, {1.0, 0.1}, {2.0, -0.1}, {3.0, 0.0}});
+  const Curve g({{1.5, -1.0}, {1.6, 0.0}, {1.4, 0.5}, {1.5, 1.0}});
+  const IntersectionResult r = intersect(f, g);
+  ASSERT_EQ(r.status, IntersectStatus::ok);
+  ASSERT_EQ(r.intersections.size(), 1u);
+  EXPECT_GE(r.stats.work, r.stats.iterations * step_cost(3, 3, false));
+  EXPECT_LT(r.stats.work, 100000);
+}
+
+}  // namespace
+}  // namespace bezier::core
