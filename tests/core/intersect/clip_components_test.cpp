@@ -130,6 +130,36 @@ TEST(ClipComponents, KeptIntervalContainsEveryParameterInTheBand) {
   EXPECT_GT(grazing, 50);
 }
 
+TEST(ClipComponents, KeptIntervalOfANonMonotoneCubicIsTight) {
+  // p(t) = 6t(1 - t)(1 - 2t) (Bernstein 0, 2, -2, 0) rises to a maximum near t = 0.21 and
+  // falls to a minimum near 0.79. {p >= 1/5} is [r1, r2] with r1, r2 the roots of
+  // p = 1/5 left of t = 1/2, found here by bisection on the exact rational values; the kept
+  // interval must hold [r1, r2] and be within 1e-8 of it (the clip's pad is 2^-32).
+  const std::vector<double> p = {0.0, 2.0, -2.0, 0.0};
+  const Rational level(Rational(1) / Rational(5));
+  const auto root = [&](double a, double b) {  // p - level changes sign on [a, b]
+    const bool rising = exact_value(p, Rational(a)) < level;
+    for (int i = 0; i < 60; ++i) {
+      const double m = a + (b - a) / 2;
+      if ((exact_value(p, Rational(m)) < level) == rising)
+        a = m;
+      else
+        b = m;
+    }
+    return std::pair{a, b};
+  };
+  const auto [r1_lo, r1_hi] = root(0.0, 0.21);
+  const auto [r2_lo, r2_hi] = root(0.22, 0.5);
+  const auto kept = kept_interval(p, 0.2, 5.0);
+  ASSERT_TRUE(kept.has_value());
+  EXPECT_LE(kept->lo, r1_lo);
+  EXPECT_GE(kept->hi, r2_hi);
+  EXPECT_GT(kept->lo, r1_hi - 1e-8);
+  EXPECT_LT(kept->hi, r2_lo + 1e-8);
+  // A band holding every value of p: the whole domain.
+  EXPECT_EQ(*kept_interval(p, -5.0, 5.0), (ParamInterval{0.0, 1.0}));
+}
+
 TEST(ClipComponents, HullClipIsTheConvexHullOnTheBand) {
   // Points (0, -1), (1/2, 1), (1, -1): the hull meets y in [0, 0] for x in [1/4, 3/4].
   const double c[] = {-1.0, 1.0, -1.0};
