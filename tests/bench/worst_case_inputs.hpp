@@ -1,7 +1,7 @@
 #pragma once
 
 // The costliest requests we know at the default limits (issue 6, item 1: max_degree 20,
-// max_t_values 10000, max_work 200000): request bodies for api::handle, built from
+// max_t_values 10000, max_work 4000000 units): request bodies for api::handle, built from
 // closed forms and seeded random curves, timed by tests/bench/worst_case_bench.cpp.
 //
 // The curves:
@@ -252,6 +252,18 @@ inline std::vector<Request> requests() {
   }
   r.push_back({"intersections/hybrid/wave_grid_400_tol_min", "/intersections",
                two_curves(c.wave, c.wave_t, "hybrid", 0x1p-46)});
+
+  // Fuzz finding F7 (docs/FUZZING.md): a degree-20 curve with one control point apart against
+  // a point, and a quartic spanning 1e15 whose pairs the certification searches.
+  {
+    nlohmann::json spike = nlohmann::json::array({{1.0, 0.0}});
+    for (int k = 0; k < 20; ++k) spike.push_back({0.0, 0.0});
+    r.push_back({"intersections/hybrid/f7_spike_deg20_vs_point", "/intersections",
+                 nlohmann::json{{"curves", {{{"points", spike}}, {{"points", {{0.0, 0.0}, {0.0, 0.0}}}}}}}.dump()});
+    const nlohmann::json wide = {{1, 0.5}, {0.5, -6.9e14}, {6.9e14, -6.9e14}, {-9807.5, -0.61}, {-7.4e-16, -0.61}};
+    r.push_back({"self/f7_wide_quartic_subdivision", "/intersections",
+                 nlohmann::json{{"curves", {{{"points", wide}}}}, {"method", "subdivision"}}.dump()});
+  }
 
   // Self-intersections (/intersections with one curve) and /loop-area on the same curves.
   const std::pair<const char*, const Curve*> singles[] = {
