@@ -10,6 +10,7 @@
 #include "core/intersect/hybrid.hpp"
 #include "core/intersect/implicit_clip.hpp"
 #include "core/intersect/kind.hpp"
+#include "core/intersect/krawczyk.hpp"
 #include "core/intersect/subdivision.hpp"
 #include "core/intersect/work_cost.hpp"
 
@@ -24,6 +25,8 @@ struct Box {
   bool clip_s = false;       ///< whose turn it is to be clipped
   bool along = false;        ///< direction of the line through a point-like piece
   int depth = 0;
+  /// The box's larger width when the Krawczyk test last failed on it (or an ancestor).
+  double krawczyk_failed_at = INFINITY;
 };
 
 /// The two halves of an interval, or nothing when it is too narrow to split in doubles.
@@ -67,6 +70,11 @@ double piece_extent(const Piece& p) noexcept {
   return xh - xl > yh - yl ? xh - xl : yh - yl;
 }
 
+/// Boxes narrower than this in t and s (hybrid, fast pieces) try the Krawczyk test
+/// (krawczyk.hpp) before they are clipped: at a transversal crossing the Jacobian varies by
+/// O(width) over the box, so the test usually succeeds and replaces the last few clips.
+constexpr double kKrawczykWidth = 0x1p-5;
+
 /// The intersection of two kept intervals (both contain every root), or nothing.
 std::optional<ParamInterval> intersect_kept(std::optional<ParamInterval> a,
                                             std::optional<ParamInterval> b) {
@@ -82,14 +90,14 @@ class BoxStack {
  public:
   void push(const Box& b) {
     if (size_ < kInline)
-      inline_[size_] = b;
+      inline_[size_].box = b;
     else
       overflow_.push_back(b);
     ++size_;
   }
   Box pop() {
     --size_;
-    if (size_ < kInline) return inline_[size_];
+    if (size_ < kInline) return inline_[size_].box;
     const Box b = overflow_.back();
     overflow_.pop_back();
     return b;
@@ -98,7 +106,12 @@ class BoxStack {
 
  private:
   static constexpr std::size_t kInline = 32;
-  Box inline_[kInline];
+  /// Left unconstructed (Box has member initialisers): a slot is written before it is read.
+  union Slot {
+    Slot() {}  // NOLINT(modernize-use-equals-default): = default would initialise the Box
+    Box box;
+  };
+  Slot inline_[kInline];
   std::vector<Box> overflow_;
   std::size_t size_ = 0;
 };
@@ -107,7 +120,13 @@ class BoxStack {
 /// outlives the call.
 class Searcher {
  public:
-  explicit Searcher(const SearchInput& input) : in_(input) { out_.stats.method = input.method; }
+  explicit Searcher(const SearchInput& input)
+      : in_(input),
+        krawczyk_radius_(std::ldexp(1.0, std::ilogb(input.width / 2))),
+        use_krawczyk_(input.method == IntersectMethod::hybrid && !input.t_free && !input.s_free &&
+                      krawczyk_radius_ >= 0x1p-52 && krawczyk_radius_ <= 0x1p-2) {
+    out_.stats.method = input.method;
+  }
 
   SearchOutput run() {
     Box first;
@@ -206,6 +225,23 @@ class Searcher {
         }
         emit(box, true);
         return;
+      }
+
+      if (use_krawczyk_ && !box.compensated) {
+        const double w = std::max(box.t.width(), box.s.width());
+        if (w <= kKrawczykWidth && w <= box.krawczyk_failed_at / 2) {
+          const KrawczykResult k =
+              krawczyk(*in_.f, *in_.g, f_piece_, g_piece_, box.t, box.s, krawczyk_radius_);
+          if (k.verdict == KrawczykResult::Verdict::no_root) return;
+          if (k.verdict == KrawczykResult::Verdict::one_root) {
+            Box root = box;
+            root.t = k.t;
+            root.s = k.s;
+            emit(root, true);
+            return;
+          }
+          box.krawczyk_failed_at = w;
+        }
       }
 
       if (in_.method == IntersectMethod::subdivision) {
@@ -340,6 +376,10 @@ class Searcher {
   }
 
   const SearchInput& in_;
+  /// Half-width of the boxes the Krawczyk test reports: a power of two, so that they are
+  /// exact around a parameter on the 2^-52 grid, and at most half the search width.
+  double krawczyk_radius_;
+  bool use_krawczyk_;
   SearchOutput out_;
   BoxStack stack_;
   Piece f_piece_, g_piece_;
