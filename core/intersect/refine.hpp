@@ -16,8 +16,8 @@ struct Refinement {
 /// Refines a contact to full double precision, inside its intervals.
 ///
 /// An exact end-point root is returned as it is. Otherwise Newton's method on
-/// F(t, s) = f(t) - g(s) = 0 from the centre of the contact, with F evaluated in
-/// double-doubles (so the estimate is as accurate as the root's conditioning allows in
+/// F(t, s) = f(t) - g(s) = 0 from the centre of the contact, with f and g evaluated to
+/// double-double accuracy (compensated de Casteljau, compensated_point.hpp; so the estimate is as accurate as the root's conditioning allows in
 /// double precision, even where f and g nearly cancel) and the Jacobian [f', -g'] in
 /// doubles; it converges quadratically at a transversal root. At a tangency the Jacobian is
 /// singular (f' x g' = 0) and this crawls, so when it ends where the sine of the angle is
