@@ -146,9 +146,9 @@ template <class T>
   if (n == 0) return ParamInterval{0.0, 1.0};
   const double inv_n = 1.0 / static_cast<double>(n);
   double t_min = 2.0, t_max = -1.0;
-  auto consider = [&](double t) {
-    t_min = std::fmin(t_min, t);
-    t_max = std::fmax(t_max, t);
+  auto consider = [&](double t) {  // t is finite: the denominators below are nonzero
+    t_min = min2(t_min, t);
+    t_max = max2(t_max, t);
   };
   for (std::size_t i = 0; i <= n; ++i) {
     if (lo <= c[i] && c[i] <= hi) consider(static_cast<double>(i) * inv_n);
@@ -166,7 +166,7 @@ template <class T>
     }
   }
   const double pad = 8 * kU;
-  return ParamInterval{std::fmax(0.0, t_min - pad), std::fmin(1.0, t_max + pad)};
+  return ParamInterval{max2(0.0, t_min - pad), min2(1.0, t_max + pad)};
 }
 
 }  // namespace bezier::core::bernstein

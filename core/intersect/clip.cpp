@@ -14,12 +14,14 @@ struct Extent {
 };
 
 Extent extent(const Piece& p) noexcept {
-  double xl = p.x[0], xh = p.x[0], yl = p.y[0], yh = p.y[0];
-  for (std::size_t i = 1; i < p.x.size(); ++i) {
-    xl = p.x[i] < xl ? p.x[i] : xl;
-    xh = p.x[i] > xh ? p.x[i] : xh;
-    yl = p.y[i] < yl ? p.y[i] : yl;
-    yh = p.y[i] > yh ? p.y[i] : yh;
+  const double* x = p.x.data();
+  const double* y = p.y.data();
+  double xl = x[0], xh = x[0], yl = y[0], yh = y[0];
+  for (std::size_t i = 1, n = p.x.size(); i < n; ++i) {
+    xl = x[i] < xl ? x[i] : xl;
+    xh = x[i] > xh ? x[i] : xh;
+    yl = y[i] < yl ? y[i] : yl;
+    yh = y[i] > yh ? y[i] : yh;
   }
   return {xl - p.error, xh + p.error, yl - p.error, yh + p.error};
 }

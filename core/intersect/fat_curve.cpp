@@ -60,6 +60,8 @@ FatCurve fat_curve(const FatCurveOperator& op, std::span<const double> a) {
 
 std::optional<ParamInterval> fat_curve_clip(const FatCurveOperator& op,
                                             const DistanceCoefficients& d, double lo, double hi) {
+  // Degree <= k: the fat curve is the distance function itself (delta = 0), no copy.
+  if (op.k >= op.n) return kept_interval(d.a, lo - d.error, hi + d.error);
   const FatCurve fc = fat_curve(op, d.a);
   const double widen = fc.delta + d.error;
   return kept_interval(fc.p, lo - widen, hi + widen);

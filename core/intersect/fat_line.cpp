@@ -12,10 +12,11 @@ constexpr double kU = bernstein::kU;
 
 /// Largest |coordinate - origin| over a piece's control points.
 double reach(const Piece& p, Point2 origin) noexcept {
+  const double* x = p.x.data();
+  const double* y = p.y.data();
   double r = 0.0;
-  for (std::size_t i = 0; i < p.x.size(); ++i) {
-    r = bernstein::max2(
-        r, bernstein::max2(std::fabs(p.x[i] - origin.x), std::fabs(p.y[i] - origin.y)));
+  for (std::size_t i = 0, n = p.x.size(); i < n; ++i) {
+    r = bernstein::max2(r, bernstein::max2(std::fabs(x[i] - origin.x), std::fabs(y[i] - origin.y)));
   }
   return r;
 }
@@ -64,34 +65,33 @@ FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection directio
   // Every exact distance is within e of the computed one: the piece's error moves a point
   // by g.error per coordinate, and the difference, two products and the sum round once each.
   const double e = n1 * (g.error + 3.01 * kU * reach(g, origin));
-  Coeffs dist(m + 1);
-  for (std::size_t j = 0; j <= m; ++j) {
-    dist[j] = line.normal.x * (g.x[j] - origin.x) + line.normal.y * (g.y[j] - origin.y);
-  }
   double lo = 0.0, hi = 0.0;
-  if (m == 3 || m == 2) {
+  const double* gx = g.x.data();
+  const double* gy = g.y.data();
+  const auto distance = [&](std::size_t j) {
+    return line.normal.x * (gx[j] - origin.x) + line.normal.y * (gy[j] - origin.y);
+  };
+  if (m == 3) {
     // The exact end distances are within e of 0 (the line passes through the computed end
     // points), which adds e; the interior ones are within e of d_j, scaled by c <= 1.
-    double c = 0.5;
-    if (m == 3) {
-      const bool opposite =
-          (dist[1] - e > 0 && dist[2] + e < 0) || (dist[1] + e < 0 && dist[2] - e > 0);
-      c = opposite ? 4.0 / 9.0 : 0.75;
-    }
-    for (std::size_t j = 1; j < m; ++j) {
-      lo = bernstein::min2(lo, c * (dist[j] - e));
-      hi = bernstein::max2(hi, c * (dist[j] + e));
-    }
-    lo -= e;
-    hi += e;
+    const double d1 = distance(1), d2 = distance(2);
+    const bool opposite = (d1 - e > 0 && d2 + e < 0) || (d1 + e < 0 && d2 - e > 0);
+    const double c = opposite ? 4.0 / 9.0 : 0.75;
+    lo = bernstein::min2(bernstein::min2(lo, c * (d1 - e)), c * (d2 - e));
+    hi = bernstein::max2(bernstein::max2(hi, c * (d1 + e)), c * (d2 + e));
+  } else if (m == 2) {
+    const double d1 = distance(1);
+    lo = bernstein::min2(lo, 0.5 * (d1 - e));
+    hi = bernstein::max2(hi, 0.5 * (d1 + e));
   } else {
     for (std::size_t j = 0; j <= m; ++j) {
-      lo = bernstein::min2(lo, dist[j]);
-      hi = bernstein::max2(hi, dist[j]);
+      const double dj = distance(j);
+      lo = bernstein::min2(lo, dj);
+      hi = bernstein::max2(hi, dj);
     }
-    lo -= e;
-    hi += e;
   }
+  lo -= e;
+  hi += e;
   // The products c (d +- e) and the sums above round too: a relative hair more.
   const double slack = 4 * kU * (std::fabs(lo) + std::fabs(hi));
   line.d_min = lo - slack;
@@ -103,9 +103,12 @@ FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection directio
 DistanceCoefficients distance_coefficients(const FatLine& line, const Piece& f) {
   DistanceCoefficients out;
   const std::size_t n = f.x.size();
-  out.a.resize(n);
+  out.a = Coeffs(n, Coeffs::Uninitialized{});
+  double* a = out.a.data();
+  const double* x = f.x.data();
+  const double* y = f.y.data();
   for (std::size_t i = 0; i < n; ++i) {
-    out.a[i] = line.normal.x * (f.x[i] - line.origin.x) + line.normal.y * (f.y[i] - line.origin.y);
+    a[i] = line.normal.x * (x[i] - line.origin.x) + line.normal.y * (y[i] - line.origin.y);
   }
   const double n1 = std::fabs(line.normal.x) + std::fabs(line.normal.y);
   out.error = n1 * (f.error + 3.01 * kU * reach(f, line.origin));
