@@ -28,14 +28,33 @@ std::vector<double> positions(const WorkingCurve& c, Point2 origin, Point2 dir, 
   return u;
 }
 
+int sign_of(double v) noexcept {
+  return (v > 0.0) - (v < 0.0);
+}
+
+/// u cut into monotone pieces at its turning points: the roots of u' where u' changes sign.
+/// A root of even multiplicity is no turning point; at an end where the derivative vanishes
+/// (P0 = P1, say) bernstein_roots reports its double root a few 1e-8 inside the interval,
+/// and cutting there left a sliver of a piece whose range only touches the other curve's
+/// (finding F10: an overlap stopping 5e-8 short of the end, contacts next to it).
 std::vector<MonotonePiece> monotone_pieces(const std::vector<double>& u) {
   const std::size_t n = u.size() - 1;
   std::vector<double> breaks = {0.0};
   if (n >= 2) {
     std::vector<double> du(n);
     for (std::size_t i = 0; i < n; ++i) du[i] = u[i + 1] - u[i];
+    std::vector<double> cuts = {0.0};
     for (const double r : bernstein_roots(du).roots) {
-      if (r > breaks.back() + kTouch && r < 1.0 - kTouch) breaks.push_back(r);
+      if (r > cuts.back() + kTouch && r < 1.0 - kTouch) cuts.push_back(r);
+    }
+    cuts.push_back(1.0);
+    // The sign of u' between consecutive roots; a cut stays where it changes (zero: u is
+    // flat there, part of either neighbour).
+    int running = 0;
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+      const int sign = sign_of(bernstein::evaluate(du, cuts[i] + (cuts[i + 1] - cuts[i]) / 2));
+      if (sign != 0 && running != 0 && sign != running) breaks.push_back(cuts[i]);
+      if (sign != 0) running = sign;
     }
   }
   breaks.push_back(1.0);
@@ -45,6 +64,18 @@ std::vector<MonotonePiece> monotone_pieces(const std::vector<double>& u) {
                       bernstein::evaluate(u, breaks[i + 1])});
   }
   return pieces;
+}
+
+/// Whether the piece's range is a single position to within kTouch: all of it touches.
+bool flat(const MonotonePiece& p) noexcept {
+  return std::fabs(p.u1 - p.u0) <= kTouch;
+}
+
+/// The midpoint of [min(a, b), max(a, b)], inside it even for subnormal ends (a / 2 + b / 2
+/// rounds 3 * 2^-1074 / 2 to 2^-1073: finding F14).
+double middle(double a, double b) noexcept {
+  const double lo = std::min(a, b), hi = std::max(a, b);
+  return lo + (hi - lo) / 2;
 }
 
 /// The parameter in [p.t0, p.t1] where u = w, on a monotone piece (bisection; the ends
@@ -88,10 +119,49 @@ bool roughly_straight(const WorkingCurve& c, double tol) noexcept {
   return true;
 }
 
+/// The corners of an overlap's box that are its ends: (t.lo, s.lo) and (t.hi, s.hi), or the
+/// other diagonal when reversed.
+struct OverlapEnd {
+  double* t;
+  double* s;
+};
+
+/// Makes an exact root part of the answer: an overlap end or a touch within kTouch of it is
+/// moved onto it (the bisection and Newton put ends within rounding of it, not on it);
+/// otherwise it is a contact of its own.
+void hold_exact_root(CollinearOutcome& out, ExactRoot r) {
+  for (Overlap& o : out.overlaps) {
+    const OverlapEnd ends[2] = {
+        {&o.t_interval.lo, o.reversed ? &o.s_interval.hi : &o.s_interval.lo},
+        {&o.t_interval.hi, o.reversed ? &o.s_interval.lo : &o.s_interval.hi}};
+    for (const OverlapEnd& e : ends) {
+      if (std::fabs(*e.t - r.t) <= kTouch && std::fabs(*e.s - r.s) <= kTouch) {
+        *e.t = r.t;
+        *e.s = r.s;
+        return;
+      }
+    }
+    if (o.t_interval.contains(r.t) && o.s_interval.contains(r.s)) return;
+  }
+  for (CollinearContact& c : out.touches) {
+    const bool near_t = r.t >= c.t.lo - kTouch && r.t <= c.t.hi + kTouch;
+    const bool near_s = r.s >= c.s.lo - kTouch && r.s <= c.s.hi + kTouch;
+    if (near_t && near_s) {
+      c.t = {std::min(c.t.lo, r.t), std::max(c.t.hi, r.t)};
+      c.s = {std::min(c.s.lo, r.s), std::max(c.s.hi, r.s)};
+      c.t_estimate = r.t;
+      c.s_estimate = r.s;
+      return;
+    }
+  }
+  out.touches.push_back({{r.t, r.t}, {r.s, r.s}, r.t, r.s});
+}
+
 }  // namespace
 
 std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
-                                                        const WorkingCurve& g) {
+                                                        const WorkingCurve& g,
+                                                        std::span<const ExactRoot> exact_roots) {
   const double quick_tol = overlap_tolerance(std::max(f.degree, g.degree));
   if (!roughly_straight(f, quick_tol) || !roughly_straight(g, quick_tol)) return std::nullopt;
   // The line through f's first control point and the control point farthest from it.
@@ -147,8 +217,26 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
         out.overlaps.push_back(o);
         continue;
       }
-      // The ranges only touch: one point, unless an overlap already ends there.
-      const double tm = ta / 2 + tb / 2, sm = sa / 2 + sb / 2;
+      // The ranges only touch: one contact, unless an overlap already ends there. A flat
+      // piece touches with all of its parameters (a curve within the line tolerance of a
+      // point: finding F4), and the other curve's parameters are those of its two ends
+      // (its positions, rounded, may be one number, while its exact points are not).
+      if (flat(pf) && !flat(pg)) {
+        ta = pf.t0;
+        tb = pf.t1;
+        sa = locate_on_curve(g, evaluate_dd(f, ta), invert(v, pg, pf.u0));
+        sb = locate_on_curve(g, evaluate_dd(f, tb), invert(v, pg, pf.u1));
+      } else if (flat(pg) && !flat(pf)) {
+        sa = pg.t0;
+        sb = pg.t1;
+        ta = locate_on_curve(f, evaluate_dd(g, sa), invert(u, pf, pg.u0));
+        tb = locate_on_curve(f, evaluate_dd(g, sb), invert(u, pf, pg.u1));
+      } else if (flat(pf) && flat(pg)) {
+        ta = pf.t0, tb = pf.t1, sa = pg.t0, sb = pg.t1;
+      }
+      const ParamInterval t_iv{std::min(ta, tb), std::max(ta, tb)};
+      const ParamInterval s_iv{std::min(sa, sb), std::max(sa, sb)};
+      const double tm = middle(t_iv.lo, t_iv.hi), sm = middle(s_iv.lo, s_iv.hi);
       bool known = false;
       for (const Overlap& o : out.overlaps) {
         known = known || ((std::fabs(tm - o.t_interval.lo) <= kTouch ||
@@ -160,9 +248,7 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
         known = known ||
                 (std::fabs(tm - c.t_estimate) <= kTouch && std::fabs(sm - c.s_estimate) <= kTouch);
       }
-      if (!known)
-        out.touches.push_back(
-            {{std::min(ta, tb), std::max(ta, tb)}, {std::min(sa, sb), std::max(sa, sb)}, tm, sm});
+      if (!known) out.touches.push_back({t_iv, s_iv, tm, sm});
     }
   }
   // A touch found before the overlap that ends there.
@@ -176,6 +262,7 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
     }
     return false;
   });
+  for (const ExactRoot& r : exact_roots) hold_exact_root(out, r);
   return out;
 }
 

@@ -1,8 +1,10 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <vector>
 
+#include "core/intersect/merge.hpp"
 #include "core/intersect/result.hpp"
 #include "core/intersect/working_curve.hpp"
 
@@ -30,8 +32,11 @@ struct CollinearOutcome {
 /// range's ends found by bisection on the monotone pieces; ranges that only touch give a
 /// single contact. nullopt when the curves are not on one common line (the general search
 /// then applies; collinear curves on different lines cross at most at isolated points).
+/// End points equal bit for bit (exact_roots) are part of the answer: an overlap that ends
+/// within 2^-40 of one ends on it, a contact next to one is estimated at it, and any other
+/// is a contact of its own.
 /// Precondition: neither curve is a single point.
-[[nodiscard]] std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
-                                                                      const WorkingCurve& g);
+[[nodiscard]] std::optional<CollinearOutcome> collinear_intersections(
+    const WorkingCurve& f, const WorkingCurve& g, std::span<const ExactRoot> exact_roots);
 
 }  // namespace bezier::core

@@ -119,7 +119,7 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   }
   // Two curves on one line: a one-dimensional problem.
   if (!wf.is_point && !wg.is_point) {
-    if (const auto line = collinear_intersections(wf, wg)) {
+    if (const auto line = collinear_intersections(wf, wg, exact_end_roots(f, g, {}))) {
       result.overlaps = line->overlaps;
       for (const CollinearContact& c : line->touches) {
         if (!t_range.contains(c.t_estimate) || !s_range.contains(c.s_estimate)) continue;

@@ -156,25 +156,29 @@ TEST(FuzzRegressions, F3_BezierClippingAcceptsAPointCurve) {
   }
 }
 
-// F4, found by intersect_fuzzer: f starts exactly where g ends; g is 2^-29 long and f 2^24:
-// g is below the working frame's resolution and handled as a point; the one intersection,
-// f(0) = g(1) = (0, 0) bit for bit, is not reported, while two contacts that are not
-// intersections are ((0, 0) and (0, 1/2): g there is 1.7e-9 and 4e-10 away from f).
-// Open: the kernel still fails this (docs/FUZZING.md; issue 6 notes). Enabled again with
-// its fix; DISABLED_ keeps it compiled and listed by gtest as disabled meanwhile.
-TEST(FuzzRegressions, DISABLED_F4_EndPointRootOfATinyCurveIsReported) {
+// F4, found by intersect_fuzzer: f starts exactly where g ends; g is 2^-29 long and f 2^24, so g
+// is within the working frame's line tolerance of f's line and of a point, and the pair goes the
+// collinear way. g(s) = (0x1.d4p-30 (1 - s)^2, 0) meets the line x = 0 of f only at s = 1: the
+// one intersection is f(0) = g(1) = (0, 0), equal bit for bit. g's positions along f's line were
+// all 0, its derivative's roots a cut at s = 1/2, and the two halves gave two contacts that are
+// not intersections ((0, 0) and (0, 1/2)) and not the root. Now: one contact, estimated at the
+// exact root, in both orders.
+TEST(FuzzRegressions, F4_EndPointRootOfATinyCurveIsReported) {
   const Curve f({{0.0, 0.0}, {0.0, -0x1p24}});
   const Curve g({{0x1.d4p-30, 0.0}, {0.0, 0.0}, {0.0, 0.0}});
   IntersectOptions options;
   options.tolerance = 1e-9;
   options.method = IntersectMethod::bezier_clipping;
-  const IntersectionResult r = intersect(f, g, options);
-  ASSERT_EQ(r.status, IntersectStatus::ok);
-  EXPECT_TRUE(covered(r, 0.0, 1.0));
-  // Swapped, the same single intersection.
-  const IntersectionResult w = intersect(g, f, options);
-  EXPECT_TRUE(covered(w, 1.0, 0.0));
-  EXPECT_EQ(r.intersections.size(), w.intersections.size());
+  for (const bool swapped : {false, true}) {
+    const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    EXPECT_TRUE(r.overlaps.empty());
+    ASSERT_EQ(r.intersections.size(), 1u);
+    EXPECT_TRUE(swapped ? covered(r, 1.0, 0.0) : covered(r, 0.0, 1.0));
+    EXPECT_EQ(r.intersections[0].t, swapped ? 1.0 : 0.0);
+    EXPECT_EQ(r.intersections[0].s, swapped ? 0.0 : 1.0);
+    expect_intersection_contract(r, options.tolerance);
+  }
 }
 
 // F5, found by intersect_fuzzer: subnormal coordinates. Two segments 1e-310 long meeting
@@ -456,37 +460,76 @@ TEST(FuzzRegressions, F9_CuspAtTheEndIsNotALoopOfWidthZero) {
 
 // F10, found by intersect_fuzzer: two curves on the line y = −x, f from (1, −1) to
 // (−1/2, 1/2) with P1 = P2 = P3 (f'(1) = 0) and g from (−1/2, 1/2) to (0, 0). g lies on f:
-// the overlap is t in [t0, 1] (f(t0) = (0, 0), 1 − t0 = 3^(-1/3)) with s in [0, 1]
-// reversed, and f(1) = g(0) bit for bit. The overlap stops 5e-8 short of t = 1 and a cloud
-// of three zero-width contacts sits next to it; (1, 0) is in none of them.
-// Open: the kernel still fails this (docs/FUZZING.md; issue 6 notes). Enabled again with
-// its fix; DISABLED_ keeps it compiled and listed by gtest as disabled meanwhile.
-TEST(FuzzRegressions, DISABLED_F10_OverlapReachesAFlatEnd) {
+// the overlap is t in [t0, 1] (f(t0) = (0, 0): f(t) = P0 + (1 − (1 − t)^3)(P3 − P0), so
+// 1 − t0 = 3^(-1/3)) with s in [0, 1] reversed, and f(1) = g(0) bit for bit. The double root of
+// f's derivative at t = 1, found 5e-8 inside, cut f there: the overlap stopped 5e-8 short of
+// t = 1 and a cloud of three zero-width contacts sat next to it; (1, 0) was in none of them.
+// Now: the one overlap, ending exactly at (1, 0), and nothing else, in both orders.
+TEST(FuzzRegressions, F10_OverlapReachesAFlatEnd) {
   const Curve f({{1.0, -1.0}, {-0.5, 0.5}, {-0.5, 0.5}, {-0.5, 0.5}});
   const Curve g({{-0.5, 0.5}, {-0.5, 0.5}, {0.0, 0.0}, {0.0, 0.0}});
-  const IntersectionResult r = intersect(f, g);
-  ASSERT_EQ(r.status, IntersectStatus::ok);
-  EXPECT_TRUE(covered(r, 1.0, 0.0));
-  ASSERT_EQ(r.overlaps.size(), 1u);
-  EXPECT_NEAR(r.overlaps[0].t_interval.lo, 1.0 - std::cbrt(1.0 / 3.0), 1e-12);
-  EXPECT_NEAR(r.overlaps[0].t_interval.hi, 1.0, 1e-12);
+  const double t0 = 1.0 - std::cbrt(1.0 / 3.0);
+  for (const bool swapped : {false, true}) {
+    const IntersectionResult r = swapped ? intersect(g, f) : intersect(f, g);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    EXPECT_TRUE(r.intersections.empty());
+    ASSERT_EQ(r.overlaps.size(), 1u);
+    const Overlap& o = r.overlaps[0];
+    const ParamInterval on_f = swapped ? o.s_interval : o.t_interval;
+    const ParamInterval on_g = swapped ? o.t_interval : o.s_interval;
+    EXPECT_NEAR(on_f.lo, t0, 1e-12);
+    EXPECT_EQ(on_f.hi, 1.0);
+    EXPECT_EQ(on_g, (ParamInterval{0.0, 1.0}));
+    EXPECT_TRUE(o.reversed);
+    EXPECT_TRUE(swapped ? covered(r, 0.0, 1.0) : covered(r, 1.0, 0.0));
+  }
+}
+
+// F14, found by intersect_fuzzer (wide inputs): an estimate one subnormal step outside its
+// zero-width interval. f, 2^-900 long, lies on the segment g(s) = (0, 2^64 s), from s = 3 2^-1074
+// to s = 2^-964; in the working frame f's positions along the line are one number, so the pair
+// came as a touch with s in [3 2^-1074, 3 2^-1074] and the estimate s/2 + s/2 = 4 2^-1074 (and
+// t = s = 0, no root, in the other order). Now f touches with all of its parameters: a contact
+// holding every (t, s) of the coincidence, in both orders.
+TEST(FuzzRegressions, F14_SubnormalEstimateInsideItsInterval) {
+  const Curve f({{0.0, 0x3p-1010}, {0.0, 0x1p-900}});
+  const Curve g({{0.0, 0.0}, {0.0, 0x1p64}});
+  for (const bool swapped : {false, true}) {
+    const IntersectionResult r = swapped ? intersect(g, f) : intersect(f, g);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    ASSERT_EQ(r.intersections.size() + r.overlaps.size(), 1u);
+    // f(0) = g(3 2^-1074), f(1) = g(2^-964) and f(1/2) = g((2^-964 + 3 2^-1074) / 2).
+    for (const auto& [t, s] : {std::pair{0.0, 0x3p-1074}, std::pair{1.0, 0x1p-964},
+                               std::pair{0.5, 0x1p-965 + 0x3p-1075}}) {
+      EXPECT_TRUE(swapped ? covered(r, s, t) : covered(r, t, s)) << t << " " << s;
+    }
+    expect_intersection_contract(r, IntersectOptions{}.tolerance);
+  }
 }
 
 // F11, found by intersect_fuzzer: g touches the segment f at f's end with third-order
-// contact (P0, P1, P2 of g on the line y = 1, so g's y is 1 − s^3 near s = 0): one
-// contact, f(1) = g(0) exactly, reported as two (unresolved) boxes.
-// Open: the kernel still fails this (docs/FUZZING.md; issue 6 notes). Enabled again with
-// its fix; DISABLED_ keeps it compiled and listed by gtest as disabled meanwhile.
-TEST(FuzzRegressions, DISABLED_F11_HighOrderContactIsReportedOnce) {
+// contact (P0, P1, P2 of g on the line y = 1, so g's y is 1 − s^3): one contact, f(1) = g(0)
+// exactly, where f' = (−2, 0) and g'(0) = 3 (P1 − P0) are parallel and nonzero (tangent). The
+// curves agree to within rounding along a stretch next to it, where the search leaves boxes at
+// the precision floor with holes between them: two (unresolved) contacts 7e-6 apart, placed
+// differently in the two orders. Now one contact, at the exact root, in both orders.
+TEST(FuzzRegressions, F11_HighOrderContactIsReportedOnce) {
   const Curve f({{1.0, 1.0}, {-1.0, 1.0}});
   const Curve g({{-1.0, 1.0}, {0x1.fc38p+6, 1.0}, {-1.0, 1.0}, {0.0, 0.0}});
   IntersectOptions options;
   options.tolerance = 1e-9;
   options.method = IntersectMethod::bezier_clipping;
-  const IntersectionResult r = intersect(f, g, options);
-  ASSERT_EQ(r.status, IntersectStatus::ok);
-  EXPECT_EQ(r.intersections.size(), 1u);
-  EXPECT_TRUE(covered(r, 1.0, 0.0));
+  for (const bool swapped : {false, true}) {
+    const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    EXPECT_TRUE(r.overlaps.empty());
+    ASSERT_EQ(r.intersections.size(), 1u);
+    EXPECT_TRUE(swapped ? covered(r, 0.0, 1.0) : covered(r, 1.0, 0.0));
+    EXPECT_EQ(r.intersections[0].t, swapped ? 0.0 : 1.0);
+    EXPECT_EQ(r.intersections[0].s, swapped ? 1.0 : 0.0);
+    EXPECT_EQ(r.intersections[0].kind, IntersectionKind::tangent);
+    expect_intersection_contract(r, options.tolerance);
+  }
 }
 
 }  // namespace
