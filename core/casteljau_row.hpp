@@ -46,6 +46,10 @@ class CasteljauRow {
     return is_finite(error) ? value + error : value;
   }
 
+  /// Entry i as its two parts, unrounded: the difference of two nearly equal evaluations
+  /// keeps the error parts that point(i) would round away.
+  [[nodiscard]] const TwoTerm<P>& entry(std::size_t i) const noexcept { return entries_[i]; }
+
   /// One de Casteljau round with parameter t: entry i <- (1 - t) entry i + t entry i+1.
   /// The local error of each new entry is exact before it is rounded into the error row:
   /// (1 - t) a + t b = fl(r a + t b) + [π_ra + π_tb + σ + ρ a], where 1 - t = r + ρ,

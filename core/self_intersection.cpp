@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
+#include "core/casteljau_row.hpp"
 #include "core/collinear_self_overlap.hpp"
 #include "core/cubic_double_point.hpp"
+#include "core/cubic_predicates.hpp"
+#include "core/error_free.hpp"
 #include "core/evaluate.hpp"
 #include "core/self_intersection_refine.hpp"
 #include "core/self_intersection_search.hpp"
@@ -47,17 +51,88 @@ struct CurveFacts {
 /// Whether a Newton root is a real pair rather than a point of the diagonal blurred by
 /// rounding (see double_point_uncertainty).
 bool resolved(const CurveFacts& facts, double u, double v) {
-  return is_resolved_double_point(facts.points, u, v, facts.rounding);
+  return is_resolved_double_point(facts.points, u, v, facts.rounding, facts.closed);
 }
 
-/// |B(v) - B(u)| with the compensated evaluation: the most accurate residual available,
-/// used to decide whether an end point is exactly part of the pair.
+/// F = B(v) - B(u) from two compensated de Casteljau evaluations whose value parts and
+/// error parts are subtracted separately: good to about u |F| + n^2 u^2 S. The difference of
+/// the two rounded points (evaluate()) is only good to u |B|, one ulp of the double point,
+/// which two branches crossing at a tiny angle turn into parameter errors of 1e-11.
+Point2 compensated_difference(const Curve& curve, double u, double v) {
+  CasteljauRow<Point2> at_u(curve.points()), at_v(curve.points());
+  while (at_u.size() > 1) {
+    at_u.casteljau_step(u);
+    at_v.casteljau_step(v);
+  }
+  const TwoTerm<Point2>& bu = at_u.entry(0);
+  const TwoTerm<Point2>& bv = at_v.entry(0);
+  if (!is_finite(bu.lo) || !is_finite(bv.lo)) return at_v.point(0) - at_u.point(0);
+  const TwoTerm<Point2> values = two_sum(bv.hi, -bu.hi);
+  return values.hi + (values.lo + (bv.lo - bu.lo));
+}
+
+/// |B(v) - B(u)| from compensated_difference(): the most accurate residual available, used
+/// to decide whether an end point is exactly part of the pair and to polish crossings.
 double exact_residual(const Curve& curve, double u, double v) {
-  return norm(evaluate(curve, v) - evaluate(curve, u));
+  return norm(compensated_difference(curve, u, v));
+}
+
+/// A crossing refined to full double precision: Newton steps on F = B(v) - B(u) with F from
+/// compensated_difference() (mixed-precision iterative refinement). The search's Newton
+/// works with plain de Casteljau, whose F is only good to the rounding level n u S: it stops
+/// anywhere within double_point_uncertainty() of the root, which for branches crossing at
+/// a small angle is far more than ulps (seen: one double point found from two boxes as two
+/// pairs 1.4e-9 apart in s; a certain pair dropped because its |B(v) - B(u)| exceeded the
+/// distance tolerance). With the accurate F the steps shrink quadratically down to the
+/// noise floor, u |F| ||J^-1||; a step that does not halve the one before is noise and is
+/// not taken. (Not "while |F| decreases": at an ill-conditioned root the doubles next to it
+/// all have |F| at the level of the parameters' own rounding, and points 1e-12 away along
+/// the ill-conditioned direction can have a smaller one.) Steps stay within reach of the
+/// start, a few times its uncertainty: anything farther is another root, or none. An end
+/// parameter exactly 0 or 1 stays, and the other one takes the 1-D least-squares step.
+Candidate polished(Candidate c, const CurveFacts& facts) {
+  constexpr int kSteps = 6;
+  const double reach = std::min(
+      0x1p-20,
+      std::max(0x1p-40, 16.0 * double_point_uncertainty(facts.points, c.u, c.v, facts.rounding)));
+  const bool u_fixed = c.u == 0.0 || c.u == 1.0;
+  const bool v_fixed = c.v == 0.0 || c.v == 1.0;
+  if (u_fixed && v_fixed) return c;
+  const double u0 = c.u, v0 = c.v;
+  Point2 f = compensated_difference(facts.curve, c.u, c.v);
+  double last_step = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < kSteps && !(f.x == 0.0 && f.y == 0.0); ++k) {
+    const Point2 tu = curve_jet(facts.points, c.u).d1, tv = curve_jet(facts.points, c.v).d1;
+    double du = 0.0, dv = 0.0;
+    if (u_fixed) {
+      dv = -dot(f, tv) / dot(tv, tv);  // B(v + dv) = B(u) along the tangent at v
+    } else if (v_fixed) {
+      du = dot(f, tu) / dot(tu, tu);
+    } else {
+      // -B'(u) du + B'(v) dv = -F, by Cramer's rule.
+      const Point2 a = -tu;
+      const double det = cross(a, tv);
+      du = cross(-f, tv) / det;
+      dv = cross(a, -f) / det;
+    }
+    const double step = std::max(std::fabs(du), std::fabs(dv));
+    const double nu = c.u + du, nv = c.v + dv;
+    if (!(step < 0.5 * last_step) || !(std::isfinite(nu) && std::isfinite(nv))) break;
+    if (std::fabs(nu - u0) > reach || std::fabs(nv - v0) > reach) break;
+    if (nu == c.u && nv == c.v) break;
+    c.u = nu;
+    c.v = nv;
+    f = compensated_difference(facts.curve, c.u, c.v);
+    last_step = step;
+  }
+  c.residual = norm(f);
+  return c;
 }
 
 /// The candidate with u moved to 0 (v to 1) when B(0) = B(v) (B(u) = B(1)) holds as well as
 /// B(u) = B(v) did, up to rounding: a loop closing exactly at an end reports the end exactly.
+/// Either side of the end: a root a few ulps outside [0, 1] is such a loop in all but
+/// rounding; one that does not snap is a double point off the segment.
 Candidate snapped_to_ends(Candidate c, const CurveFacts& facts) {
   constexpr double kNearEnd = 0x1p-20;
   const bool near_start = c.u != 0.0 && std::fabs(c.u) <= kNearEnd;
@@ -69,11 +144,7 @@ Candidate snapped_to_ends(Candidate c, const CurveFacts& facts) {
   return c;
 }
 
-/// The pair as reported. A transversal pair gets one last Newton step whose residual
-/// F = B(s) - B(t) comes from the compensated evaluate() (mixed-precision iterative
-/// refinement): plain de Casteljau's residual is only good to about n u S, the compensated
-/// one to about u |B|, so the step lands within about an ulp of a well-conditioned root.
-/// Parameters already exactly at an end stay there. The double point is the mean of B(t)
+/// The pair as reported (u, v final: see polished()). The double point is the mean of B(t)
 /// and B(s), both compensated; the kind comes from the tangents (a contact is tangent by
 /// construction unless a tangent vanishes).
 SelfIntersection finished_pair(const CurveFacts& facts, double u, double v, bool contact) {
@@ -88,28 +159,13 @@ SelfIntersection finished_pair(const CurveFacts& facts, double u, double v, bool
   } else if (contact || std::fabs(cross(ju.d1, jv.d1)) <= kTangentSine * lu * lv) {
     kind = SelfIntersectionKind::tangent;
   }
-  Point2 bu = evaluate(facts.curve, u), bv = evaluate(facts.curve, v);
-  if (kind == SelfIntersectionKind::transversal) {
-    const Point2 f = bv - bu, a = -ju.d1;
-    const double det = cross(a, jv.d1);
-    const double du = cross(-f, jv.d1) / det, dv = cross(a, -f) / det;
-    // A correction at rounding level only; anything larger means the pair was not settled.
-    constexpr double kPolish = 0x1p-40;
-    if (std::fabs(du) <= kPolish && std::fabs(dv) <= kPolish) {
-      const double nu = (u == 0.0 || u == 1.0) ? u : u + du;
-      const double nv = (v == 0.0 || v == 1.0) ? v : v + dv;
-      // The points move by B' times a step of a few ulps: to first order, exactly enough.
-      bu = bu + (nu - u) * ju.d1;
-      bv = bv + (nv - v) * jv.d1;
-      u = nu;
-      v = nv;
-    }
-  }
-  return {u, v, 0.5 * (bu + bv), kind};
+  return {u, v, 0.5 * (evaluate(facts.curve, u) + evaluate(facts.curve, v)), kind};
 }
 
-/// Snaps, filters (outside [0,1], t >= s, the trivial pair of a closed curve), sorts and
-/// merges the candidates, then computes points and kinds.
+/// Polishes the crossings, snaps to the ends, filters (outside [0,1], t >= s, the pair
+/// (0, 1)), sorts and merges the candidates, then computes points and kinds. (0, 1) is
+/// never a pair: on a closed curve it is the trivial one, on an open curve B(0) = P_0 and
+/// B(1) = P_n differ exactly (it comes from an end loop closing a few ulps off the segment).
 std::vector<SelfIntersection> clean_up(const std::vector<Candidate>& candidates,
                                        const CurveFacts& facts) {
   const auto by_u = [](const Candidate& a, const Candidate& b) {
@@ -117,9 +173,9 @@ std::vector<SelfIntersection> clean_up(const std::vector<Candidate>& candidates,
   };
   std::vector<Candidate> kept;
   for (const Candidate& raw : candidates) {
-    const Candidate c = snapped_to_ends(raw, facts);
+    const Candidate c = snapped_to_ends(raw.contact ? raw : polished(raw, facts), facts);
     if (!(0.0 <= c.u && c.u < c.v && c.v <= 1.0)) continue;
-    if (facts.closed && c.u == 0.0 && c.v == 1.0) continue;
+    if (c.u == 0.0 && c.v == 1.0) continue;
     // A crossing must be a double point: next to an end where B' vanishes Newton can stop
     // (small steps, flat F) far from one. Contacts were checked against dist_tol already.
     if (!c.contact && exact_residual(facts.curve, c.u, c.v) > facts.dist_tol) continue;
@@ -196,7 +252,9 @@ struct ContactResolution {
 /// One candidate per cluster of contact boxes: Newton on F first (a crossing at a tiny
 /// angle also ends up here), else the tangential-contact refinement; kept when the two
 /// branches meet to within dist_tol and the pair is clear of the diagonal (near a cusp the
-/// closest pair slides to u = v). Stops at `budget` work units.
+/// closest pair slides to u = v) and, on a closed curve, of the seam (next to an end where
+/// B' vanishes to high order the closest pair slides along it, away from (0, 1) but not to
+/// a double point). Stops at `budget` work units.
 ContactResolution resolve_contacts(const std::vector<ParameterBox>& boxes, const CurveFacts& facts,
                                    std::int64_t budget) {
   ContactResolution out;
@@ -225,7 +283,8 @@ ContactResolution resolve_contacts(const std::vector<ParameterBox>& boxes, const
     if (contact) r = refine_contact(facts.points, u0, v0, region);
     ++out.newton_runs;
     out.newton_iterations += r.iterations;
-    if (r.residual <= facts.dist_tol && r.v - r.u > 4.0 * width) {
+    if (r.residual <= facts.dist_tol &&
+        parameter_separation(r.u, r.v, facts.closed) > 4.0 * width) {
       out.candidates.push_back({r.u, r.v, r.residual, contact});
     }
   }
@@ -278,7 +337,9 @@ SelfIntersectionResult retracing_result(const CurveFacts& facts,
     const double a = 0.5 * h.t, b = 0.5 * h.s;
     const bool tangent = h.kind == SelfIntersectionKind::tangent;
     for (const auto& [u, v] : {std::pair{a, b}, {a, 1 - b}, {b, 1 - a}, {1 - b, 1 - a}}) {
-      pairs.push_back(finished_pair(facts, u, v, tangent));
+      const Candidate c =
+          tangent ? Candidate{u, v, 0.0, true} : polished({u, v, 0.0, false}, facts);
+      pairs.push_back(finished_pair(facts, c.u, c.v, tangent));
     }
   }
   const auto by_t = [](const auto& x, const auto& y) { return x.t != y.t ? x.t < y.t : x.s < y.s; };
@@ -295,19 +356,35 @@ SelfIntersectionResult retracing_result(const CurveFacts& facts,
   return result;
 }
 
+/// What the cubic closed form says: a loop (`result`), no loop on [0, 1] other than a closed
+/// curve's trivial pair (the caller then still checks for a collinear or palindromic,
+/// retracing, cubic, which the closed form does not describe), or nothing certain.
+enum class ClosedFormVerdict { loop, no_loop, undecided };
+
+struct ClosedFormAnswer {
+  ClosedFormVerdict verdict = ClosedFormVerdict::undecided;
+  SelfIntersectionResult result;
+};
+
 /// Cubics: the exact closed form of cubic_double_point() (exact decisions, and t = 0 or 1
 /// exactly when the loop closes at an end), polished by one Newton step to full precision.
-/// nullopt when the cubic has no loop on [0, 1] other than a closed curve's trivial pair;
-/// the caller then still checks for a collinear or palindromic (retracing) cubic, which the
-/// closed form does not describe. The point is the closed form's (the mean of B(t1) and
-/// B(t2), exactly P0 or P3 at an exact end; the polish moves t by ulps), and the kind is
-/// transversal: the only singular points a cubic can have are a node, a cusp (no pair) and
-/// an isolated point (no real pair), so two branches through a double point cross.
-std::optional<SelfIntersectionResult> closed_form_cubic(const CurveFacts& facts) {
-  const auto dp = cubic_double_point(std::span<const Point2, 4>(facts.points.data(), 4));
-  if (!dp || !dp->on_segment) return std::nullopt;
-  if (facts.closed && dp->t1 == 0.0 && dp->t2 == 1.0) return std::nullopt;  // the trivial pair
-  if (!(dp->t1 < dp->t2)) return std::nullopt;  // a loop of width zero is no pair (t < s)
+/// The point is the closed form's (the mean of B(t1) and B(t2), exactly P0 or P3 at an exact
+/// end; the polish moves t by ulps), and the kind is transversal: the only singular points a
+/// cubic can have are a node, a cusp (no pair) and an isolated point (no real pair), so two
+/// branches through a double point cross.
+/// Coordinates spanning more than about 2^400 leave the predicates inexact
+/// (CubicPredicates::exact false): then the answer is the closed form's only when it is a
+/// pair with B(t) = B(s) to within the distance tolerance, and undecided otherwise (an
+/// inexact "no loop", or a pair that is no double point: (0, 1) on an open curve was seen).
+ClosedFormAnswer closed_form_cubic(const CurveFacts& facts) {
+  const std::span<const Point2, 4> p(facts.points.data(), 4);
+  const CubicPredicates predicates = cubic_predicates(p);
+  const ClosedFormAnswer no_loop{
+      predicates.exact ? ClosedFormVerdict::no_loop : ClosedFormVerdict::undecided, {}};
+  const auto dp = cubic_double_point(p, predicates);
+  if (!dp || !dp->on_segment) return no_loop;
+  if (facts.closed && dp->t1 == 0.0 && dp->t2 == 1.0) return no_loop;  // the trivial pair
+  if (!(dp->t1 < dp->t2)) return no_loop;  // a loop of width zero is no pair (t < s)
   SelfIntersectionResult result;
   result.stats.method = SelfIntersectionMethod::closed_form_cubic;
   double u = dp->t1, v = dp->t2;
@@ -326,8 +403,12 @@ std::optional<SelfIntersectionResult> closed_form_cubic(const CurveFacts& facts)
       v = nv;
     }
   }
+  if (!predicates.exact &&
+      ((u == 0.0 && v == 1.0) || !(exact_residual(facts.curve, u, v) <= facts.dist_tol))) {
+    return {};
+  }
   result.pairs.push_back({u, v, dp->point, SelfIntersectionKind::transversal});
-  return result;
+  return {ClosedFormVerdict::loop, std::move(result)};
 }
 
 }  // namespace
@@ -358,18 +439,17 @@ SelfIntersectionResult self_intersections(const Curve& curve,
   const CurveFacts facts{work_curve,           points,   s,
                          options.dist_rel * s, rounding, curve.front() == curve.back()};
 
-  const bool cubic_fast_path = curve.degree() == 3 && options.cubic_closed_form;
-  std::optional<SelfIntersectionResult> cubic_loop;
-  if (cubic_fast_path) cubic_loop = closed_form_cubic(facts);
+  ClosedFormAnswer cubic;
+  if (curve.degree() == 3 && options.cubic_closed_form) cubic = closed_form_cubic(facts);
   SelfIntersectionResult result;
-  if (cubic_loop) {
-    result = std::move(*cubic_loop);
+  if (cubic.verdict == ClosedFormVerdict::loop) {
+    result = std::move(cubic.result);
   } else if (const auto frame = collinear_frame(points, facts.dist_tol)) {
     result = collinear_result(facts, *frame, options);
   } else if (is_palindrome(points)) {
     result = retracing_result(facts, options);
-  } else if (cubic_fast_path) {
-    result.stats.method = SelfIntersectionMethod::closed_form_cubic;  // no loop
+  } else if (cubic.verdict == ClosedFormVerdict::no_loop) {
+    result.stats.method = SelfIntersectionMethod::closed_form_cubic;
   } else {
     const SelfIntersectionSearchOutcome found = search_self_intersections(
         points,

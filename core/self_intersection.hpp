@@ -125,20 +125,25 @@ struct SelfIntersectionOptions {
 ///    Otherwise split; pieces flat to within the distance tolerance that still cannot be
 ///    separated are tangential-contact candidates, refined by refine_contact.
 /// Results are refined to full double precision (Newton with quadratic convergence, then
-/// one step with the compensated residual of evaluate()), moved to exactly t = 0 or s = 1
-/// when the end point satisfies B(t) = B(s) as well, and merged when found twice. Cubics
-/// take the exact closed form of cubic_double_point.hpp instead of the search (unless
-/// options.cubic_closed_form is off). Curves that retrace themselves get a named branch
-/// each (status degenerate, see SelfOverlap): collinear ones a 1-D analysis, palindromic
-/// control points (B(1 - t) = B(t)) the self-intersections of the outbound half and their
-/// mirror images.
+/// Newton steps on a compensated residual B(s) - B(t)), moved to exactly t = 0 or s = 1
+/// when the end point satisfies B(t) = B(s) as well (a root found just outside [0, 1] that
+/// does not snap is a double point off the segment, not reported), and merged when found
+/// twice. Cubics take the exact closed form of cubic_double_point.hpp instead of the search
+/// (unless options.cubic_closed_form is off); where its predicates are not exact (coordinates
+/// spanning more than about 2^400) it is trusted only for a pair with B(t) = B(s) to within
+/// the distance tolerance, and the search decides otherwise. Curves that retrace themselves
+/// get a named branch each (status degenerate, see SelfOverlap): collinear ones a 1-D
+/// analysis, palindromic control points (B(1 - t) = B(t)) the self-intersections of the
+/// outbound half and their mirror images.
 ///
 /// Resolution: next to a cusp, |B(s) - B(t)| stays at rounding level for s - t up to about
 /// 1e-5, so pairs there are accepted only when rounding could not move them onto the
 /// diagonal (is_resolved_double_point); loops closer to a cusp than that (s - t below
 /// roughly 1e-4, area below ~1e-18 of the curve's size) are treated as the cusp and not
-/// reported. The exact cubic closed form has no such limit. Distinct pairs closer than
-/// 1e-10 in both t and s are merged.
+/// reported. On a closed curve the seam (t, s) = (0, 1) is treated like the diagonal (with
+/// s - t replaced by 1 - (s - t)): loops next to it that small count as the trivial pair.
+/// The exact cubic closed form has no such limit. Distinct pairs closer than 1e-10 in both t
+/// and s are merged.
 /// Tangential contacts are located by refine_contact (to full precision when the branches'
 /// curvatures differ, to about half the digits when they agree). Every stage counts against
 /// options.max_work; running out gives status work_cap_reached, never a long run. Other curves that

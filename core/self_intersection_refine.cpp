@@ -118,8 +118,10 @@ double double_point_uncertainty(std::span<const Point2> points, double u, double
   return rounding * std::numbers::sqrt2 * std::max(norm(tu), norm(tv)) / det;
 }
 
-bool is_resolved_double_point(std::span<const Point2> points, double u, double v, double rounding) {
-  return double_point_uncertainty(points, u, v, rounding) < 0x1p-10 * (v - u);
+bool is_resolved_double_point(std::span<const Point2> points, double u, double v, double rounding,
+                              bool closed) {
+  return double_point_uncertainty(points, u, v, rounding) <
+         0x1p-10 * parameter_separation(u, v, closed);
 }
 
 PairRefinement refine_contact(std::span<const Point2> points, double u0, double v0,

@@ -74,14 +74,24 @@ struct PairRefinement {
 [[nodiscard]] double double_point_uncertainty(std::span<const Point2> points, double u, double v,
                                               double rounding);
 
+/// How far apart the parameters u < v are, the way the trivial zeros of F lie: v - u on an
+/// open curve; on a closed one (P_0 = P_n: t = 0 and t = 1 are the same point, and F also
+/// vanishes at (0, 1), the seam) the shorter way round, min(v - u, 1 - (v - u)).
+[[nodiscard]] inline double parameter_separation(double u, double v, bool closed) noexcept {
+  const double d = v - u;
+  return closed ? std::fmin(d, 1.0 - d) : d;
+}
+
 /// Whether a double point (u, v), u < v, is resolved: its uncertainty at rounding level
-/// `rounding` is below (v - u) / 1024. The linearised uncertainty underestimates how far
-/// the noise reaches near a cusp, where F grows only like (v - u)^3 along the anti-diagonal
-/// (observed: a cusp of a degree-4 curve gave "roots" with v - u = 1.5e-5 whose estimate was
-/// (v - u) / 7), hence the wide margin; real loops of area 1e-12 of their curve's size have
-/// v - u of order 1e-3 and estimates of order 1e-10, far inside it.
+/// `rounding` is below parameter_separation(u, v, closed) / 1024, so that rounding could not
+/// move it onto the diagonal (nor, on a closed curve, onto the seam's trivial pair (0, 1)).
+/// The linearised uncertainty underestimates how far the noise reaches near a cusp, where F
+/// grows only like (v - u)^3 along the anti-diagonal (observed: a cusp of a degree-4 curve
+/// gave "roots" with v - u = 1.5e-5 whose estimate was (v - u) / 7), hence the wide margin;
+/// real loops of area 1e-12 of their curve's size have v - u of order 1e-3 and estimates of
+/// order 1e-10, far inside it.
 [[nodiscard]] bool is_resolved_double_point(std::span<const Point2> points, double u, double v,
-                                            double rounding);
+                                            double rounding, bool closed);
 
 /// The touching point of a tangential self-contact: Newton's method on
 ///   G(u, v) = (F·B'(v), cross(B'(u), B'(v))) = 0,   F = B(v) - B(u),

@@ -269,9 +269,11 @@ class Search {
     // The box holds at most one pair and Newton found it, unless rounding could move it
     // onto the diagonal: then it is a cusp seen through rounding errors, or two branches
     // meeting at so small an angle that the pair is a tangential contact in all but
-    // rounding. Either way the box is split on until its pieces are flat, and the contact
-    // stage decides.
-    if (!is_resolved_double_point(points_, root.u, root.v, settings_.rounding)) return false;
+    // rounding; on a closed curve, likewise onto the seam's trivial pair (0, 1). Either way
+    // the box is split on until its pieces are flat, and the contact stage decides.
+    if (!is_resolved_double_point(points_, root.u, root.v, settings_.rounding, settings_.closed)) {
+      return false;
+    }
     out_.crossings.push_back(root);
     return true;
   }
