@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
+#include <limits>
 
 #include "core/quadratic_roots.hpp"
 
@@ -51,6 +53,10 @@ std::optional<CubicDoublePoint> cubic_double_point(std::span<const Point2, 4> p,
   if (dp.on_segment) {
     dp.t1 = clamp_unit(dp.t1);
     dp.t2 = clamp_unit(dp.t2);
+    // l0 > 0: t1 > 0; l1 > 0: t2 < 1, exactly, even where the rounded root is 0 or 1 (a loop
+    // closing within an ulp of an end); so 0 and 1 come only from an exactly closing end.
+    if (pred.sign.l0 > 0) dp.t1 = std::max(dp.t1, std::numeric_limits<double>::denorm_min());
+    if (pred.sign.l1 > 0) dp.t2 = std::min(dp.t2, std::nextafter(1.0, 0.0));
   }
   // At an exactly closing end the point is that end point, bit for bit.
   if (pred.sign.l0 == 0) {

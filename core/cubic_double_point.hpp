@@ -22,7 +22,8 @@ struct CubicDoublePoint {
   /// Decided exactly: 0 <= t1 < t2 <= 1, i.e. the loop lies on the curve segment. When it
   /// holds, t1 and t2 are clamped into [0,1], t1 is exactly 0 when the loop closes at the
   /// start (then point = P0 exactly) and t2 exactly 1 when it closes at the end
-  /// (point = P3).
+  /// (point = P3); otherwise both are strictly inside (0, 1), also where the rounded root
+  /// would be 0 or 1.
   bool on_segment = false;
 };
 

@@ -383,7 +383,9 @@ ClosedFormAnswer closed_form_cubic(const CurveFacts& facts) {
       predicates.exact ? ClosedFormVerdict::no_loop : ClosedFormVerdict::undecided, {}};
   const auto dp = cubic_double_point(p, predicates);
   if (!dp || !dp->on_segment) return no_loop;
-  if (facts.closed && dp->t1 == 0.0 && dp->t2 == 1.0) return no_loop;  // the trivial pair
+  // (0, 1): the trivial pair; on an open curve only when the power-of-two rescaling made
+  // the ends equal by underflow, a loop closing below the resolution.
+  if (dp->t1 == 0.0 && dp->t2 == 1.0) return no_loop;
   if (!(dp->t1 < dp->t2)) return no_loop;  // a loop of width zero is no pair (t < s)
   SelfIntersectionResult result;
   result.stats.method = SelfIntersectionMethod::closed_form_cubic;
@@ -396,8 +398,10 @@ ClosedFormAnswer closed_form_cubic(const CurveFacts& facts) {
     // Ends decided exactly stay exact. The polish is kept only when it does not increase
     // the compensated residual |B(v) - B(u)|: on an ill-conditioned (nearly collinear)
     // cubic Newton can walk away from the closed form's root and still report converged.
-    const double nu = u != 0.0 ? polished.u : u;
-    const double nv = v != 1.0 ? polished.v : v;
+    // Parameters strictly inside (0, 1) by the exact signs stay there.
+    const double nu =
+        u != 0.0 ? std::max(polished.u, std::numeric_limits<double>::denorm_min()) : u;
+    const double nv = v != 1.0 ? std::min(polished.v, std::nextafter(1.0, 0.0)) : v;
     if (exact_residual(facts.curve, nu, nv) <= exact_residual(facts.curve, u, v)) {
       u = nu;
       v = nv;
