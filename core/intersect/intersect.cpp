@@ -135,10 +135,15 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   }
   const std::vector<OverlapFinding> overlaps = find_overlaps(wf, wg);
   for (const OverlapFinding& o : overlaps) result.overlaps.push_back(o.overlap);
-  std::vector<ExactRoot> exact =
-      (wf.is_point || wg.is_point) ? std::vector<ExactRoot>{} : exact_end_roots(f, g, overlaps);
-  std::erase_if(
-      exact, [&](const ExactRoot& r) { return !t_range.contains(r.t) || !s_range.contains(r.s); });
+  // A point curve's parameter is free: one exact root (at 0, its interval widened to [0, 1]
+  // below) per end of the other curve that is the point. The search alone can miss a point
+  // lying exactly on an end (found by the fuzzer once F4's gate was gone).
+  std::vector<ExactRoot> exact = exact_end_roots(f, g, overlaps);
+  std::erase_if(exact, [&](const ExactRoot& r) {
+    if (wf.is_point) return r.t != 0.0 || !s_range.contains(r.s);
+    if (wg.is_point) return r.s != 0.0 || !t_range.contains(r.t);
+    return !t_range.contains(r.t) || !s_range.contains(r.s);
+  });
 
   SearchInput in;
   in.f = &wf;
@@ -171,7 +176,9 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   if (found.capped) result.status = IntersectStatus::work_cap_reached;
 
   const KindTolerances kind_tol;
-  for (const Contact& c : merge_candidates(found.candidates, exact, in.width)) {
+  for (Contact c : merge_candidates(found.candidates, exact, in.width)) {
+    if (in.t_free) c.t = {0.0, 1.0};
+    if (in.s_free) c.s = {0.0, 1.0};
     const Refinement r = refine_contact(wf, wg, c, in.t_free, in.s_free, kind_tol.tangent_sine);
     result.stats.newton_iterations += r.iterations;
     result.stats.work += r.iterations * newton_cost(wf.degree, wg.degree);

@@ -168,7 +168,13 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
         ends_s[e] = locate_on_curve(g, evaluate_dd(f, ends_t[e]), s_end[e]);
       }
     }
-    if (!(ends_s[1] - ends_s[0] > kShortestOverlap)) continue;
+    // Long enough in both parameters: a flat end (a piece within the tolerance of a point)
+    // otherwise passes the verification against any curve through that point, as an overlap
+    // of width 0 in t in one order and nothing in the other.
+    if (!(ends_s[1] - ends_s[0] > kShortestOverlap) ||
+        !(std::fabs(ends_t[1] - ends_t[0]) > kShortestOverlap)) {
+      continue;
+    }
     // Verify: the two pieces, written with the same degree, have the same control points.
     const int degree = std::max(f.degree, g.degree);
     const std::vector<double> px = elevated(piece(f.x, ends_t[0], ends_t[1]), degree);

@@ -182,6 +182,52 @@ TEST(FuzzRegressions, F4_EndPointRootOfATinyCurveIsReported) {
   }
 }
 
+// F4 again, found by intersect_fuzzer once F4's gate was gone: a single point exactly at an end
+// of the other curve. Bézier clipping missed f(1) = (0, 0) of this cubic against the point (0, 0)
+// altogether; a closed quadratic through the point (a degree-1 curve with equal points) came back
+// with its root t = 0 only. End points equal bit for bit are exact roots, a point curve's
+// parameter free: t = 1 (and t = 0 and 1), s in [0, 1].
+TEST(FuzzRegressions, F4_PointAtAnEndIsAnExactRoot) {
+  const Curve f({{0.0, -4.0}, {-8.0, -4.0}, {-0x1.0000000000001p+2, 0.0}, {0.0, 0.0}});
+  const Curve g(std::vector<Point2>{{0.0, 0.0}});
+  IntersectOptions options;
+  options.method = IntersectMethod::bezier_clipping;
+  const IntersectionResult r = intersect(f, g, options);
+  ASSERT_EQ(r.status, IntersectStatus::ok);
+  ASSERT_EQ(r.intersections.size(), 1u);
+  EXPECT_EQ(r.intersections[0].t, 1.0);
+  EXPECT_EQ(r.intersections[0].s_interval, (ParamInterval{0.0, 1.0}));
+  const IntersectionResult w = intersect(g, f, options);
+  ASSERT_EQ(w.intersections.size(), 1u);
+  EXPECT_EQ(w.intersections[0].s, 1.0);
+  EXPECT_EQ(w.intersections[0].t_interval, (ParamInterval{0.0, 1.0}));
+
+  const Curve closed({{0.0, 0.0}, {1.0, 0x1.01p-29}, {0.0, 0.0}});
+  const Curve point({{0.0, 0.0}, {0.0, 0.0}});
+  const IntersectionResult c = intersect(closed, point);
+  ASSERT_EQ(c.intersections.size(), 2u);
+  EXPECT_TRUE(covered(c, 0.0, 0.5));
+  EXPECT_TRUE(covered(c, 1.0, 0.5));
+}
+
+// F20 (part), found by intersect_fuzzer once F4's gate was gone: g(s) = 0x1.80200021p-2 (1 - s)^3
+// is within the overlap tolerance of a point for s near 1, so "g on [0.99992, 1] = f at t = 0"
+// passed the overlap verification in one order: an overlap of width 0 in t; nothing in the
+// other. The only root is the exact end root f(0) = g(1).
+TEST(FuzzRegressions, F20_FlatEndIsNoOverlapOfWidthZero) {
+  const Curve f({{0.0, 0.0}, {-0x1.cp+2, 0x1p+2}, {-0x1p+2, 0x1p+3}, {-0x1p+26, 0x1p-29}});
+  const Curve g({{0x1.80200021p-2, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}});
+  IntersectOptions options;
+  options.tolerance = 0x1.12e0be826d695p-30;
+  for (const bool swapped : {false, true}) {
+    const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    EXPECT_TRUE(r.overlaps.empty());
+    ASSERT_EQ(r.intersections.size(), 1u);
+    EXPECT_TRUE(swapped ? covered(r, 1.0, 0.0) : covered(r, 0.0, 1.0));
+  }
+}
+
 // F5, found by intersect_fuzzer: subnormal coordinates. Two segments 1e-310 long meeting
 // at the origin, f(1) = g(0) = (0, 0): the kernel answered (1, 1) with a NaN point (the
 // working frame's power-of-two scale overflowed). Fixed meanwhile by 1107d08 (scale
