@@ -30,15 +30,15 @@ inline constexpr double kU = 0x1p-53;
 /// so the piece is exactly the polynomial on [a, b] up to the rounding of the arithmetic:
 /// each coefficient goes through n steps, so for a, b in [0, 1] its error is at most
 /// 3.01 n u max|c| in doubles, 10 n u^2 max|c| in double-doubles.
+/// Written into out[0..n], which must not alias c (callers refill a piece in place).
 template <class T>
-[[nodiscard]] SmallArray<T> portion(std::span<const T> c, double a, double b) {
+void portion_into(std::span<const T> c, double a, double b, T* out) {
   const std::size_t n = c.size() - 1;
-  SmallArray<T> out(n + 1, typename SmallArray<T>::Uninitialized{});
   // Straight-line code for the common low degrees: the same blossom values as below.
   if (n == 1) {
     out[0] = bernstein::lerp(c[0], c[1], a);
     out[1] = bernstein::lerp(c[0], c[1], b);
-    return out;
+    return;
   }
   if (n == 2) {
     const T a0 = bernstein::lerp(c[0], c[1], a), a1 = bernstein::lerp(c[1], c[2], a);
@@ -46,7 +46,7 @@ template <class T>
     out[0] = bernstein::lerp(a0, a1, a);
     out[1] = bernstein::lerp(a0, a1, b);
     out[2] = bernstein::lerp(b0, b1, b);
-    return out;
+    return;
   }
   if (n == 3) {
     const T a10 = bernstein::lerp(c[0], c[1], a), a11 = bernstein::lerp(c[1], c[2], a),
@@ -59,7 +59,7 @@ template <class T>
     out[1] = bernstein::lerp(a20, a21, b);
     out[2] = bernstein::lerp(b20, b21, a);
     out[3] = bernstein::lerp(b20, b21, b);
-    return out;
+    return;
   }
   SmallArray<T> row_storage(n + 1, typename SmallArray<T>::Uninitialized{});
   SmallArray<T> work_storage(n + 1, typename SmallArray<T>::Uninitialized{});
@@ -93,6 +93,13 @@ template <class T>
       out[j] = work[0];
     }
   }
+}
+
+/// portion_into as a new array.
+template <class T>
+[[nodiscard]] SmallArray<T> portion(std::span<const T> c, double a, double b) {
+  SmallArray<T> out(c.size(), typename SmallArray<T>::Uninitialized{});
+  portion_into(c, a, b, out.data());
   return out;
 }
 

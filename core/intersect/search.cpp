@@ -52,6 +52,13 @@ constexpr double kFloorWidth = 0x1p-20;
 /// and the implicit clip is worth its cost (a few hundred flops for cubics).
 constexpr double kParallelSine = 1.0 / 16;
 
+/// In the hybrid method the implicit clip waits until the box is at most this wide: on the
+/// first, large boxes nearly parallel chords are common and mean little (halving separates
+/// such pieces for a fraction of the clip's cost), while the tube it prevents only forms
+/// around a contact. (Bézier clipping, which halves only one interval at a time, still
+/// needs it on wide boxes to resolve a tangency.)
+constexpr double kImplicitClipWidth = 0.25;
+
 bool nearly_parallel(const Piece& a, const Piece& b) noexcept {
   const Point2 ca = {a.x.back() - a.x[0], a.y.back() - a.y[0]};
   const Point2 cb = {b.x.back() - b.x[0], b.y.back() - b.y[0]};
@@ -176,8 +183,8 @@ class Searcher {
 
   void make_pieces(const Box& b) {
     if (!b.compensated) {
-      if (!f_ok_) f_piece_ = fast_piece(*in_.f, b.t.lo, b.t.hi);
-      if (!g_ok_) g_piece_ = fast_piece(*in_.g, b.s.lo, b.s.hi);
+      if (!f_ok_) fast_piece_into(*in_.f, b.t.lo, b.t.hi, f_piece_);
+      if (!g_ok_) fast_piece_into(*in_.g, b.s.lo, b.s.hi, g_piece_);
     } else {
       // A frame centred near the box, so the rounded local coordinates are as small as
       // the pieces themselves; both pieces must share it.
@@ -287,7 +294,10 @@ class Searcher {
       ++out_.stats.clipping_steps;
       if (!clip.kept) return;
       const double threshold = in_.method == IntersectMethod::hybrid ? 0.5 : 0.8;
-      if (clip.kept->width() > threshold && nearly_parallel(x, other)) {
+      if (clip.kept->width() > threshold &&
+          (in_.method != IntersectMethod::hybrid ||
+           std::max(box.t.width(), box.s.width()) <= kImplicitClipWidth) &&
+          nearly_parallel(x, other)) {
         const Clip fine = implicit_clip(x, other, clip_s ? *in_.op_f2 : *in_.op_g2);
         ++out_.stats.clipping_steps;
         out_.stats.work += implicit_clip_cost(x.degree());

@@ -53,6 +53,9 @@ struct SearchOutput {
 ///
 ///  - hybrid: clip the pieces in turn against each other's fat line with fat curves;
 ///    when a clip keeps more than half of its interval, halve both intervals (seed 003).
+///    Boxes narrower than 2^-5 first try the Krawczyk test (krawczyk.hpp), which proves a
+///    transversal crossing unique and returns it in a box of half the search width, or
+///    proves the box empty, in one step.
 ///  - bezier-clipping: the same with the convex hull of the distance function; when a clip
 ///    keeps more than 80 % (removes less than 20 %), halve the wider interval
 ///    (Sederberg & Nishita 1990, §4).
@@ -61,8 +64,9 @@ struct SearchOutput {
 ///
 /// In all three, when the primary test fails on pieces that run nearly parallel (the sine
 /// of the angle between their chords below 1/16: a tangency, or curves that follow each
-/// other), the implicit "fat parabola" clip (implicit_clip.hpp) is tried before halving;
-/// without it, contacts of order 3 keep a tube of boxes alive at every level.
+/// other), the implicit "fat parabola" clip (implicit_clip.hpp) is tried before halving
+/// (by the hybrid method once the box is at most 1/4 wide); without it, contacts of
+/// order 3 keep a tube of boxes alive at every level.
 ///
 /// Every piece carries an error bound and every test includes it, so no box holding an
 /// intersection is ever dropped. When the bounds dominate a test (a tangency: the curves

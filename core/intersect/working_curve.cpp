@@ -99,10 +99,19 @@ WorkingCurve to_working(const Curve& curve, WorkingFrame frame) {
 
 Piece fast_piece(const WorkingCurve& f, double a, double b) {
   Piece p;
-  p.x = bernstein::portion<double>(f.x, a, b);
-  p.y = bernstein::portion<double>(f.y, a, b);
-  p.error = f.frame_error + 3.02 * f.degree * kU * f.magnitude + 0x1p-1000;
+  fast_piece_into(f, a, b, p);
   return p;
+}
+
+void fast_piece_into(const WorkingCurve& f, double a, double b, Piece& out) {
+  const std::size_t count = f.x.size();
+  if (out.x.size() != count) {
+    out.x = Coeffs(count, Coeffs::Uninitialized{});
+    out.y = Coeffs(count, Coeffs::Uninitialized{});
+  }
+  bernstein::portion_into<double>(f.x, a, b, out.x.data());
+  bernstein::portion_into<double>(f.y, a, b, out.y.data());
+  out.error = f.frame_error + 3.02 * f.degree * kU * f.magnitude + 0x1p-1000;
 }
 
 Piece compensated_piece(const WorkingCurve& f, double a, double b, Point2 center) {

@@ -55,6 +55,9 @@ struct Piece {
 /// f on [a, b] in doubles, in the working frame itself (center 0). Error bound:
 /// frame_error + 3.02 n u magnitude. Precondition: 0 <= a <= b <= 1.
 [[nodiscard]] Piece fast_piece(const WorkingCurve& f, double a, double b);
+/// The same into an existing piece (no temporaries: the search refills its two pieces at
+/// every step).
+void fast_piece_into(const WorkingCurve& f, double a, double b, Piece& out);
 
 /// f on [a, b] computed in double-doubles and then rounded into the frame centred at
 /// `center`: error bound u |local coordinate| + (12 n + 4) u^2 magnitude, so a small piece
