@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cassert>
 #include <span>
 #include <vector>
@@ -30,25 +31,41 @@ template <class P>
 class CasteljauRow {
  public:
   /// The control points, taken as exact (zero error).
-  explicit CasteljauRow(std::span<const P> points) {
+  explicit CasteljauRow(std::span<const P> points)
+      : size_(points.size()), on_heap_(points.size() > kInline) {
     assert(!points.empty());
-    entries_.reserve(points.size());
-    for (const P& p : points) entries_.push_back({p, P{}});
+    if (on_heap_) heap_.resize(size_);
+    Entry* e = entries();
+    for (std::size_t i = 0; i < size_; ++i) e[i] = {points[i], P{}};
   }
+  CasteljauRow(const CasteljauRow& other)
+      : heap_(other.heap_), size_(other.size_), on_heap_(other.on_heap_) {
+    if (!on_heap_) std::copy(other.inline_, other.inline_ + size_, inline_);
+  }
+  CasteljauRow& operator=(const CasteljauRow& other) {
+    if (this != &other) {
+      heap_ = other.heap_;
+      size_ = other.size_;
+      on_heap_ = other.on_heap_;
+      if (!on_heap_) std::copy(other.inline_, other.inline_ + size_, inline_);
+    }
+    return *this;
+  }
+  ~CasteljauRow() = default;
 
   /// Number of entries: n + 1 for a degree-n curve, one fewer after each step.
-  [[nodiscard]] std::size_t size() const noexcept { return entries_.size(); }
+  [[nodiscard]] std::size_t size() const noexcept { return size_; }
 
   /// Entry i as one double point: value + error, rounded once. When the error terms are
   /// not finite (a product overflowed while the value did not), the plain value is returned.
   [[nodiscard]] P point(std::size_t i) const noexcept {
-    const auto& [value, error] = entries_[i];
+    const auto& [value, error] = entries()[i];
     return is_finite(error) ? value + error : value;
   }
 
   /// Entry i as its two parts, unrounded: the difference of two nearly equal evaluations
   /// keeps the error parts that point(i) would round away.
-  [[nodiscard]] const TwoTerm<P>& entry(std::size_t i) const noexcept { return entries_[i]; }
+  [[nodiscard]] const TwoTerm<P>& entry(std::size_t i) const noexcept { return entries()[i]; }
 
   /// One de Casteljau round with parameter t: entry i <- (1 - t) entry i + t entry i+1.
   /// The local error of each new entry is exact before it is rounded into the error row:
@@ -58,9 +75,10 @@ class CasteljauRow {
     assert(size() >= 2);
     const TwoTerm<double> one_minus_t = two_sum(1.0, -t);
     const double r = one_minus_t.hi, rho = one_minus_t.lo;
-    for (std::size_t i = 0; i + 1 < size(); ++i) {
-      TwoTerm<P>& a = entries_[i];
-      const TwoTerm<P>& b = entries_[i + 1];
+    Entry* e = entries();
+    for (std::size_t i = 0; i + 1 < size_; ++i) {
+      Entry& a = e[i];
+      const Entry& b = e[i + 1];
       const TwoTerm<P> left = two_product(r, a.hi);
       const TwoTerm<P> right = two_product(t, b.hi);
       const TwoTerm<P> sum = two_sum(left.hi, right.hi);
@@ -68,7 +86,7 @@ class CasteljauRow {
       a.lo = (r * a.lo + t * b.lo) + local;
       a.hi = sum.hi;
     }
-    entries_.pop_back();
+    --size_;
   }
 
   /// One hodograph round: entry i <- m (entry i+1 - entry i), m = size() - 1 (the degree),
@@ -76,24 +94,39 @@ class CasteljauRow {
   /// and the product are split exactly, so close control points lose nothing to
   /// cancellation. A single entry (degree 0) becomes the zero point.
   void hodograph_step() {
-    if (size() == 1) {
-      entries_[0] = {P{}, P{}};
+    Entry* e = entries();
+    if (size_ == 1) {
+      e[0] = {P{}, P{}};
       return;
     }
-    const double m = static_cast<double>(size() - 1);
-    for (std::size_t i = 0; i + 1 < size(); ++i) {
-      TwoTerm<P>& a = entries_[i];
-      const TwoTerm<P>& b = entries_[i + 1];
+    const double m = static_cast<double>(size_ - 1);
+    for (std::size_t i = 0; i + 1 < size_; ++i) {
+      Entry& a = e[i];
+      const Entry& b = e[i + 1];
       const TwoTerm<P> diff = two_sum(b.hi, -a.hi);
       const TwoTerm<P> scaled = two_product(m, diff.hi);
       a.lo = scaled.lo + m * (diff.lo + (b.lo - a.lo));
       a.hi = scaled.hi;
     }
-    entries_.pop_back();
+    --size_;
   }
 
  private:
-  std::vector<TwoTerm<P>> entries_;  ///< hi: the rounded value, lo: its rounding error
+  using Entry = TwoTerm<P>;  ///< hi: the rounded value, lo: its rounding error
+  /// Rows up to degree 23 live inline: a heap allocation per evaluation cost more than the
+  /// compensated arithmetic of a cubic. The inline entries are left unconstructed (a
+  /// variant member is not initialised) so a short row does not zero all of them.
+  static constexpr std::size_t kInline = 24;
+
+  [[nodiscard]] Entry* entries() noexcept { return on_heap_ ? heap_.data() : inline_; }
+  [[nodiscard]] const Entry* entries() const noexcept { return on_heap_ ? heap_.data() : inline_; }
+
+  union {
+    Entry inline_[kInline];
+  };
+  std::vector<Entry> heap_;
+  std::size_t size_;
+  bool on_heap_;
 };
 
 }  // namespace bezier::core
