@@ -40,7 +40,10 @@ FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection directio
   const Point2 origin = {g.x[0], g.y[0]};
   Point2 d = chord(g);
   const double limit = 4 * g.error;
+  // The bounds for m = 2 and 3 below hold only for a line through both end points.
+  bool through_ends = true;
   if (bernstein::max2(std::fabs(d.x), std::fabs(d.y)) <= limit) {
+    through_ends = false;
     // Closed or nearly closed piece: use the farthest control point instead.
     double best = 0.0;
     for (std::size_t j = 1; j <= m; ++j) {
@@ -71,7 +74,7 @@ FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection directio
   const auto distance = [&](std::size_t j) {
     return line.normal.x * (gx[j] - origin.x) + line.normal.y * (gy[j] - origin.y);
   };
-  if (m == 3) {
+  if (m == 3 && through_ends) {
     // The exact end distances are within e of 0 (the line passes through the computed end
     // points), which adds e; the interior ones are within e of d_j, scaled by c <= 1.
     const double d1 = distance(1), d2 = distance(2);
@@ -79,7 +82,7 @@ FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection directio
     const double c = opposite ? 4.0 / 9.0 : 0.75;
     lo = bernstein::min2(bernstein::min2(lo, c * (d1 - e)), c * (d2 - e));
     hi = bernstein::max2(bernstein::max2(hi, c * (d1 + e)), c * (d2 + e));
-  } else if (m == 2) {
+  } else if (m == 2 && through_ends) {
     const double d1 = distance(1);
     lo = bernstein::min2(lo, 0.5 * (d1 - e));
     hi = bernstein::max2(hi, 0.5 * (d1 + e));

@@ -19,6 +19,7 @@
 #include "core/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
 #include "core/self_intersection.hpp"
+#include "tests/support/exact.hpp"
 
 namespace bezier::api {
 namespace {
@@ -225,6 +226,54 @@ TEST(FuzzRegressions, F20_FlatEndIsNoOverlapOfWidthZero) {
     EXPECT_TRUE(r.overlaps.empty());
     ASSERT_EQ(r.intersections.size(), 1u);
     EXPECT_TRUE(swapped ? covered(r, 1.0, 0.0) : covered(r, 0.0, 1.0));
+  }
+}
+
+// F20 (c), found by intersect_fuzzer: f(t) = (4t - (4 + 2^19) t^2, -8 t^2) starts where the
+// parabola g ends, f(0) = g(1) = (0, 0), and crosses g once more right next to it. With g
+// first, hybrid clipping dropped that crossing: the piece of f on s in [0, 2^-17] is closed
+// to within its rounding, so its fat line runs along its farthest control point instead of
+// its chord, and the band for degree 2 assumed a line through both end points. The second
+// crossing is proved here without the kernel: g lies on the parabola h(X) = A1^2 - 4 A0 A2 =
+// 0 (Ai the signed area of the triangle X P_j P_k, {i, j, k} = {0, 1, 2}: barycentric
+// coordinates, tau_1^2 = 4 tau_0 tau_2 on a quadratic), and h(f(t)) changes sign, in exact
+// rationals, between t = 7.6e-6 and 2^-17, where f is within 1e-9 of g(1).
+TEST(FuzzRegressions, F20c_CrossingNextToASharedEndPointIsFound) {
+  using bezier::test::Rational;
+  const Curve f({{0.0, 0.0}, {2.0, 0.0}, {-0x1p19, -8.0}});
+  const Curve g({{376.5, 0.043}, {0.043, -1.0}, {0.0, 0.0}});
+  const auto area = [](std::array<Rational, 2> a, std::array<Rational, 2> b,
+                       std::array<Rational, 2> c) {
+    return (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+  };
+  const auto h_of_f = [&](double t) {
+    const Rational tr(t);
+    const std::array<Rational, 2> x{Rational(4) * tr - Rational(4 + 0x1p19) * tr * tr,
+                                    Rational(-8) * tr * tr};
+    const std::array<Rational, 2> p0{Rational(376.5), Rational(0.043)},
+        p1{Rational(0.043), Rational(-1)}, p2{Rational(0), Rational(0)};
+    const Rational a0 = area(x, p1, p2), a1 = area(p0, x, p2), a2 = area(p0, p1, x);
+    return a1 * a1 - Rational(4) * a0 * a2;
+  };
+  const double t_lo = 7.6e-6, t_hi = 0x1p-17;
+  ASSERT_LT(h_of_f(t_lo).sign() * h_of_f(t_hi).sign(), 0);
+  for (const IntersectMethod method :
+       {IntersectMethod::hybrid, IntersectMethod::bezier_clipping, IntersectMethod::subdivision}) {
+    IntersectOptions options;
+    options.method = method;
+    for (const bool swapped : {false, true}) {
+      const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
+      ASSERT_EQ(r.status, IntersectStatus::ok);
+      ASSERT_EQ(r.intersections.size(), 2u) << "method " << static_cast<int>(method) << " swapped " << swapped;
+      EXPECT_TRUE(swapped ? covered(r, 1.0, 0.0) : covered(r, 0.0, 1.0));
+      bool crossing = false;
+      for (const Intersection& x : r.intersections) {
+        const double t = swapped ? x.s : x.t, s = swapped ? x.t : x.s;
+        crossing = crossing || (t_lo <= t && t <= t_hi && 1 - 1e-9 < s && s < 1);
+      }
+      EXPECT_TRUE(crossing) << "method " << static_cast<int>(method) << " swapped " << swapped;
+      expect_intersection_contract(r, options.tolerance);
+    }
   }
 }
 
