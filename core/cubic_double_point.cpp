@@ -57,6 +57,15 @@ std::optional<CubicDoublePoint> cubic_double_point(std::span<const Point2, 4> p,
     // closing within an ulp of an end); so 0 and 1 come only from an exactly closing end.
     if (pred.sign.l0 > 0) dp.t1 = std::max(dp.t1, std::numeric_limits<double>::denorm_min());
     if (pred.sign.l1 > 0) dp.t2 = std::min(dp.t2, std::nextafter(1.0, 0.0));
+    // disc < 0: the roots are distinct, t1 < t2 exactly, even where both round (or are
+    // clamped) onto one double next to an end; move the one away from that end.
+    if (!(dp.t1 < dp.t2)) {
+      if (dp.t2 > 0.5) {
+        dp.t1 = std::nextafter(dp.t2, 0.0);
+      } else {
+        dp.t2 = std::nextafter(dp.t1, 1.0);
+      }
+    }
   }
   // At an exactly closing end the point is that end point, bit for bit.
   if (pred.sign.l0 == 0) {

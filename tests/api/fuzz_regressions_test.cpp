@@ -19,6 +19,7 @@
 #include "core/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
 #include "core/self_intersection.hpp"
+#include "tests/core/classify_oracle.hpp"
 #include "tests/support/exact.hpp"
 
 namespace bezier::api {
@@ -275,6 +276,27 @@ TEST(FuzzRegressions, F20c_CrossingNextToASharedEndPointIsFound) {
       expect_intersection_contract(r, options.tolerance);
     }
   }
+}
+
+// F21, found by classify_fuzzer: a loop whose double point sits within two ulps of t = 1
+// on a cubic with coordinates 2^250 apart. The exact signs say 0 < t1 < t2 < 1; t1 rounded to
+// 1 and t2 was clamped below 1, so the pair came out reversed (t1 = 1 > t2). The type is the
+// exact rational oracle's; the pair must keep its order and stay strictly inside (0, 1).
+TEST(FuzzRegressions, F21_LoopNextToAnEndKeepsItsParametersOrdered) {
+  const std::array<Point2, 4> p{Point2{-0x1.f2fc8ffffff65p+260, -0x1.62fc8fffffff1p+261},
+                                Point2{0x1.62fc8fffffff1p+261, 0.0},
+                                Point2{-0x1.1548p+11, -0x1.1548p+10},
+                                Point2{0x1.1548p+10, -0x1.1548p+10}};
+  const CubicClassification c = classify(p);
+  ASSERT_TRUE(c.exact);
+  EXPECT_EQ(c.type, bezier::test::exact_type(p));
+  ASSERT_EQ(c.type, CubicType::loop);
+  ASSERT_TRUE(c.self_intersection.has_value());
+  const CubicDoublePoint& d = *c.self_intersection;
+  EXPECT_TRUE(d.on_segment);
+  EXPECT_LT(0.0, d.t1);
+  EXPECT_LT(d.t1, d.t2);
+  EXPECT_LT(d.t2, 1.0);
 }
 
 // F5, found by intersect_fuzzer: subnormal coordinates. Two segments 1e-310 long meeting
