@@ -17,10 +17,12 @@ struct Limits {
   /// Per-request work cap for iterative kernels, in work units: each clipping or
   /// subdivision step, Newton iteration and parameter box is charged by its degrees and
   /// arithmetic (core/intersect/work_cost.hpp, core/self_intersection_work_cost.hpp), so
-  /// that units are proportional to time; one unit is about 10-20 ns on the reference
-  /// machine, so the default bounds a request's kernel time near 50-80 ms (BENCHMARKS.md §4).
-  /// Hitting it answers 422, never a hang.
-  std::int64_t max_work = 4000000;
+  /// that units are proportional to time; one unit is about 3-6 ns on the reference
+  /// machine. The default is what the heaviest legitimate request we know needs with a
+  /// margin (two degree-20 curves crossing 400 times, the most possible: 20.4 M units by
+  /// the default method), which bounds a request's kernel time near 90-130 ms
+  /// (BENCHMARKS.md §4b). Hitting it answers 422, never a hang.
+  std::int64_t max_work = 22000000;
 };
 
 }  // namespace bezier::api

@@ -252,6 +252,7 @@ class Searcher {
       }
 
       if (in_.method == IntersectMethod::subdivision) {
+        out_.stats.work += subdivision_test_cost(in_.f->degree, in_.g->degree);
         const Separation sep = separation(f_piece_, g_piece_);
         if (sep.separated) return;
         const bool parallel = nearly_parallel(f_piece_, g_piece_);

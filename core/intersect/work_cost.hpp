@@ -8,19 +8,21 @@ namespace bezier::core {
 //
 // A step's cost grows with the degrees and with the arithmetic: rebuilding a piece of degree
 // n is de Casteljau's triangle, about (n + 1)^2 coordinate updates per piece, the implicit
-// clip multiplies two degree-n Bernstein polynomials ((n + 1)^2 products), and compensated
+// clip multiplies degree-n Bernstein polynomials ((n + 1)^2 products each), and compensated
 // pieces do all of it in double-double. Counting steps alone let the cost per step range
 // over 1000x (0.3 us for cubics, 40 us for compensated degree-20 steps), so a cap in steps
 // either cut legitimate searches short or let pathological ones run for seconds. Charging
 // each step by what it computes makes the spent units proportional to time: one unit is
-// about one coordinate update of de Casteljau's algorithm in doubles (the multipliers
-// below are measured, BENCHMARKS.md §4).
+// about one coordinate update of de Casteljau's algorithm in doubles. The multipliers are
+// fitted to the worst and the heaviest ordinary requests of tests/bench/worst_case_inputs.hpp
+// (BENCHMARKS.md §4b: 4-5 ns per unit on every one that reaches the cap, where the previous
+// multipliers ranged over 7.5-25 ns): a plain step is cheap next to what the costly ones add.
 
 /// Compensated (double-double) pieces cost this many times the plain ones: each update is
 /// a two-product and two two-sums instead of one multiply-add, and a compensated step may
 /// also ask whether the curves coincide to within rounding (five samples, each a few
 /// compensated evaluations).
-inline constexpr std::int64_t kCompensatedFactor = 6;
+inline constexpr std::int64_t kCompensatedFactor = 14;
 
 /// A step's fixed part (popping the box, the bounding boxes, the fat line), in units.
 inline constexpr std::int64_t kStepOverhead = 8;
@@ -32,19 +34,32 @@ inline constexpr std::int64_t kStepOverhead = 8;
   return kStepOverhead + (compensated ? kCompensatedFactor * pieces : pieces);
 }
 
-/// One implicit ("fat parabola") clip of a piece of degree n: the squares and products of
-/// its three degree-n distance polynomials.
-[[nodiscard]] constexpr std::int64_t implicit_clip_cost(int n) noexcept {
-  const std::int64_t a = n + 1;
-  return 2 * a * a;
+/// What a subdivision step adds to its step_cost: the separation test of both pieces
+/// against both fat lines and the parallelism test, each a pass over both control
+/// polygons with its own distances, and the halving into four boxes; measured as six
+/// times the pieces' updates (on the 400-crossing grid, where it is most of the time).
+[[nodiscard]] constexpr std::int64_t subdivision_test_cost(int m, int n) noexcept {
+  const std::int64_t a = m + 1, b = n + 1;
+  return 6 * (a * a + b * b);
 }
 
-/// One Newton iteration of the final refinement on curves of degrees m and n: a residual
+/// One implicit ("fat parabola") clip of a piece of degree n: the squares and products of
+/// its three degree-n distance polynomials, then the convex hull of a degree-2n
+/// polynomial; measured at about 24 times the updates of rebuilding the piece.
+[[nodiscard]] constexpr std::int64_t implicit_clip_cost(int n) noexcept {
+  const std::int64_t a = n + 1;
+  return 24 * a * a;
+}
+
+/// Newton iterations cost this many times a plain piece's updates per curve: a residual
 /// evaluated in double-double on each curve (half a compensated piece each), and the
-/// tangents in doubles.
+/// tangents in doubles from the same pass.
+inline constexpr std::int64_t kNewtonFactor = 4;
+
+/// One Newton iteration of the final refinement on curves of degrees m and n.
 [[nodiscard]] constexpr std::int64_t newton_cost(int m, int n) noexcept {
   const std::int64_t a = m + 1, b = n + 1;
-  return kStepOverhead + (kCompensatedFactor / 2 + 1) * (a * a + b * b);
+  return kStepOverhead + kNewtonFactor * (a * a + b * b);
 }
 
 }  // namespace bezier::core

@@ -1,7 +1,7 @@
 #pragma once
 
 // The costliest requests we know at the default limits (issue 6, item 1: max_degree 20,
-// max_t_values 10000, max_work 4000000 units): request bodies for api::handle, built from
+// max_t_values 10000, max_work 22000000 units): request bodies for api::handle, built from
 // closed forms and seeded random curves, timed by tests/bench/worst_case_bench.cpp.
 //
 // The curves:
@@ -159,6 +159,8 @@ struct Curves {
   Curve random3 = random_curve(3, 3);
   Curve wave = from_coordinates(identity(20), chebyshev(20));            // (t, T_20(2t-1))
   Curve wave_t = from_coordinates(chebyshev(20), identity(20));          // (T_20(2s-1), s)
+  Curve wave15 = from_coordinates(identity(15), chebyshev(15));          // 225 crossings with wave15_t
+  Curve wave15_t = from_coordinates(chebyshev(15), identity(15));
   Curve lissajous = from_coordinates(chebyshev(20), core::elevate_degree(chebyshev(19), 20));
   Curve contact20 = [] {                                                 // (t, (1-2t)^20)
     std::vector<double> y;
@@ -222,6 +224,7 @@ inline std::vector<Request> requests() {
       {"ulp_apart_deg20", {&c.random20, nullptr}},
       {"retrace_nonlinear_deg20", {&c.retrace_slow, &c.retrace_fast}},
       {"wave_grid_400", {&c.wave, &c.wave_t}},
+      {"wave_grid_225_deg15", {&c.wave15, &c.wave15_t}},
       {"contact_order20", {&c.contact20, &c.axis20}},
   };
   const Curve ulp = ulp_perturbed(c.random20);

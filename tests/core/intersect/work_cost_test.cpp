@@ -22,6 +22,7 @@ TEST(WorkCost, HigherDegreeCostsMoreInEveryCharge) {
         EXPECT_LT(step_cost(n, m, compensated), step_cost(n + 1, m, compensated)) << m << " " << n;
       }
       EXPECT_LT(newton_cost(m, n), newton_cost(m, n + 1));
+      EXPECT_LT(subdivision_test_cost(m, n), subdivision_test_cost(m, n + 1));
     }
     EXPECT_LT(implicit_clip_cost(m), implicit_clip_cost(m + 1));
     EXPECT_LT(self_intersection_box_cost(m), self_intersection_box_cost(m + 1));
@@ -34,12 +35,27 @@ TEST(WorkCost, CompensatedStepsCostMoreThanPlainOnes) {
   }
 }
 
+TEST(WorkCost, SubdivisionStepsAreChargedTheirTests) {
+  // The retracing pair by subdivision, to the cap: every step is charged at least its
+  // step_cost, and a step that gets past the bounding boxes (the first, on [0, 1]^2, where
+  // both curves' boxes overlap and neither domain is converged) also its separation tests.
+  const Curve f{{{0.0, 0.0}, {0.5, 1.0}, {1.0, 0.0}}};
+  const Curve g{{{0.0, 0.0}, {1.0, 2.0}, {4.0 / 3.0, -8.0 / 3.0}, {1.0, 2.0}, {0.0, 0.0}}};
+  IntersectOptions options;
+  options.method = IntersectMethod::subdivision;
+  options.max_work = 200000;
+  const IntersectionResult r = intersect(f, g, options);
+  ASSERT_EQ(r.status, IntersectStatus::work_cap_reached);
+  EXPECT_GE(r.stats.work, r.stats.iterations * step_cost(2, 4, false) + subdivision_test_cost(2, 4));
+}
+
 TEST(WorkCost, SymmetricInTheTwoCurves) {
   for (int m = 1; m <= 20; ++m) {
     for (int n = 1; n <= 20; ++n) {
       EXPECT_EQ(step_cost(m, n, false), step_cost(n, m, false));
       EXPECT_EQ(step_cost(m, n, true), step_cost(n, m, true));
       EXPECT_EQ(newton_cost(m, n), newton_cost(n, m));
+      EXPECT_EQ(subdivision_test_cost(m, n), subdivision_test_cost(n, m));
     }
   }
 }
@@ -71,9 +87,11 @@ TEST(WorkCost, CappedSearchSpendsAtMostTheBudget) {
   const IntersectionResult r = intersect(c.f, c.g, options);
   ASSERT_EQ(r.status, IntersectStatus::work_cap_reached);
   // Every step is charged at least its plain cost, and the search stops before a step
-  // would cross the budget (only the last contact's refinement may overshoot it).
+  // would cross the budget. What a step adds after that check, one implicit clip of a
+  // piece (degree 4 at most here), and the last contact's refinement may overshoot it.
   EXPECT_GE(r.stats.work, r.stats.iterations * step_cost(2, 4, false));
-  EXPECT_LE(r.stats.work - r.stats.newton_iterations * newton_cost(2, 4), options.max_work);
+  EXPECT_LE(r.stats.work - r.stats.newton_iterations * newton_cost(2, 4),
+            options.max_work + implicit_clip_cost(4));
 }
 
 TEST(WorkCost, SameBudgetBuysFewerStepsAtHigherDegree) {
