@@ -273,10 +273,11 @@ class Searcher {
             return;
           }
         }
-        if (box.compensated && !td && !sd && box.t.width() <= kFloorWidth &&
-            box.s.width() <= kFloorWidth &&
-            coincide_at_precision(*in_.f, *in_.g, box.t, box.s,
-                                  evaluate_with_tangent(*in_.f, box.t.lo).point)) {
+        const bool at_floor = box.compensated && !td && !sd && box.t.width() <= kFloorWidth &&
+                              box.s.width() <= kFloorWidth;
+        if (at_floor) out_.stats.work += coincidence_test_cost(in_.f->degree, in_.g->degree);
+        if (at_floor && coincide_at_precision(*in_.f, *in_.g, box.t, box.s,
+                                              evaluate_with_tangent(*in_.f, box.t.lo).point)) {
           emit(box, false);
           return;
         }
@@ -332,10 +333,11 @@ class Searcher {
           box.along = !box.along;
           continue;
         }
-        if (box.compensated && !td && !sd && box.t.width() <= kFloorWidth &&
-            box.s.width() <= kFloorWidth &&
-            coincide_at_precision(*in_.f, *in_.g, box.t, box.s,
-                                  evaluate_with_tangent(*in_.f, box.t.lo).point)) {
+        const bool at_floor = box.compensated && !td && !sd && box.t.width() <= kFloorWidth &&
+                              box.s.width() <= kFloorWidth;
+        if (at_floor) out_.stats.work += coincidence_test_cost(in_.f->degree, in_.g->degree);
+        if (at_floor && coincide_at_precision(*in_.f, *in_.g, box.t, box.s,
+                                              evaluate_with_tangent(*in_.f, box.t.lo).point)) {
           emit(box, false);  // the curves agree to within rounding here: a high-order contact
           return;
         }

@@ -19,9 +19,7 @@ namespace bezier::core {
 // multipliers ranged over 7.5-25 ns): a plain step is cheap next to what the costly ones add.
 
 /// Compensated (double-double) pieces cost this many times the plain ones: each update is
-/// a two-product and two two-sums instead of one multiply-add, and a compensated step may
-/// also ask whether the curves coincide to within rounding (five samples, each a few
-/// compensated evaluations).
+/// a two-product and two two-sums instead of one multiply-add.
 inline constexpr std::int64_t kCompensatedFactor = 14;
 
 /// A step's fixed part (popping the box, the bounding boxes, the fat line), in units.
@@ -41,6 +39,14 @@ inline constexpr std::int64_t kStepOverhead = 8;
 [[nodiscard]] constexpr std::int64_t subdivision_test_cost(int m, int n) noexcept {
   const std::int64_t a = m + 1, b = n + 1;
   return 6 * (a * a + b * b);
+}
+
+/// The test whether the curves coincide to within rounding on a compensated box at the
+/// precision floor (five samples, each projected onto the other curve by compensated
+/// evaluations): measured as one compensated step.
+[[nodiscard]] constexpr std::int64_t coincidence_test_cost(int m, int n) noexcept {
+  const std::int64_t a = m + 1, b = n + 1;
+  return kCompensatedFactor * (a * a + b * b);
 }
 
 /// One implicit ("fat parabola") clip of a piece of degree n: the squares and products of
