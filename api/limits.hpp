@@ -20,7 +20,7 @@ struct Limits {
   /// that units are proportional to time; one unit is about 3-6 ns on the reference
   /// machine. The default is what the heaviest legitimate request we know needs with a
   /// margin (two degree-20 curves crossing 400 times, the most possible: 20.4 M units by
-  /// the default method), which bounds a request's kernel time near 90-130 ms
+  /// the default method), which bounds a request's kernel time near 80-110 ms
   /// (BENCHMARKS.md §4b). Hitting it answers 422, never a hang.
   std::int64_t max_work = 22000000;
 };
