@@ -29,17 +29,30 @@ double hodograph_scale(const WorkingCurve& c) noexcept {
   return c.degree * m;
 }
 
+/// What make_intersection needs of the pair besides the curves, computed once for all of
+/// its contacts.
+struct PairScales {
+  WorkingFrame frame;
+  double f_hodograph = 0.0, g_hodograph = 0.0;
+};
+
+PairScales pair_scales(const WorkingCurve& f, const WorkingCurve& g, WorkingFrame frame) noexcept {
+  return {frame, hodograph_scale(f), hodograph_scale(g)};
+}
+
 /// The answer for one (t, s), with its kind judged from the derivatives there.
-Intersection make_intersection(const WorkingCurve& f, const WorkingCurve& g, WorkingFrame frame,
-                               double t, double s, ParamInterval ti, ParamInterval si) {
+Intersection make_intersection(const WorkingCurve& f, const WorkingCurve& g,
+                               const PairScales& scales, double t, double s, ParamInterval ti,
+                               ParamInterval si) {
   Intersection x;
   x.t = t;
   x.s = s;
   x.t_interval = ti;
   x.s_interval = si;
   const PointAndTangent pf = evaluate_with_tangent(f, t), pg = evaluate_with_tangent(g, s);
-  x.point = from_working({pf.point.x / 2 + pg.point.x / 2, pf.point.y / 2 + pg.point.y / 2}, frame);
-  x.kind = classify_intersection(pf.tangent, pg.tangent, hodograph_scale(f), hodograph_scale(g));
+  x.point = from_working({pf.point.x / 2 + pg.point.x / 2, pf.point.y / 2 + pg.point.y / 2},
+                         scales.frame);
+  x.kind = classify_intersection(pf.tangent, pg.tangent, scales.f_hodograph, scales.g_hodograph);
   return x;
 }
 
@@ -71,15 +84,21 @@ bool control_boxes_disjoint(const Curve& f, const Curve& g) noexcept {
 /// End points of f and g equal bit for bit: exact roots, unless they lie on an overlap.
 std::vector<ExactRoot> exact_end_roots(const Curve& f, const Curve& g,
                                        std::span<const OverlapFinding> overlaps) {
+  const Point2 f_ends[2] = {f.front(), f.back()}, g_ends[2] = {g.front(), g.back()};
+  // Most pairs share no end point: no vector, no loop over the overlaps.
+  if (!(f_ends[0] == g_ends[0] || f_ends[0] == g_ends[1] || f_ends[1] == g_ends[0] ||
+        f_ends[1] == g_ends[1])) {
+    return {};
+  }
   std::vector<ExactRoot> roots;
-  for (const double t : {0.0, 1.0}) {
-    for (const double s : {0.0, 1.0}) {
-      const Point2 a = t == 0.0 ? f.front() : f.back();
-      const Point2 b = s == 0.0 ? g.front() : g.back();
-      if (!(a == b)) continue;
+  for (const int t : {0, 1}) {
+    for (const int s : {0, 1}) {
+      if (!(f_ends[t] == g_ends[s])) continue;
       bool on = false;
-      for (const OverlapFinding& o : overlaps) on = on || on_overlap(o, t, s);
-      if (!on) roots.push_back({t, s});
+      for (const OverlapFinding& o : overlaps) {
+        on = on || on_overlap(o, static_cast<double>(t), static_cast<double>(s));
+      }
+      if (!on) roots.push_back({static_cast<double>(t), static_cast<double>(s)});
     }
   }
   return roots;
@@ -121,9 +140,10 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   if (!wf.is_point && !wg.is_point) {
     if (const auto line = collinear_intersections(wf, wg, exact_end_roots(f, g, {}))) {
       result.overlaps = line->overlaps;
+      const PairScales scales = pair_scales(wf, wg, frame);
       for (const CollinearContact& c : line->touches) {
         if (!t_range.contains(c.t_estimate) || !s_range.contains(c.s_estimate)) continue;
-        Intersection x = make_intersection(wf, wg, frame, c.t_estimate, c.s_estimate, c.t, c.s);
+        Intersection x = make_intersection(wf, wg, scales, c.t_estimate, c.s_estimate, c.t, c.s);
         // A curve within the line tolerance of a point touches with all of its parameter
         // range: resolved only when both ranges are narrower than the tolerance (F2).
         x.resolved = c.t.width() < options.tolerance && c.s.width() < options.tolerance;
@@ -176,7 +196,9 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   if (found.capped) result.status = IntersectStatus::work_cap_reached;
 
   const KindTolerances kind_tol;
-  for (Contact c : merge_candidates(found.candidates, exact, in.width)) {
+  const std::vector<Contact> contacts = merge_candidates(found.candidates, exact, in.width);
+  const PairScales scales = contacts.empty() ? PairScales{frame} : pair_scales(wf, wg, frame);
+  for (Contact c : contacts) {
     if (in.t_free) c.t = {0.0, 1.0};
     if (in.s_free) c.s = {0.0, 1.0};
     const Refinement r = refine_contact(wf, wg, c, in.t_free, in.s_free, kind_tol.tangent_sine);
@@ -186,7 +208,7 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
       result.status = IntersectStatus::work_cap_reached;  // many contacts: stop refining
       break;
     }
-    Intersection x = make_intersection(wf, wg, frame, r.t, r.s, c.t, c.s);
+    Intersection x = make_intersection(wf, wg, scales, r.t, r.s, c.t, c.s);
     if (in.t_free || in.s_free) x.kind = IntersectionKind::degenerate;
     // A curve handled as a point keeps the whole (or half) parameter interval: it is not
     // resolved then, whatever the other curve's box (Intersection's contract; finding F2).

@@ -1,5 +1,6 @@
 #include "core/intersect/overlap.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/binomial.hpp"
@@ -71,6 +72,80 @@ std::vector<double> piece(std::span<const double> c, double a, double b) {
   return {p.begin(), p.end()};
 }
 
+/// A region holding a curve's control polygon, widened by a margin: the bounding box of
+/// its (hi) control points and the band between the lines parallel to its chord through
+/// the extreme control points (the fat line). Both hold the convex hull, so both hold every
+/// piece's control points, up to rounding.
+class HullRegion {
+ public:
+  HullRegion(const WorkingCurve& c, double margin) noexcept {
+    x_lo_ = x_hi_ = c.x[0];
+    y_lo_ = y_hi_ = c.y[0];
+    for (std::size_t i = 1; i < c.x.size(); ++i) {
+      x_lo_ = bernstein::min2(x_lo_, c.x[i]);
+      x_hi_ = bernstein::max2(x_hi_, c.x[i]);
+      y_lo_ = bernstein::min2(y_lo_, c.y[i]);
+      y_hi_ = bernstein::max2(y_hi_, c.y[i]);
+    }
+    x_lo_ -= margin;
+    x_hi_ += margin;
+    y_lo_ -= margin;
+    y_hi_ += margin;
+    // Any direction bounds the hull by its extreme projections; a unit one (to rounding)
+    // keeps the margin a distance. A closed polygon has no chord: the box alone.
+    origin_ = {c.x[0], c.y[0]};
+    const double dx = c.x.back() - c.x[0], dy = c.y.back() - c.y[0];
+    const double length = std::sqrt(dx * dx + dy * dy);
+    if (length > 0) {
+      normal_ = {-dy / length, dx / length};
+      for (std::size_t i = 1; i + 1 < c.x.size(); ++i) {
+        const double d = distance({c.x[i], c.y[i]});
+        d_lo_ = bernstein::min2(d_lo_, d);
+        d_hi_ = bernstein::max2(d_hi_, d);
+      }
+    }
+    // The distances' rounding (a few u of coordinates <= about 1) is far below 2^-40.
+    d_lo_ -= margin + 0x1p-40;
+    d_hi_ += margin + 0x1p-40;
+  }
+
+  [[nodiscard]] bool holds(double x, double y) const noexcept {
+    if (!(x_lo_ <= x && x <= x_hi_ && y_lo_ <= y && y <= y_hi_)) return false;
+    const double d = distance({x, y});
+    return d_lo_ <= d && d <= d_hi_;
+  }
+
+ private:
+  [[nodiscard]] double distance(Point2 p) const noexcept {
+    return normal_.x * (p.x - origin_.x) + normal_.y * (p.y - origin_.y);
+  }
+
+  double x_lo_, x_hi_, y_lo_, y_hi_;
+  Point2 origin_;
+  Point2 normal_{0.0, 0.0};  // zero: every distance is 0, inside the band
+  double d_lo_ = 0.0, d_hi_ = 0.0;
+};
+
+/// A necessary condition for find_overlaps to find anything, far cheaper than its monomial
+/// coefficients. Each end of an overlap it reports is an end of f or of g (two different
+/// ends: both of g, both of f, or one of each), and there the verified pieces' first (or
+/// last) control points, one that end point and the other in the other curve's hull (a
+/// portion's control points are convex combinations of the curve's, up to rounding), agree
+/// to within overlap_tolerance. So at least two of the four end points lie within that
+/// tolerance, plus rounding, of the other curve's hull region.
+bool ends_may_overlap(const WorkingCurve& f, const WorkingCurve& g) noexcept {
+  const int degree = std::max(f.degree, g.degree);
+  // The portions' and elevations' rounding (a few n u of coordinates <= about 1) is far
+  // below 2^-40; the factor 2 doubles the tolerance itself.
+  const double margin = 2 * overlap_tolerance(degree) + 0x1p-40;
+  const HullRegion fr(f, margin), gr(g, margin);
+  const int ends = static_cast<int>(gr.holds(f.x[0], f.y[0])) +
+                   static_cast<int>(gr.holds(f.x.back(), f.y.back())) +
+                   static_cast<int>(fr.holds(g.x[0], g.y[0])) +
+                   static_cast<int>(fr.holds(g.x.back(), g.y.back()));
+  return ends >= 2;
+}
+
 }  // namespace
 
 double overlap_tolerance(int degree) noexcept {
@@ -97,6 +172,7 @@ double locate_on_curve(const WorkingCurve& f, PointDD p, double start) {
 std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCurve& g) {
   std::vector<OverlapFinding> out;
   if (f.is_point || g.is_point) return out;
+  if (!ends_may_overlap(f, g)) return out;
   const Coeffs fx = monomial(f.x), fy = monomial(f.y);
   const Coeffs gx = monomial(g.x), gy = monomial(g.y);
   const int d = true_degree(fx, fy, f.magnitude);

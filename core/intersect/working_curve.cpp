@@ -1,7 +1,9 @@
 #include "core/intersect/working_curve.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "core/intersect/bernstein1d.hpp"
 
@@ -20,14 +22,44 @@ double grid_point(double x, double grid) noexcept {
   return std::isfinite(nearest) ? nearest : std::trunc(x / grid) * grid;
 }
 
+/// 2^e, bit for bit std::ldexp(1.0, e), without the library call for normal results (every
+/// pair pays three of these before any test, and the library's ldexp costs tens of
+/// instructions).
+double power_of_two(int e) noexcept {
+  if (e < -1022 || e > 1023) return std::ldexp(1.0, e);
+  return std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52);
+}
+
+/// std::ilogb(x) for finite nonzero x, without the library call for normal x.
+int exponent_of(double x) noexcept {
+  const int biased = static_cast<int>((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff);
+  if (biased == 0 || biased == 0x7ff) return std::ilogb(x);
+  return biased - 1023;
+}
+
+/// max(|p.x|, |p.y|) as max_abs_coordinate (std::fmax), without the library call: the
+/// same value, NaN included (fmax returns the other argument).
+double largest_coordinate(Point2 p) noexcept {
+  const double a = std::fabs(p.x), b = std::fabs(p.y);
+  return b > a || a != a ? b : a;
+}
+
 /// Multiplication by 2^e as two factors (2^e itself may be beyond the double range): exact
 /// whenever the result is a normal double.
 struct PowerOfTwo {
   double first, second;
   explicit PowerOfTwo(int e) noexcept
-      : first(std::ldexp(1.0, e / 2)), second(std::ldexp(1.0, e - e / 2)) {}
+      : first(power_of_two(e / 2)), second(power_of_two(e - e / 2)) {}
   [[nodiscard]] double times(double x) const noexcept { return x * first * second; }
 };
+
+/// hi + lo as double-doubles: built where needed (compensated pieces, Newton residuals)
+/// rather than held by every working curve, which most pairs never ask for.
+SmallArray<dd::Real> exact_coordinates(const Coeffs& hi, const Coeffs& lo) {
+  SmallArray<dd::Real> out(hi.size(), SmallArray<dd::Real>::Uninitialized{});
+  for (std::size_t i = 0; i < hi.size(); ++i) out[i] = {hi[i], lo[i]};
+  return out;
+}
 
 }  // namespace
 
@@ -51,48 +83,48 @@ WorkingFrame working_frame(const Curve& f, const Curve& g) {
   // any finer grid subtract from it exactly, and translating the inputs by a multiple of
   // the grid translates the origin by the same amount. (Never finer than the smallest
   // subnormal: a grid of 0 would make the origin NaN, finding F5b.)
-  const double grid = std::ldexp(1.0, std::max(std::ilogb(extent) - 4, kSmallestExponent));
+  const double grid = power_of_two(std::max(exponent_of(extent) - 4, kSmallestExponent));
   frame.origin = {grid_point(center.x, grid), grid_point(center.y, grid)};
   double m = 0.0;
   for (const Curve* c : {&f, &g}) {
-    for (const Point2 p : c->points()) m = bernstein::max2(m, max_abs_coordinate(p - frame.origin));
+    for (const Point2 p : c->points()) m = bernstein::max2(m, largest_coordinate(p - frame.origin));
   }
   // 2^-(e + 1) with 2^e <= m (m is finite and nonzero: the origin lies within a grid step
   // of the centre, and some coordinate differs from it by at least half the extent).
-  frame.exponent = -(std::ilogb(m) + 1);
+  frame.exponent = -(exponent_of(m) + 1);
   return frame;
 }
 
 WorkingCurve to_working(const Curve& curve, WorkingFrame frame) {
-  WorkingCurve w;
-  w.degree = curve.degree();
   const std::size_t count = curve.points().size();
-  w.x.resize(count);
-  w.y.resize(count);
-  w.x_lo.resize(count);
-  w.y_lo.resize(count);
-  w.x_dd.resize(count);
-  w.y_dd.resize(count);
+  // Members built in place, unfilled: every entry is written below.
+  WorkingCurve w{.degree = curve.degree(),
+                 .x = Coeffs(count, Coeffs::Uninitialized{}),
+                 .y = Coeffs(count, Coeffs::Uninitialized{}),
+                 .x_lo = Coeffs(count, Coeffs::Uninitialized{}),
+                 .y_lo = Coeffs(count, Coeffs::Uninitialized{})};
   const PowerOfTwo scale(frame.exponent);
+  double* const x_hi = w.x.data();
+  double* const y_hi = w.y.data();
+  double* const x_lo = w.x_lo.data();
+  double* const y_lo = w.y_lo.data();
+  const Point2* const points = curve.points().data();
   for (std::size_t i = 0; i < count; ++i) {
-    const Point2 p = curve.points()[i];
-    const TwoTerm<double> x = two_sum(p.x, -frame.origin.x);
-    const TwoTerm<double> y = two_sum(p.y, -frame.origin.y);
-    w.x[i] = scale.times(x.hi);
-    w.y[i] = scale.times(y.hi);
-    w.x_lo[i] = scale.times(x.lo);
-    w.y_lo[i] = scale.times(y.lo);
-    w.x_dd[i] = {w.x[i], w.x_lo[i]};
-    w.y_dd[i] = {w.y[i], w.y_lo[i]};
+    const TwoTerm<double> x = two_sum(points[i].x, -frame.origin.x);
+    const TwoTerm<double> y = two_sum(points[i].y, -frame.origin.y);
+    x_hi[i] = scale.times(x.hi);
+    y_hi[i] = scale.times(y.hi);
+    x_lo[i] = scale.times(x.lo);
+    y_lo[i] = scale.times(y.lo);
     w.magnitude =
-        bernstein::max2(w.magnitude, bernstein::max2(std::fabs(w.x[i]), std::fabs(w.y[i])));
+        bernstein::max2(w.magnitude, bernstein::max2(std::fabs(x_hi[i]), std::fabs(y_hi[i])));
     w.frame_error =
-        bernstein::max2(w.frame_error, bernstein::max2(std::fabs(w.x_lo[i]), std::fabs(w.y_lo[i])));
+        bernstein::max2(w.frame_error, bernstein::max2(std::fabs(x_lo[i]), std::fabs(y_lo[i])));
   }
   w.is_point = true;
-  for (std::size_t i = 1; i < w.x.size(); ++i) {
-    w.is_point = w.is_point && w.x[i] == w.x[0] && w.y[i] == w.y[0] && w.x_lo[i] == w.x_lo[0] &&
-                 w.y_lo[i] == w.y_lo[0];
+  for (std::size_t i = 1; i < count; ++i) {
+    w.is_point = w.is_point && x_hi[i] == x_hi[0] && y_hi[i] == y_hi[0] && x_lo[i] == x_lo[0] &&
+                 y_lo[i] == y_lo[0];
   }
   return w;
 }
@@ -115,8 +147,10 @@ void fast_piece_into(const WorkingCurve& f, double a, double b, Piece& out) {
 }
 
 Piece compensated_piece(const WorkingCurve& f, double a, double b, Point2 center) {
-  const SmallArray<dd::Real> xs = bernstein::portion<dd::Real>(f.x_dd, a, b);
-  const SmallArray<dd::Real> ys = bernstein::portion<dd::Real>(f.y_dd, a, b);
+  const SmallArray<dd::Real> x_exact = exact_coordinates(f.x, f.x_lo);
+  const SmallArray<dd::Real> y_exact = exact_coordinates(f.y, f.y_lo);
+  const SmallArray<dd::Real> xs = bernstein::portion<dd::Real>(x_exact, a, b);
+  const SmallArray<dd::Real> ys = bernstein::portion<dd::Real>(y_exact, a, b);
   Piece p;
   p.x.resize(xs.size());
   p.y.resize(ys.size());
@@ -131,7 +165,7 @@ Piece compensated_piece(const WorkingCurve& f, double a, double b, Point2 center
 }
 
 PointDD evaluate_dd(const WorkingCurve& f, double t) {
-  SmallArray<dd::Real> xs(std::span<const dd::Real>(f.x_dd)), ys(std::span<const dd::Real>(f.y_dd));
+  SmallArray<dd::Real> xs = exact_coordinates(f.x, f.x_lo), ys = exact_coordinates(f.y, f.y_lo);
   for (std::size_t level = xs.size() - 1; level > 0; --level) {
     for (std::size_t k = 0; k < level; ++k) {
       xs[k] = dd::lerp(xs[k], xs[k + 1], t);
@@ -141,10 +175,11 @@ PointDD evaluate_dd(const WorkingCurve& f, double t) {
   return {xs[0], ys[0]};
 }
 
-PointAndTangent evaluate_with_tangent(const WorkingCurve& f, double t) {
-  const std::size_t n = f.x.size() - 1;
-  if (n == 0) return {{f.x[0], f.y[0]}, {0.0, 0.0}};
-  Coeffs xs(std::span<const double>(f.x)), ys(std::span<const double>(f.y));
+namespace {
+
+/// de Casteljau down to the last level in the buffers xs, ys (overwritten), for
+/// evaluate_with_tangent.
+PointAndTangent point_and_tangent_in(double* xs, double* ys, std::size_t n, double t) noexcept {
   for (std::size_t level = n; level > 1; --level) {
     for (std::size_t k = 0; k < level; ++k) {
       xs[k] = bernstein::lerp(xs[k], xs[k + 1], t);
@@ -154,6 +189,23 @@ PointAndTangent evaluate_with_tangent(const WorkingCurve& f, double t) {
   const double dn = static_cast<double>(n);
   return {{bernstein::lerp(xs[0], xs[1], t), bernstein::lerp(ys[0], ys[1], t)},
           {dn * (xs[1] - xs[0]), dn * (ys[1] - ys[0])}};
+}
+
+}  // namespace
+
+PointAndTangent evaluate_with_tangent(const WorkingCurve& f, double t) {
+  const std::size_t n = f.x.size() - 1;
+  if (n == 0) return {{f.x[0], f.y[0]}, {0.0, 0.0}};
+  // Called at every contact and in every refinement step: plain stack buffers for the
+  // degrees a piece holds inline, no copies of whole SmallArrays.
+  if (n + 1 <= Coeffs::kInline) {
+    double xs[Coeffs::kInline], ys[Coeffs::kInline];
+    std::copy(f.x.begin(), f.x.end(), xs);
+    std::copy(f.y.begin(), f.y.end(), ys);
+    return point_and_tangent_in(xs, ys, n, t);
+  }
+  Coeffs xs(std::span<const double>(f.x)), ys(std::span<const double>(f.y));
+  return point_and_tangent_in(xs.data(), ys.data(), n, t);
 }
 
 Point2 second_derivative(const WorkingCurve& f, double t) {

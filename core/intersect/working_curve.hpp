@@ -31,12 +31,11 @@ struct WorkingFrame {
 /// which is far below any tolerance here.)
 struct WorkingCurve {
   int degree = 0;
-  Coeffs x, y;                      ///< hi parts
-  Coeffs x_lo, y_lo;                ///< lo parts
-  SmallArray<dd::Real> x_dd, y_dd;  ///< hi + lo as double-doubles
-  double magnitude = 0.0;           ///< max |hi| over all coordinates (<= about 1)
-  double frame_error = 0.0;         ///< max |lo|: how far hi is from the exact working curve
-  bool is_point = false;            ///< every control point is the same point, exactly
+  Coeffs x, y;               ///< hi parts
+  Coeffs x_lo, y_lo;         ///< lo parts
+  double magnitude = 0.0;    ///< max |hi| over all coordinates (<= about 1)
+  double frame_error = 0.0;  ///< max |lo|: how far hi is from the exact working curve
+  bool is_point = false;     ///< every control point is the same point, exactly
 };
 
 [[nodiscard]] WorkingCurve to_working(const Curve& curve, WorkingFrame frame);
