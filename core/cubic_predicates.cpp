@@ -60,7 +60,11 @@ CubicPredicates cubic_predicates(std::span<const Point2, 4> p) {
   const double m = std::max(
       std::max(std::max(std::fabs(ux), std::fabs(uy)), std::max(std::fabs(vx), std::fabs(vy))),
       std::max(std::fabs(wx), std::fabs(wy)));
-  assert(!std::isnan(ux + uy + vx + vy + wx + wy) &&
+  // The inputs, not their differences: finite coordinates more than DBL_MAX apart have
+  // infinite differences (m = inf then takes the exact path, which rescales first).
+  assert(std::isfinite(p[0].x) && std::isfinite(p[0].y) && std::isfinite(p[1].x) &&
+         std::isfinite(p[1].y) && std::isfinite(p[2].x) && std::isfinite(p[2].y) &&
+         std::isfinite(p[3].x) && std::isfinite(p[3].y) &&
          "cubic_predicates: coordinates must be finite");
   if (!(kFilterMin <= m && m <= kFilterMax)) return cubic_predicates_exact(p);
 

@@ -299,6 +299,25 @@ TEST(FuzzRegressions, F21_LoopNextToAnEndKeepsItsParametersOrdered) {
   EXPECT_LT(d.t2, 1.0);
 }
 
+// F22, found by classify_fuzzer (assertions on): finite coordinates more than the largest
+// double apart. The differences P_i - P_0 overflow to infinity and the filter's finiteness
+// assertion, written on their sum (inf - inf = NaN), aborted; release builds took the exact
+// path, which rescales. The type must be the exact oracle's (the assertion itself is checked
+// by the fuzz build only: this build has none).
+TEST(FuzzRegressions, F22_CoordinatesFartherApartThanTheLargestDoubleAreClassified) {
+  const std::array<std::array<Point2, 4>, 3> cubics{{
+      {Point2{-1.5e308, 0.0}, Point2{1.5e308, 1e300}, Point2{0.0, 1e308}, Point2{1e300, -1e308}},
+      {Point2{-1.7e308, -1.7e308}, Point2{1.7e308, 1.7e308}, Point2{1.7e308, -1.7e308},
+       Point2{-1.7e308, 1.7e308}},
+      {Point2{1e308, 0.0}, Point2{-1e308, 1e308}, Point2{-1e308, -1e308}, Point2{1e308, 1e299}},
+  }};
+  for (const auto& p : cubics) {
+    const CubicClassification c = classify(p);
+    EXPECT_TRUE(c.exact);
+    EXPECT_EQ(c.type, bezier::test::exact_type(p));
+  }
+}
+
 // F5, found by intersect_fuzzer: subnormal coordinates. Two segments 1e-310 long meeting
 // at the origin, f(1) = g(0) = (0, 0): the kernel answered (1, 1) with a NaN point (the
 // working frame's power-of-two scale overflowed). Fixed meanwhile by 1107d08 (scale
