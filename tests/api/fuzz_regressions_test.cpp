@@ -305,7 +305,9 @@ TEST(FuzzRegressions, F21_LoopNextToAnEndKeepsItsParametersOrdered) {
 // path, which rescales. The type must be the exact oracle's (the assertion itself is checked
 // by the fuzz build only: this build has none).
 TEST(FuzzRegressions, F22_CoordinatesFartherApartThanTheLargestDoubleAreClassified) {
-  const std::array<std::array<Point2, 4>, 3> cubics{{
+  const std::array<std::array<Point2, 4>, 4> cubics{{
+      {Point2{1.5e308, -1.5e308}, Point2{-1.5e308, 1.5e308}, Point2{-1e308, -1e308},
+       Point2{1e308, 1e308}},  // differences -inf and +inf: their sum was NaN
       {Point2{-1.5e308, 0.0}, Point2{1.5e308, 1e300}, Point2{0.0, 1e308}, Point2{1e300, -1e308}},
       {Point2{-1.7e308, -1.7e308}, Point2{1.7e308, 1.7e308}, Point2{1.7e308, -1.7e308},
        Point2{-1.7e308, 1.7e308}},
