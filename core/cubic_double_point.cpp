@@ -73,7 +73,8 @@ std::optional<CubicDoublePoint> cubic_double_point(std::span<const Point2, 4> p,
   } else if (pred.sign.l1 == 0) {
     dp.point = p[3];
   } else {
-    dp.point = 0.5 * (cubic_point(p, dp.t1) + cubic_point(p, dp.t2));
+    // Halves first: two points near the largest double would overflow their sum.
+    dp.point = 0.5 * cubic_point(p, dp.t1) + 0.5 * cubic_point(p, dp.t2);
   }
   return dp;
 }

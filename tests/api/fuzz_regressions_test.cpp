@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -318,6 +319,29 @@ TEST(FuzzRegressions, F22_CoordinatesFartherApartThanTheLargestDoubleAreClassifi
     EXPECT_TRUE(c.exact);
     EXPECT_EQ(c.type, bezier::test::exact_type(p));
   }
+}
+
+// F23, found by classify_fuzzer: a loop on a cubic with coordinates near the largest double.
+// The double point, the mean of B(t1) and B(t2), was computed as half their sum, which
+// overflowed to -inf. Both points lie in the control points' convex hull, so their mean does:
+// it must be finite and inside the control points' bounding box.
+TEST(FuzzRegressions, F23_DoublePointNearTheLargestDoubleIsFinite) {
+  const std::array<Point2, 4> p{Point2{0.0, -0x1.7000001f00108p+1023},
+                                Point2{-0x1.7000001f0efefp+1023, 0x1.7000001f0efefp+1023},
+                                Point2{-0x1.7000001f0efefp+1023, -0x1.fffffffcp-50},
+                                Point2{0.0, 0.0}};
+  const CubicClassification c = classify(p);
+  ASSERT_TRUE(c.self_intersection.has_value());
+  const Point2 d = c.self_intersection->point;
+  double x_lo = p[0].x, x_hi = p[0].x, y_lo = p[0].y, y_hi = p[0].y;
+  for (const Point2& q : p) {
+    x_lo = std::min(x_lo, q.x);
+    x_hi = std::max(x_hi, q.x);
+    y_lo = std::min(y_lo, q.y);
+    y_hi = std::max(y_hi, q.y);
+  }
+  EXPECT_TRUE(std::isfinite(d.x) && std::isfinite(d.y));
+  EXPECT_TRUE(x_lo <= d.x && d.x <= x_hi && y_lo <= d.y && d.y <= y_hi);
 }
 
 // F5, found by intersect_fuzzer: subnormal coordinates. Two segments 1e-310 long meeting
