@@ -34,33 +34,13 @@ struct PointAndDerivative {
   double x, y, dx, dy;
 };
 
-template <std::size_t N>
-PointAndDerivative casteljau_fixed(const double* xs, const double* ys, double t) noexcept {
-  double x[N + 1], y[N + 1];
-  for (std::size_t i = 0; i <= N; ++i) {
+/// de Casteljau down to the last level in the buffers x, y (n + 1 entries each); called with a
+/// constant n by casteljau_fixed, where the loops unroll.
+inline PointAndDerivative casteljau_levels(const double* xs, const double* ys, std::size_t n,
+                                           double t, double* x, double* y) noexcept {
+  for (std::size_t i = 0; i <= n; ++i) {
     x[i] = xs[i];
     y[i] = ys[i];
-  }
-  for (std::size_t level = N; level > 1; --level) {
-    for (std::size_t k = 0; k < level; ++k) {
-      x[k] = bernstein::lerp(x[k], x[k + 1], t);
-      y[k] = bernstein::lerp(y[k], y[k + 1], t);
-    }
-  }
-  const double n = static_cast<double>(N);
-  return {bernstein::lerp(x[0], x[1], t), bernstein::lerp(y[0], y[1], t), n * (x[1] - x[0]),
-          n * (y[1] - y[0])};
-}
-
-PointAndDerivative casteljau(const WorkingCurve& c, double t) noexcept {
-  const std::size_t n = c.x.size() - 1;
-  if (n == 3) return casteljau_fixed<3>(c.x.data(), c.y.data(), t);
-  if (n == 2) return casteljau_fixed<2>(c.x.data(), c.y.data(), t);
-  if (n == 1) return casteljau_fixed<1>(c.x.data(), c.y.data(), t);
-  double x[kMaxDegree + 1], y[kMaxDegree + 1];
-  for (std::size_t i = 0; i <= n; ++i) {
-    x[i] = c.x[i];
-    y[i] = c.y[i];
   }
   for (std::size_t level = n; level > 1; --level) {
     for (std::size_t k = 0; k < level; ++k) {
@@ -71,6 +51,21 @@ PointAndDerivative casteljau(const WorkingCurve& c, double t) noexcept {
   const double dn = static_cast<double>(n);
   return {bernstein::lerp(x[0], x[1], t), bernstein::lerp(y[0], y[1], t), dn * (x[1] - x[0]),
           dn * (y[1] - y[0])};
+}
+
+template <std::size_t N>
+PointAndDerivative casteljau_fixed(const double* xs, const double* ys, double t) noexcept {
+  double x[N + 1], y[N + 1];
+  return casteljau_levels(xs, ys, N, t, x, y);
+}
+
+PointAndDerivative casteljau(const WorkingCurve& c, double t) noexcept {
+  const std::size_t n = c.x.size() - 1;
+  if (n == 3) return casteljau_fixed<3>(c.x.data(), c.y.data(), t);
+  if (n == 2) return casteljau_fixed<2>(c.x.data(), c.y.data(), t);
+  if (n == 1) return casteljau_fixed<1>(c.x.data(), c.y.data(), t);
+  double x[kMaxDegree + 1], y[kMaxDegree + 1];
+  return casteljau_levels(c.x.data(), c.y.data(), n, t, x, y);
 }
 
 /// How far the computed value of `casteljau` can be from the exact working curve's point:

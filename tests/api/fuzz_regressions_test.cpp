@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -118,6 +119,29 @@ void expect_intersection_contract(const IntersectionResult& r, double tolerance)
   }
 }
 
+// One intersection, no overlap, in both orders of f and g (Bézier clipping, tolerance 1e-9),
+// estimated exactly at the end root f(t) = g(s); of the given kind when one is given.
+void expect_one_exact_end_root(const Curve& f, const Curve& g, double t, double s,
+                               std::optional<IntersectionKind> kind = std::nullopt) {
+  IntersectOptions options;
+  options.tolerance = 1e-9;
+  options.method = IntersectMethod::bezier_clipping;
+  for (const bool swapped : {false, true}) {
+    SCOPED_TRACE(swapped ? "g, f" : "f, g");
+    const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    EXPECT_TRUE(r.overlaps.empty());
+    ASSERT_EQ(r.intersections.size(), 1u);
+    EXPECT_TRUE(swapped ? covered(r, s, t) : covered(r, t, s));
+    EXPECT_EQ(r.intersections[0].t, swapped ? s : t);
+    EXPECT_EQ(r.intersections[0].s, swapped ? t : s);
+    if (kind) {
+      EXPECT_EQ(r.intersections[0].kind, *kind);
+    }
+    expect_intersection_contract(r, options.tolerance);
+  }
+}
+
 // F2, found by intersect_fuzzer: a curve smaller than about 2^-44 of the other is handled
 // as a point, its parameter interval is [0, 1] (or a half of it), and the intersection is
 // still flagged `resolved`. Here f is the segment y = 2x of length ~2^-48 through the
@@ -170,19 +194,7 @@ TEST(FuzzRegressions, F3_BezierClippingAcceptsAPointCurve) {
 TEST(FuzzRegressions, F4_EndPointRootOfATinyCurveIsReported) {
   const Curve f({{0.0, 0.0}, {0.0, -0x1p24}});
   const Curve g({{0x1.d4p-30, 0.0}, {0.0, 0.0}, {0.0, 0.0}});
-  IntersectOptions options;
-  options.tolerance = 1e-9;
-  options.method = IntersectMethod::bezier_clipping;
-  for (const bool swapped : {false, true}) {
-    const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
-    ASSERT_EQ(r.status, IntersectStatus::ok);
-    EXPECT_TRUE(r.overlaps.empty());
-    ASSERT_EQ(r.intersections.size(), 1u);
-    EXPECT_TRUE(swapped ? covered(r, 1.0, 0.0) : covered(r, 0.0, 1.0));
-    EXPECT_EQ(r.intersections[0].t, swapped ? 1.0 : 0.0);
-    EXPECT_EQ(r.intersections[0].s, swapped ? 0.0 : 1.0);
-    expect_intersection_contract(r, options.tolerance);
-  }
+  expect_one_exact_end_root(f, g, 0.0, 1.0);
 }
 
 // F4 again, found by intersect_fuzzer once F4's gate was gone: a single point exactly at an end
@@ -725,20 +737,7 @@ TEST(FuzzRegressions, F14_SubnormalEstimateInsideItsInterval) {
 TEST(FuzzRegressions, F11_HighOrderContactIsReportedOnce) {
   const Curve f({{1.0, 1.0}, {-1.0, 1.0}});
   const Curve g({{-1.0, 1.0}, {0x1.fc38p+6, 1.0}, {-1.0, 1.0}, {0.0, 0.0}});
-  IntersectOptions options;
-  options.tolerance = 1e-9;
-  options.method = IntersectMethod::bezier_clipping;
-  for (const bool swapped : {false, true}) {
-    const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
-    ASSERT_EQ(r.status, IntersectStatus::ok);
-    EXPECT_TRUE(r.overlaps.empty());
-    ASSERT_EQ(r.intersections.size(), 1u);
-    EXPECT_TRUE(swapped ? covered(r, 0.0, 1.0) : covered(r, 1.0, 0.0));
-    EXPECT_EQ(r.intersections[0].t, swapped ? 0.0 : 1.0);
-    EXPECT_EQ(r.intersections[0].s, swapped ? 1.0 : 0.0);
-    EXPECT_EQ(r.intersections[0].kind, IntersectionKind::tangent);
-    expect_intersection_contract(r, options.tolerance);
-  }
+  expect_one_exact_end_root(f, g, 1.0, 0.0, IntersectionKind::tangent);
 }
 
 }  // namespace
