@@ -1,0 +1,190 @@
+#include "service/router.hpp"
+
+#include <cctype>
+#include <cstdio>
+#include <random>
+
+#include "api/handler.hpp"
+#include "service/static_files.hpp"
+
+namespace bezier::service {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+bool is_json_media_type(std::string_view content_type) {
+  // "application/json", optionally with parameters, or any "+json" suffix type.
+  const std::string_view type = content_type.substr(0, content_type.find(';'));
+  std::string lower;
+  for (const char c : type) {
+    if (c != ' ' && c != '\t') lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return lower == "application/json" ||
+         (lower.size() > 5 && lower.compare(lower.size() - 5, 5, "+json") == 0 &&
+          lower.rfind("application/", 0) == 0);
+}
+
+// A client's X-Request-Id is kept when it is short and plain; otherwise one is made.
+std::string request_id_for(std::string_view given) {
+  bool plain = !given.empty() && given.size() <= 64;
+  for (const char c : given) {
+    plain = plain && (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.');
+  }
+  if (plain) return std::string(given);
+  thread_local std::mt19937_64 random{std::random_device{}()};
+  char id[17];
+  std::snprintf(id, sizeof id, "%016llx", static_cast<unsigned long long>(random()));
+  return id;
+}
+
+constexpr std::string_view kGetRoutes[] = {"/healthz", "/readyz", "/metrics", "/openapi.yaml"};
+
+bool is_get_route(std::string_view path) {
+  for (const auto r : kGetRoutes) {
+    if (r == path) return true;
+  }
+  return find_static_file(path).has_value();
+}
+
+Response content(std::string_view body, std::string_view content_type) {
+  Response response;
+  response.content_type = std::string(content_type);
+  response.body = std::string(body);
+  return response;
+}
+
+}  // namespace
+
+Response to_response(api::Reply reply) {
+  Response response;
+  response.status = reply.status;
+  response.content_type = std::move(reply.content_type);
+  response.body = std::move(reply.body);
+  return response;
+}
+
+Response problem_response(api::ProblemKind kind, std::string detail) {
+  return to_response(api::problem_reply(kind, std::move(detail)));
+}
+
+Router::Router(const Config& config, Log log) : config_(config), log_(std::move(log)) {}
+
+Exchange Router::begin(const RequestView& request) {
+  metrics_.request_started();
+  return {Clock::now(), request_id_for(request.header("X-Request-Id"))};
+}
+
+std::optional<Response> Router::answer(const RequestView& request) const {
+  if (request.method == "GET" || request.method == "HEAD") return answer_get(request.path);
+  if (request.method == "POST") return check_post(request);
+  return answer_other_method(request);
+}
+
+Response Router::answer_get(std::string_view path) const {
+  if (path == "/healthz") return content(R"({"status":"ok"})", "application/json");
+  if (path == "/readyz") {
+    if (draining_.load()) return problem_response(api::ProblemKind::shutting_down, "draining before shutdown");
+    return content(R"({"status":"ready"})", "application/json");
+  }
+  if (path == "/metrics") return content(metrics_.render(), "text/plain; version=0.0.4; charset=utf-8");
+  if (path == "/openapi.yaml") return content(api::openapi_yaml(), "application/yaml");
+  if (const auto file = find_static_file(path)) return content(file->content, file->content_type);
+  if (api::is_post_route(path)) {
+    Response response = problem_response(api::ProblemKind::method_not_allowed, "use POST on " + std::string(path));
+    response.headers.emplace_back("Allow", "POST");
+    return response;
+  }
+  return problem_response(api::ProblemKind::not_found, "no route " + std::string(path));
+}
+
+std::optional<Response> Router::check_post(const RequestView& request) const {
+  const std::string path(request.path);
+  if (!api::is_post_route(path)) {
+    if (is_get_route(path)) {
+      Response response = problem_response(api::ProblemKind::method_not_allowed, "use GET on " + path);
+      response.headers.emplace_back("Allow", "GET, HEAD");
+      return response;
+    }
+    return problem_response(api::ProblemKind::not_found, "no route " + path);
+  }
+  if (!authorized(request)) {
+    Response response =
+        problem_response(api::ProblemKind::unauthorized, "send Authorization: Bearer <token>");
+    response.headers.emplace_back("WWW-Authenticate", "Bearer");
+    return response;
+  }
+  const std::string_view type = request.header("Content-Type");
+  if (!is_json_media_type(type)) {
+    return problem_response(api::ProblemKind::unsupported_media_type,
+                            "Content-Type must be application/json, got '" + std::string(type) + "'");
+  }
+  return std::nullopt;
+}
+
+Response Router::answer_other_method(const RequestView& request) const {
+  const std::string path(request.path);
+  const char* allow = nullptr;
+  if (api::is_post_route(path)) {
+    allow = "POST";
+  } else if (is_get_route(path)) {
+    allow = "GET, HEAD";
+  } else {
+    return problem_response(api::ProblemKind::not_found, "no route " + path);
+  }
+  Response response = problem_response(api::ProblemKind::method_not_allowed,
+                                       std::string(request.method) + " is not allowed on " + path);
+  response.headers.emplace_back("Allow", allow);
+  return response;
+}
+
+Response Router::compute(std::string_view path, std::string_view body, const api::Limits& limits) {
+  std::string what = "unknown exception";
+  try {
+    return to_response(api::handle(path, body, limits));
+  } catch (const std::exception& e) {
+    what = e.what();
+  } catch (...) {
+  }
+  log_.error("bug: exception escaped api::handle for POST {}: {}", path, what);
+  return problem_response(api::ProblemKind::internal, "internal error; it has been logged");
+}
+
+bool Router::authorized(const RequestView& request) const {
+  if (config_.auth_token.empty()) return true;
+  const std::string_view header = request.header("Authorization");
+  const std::string expected = "Bearer " + config_.auth_token;
+  // Constant-time comparison: the time taken must not reveal how much of a guess matched.
+  if (header.size() != expected.size()) return false;
+  unsigned char diff = 0;
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    diff |= static_cast<unsigned char>(header[i] ^ expected[i]);
+  }
+  return diff == 0;
+}
+
+void Router::finish(const Exchange& exchange, std::string_view method, std::string_view path, int status) {
+  const double seconds = std::chrono::duration<double>(Clock::now() - exchange.start).count();
+  metrics_.request_finished(path, status, seconds);
+  log_access(method, path, status, seconds, exchange.id);
+}
+
+void Router::finish_unrouted(std::string_view method, std::string_view path, int status) {
+  metrics_.request_started();
+  metrics_.request_finished(path, status, 0.0);
+  log_access(method, path, status, 0.0, "-");
+}
+
+void Router::log_access(std::string_view method, std::string_view path, int status, double seconds,
+                        std::string_view id) {
+  auto& logger = log_.logger();
+  if (!logger.should_log(spdlog::level::info)) return;
+  if (config_.log_format == LogFormat::json) {
+    logger.info(R"("msg":"access","method":"{}","path":"{}","status":{},"duration_ms":{:.3f},"request_id":"{}")",
+                json_escape(method), json_escape(path), status, seconds * 1e3, id);
+  } else {
+    logger.info("{} {} {} {:.3f}ms id={}", method, path, status, seconds * 1e3, id);
+  }
+}
+
+}  // namespace bezier::service

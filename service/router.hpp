@@ -1,0 +1,103 @@
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "api/limits.hpp"
+#include "api/problem.hpp"
+#include "service/config.hpp"
+#include "service/log.hpp"
+#include "service/metrics.hpp"
+
+namespace bezier::service {
+
+/// What the router needs of a request, whichever HTTP engine parsed it. The views stay
+/// valid for the duration of the call they are passed to.
+struct RequestView {
+  std::string_view method;  ///< "GET", "POST", ...; engines pass HEAD as "HEAD"
+  std::string_view path;    ///< the target without its query
+  /// The value of a header (name compared case-insensitively), empty when absent.
+  std::function<std::string_view(std::string_view name)> header;
+  std::string_view body;
+};
+
+/// An answer in HTTP terms, for an engine to write. `headers` are the ones beyond
+/// Content-Type and Content-Length (Allow, WWW-Authenticate, X-Request-Id).
+struct Response {
+  int status = 200;
+  std::string content_type = "application/json";
+  std::string body;
+  std::vector<std::pair<std::string_view, std::string>> headers;
+};
+
+/// The request's start time and id, from Router::begin to Router::finish.
+struct Exchange {
+  std::chrono::steady_clock::time_point start;
+  std::string id;
+};
+
+/// Everything about a request that does not depend on the transport, so both HTTP
+/// engines (cpp-httplib's thread per connection and the epoll loops) answer alike:
+/// GET routes (health, readiness, metrics, the spec, the playground), 404 and 405 with
+/// Allow, bearer authentication, the JSON media type check, request ids, metrics and
+/// the access log. POST routes are computed by api::handle; the router only decides
+/// whether a request gets that far, so the engine can choose the thread that runs it.
+/// Thread-safe: every member may be called from any thread at once.
+class Router {
+ public:
+  Router(const Config& config, Log log);
+
+  /// Starts a request: the in-flight gauge and its request id (the client's
+  /// X-Request-Id when short and plain, otherwise a random one).
+  [[nodiscard]] Exchange begin(const RequestView& request);
+
+  /// The answer to `request`, or nullopt when it is a valid POST to an API route: then
+  /// the engine calls compute() (with the limits it chooses) on a thread of its choice.
+  /// HEAD is answered as GET; the engine leaves the body out.
+  [[nodiscard]] std::optional<Response> answer(const RequestView& request) const;
+
+  /// api::handle(path, body, limits) as a Response; an exception (a bug, or bad_alloc)
+  /// is logged and becomes a 500 problem instead of reaching the engine.
+  [[nodiscard]] Response compute(std::string_view path, std::string_view body,
+                                 const api::Limits& limits);
+
+  /// Ends a request begun with begin(): metrics and the access line.
+  void finish(const Exchange& exchange, std::string_view method, std::string_view path, int status);
+
+  /// Counts and logs an answer the engine gave before routing (a malformed request,
+  /// 413 before the body, a timeout), which has no Exchange.
+  void finish_unrouted(std::string_view method, std::string_view path, int status);
+
+  /// From now on /readyz answers 503 (load balancers stop sending); still serving.
+  void begin_draining() noexcept { draining_.store(true); }
+
+  [[nodiscard]] const Config& config() const noexcept { return config_; }
+  [[nodiscard]] Log& log() noexcept { return log_; }
+
+ private:
+  [[nodiscard]] Response answer_get(std::string_view path) const;
+  [[nodiscard]] std::optional<Response> check_post(const RequestView& request) const;
+  [[nodiscard]] Response answer_other_method(const RequestView& request) const;
+  [[nodiscard]] bool authorized(const RequestView& request) const;
+  void log_access(std::string_view method, std::string_view path, int status, double seconds,
+                  std::string_view id);
+
+  const Config config_;
+  Log log_;
+  Metrics metrics_;
+  std::atomic<bool> draining_{false};
+};
+
+/// An api::Reply as a Response (same status, content type and body).
+[[nodiscard]] Response to_response(api::Reply reply);
+
+/// A problem+json Response of the API's kinds (DESIGN §3).
+[[nodiscard]] Response problem_response(api::ProblemKind kind, std::string detail);
+
+}  // namespace bezier::service
