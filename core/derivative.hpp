@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/curve.hpp"
-#include "core/evaluate.hpp"
+#include "core/casteljau_row.hpp"
 
 namespace bezier::core {
 

@@ -2,7 +2,24 @@
 
 #include <cassert>
 
+#include "core/casteljau_row.hpp"
+#include "core/multiversion.hpp"
+
 namespace bezier::core {
+
+namespace {
+
+template <class P>
+P evaluate_row(const BasicCurve<P>& curve, double t) {
+  CasteljauRow<P> row(curve.points());
+  while (row.size() > 1) row.casteljau_step(t);
+  return row.point(0);
+}
+
+}  // namespace
+
+BEZIER_FMA_CLONES Point2 evaluate(const Curve& curve, double t) { return evaluate_row(curve, t); }
+BEZIER_FMA_CLONES Point3 evaluate(const Curve3& curve, double t) { return evaluate_row(curve, t); }
 
 std::vector<double> uniform_parameters(int count) {
   assert(count >= 1);

@@ -1,10 +1,7 @@
 #pragma once
 
-#include <cassert>
-#include <span>
 #include <vector>
 
-#include "core/casteljau_row.hpp"
 #include "core/curve.hpp"
 
 namespace bezier::core {
@@ -15,12 +12,8 @@ namespace bezier::core {
 /// Any finite t is allowed; outside [0,1] the polynomial is extrapolated (the bound holds
 /// with the same formula, which grows like |2t - 1|^n). Returns P_0 exactly at t = 0 and
 /// P_n exactly at t = 1 (every error term is zero there).
-template <class P>
-[[nodiscard]] P evaluate(const BasicCurve<P>& curve, double t) {
-  CasteljauRow<P> row(curve.points());
-  while (row.size() > 1) row.casteljau_step(t);
-  return row.point(0);
-}
+[[nodiscard]] Point2 evaluate(const Curve& curve, double t);
+[[nodiscard]] Point3 evaluate(const Curve3& curve, double t);
 
 /// The parameters of `count` uniform samples: t_i = i / (count - 1), so 0 and 1 are
 /// included exactly. count = 1 gives {0}. Precondition: count >= 1.

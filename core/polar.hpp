@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/curve.hpp"
-#include "core/evaluate.hpp"
+#include "core/casteljau_row.hpp"
 
 namespace bezier::core {
 

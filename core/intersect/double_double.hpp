@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/error_free.hpp"
 #include "core/evaluate.hpp"
 
 namespace bezier::core::dd {

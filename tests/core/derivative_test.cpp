@@ -11,6 +11,7 @@
 // first-order error left is the final rounding.
 
 #include "core/derivative.hpp"
+#include "core/evaluate.hpp"
 
 #include <gtest/gtest.h>
 
