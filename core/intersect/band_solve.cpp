@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "core/intersect/bernstein1d.hpp"
+#include "core/intersect/fixed_extent.hpp"
 
 namespace bezier::core {
 
@@ -153,7 +154,12 @@ struct Ends {
   double right[4];
 };
 
-Ends end_pieces(const double* p, int k, double a, double b) noexcept {
+// The helpers of kept_interval take p as a span of E = k + 1 coefficients, E fixed at
+// compile time (kept_interval dispatches on the degree): their loops then unroll.
+
+template <std::size_t E>
+Ends end_pieces(std::span<const double, E> p, double a, double b) noexcept {
+  const int k = static_cast<int>(p.size()) - 1;
   Ends out{};
   double row[4];
   for (int i = 0; i <= k; ++i) row[i] = p[i];
@@ -176,7 +182,9 @@ Ends end_pieces(const double* p, int k, double a, double b) noexcept {
 namespace {
 
 /// de Casteljau value of a degree-k <= 3 polynomial.
-double value(const double* p, int k, double t) noexcept {
+template <std::size_t E>
+double value(std::span<const double, E> p, double t) noexcept {
+  const int k = static_cast<int>(p.size()) - 1;
   double row[4];
   for (int i = 0; i <= k; ++i) row[i] = p[i];
   for (int level = k; level > 0; --level) {
@@ -187,7 +195,9 @@ double value(const double* p, int k, double t) noexcept {
 
 /// The root of the monotone p(t) = level in (0, 1): Newton's method on the power form,
 /// started where the control polygon crosses the level (already within O(w^2) of it).
-double monotone_root(const double* p, const double* c, int k, double level) noexcept {
+template <std::size_t E>
+double monotone_root(std::span<const double, E> p, const double* c, double level) noexcept {
+  const int k = static_cast<int>(p.size()) - 1;
   double t = 0.5;
   for (int i = 0; i < k; ++i) {
     if ((p[i] <= level) != (p[i + 1] <= level)) {
@@ -326,9 +336,11 @@ std::optional<ParamInterval> kept_interval_cubic(const double* p, const double* 
   return ParamInterval{alpha, beta};
 }
 
-}  // namespace
-
-std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo, double hi) {
+/// kept_interval for p of E coefficients: E fixed at compile time for degrees 1 to 3 (the
+/// loops unroll and the branches on the degree fold; the arithmetic is the same), dynamic
+/// for the rest, which only take the quick exits and the hull iteration.
+template <std::size_t E>
+std::optional<ParamInterval> kept_interval_of(std::span<const double, E> p, double lo, double hi) {
   const int k = static_cast<int>(p.size()) - 1;
   double p_min = p[0], p_max = p[0];
   for (const double v : p) {
@@ -369,18 +381,18 @@ std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo,
     double alpha = 0.0, beta = 1.0;
     bool certified = true;
     if (!starts_inside) {
-      alpha = monotone_root(p.data(), c, k, enter) - kRootPad;
+      alpha = monotone_root(p, c, enter) - kRootPad;
       if (alpha > 0.0) {
-        const double v = value(p.data(), k, alpha);
+        const double v = value(p, alpha);
         certified = increasing ? v < lo - e : v > hi + e;
       } else {
         alpha = 0.0;
       }
     }
     if (certified && !ends_inside) {
-      beta = monotone_root(p.data(), c, k, leave) + kRootPad;
+      beta = monotone_root(p, c, leave) + kRootPad;
       if (beta < 1.0) {
-        const double v = value(p.data(), k, beta);
+        const double v = value(p, beta);
         certified = increasing ? v > hi + e : v < lo - e;
       } else {
         beta = 1.0;
@@ -415,7 +427,7 @@ std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo,
   if (beta < alpha) return kept_interval_by_hulls(p, lo, hi);
   alpha = alpha - kRootPad > 0 ? alpha - kRootPad : 0.0;
   beta = beta + kRootPad < 1 ? beta + kRootPad : 1.0;
-  const Ends ends = end_pieces(p.data(), k, alpha, beta);
+  const Ends ends = end_pieces(p, alpha, beta);
   const std::span<const double> left(ends.left, static_cast<std::size_t>(k + 1));
   const std::span<const double> right(ends.right, static_cast<std::size_t>(k + 1));
   if ((alpha > 0.0 && !certainly_outside(left, lo, hi, e)) ||
@@ -423,6 +435,14 @@ std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo,
     return kept_interval_by_hulls(p, lo, hi);
   }
   return ParamInterval{alpha, beta};
+}
+
+}  // namespace
+
+std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo, double hi) {
+  return with_fixed_extent(p.size(), [&](auto e) {
+    return kept_interval_of(fixed_span<decltype(e)::value>(p.data(), p.size()), lo, hi);
+  });
 }
 
 }  // namespace bezier::core

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/intersect/bernstein1d.hpp"
+#include "core/intersect/fixed_extent.hpp"
 
 namespace bezier::core {
 
@@ -26,12 +28,23 @@ Extent extent(const Piece& p) noexcept {
   return {xl - p.error, xh + p.error, yl - p.error, yh + p.error};
 }
 
+/// The least and the largest of the E values a (std::minmax_element's, without the
+/// iterators: the same comparisons on the same values).
+template <std::size_t E>
+std::pair<double, double> value_range(std::span<const double, E> a) noexcept {
+  const auto [lo, hi] = std::minmax_element(a.begin(), a.end());
+  return {*lo, *hi};
+}
+
 }  // namespace
 
 bool is_noisy(const FatLine& line, const DistanceCoefficients& d) noexcept {
-  const auto [lo, hi] = std::minmax_element(d.a.begin(), d.a.end());
+  const std::size_t size = d.a.size();
+  const auto [lo, hi] = with_fixed_extent(size, [&](auto e) {
+    return value_range(fixed_span<decltype(e)::value>(d.a.data(), size));
+  });
   const double noise = line.margin + d.error;
-  const double signal = (line.d_max - line.d_min - 2 * line.margin) + (*hi - *lo);
+  const double signal = (line.d_max - line.d_min - 2 * line.margin) + (hi - lo);
   return 4 * noise > signal;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/intersect/bernstein1d.hpp"
+#include "core/intersect/fixed_extent.hpp"
 
 namespace bezier::core {
 
@@ -10,12 +11,11 @@ namespace {
 
 constexpr double kU = bernstein::kU;
 
-/// Largest |coordinate - origin| over a piece's control points.
-double reach(const Piece& p, Point2 origin) noexcept {
-  const double* x = p.x.data();
-  const double* y = p.y.data();
+/// Largest |coordinate - origin| over a piece's control points x, y.
+template <std::size_t E>
+double reach(std::span<const double, E> x, std::span<const double, E> y, Point2 origin) noexcept {
   double r = 0.0;
-  for (std::size_t i = 0, n = p.x.size(); i < n; ++i) {
+  for (std::size_t i = 0; i < x.size(); ++i) {
     r = bernstein::max2(r, bernstein::max2(std::fabs(x[i] - origin.x), std::fabs(y[i] - origin.y)));
   }
   return r;
@@ -35,11 +35,16 @@ bool is_point_like(const Piece& p) noexcept {
   return true;
 }
 
-FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection direction) {
-  const std::size_t m = g.x.size() - 1;
-  const Point2 origin = {g.x[0], g.y[0]};
-  Point2 d = chord(g);
-  const double limit = 4 * g.error;
+namespace {
+
+/// fat_line for g's coordinates gx, gy of E = m + 1 entries (with_fixed_extent).
+template <std::size_t E>
+FatLine fat_line_of(std::span<const double, E> gx, std::span<const double, E> gy, double g_error,
+                    const Piece& other, PointLineDirection direction) {
+  const std::size_t m = gx.size() - 1;
+  const Point2 origin = {gx[0], gy[0]};
+  Point2 d = {gx[m] - gx[0], gy[m] - gy[0]};
+  const double limit = 4 * g_error;
   // The bounds for m = 2 and 3 below hold only for a line through both end points.
   bool through_ends = true;
   if (bernstein::max2(std::fabs(d.x), std::fabs(d.y)) <= limit) {
@@ -47,7 +52,7 @@ FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection directio
     // Closed or nearly closed piece: use the farthest control point instead.
     double best = 0.0;
     for (std::size_t j = 1; j <= m; ++j) {
-      const Point2 v = {g.x[j] - origin.x, g.y[j] - origin.y};
+      const Point2 v = {gx[j] - origin.x, gy[j] - origin.y};
       const double size = bernstein::max2(std::fabs(v.x), std::fabs(v.y));
       if (size > best) {
         best = size;
@@ -67,10 +72,8 @@ FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection directio
   const double n1 = std::fabs(line.normal.x) + std::fabs(line.normal.y);
   // Every exact distance is within e of the computed one: the piece's error moves a point
   // by g.error per coordinate, and the difference, two products and the sum round once each.
-  const double e = n1 * (g.error + 3.01 * kU * reach(g, origin));
+  const double e = n1 * (g_error + 3.01 * kU * reach(gx, gy, origin));
   double lo = 0.0, hi = 0.0;
-  const double* gx = g.x.data();
-  const double* gy = g.y.data();
   const auto distance = [&](std::size_t j) {
     return line.normal.x * (gx[j] - origin.x) + line.normal.y * (gy[j] - origin.y);
   };
@@ -103,19 +106,39 @@ FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection directio
   return line;
 }
 
-DistanceCoefficients distance_coefficients(const FatLine& line, const Piece& f) {
+/// distance_coefficients for f's coordinates x, y of E entries (with_fixed_extent).
+template <std::size_t E>
+DistanceCoefficients distance_coefficients_of(const FatLine& line, std::span<const double, E> x,
+                                              std::span<const double, E> y, double f_error) {
   DistanceCoefficients out;
-  const std::size_t n = f.x.size();
-  out.a = Coeffs(n, Coeffs::Uninitialized{});
+  out.a.resize(x.size());  // zeros: a few stores for a constant size, nothing moved
   double* a = out.a.data();
-  const double* x = f.x.data();
-  const double* y = f.y.data();
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < x.size(); ++i) {
     a[i] = line.normal.x * (x[i] - line.origin.x) + line.normal.y * (y[i] - line.origin.y);
   }
   const double n1 = std::fabs(line.normal.x) + std::fabs(line.normal.y);
-  out.error = n1 * (f.error + 3.01 * kU * reach(f, line.origin));
+  out.error = n1 * (f_error + 3.01 * kU * reach(x, y, line.origin));
   return out;
+}
+
+}  // namespace
+
+FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection direction) {
+  const std::size_t size = g.x.size();
+  return with_fixed_extent(size, [&](auto e) {
+    constexpr std::size_t E = decltype(e)::value;
+    return fat_line_of(fixed_span<E>(g.x.data(), size), fixed_span<E>(g.y.data(), size), g.error,
+                       other, direction);
+  });
+}
+
+DistanceCoefficients distance_coefficients(const FatLine& line, const Piece& f) {
+  const std::size_t size = f.x.size();
+  return with_fixed_extent(size, [&](auto e) {
+    constexpr std::size_t E = decltype(e)::value;
+    return distance_coefficients_of(line, fixed_span<E>(f.x.data(), size),
+                                    fixed_span<E>(f.y.data(), size), f.error);
+  });
 }
 
 }  // namespace bezier::core
