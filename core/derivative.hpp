@@ -1,10 +1,8 @@
 #pragma once
 
-#include <cassert>
 #include <vector>
 
 #include "core/curve.hpp"
-#include "core/casteljau_row.hpp"
 
 namespace bezier::core {
 
@@ -14,16 +12,8 @@ namespace bezier::core {
 /// carry their rounding errors (CasteljauRow::hodograph_step) and each control point is
 /// rounded once at the end, so it is the exact k-th hodograph point to within about one
 /// rounding, even where differences of close control points cancel.
-template <class P>
-[[nodiscard]] BasicCurve<P> derivative(const BasicCurve<P>& curve, int k) {
-  assert(k >= 0);
-  CasteljauRow<P> row(curve.points());
-  for (int i = 0; i < k; ++i) row.hodograph_step();
-  std::vector<P> points;
-  points.reserve(row.size());
-  for (std::size_t i = 0; i < row.size(); ++i) points.push_back(row.point(i));
-  return BasicCurve<P>(std::move(points));
-}
+[[nodiscard]] Curve derivative(const Curve& curve, int k);
+[[nodiscard]] Curve3 derivative(const Curve3& curve, int k);
 
 /// The hodograph B'(t) as a curve of degree n - 1 (see derivative(curve, k)). The
 /// derivative of a degree-0 curve is the zero curve of degree 0.
@@ -40,19 +30,7 @@ template <class P>
 /// This is more accurate than evaluate(derivative(curve, k), t), which rounds the hodograph
 /// points first (an extra error of about u Σ |P^(k)_i| |b_{i,n-k}(t)|).
 /// Any finite t. Precondition: order >= 0. O(order n^2).
-template <class P>
-[[nodiscard]] std::vector<P> derivatives_at(const BasicCurve<P>& curve, double t, int order) {
-  assert(order >= 0);
-  std::vector<P> values;
-  values.reserve(static_cast<std::size_t>(order));
-  CasteljauRow<P> hodograph(curve.points());
-  for (int k = 1; k <= order; ++k) {
-    hodograph.hodograph_step();
-    CasteljauRow<P> row = hodograph;
-    while (row.size() > 1) row.casteljau_step(t);
-    values.push_back(row.point(0));
-  }
-  return values;
-}
+[[nodiscard]] std::vector<Point2> derivatives_at(const Curve& curve, double t, int order);
+[[nodiscard]] std::vector<Point3> derivatives_at(const Curve3& curve, double t, int order);
 
 }  // namespace bezier::core

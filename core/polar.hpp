@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "core/curve.hpp"
-#include "core/casteljau_row.hpp"
 
 namespace bezier::core {
 
@@ -19,16 +18,8 @@ namespace bezier::core {
 /// The rounds are the compensated ones of evaluate() (CasteljauRow): each control point is
 /// within about one rounding of its exact value, and with all u_j = t the result is
 /// bit for bit what evaluate(curve, t) and subdivide(curve, t) compute.
-template <class P>
-[[nodiscard]] BasicCurve<P> polar(const BasicCurve<P>& curve, std::span<const double> us) {
-  assert(static_cast<int>(us.size()) <= curve.degree());
-  CasteljauRow<P> row(curve.points());
-  for (const double u : us) row.casteljau_step(u);
-  std::vector<P> points;
-  points.reserve(row.size());
-  for (std::size_t i = 0; i < row.size(); ++i) points.push_back(row.point(i));
-  return BasicCurve<P>(std::move(points));
-}
+[[nodiscard]] Curve polar(const Curve& curve, std::span<const double> us);
+[[nodiscard]] Curve3 polar(const Curve3& curve, std::span<const double> us);
 
 /// The first polar at t0: control points b_i^1(t0) = (1 - t0) P_i + t0 P_{i+1},
 /// i = 0..n-1, a curve of degree n - 1. Its point at t0 is B(t0), and there it is

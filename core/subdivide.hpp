@@ -1,9 +1,6 @@
 #pragma once
 
-#include <vector>
-
 #include "core/curve.hpp"
-#include "core/casteljau_row.hpp"
 
 namespace bezier::core {
 
@@ -22,20 +19,7 @@ struct Split {
 /// bit with each other and with evaluate(curve, t): the same steps compute it. Any finite
 /// t is allowed (t outside [0,1] gives the extrapolated pieces). For a piece [a, b], see
 /// portion() in polar.hpp.
-template <class P>
-[[nodiscard]] Split<P> subdivide(const BasicCurve<P>& curve, double t) {
-  CasteljauRow<P> row(curve.points());
-  const std::size_t n = row.size() - 1;
-  std::vector<P> left(n + 1);
-  std::vector<P> right(n + 1);
-  left[0] = row.point(0);
-  right[n] = row.point(n);
-  for (std::size_t k = 1; k <= n; ++k) {
-    row.casteljau_step(t);
-    left[k] = row.point(0);
-    right[n - k] = row.point(n - k);
-  }
-  return {BasicCurve<P>(std::move(left)), BasicCurve<P>(std::move(right))};
-}
+[[nodiscard]] Split<Point2> subdivide(const Curve& curve, double t);
+[[nodiscard]] Split<Point3> subdivide(const Curve3& curve, double t);
 
 }  // namespace bezier::core
