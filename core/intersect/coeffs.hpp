@@ -43,13 +43,16 @@ class SmallArray {
   explicit SmallArray(std::size_t n, T value = T{}) { resize(n, value); }
   /// n entries left unset, for buffers that are written before they are read.
   struct Uninitialized {};
-  SmallArray(std::size_t n, Uninitialized) {
-    if (n > kInline) heap_.resize(n);
-    size_ = n;
-  }
+  SmallArray(std::size_t n, Uninitialized) { resize(n, Uninitialized{}); }
   explicit SmallArray(std::span<const T> values) {
     resize(values.size());
     std::copy(values.begin(), values.end(), data());
+  }
+
+  /// Size n with the entries left unset (heap entries beyond kInline value-initialised).
+  void resize(std::size_t n, Uninitialized) {
+    if (n > kInline) heap_.resize(n);
+    size_ = n;
   }
 
   void resize(std::size_t n, T value = T{}) {

@@ -176,10 +176,6 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   in.s_free = wg.is_point;
   in.t_range = wf.is_point ? ParamInterval{0.0, 1.0} : t_range;
   in.s_range = wg.is_point ? ParamInterval{0.0, 1.0} : s_range;
-  const FatCurveOperator op_f2 = fat_curve_operator(wf.degree, 2),
-                         op_g2 = fat_curve_operator(wg.degree, 2);
-  in.op_f2 = &op_f2;
-  in.op_g2 = &op_g2;
   FatCurveOperator op_f, op_g;
   if (options.method != IntersectMethod::subdivision) {
     // Bézier clipping bounds the distance function itself: no reduction (k >= n; a point

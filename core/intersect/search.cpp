@@ -1,8 +1,10 @@
 #include "core/intersect/search.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 
 #include "core/intersect/bernstein1d.hpp"
@@ -28,6 +30,15 @@ struct Box {
   /// The box's larger width when the Krawczyk test last failed on it (or an ancestor).
   double krawczyk_failed_at = INFINITY;
 };
+
+/// 2^ilogb(x), i.e. std::ldexp(1.0, std::ilogb(x)): for a positive normal x its bits with
+/// the significand cleared, without the two library calls (every search pays them once).
+double power_of_two_at_most(double x) noexcept {
+  constexpr std::uint64_t kExponentBits = 0x7ff0000000000000;
+  const std::uint64_t exponent = std::bit_cast<std::uint64_t>(x) & kExponentBits;
+  if (x > 0 && exponent != 0 && exponent != kExponentBits) return std::bit_cast<double>(exponent);
+  return std::ldexp(1.0, std::ilogb(x));
+}
 
 /// The two halves of an interval, or nothing when it is too narrow to split in doubles.
 struct Halves {
@@ -129,7 +140,7 @@ class Searcher {
  public:
   explicit Searcher(const SearchInput& input)
       : in_(input),
-        krawczyk_radius_(std::ldexp(1.0, std::ilogb(input.width / 2))),
+        krawczyk_radius_(power_of_two_at_most(input.width / 2)),
         use_krawczyk_(input.method == IntersectMethod::hybrid && !input.t_free && !input.s_free &&
                       krawczyk_radius_ >= 0x1p-52 && krawczyk_radius_ <= 0x1p-2) {
     out_.stats.method = input.method;
@@ -195,6 +206,14 @@ class Searcher {
     f_ok_ = g_ok_ = true;
   }
 
+  /// The degree-2 fits of f's (of_f) or g's pieces for implicit_clip, built on first use:
+  /// most searches never need them.
+  const FatCurveOperator& fit2(bool of_f) {
+    std::optional<FatCurveOperator>& op = of_f ? f_fit2_ : g_fit2_;
+    if (!op) op = fat_curve_operator((of_f ? in_.f : in_.g)->degree, 2);
+    return *op;
+  }
+
   [[nodiscard]] bool covered(const Box& b) const {
     for (const OverlapFinding& o : in_.overlaps) {
       if (covered_by_overlap(*in_.f, o.map, b.t, b.s)) return true;
@@ -258,8 +277,8 @@ class Searcher {
         const bool parallel = nearly_parallel(f_piece_, g_piece_);
         if (parallel) out_.stats.work += implicit_clip_cost(in_.f->degree) + implicit_clip_cost(in_.g->degree);
         if (parallel &&
-            (!implicit_clip(f_piece_, g_piece_, *in_.op_g2).kept ||
-             !implicit_clip(g_piece_, f_piece_, *in_.op_f2).kept)) {
+            (!implicit_clip(f_piece_, g_piece_, fit2(false)).kept ||
+             !implicit_clip(g_piece_, f_piece_, fit2(true)).kept)) {
           return;
         }
         if (sep.noisy) {
@@ -300,7 +319,7 @@ class Searcher {
           (in_.method != IntersectMethod::hybrid ||
            std::max(box.t.width(), box.s.width()) <= kImplicitClipWidth) &&
           nearly_parallel(x, other)) {
-        const Clip fine = implicit_clip(x, other, clip_s ? *in_.op_f2 : *in_.op_g2);
+        const Clip fine = implicit_clip(x, other, fit2(clip_s));
         ++out_.stats.clipping_steps;
         out_.stats.work += implicit_clip_cost(x.degree());
         clip.kept = intersect_kept(clip.kept, fine.kept);
@@ -397,6 +416,7 @@ class Searcher {
   BoxStack stack_;
   Piece f_piece_, g_piece_;
   bool f_ok_ = false, g_ok_ = false;
+  std::optional<FatCurveOperator> f_fit2_, g_fit2_;
 };
 
 }  // namespace

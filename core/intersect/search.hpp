@@ -31,8 +31,6 @@ struct SearchInput {
   std::int64_t max_work = 1000000;
   const FatCurveOperator* op_f = nullptr;   ///< fat curves of f's pieces (hybrid)
   const FatCurveOperator* op_g = nullptr;   ///< fat curves of g's pieces (hybrid)
-  const FatCurveOperator* op_f2 = nullptr;  ///< degree-2 fits of f's pieces (implicit_clip)
-  const FatCurveOperator* op_g2 = nullptr;  ///< degree-2 fits of g's pieces (implicit_clip)
   std::span<const OverlapFinding> overlaps;
   bool t_free = false;
   bool s_free = false;

@@ -4,8 +4,10 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "core/intersect/bernstein1d.hpp"
+#include "core/intersect/fixed_extent.hpp"
 
 namespace bezier::core {
 
@@ -97,12 +99,12 @@ WorkingFrame working_frame(const Curve& f, const Curve& g) {
 
 WorkingCurve to_working(const Curve& curve, WorkingFrame frame) {
   const std::size_t count = curve.points().size();
-  // Members built in place, unfilled: every entry is written below.
-  WorkingCurve w{.degree = curve.degree(),
-                 .x = Coeffs(count, Coeffs::Uninitialized{}),
-                 .y = Coeffs(count, Coeffs::Uninitialized{}),
-                 .x_lo = Coeffs(count, Coeffs::Uninitialized{}),
-                 .y_lo = Coeffs(count, Coeffs::Uninitialized{})};
+  // Default-initialised, then sized with the entries unset (every one is written below):
+  // brace-initialising the aggregate made GCC zero all of its inline storage first, about
+  // 900 bytes per curve.
+  WorkingCurve w;
+  w.degree = curve.degree();
+  for (Coeffs* c : {&w.x, &w.y, &w.x_lo, &w.y_lo}) c->resize(count, Coeffs::Uninitialized{});
   const PowerOfTwo scale(frame.exponent);
   double* const x_hi = w.x.data();
   double* const y_hi = w.y.data();
@@ -179,7 +181,8 @@ namespace {
 
 /// de Casteljau down to the last level in the buffers xs, ys (overwritten), for
 /// evaluate_with_tangent.
-PointAndTangent point_and_tangent_in(double* xs, double* ys, std::size_t n, double t) noexcept {
+inline PointAndTangent point_and_tangent_in(double* xs, double* ys, std::size_t n,
+                                            double t) noexcept {
   for (std::size_t level = n; level > 1; --level) {
     for (std::size_t k = 0; k < level; ++k) {
       xs[k] = bernstein::lerp(xs[k], xs[k + 1], t);
@@ -197,7 +200,21 @@ PointAndTangent evaluate_with_tangent(const WorkingCurve& f, double t) {
   const std::size_t n = f.x.size() - 1;
   if (n == 0) return {{f.x[0], f.y[0]}, {0.0, 0.0}};
   // Called at every contact and in every refinement step: plain stack buffers for the
-  // degrees a piece holds inline, no copies of whole SmallArrays.
+  // degrees a piece holds inline, no copies of whole SmallArrays; of a size fixed at
+  // compile time for degrees 1 to 3 (the loops unroll).
+  const std::optional<PointAndTangent> fixed =
+      with_fixed_extent(n + 1, [&](auto e) -> std::optional<PointAndTangent> {
+        constexpr std::size_t E = decltype(e)::value;
+        if constexpr (E == std::dynamic_extent) {
+          return std::nullopt;
+        } else {
+          double xs[E], ys[E];
+          std::copy(f.x.begin(), f.x.end(), xs);
+          std::copy(f.y.begin(), f.y.end(), ys);
+          return point_and_tangent_in(xs, ys, E - 1, t);
+        }
+      });
+  if (fixed) return *fixed;
   if (n + 1 <= Coeffs::kInline) {
     double xs[Coeffs::kInline], ys[Coeffs::kInline];
     std::copy(f.x.begin(), f.x.end(), xs);
