@@ -15,17 +15,29 @@ struct Extent {
   double x_lo, x_hi, y_lo, y_hi;
 };
 
-Extent extent(const Piece& p) noexcept {
-  const double* x = p.x.data();
-  const double* y = p.y.data();
+/// The control box of a piece's coordinates x, y (E entries, with_fixed_extent), widened by
+/// its error bound.
+template <std::size_t E>
+Extent extent_of(std::span<const double, E> x, std::span<const double, E> y,
+                 double error) noexcept {
   double xl = x[0], xh = x[0], yl = y[0], yh = y[0];
-  for (std::size_t i = 1, n = p.x.size(); i < n; ++i) {
+  for (std::size_t i = 1; i < x.size(); ++i) {
     xl = x[i] < xl ? x[i] : xl;
     xh = x[i] > xh ? x[i] : xh;
     yl = y[i] < yl ? y[i] : yl;
     yh = y[i] > yh ? y[i] : yh;
   }
-  return {xl - p.error, xh + p.error, yl - p.error, yh + p.error};
+  return {xl - error, xh + error, yl - error, yh + error};
+}
+
+template <std::size_t E>
+Extent extent(const Piece& p) noexcept {
+  const std::size_t size = p.x.size();
+  return extent_of(fixed_span<E>(p.x.data(), size), fixed_span<E>(p.y.data(), size), p.error);
+}
+
+bool disjoint(const Extent& a, const Extent& b) noexcept {
+  return a.x_hi < b.x_lo || b.x_hi < a.x_lo || a.y_hi < b.y_lo || b.y_hi < a.y_lo;
 }
 
 /// The least and the largest of the E values a (std::minmax_element's, without the
@@ -49,8 +61,13 @@ bool is_noisy(const FatLine& line, const DistanceCoefficients& d) noexcept {
 }
 
 bool bounding_boxes_disjoint(const Piece& f, const Piece& g) noexcept {
-  const Extent a = extent(f), b = extent(g);
-  return a.x_hi < b.x_lo || b.x_hi < a.x_lo || a.y_hi < b.y_lo || b.y_hi < a.y_lo;
+  // One dispatch for both pieces when their degrees agree (every step of two cubics).
+  if (f.x.size() == g.x.size()) {
+    return with_fixed_extent(f.x.size(), [&](auto e) {
+      return disjoint(extent<decltype(e)::value>(f), extent<decltype(e)::value>(g));
+    });
+  }
+  return disjoint(extent<std::dynamic_extent>(f), extent<std::dynamic_extent>(g));
 }
 
 ParamInterval map_to_domain(ParamInterval domain, ParamInterval local) noexcept {
