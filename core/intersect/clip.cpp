@@ -52,9 +52,8 @@ std::pair<double, double> value_range(std::span<const double, E> a) noexcept {
 
 bool is_noisy(const FatLine& line, const DistanceCoefficients& d) noexcept {
   const std::size_t size = d.a.size();
-  const auto [lo, hi] = with_fixed_extent(size, [&](auto e) {
-    return value_range(fixed_span<decltype(e)::value>(d.a.data(), size));
-  });
+  const auto [lo, hi] = with_fixed_extent(
+      size, [&](auto e) { return value_range(fixed_span<decltype(e)::value>(d.a.data(), size)); });
   const double noise = line.margin + d.error;
   const double signal = (line.d_max - line.d_min - 2 * line.margin) + (hi - lo);
   return 4 * noise > signal;

@@ -275,10 +275,10 @@ class Searcher {
         const Separation sep = separation(f_piece_, g_piece_);
         if (sep.separated) return;
         const bool parallel = nearly_parallel(f_piece_, g_piece_);
-        if (parallel) out_.stats.work += implicit_clip_cost(in_.f->degree) + implicit_clip_cost(in_.g->degree);
-        if (parallel &&
-            (!implicit_clip(f_piece_, g_piece_, fit2(false)).kept ||
-             !implicit_clip(g_piece_, f_piece_, fit2(true)).kept)) {
+        if (parallel)
+          out_.stats.work += implicit_clip_cost(in_.f->degree) + implicit_clip_cost(in_.g->degree);
+        if (parallel && (!implicit_clip(f_piece_, g_piece_, fit2(false)).kept ||
+                         !implicit_clip(g_piece_, f_piece_, fit2(true)).kept)) {
           return;
         }
         if (sep.noisy) {

@@ -29,8 +29,8 @@ struct SearchInput {
   IntersectMethod method = IntersectMethod::hybrid;
   double width = 0x1p-42;  ///< boxes narrower than this in t and s are done (search_width)
   std::int64_t max_work = 1000000;
-  const FatCurveOperator* op_f = nullptr;   ///< fat curves of f's pieces (hybrid)
-  const FatCurveOperator* op_g = nullptr;   ///< fat curves of g's pieces (hybrid)
+  const FatCurveOperator* op_f = nullptr;  ///< fat curves of f's pieces (hybrid)
+  const FatCurveOperator* op_g = nullptr;  ///< fat curves of g's pieces (hybrid)
   std::span<const OverlapFinding> overlaps;
   bool t_free = false;
   bool s_free = false;
