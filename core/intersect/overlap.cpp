@@ -1,11 +1,13 @@
 #include "core/intersect/overlap.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/binomial.hpp"
 #include "core/degree.hpp"
 #include "core/intersect/bernstein1d.hpp"
+#include "core/intersect/fixed_extent.hpp"
 
 namespace bezier::core {
 
@@ -17,10 +19,12 @@ constexpr double kShortestOverlap = 0x1p-30;
 
 /// Monomial coefficients a_k = C(n,k) Δ^k P_0 of one coordinate (Δ^k: the k-th forward
 /// difference of the control points; Farin, §5.4), by repeated differences in place.
-Coeffs monomial(std::span<const double> c) {
-  const std::size_t n = c.size() - 1;
-  Coeffs d(c);
-  Coeffs a(c.size(), 0.0);
+/// The differences for monomial, in place in d (E entries, with_fixed_extent: a constant
+/// number for degrees 1 to 3, so the loops unroll).
+template <std::size_t E>
+Coeffs monomial_from(std::span<double, E> d) {
+  const std::size_t n = d.size() - 1;
+  Coeffs a(d.size(), Coeffs::Uninitialized{});
   double choose = 1.0;  // C(n, k), exact for the degrees accepted
   for (std::size_t k = 0; k <= n; ++k) {
     a[k] = choose * d[0];
@@ -28,6 +32,20 @@ Coeffs monomial(std::span<const double> c) {
     choose = choose * static_cast<double>(n - k) / static_cast<double>(k + 1);
   }
   return a;
+}
+
+Coeffs monomial(std::span<const double> c) {
+  return with_fixed_extent(c.size(), [&](auto e) {
+    constexpr std::size_t E = decltype(e)::value;
+    if constexpr (E == std::dynamic_extent) {
+      Coeffs d(c);
+      return monomial_from(d.span());
+    } else {
+      std::array<double, E> d;
+      std::copy(c.begin(), c.end(), d.begin());
+      return monomial_from(std::span<double, E>(d));
+    }
+  });
 }
 
 /// The largest k whose monomial coefficient is above the rounding of the conversion
