@@ -14,10 +14,20 @@ ParsedConfig parse_config(int argc, char** argv) {
   app.add_option("--host", config.host, "Address to bind")->envname("BEZIER_HOST")->capture_default_str();
   app.add_option("--port", config.port, "Port to listen on (0 picks a free port)")
       ->envname("BEZIER_PORT")->check(CLI::Range(0, 65535))->capture_default_str();
-  app.add_option("--threads", config.threads, "Worker threads kept running")
+  std::string engine = "httplib";
+  app.add_option("--http-engine", engine,
+                 "HTTP front end: httplib (a thread per connection) or epoll (event loops + compute pool)")
+      ->envname("BEZIER_HTTP_ENGINE")->check(CLI::IsMember({"httplib", "epoll"}))->capture_default_str();
+  app.add_option("--threads", config.threads,
+                 "Worker threads (httplib: kept running; epoll: the compute pool)")
       ->envname("BEZIER_THREADS")->check(CLI::Range(1, 1024))->capture_default_str();
+  app.add_option("--io-threads", config.io_threads, "epoll engine: event loops, 0 = one per core")
+      ->envname("BEZIER_IO_THREADS")->check(CLI::Range(0, 256))->capture_default_str();
+  app.add_option("--max-queued-requests", config.max_queued_requests,
+                 "epoll engine: requests waiting for a compute thread (503 beyond)")
+      ->envname("BEZIER_MAX_QUEUED_REQUESTS")->check(CLI::Range(1, 1000000))->capture_default_str();
   app.add_option("--max-connections", config.max_connections,
-                 "Most connections served at once (a thread each; beyond it they queue)")
+                 "Most connections served at once (httplib: a thread each, beyond it they queue; epoll: beyond it 503)")
       ->envname("BEZIER_MAX_CONNECTIONS")->check(CLI::Range(1, 65536))->capture_default_str();
   app.add_option("--keep-alive-timeout", config.keep_alive_timeout_s, "Seconds an idle keep-alive connection stays open")
       ->envname("BEZIER_KEEP_ALIVE_TIMEOUT")->check(CLI::Range(0, 3600))->capture_default_str();
@@ -57,6 +67,7 @@ ParsedConfig parse_config(int argc, char** argv) {
     return {std::nullopt, code, out.str()};
   }
   config.log_format = format == "json" ? LogFormat::json : LogFormat::text;
+  config.http_engine = engine == "epoll" ? HttpEngineKind::epoll : HttpEngineKind::httplib;
   return {config, 0, {}};
 }
 

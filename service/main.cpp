@@ -65,8 +65,9 @@ int main(int argc, char** argv) {
   // connections made now wait in the backlog until serve() takes them).
   std::printf("listening on http://%s:%d\n", config.host.c_str(), port);
   std::fflush(stdout);
-  log.info("threads={} max_connections={} max_degree={} max_body_bytes={}", config.threads,
-               config.max_connections, config.limits.max_degree, config.limits.max_body_bytes);
+  log.info("http_engine={} threads={} max_connections={} max_degree={} max_body_bytes={}",
+           config.http_engine == HttpEngineKind::epoll ? "epoll" : "httplib", config.threads,
+           config.max_connections, config.limits.max_degree, config.limits.max_body_bytes);
   const bool served = server.serve();
   {
     const std::lock_guard lock(exit_mutex);

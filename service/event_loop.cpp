@@ -1,0 +1,447 @@
+#include "service/event_loop.hpp"
+
+#include <cerrno>
+#include <cstring>
+
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/epoll.h>
+#include <sys/eventfd.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include "service/http_problem.hpp"
+#include "service/inline_policy.hpp"
+
+namespace bezier::service {
+
+namespace {
+
+constexpr std::uint64_t kListenerId = 0;
+constexpr std::uint64_t kWakeId = 1;
+// Reading stops while this much output waits for a slow reader (backpressure against a
+// client that pipelines requests and never reads the answers).
+constexpr std::size_t kMaxBufferedOutput = 1 << 20;
+
+constexpr std::string_view kContinue = "HTTP/1.1 100 Continue\r\n\r\n";
+
+// How long a connection we close is drained after its last answer (see begin_lingering).
+constexpr std::chrono::seconds kLingerTime{2};
+
+}  // namespace
+
+struct EventLoop::Pending {
+  Exchange exchange;
+  std::string method;
+  std::string path;
+  WireOptions wire;
+};
+
+struct EventLoop::Completion {
+  std::uint64_t connection;
+  std::shared_ptr<Pending> pending;
+  Response response;
+};
+
+struct EventLoop::Connection {
+  Connection(int socket, std::uint64_t connection_id, ParserLimits limits, Clock::time_point now)
+      : fd(socket), id(connection_id), parser(limits), idle_since(now) {}
+
+  int fd;
+  std::uint64_t id;
+  HttpRequestParser parser;
+  std::string in;  ///< received, not yet given to the parser (pipelined, or while busy)
+  std::size_t in_pos = 0;
+  std::string out;  ///< answers not yet sent
+  std::size_t out_pos = 0;
+  std::uint32_t interest = 0;   ///< the epoll events registered
+  bool busy = false;            ///< a request of this connection is on the compute pool
+  bool close_after_write = false;
+  bool peer_closed = false;     ///< the client shut down its side: answer, then close
+  bool continue_sent = false;
+  bool lingering = false;       ///< answered and shut down for writing; input is discarded
+  int served = 0;
+  Clock::time_point request_start{};  ///< first byte of the request being read
+  Clock::time_point idle_since;       ///< last answer sent (keep-alive idle timeout)
+  Clock::time_point write_since{};    ///< output has been waiting since (write timeout)
+  Clock::time_point linger_since{};
+};
+
+EventLoop::EventLoop(Shared shared, int listen_fd)
+    : shared_(shared),
+      config_(shared.router.config()),
+      parser_limits_{ParserLimits{}.max_head_bytes, config_.limits.max_body_bytes},
+      inline_limits_(InlinePolicy::limits(config_.limits)),
+      listen_fd_(listen_fd) {
+  epoll_fd_ = epoll_create1(EPOLL_CLOEXEC);
+  wake_fd_ = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
+  epoll_event ev{};
+  ev.events = EPOLLIN;
+  ev.data.u64 = kListenerId;
+  epoll_ctl(epoll_fd_, EPOLL_CTL_ADD, listen_fd_, &ev);
+  ev.data.u64 = kWakeId;
+  epoll_ctl(epoll_fd_, EPOLL_CTL_ADD, wake_fd_, &ev);
+}
+
+EventLoop::~EventLoop() {
+  for (auto& [id, c] : connections_) ::close(c->fd);
+  if (listen_fd_ >= 0) ::close(listen_fd_);
+  if (wake_fd_ >= 0) ::close(wake_fd_);
+  if (epoll_fd_ >= 0) ::close(epoll_fd_);
+}
+
+void EventLoop::stop() {
+  stop_requested_.store(true);
+  const std::uint64_t one = 1;
+  [[maybe_unused]] const auto n = ::write(wake_fd_, &one, sizeof one);
+}
+
+bool EventLoop::run() {
+  if (epoll_fd_ < 0 || wake_fd_ < 0) return false;
+  std::vector<epoll_event> events(256);
+  for (;;) {
+    if (stop_requested_.load() && !stopping_) begin_stopping();
+    if (stopping_ && connections_.empty()) return true;
+    const int n = epoll_wait(epoll_fd_, events.data(), static_cast<int>(events.size()),
+                             static_cast<int>(kSweepInterval.count()));
+    if (n < 0 && errno != EINTR) return false;
+    for (int i = 0; i < n; ++i) on_event(events[static_cast<std::size_t>(i)].data.u64,
+                                         events[static_cast<std::size_t>(i)].events);
+    const auto now = Clock::now();
+    if (now >= next_sweep_) {
+      sweep(now);
+      next_sweep_ = now + kSweepInterval;
+    }
+  }
+}
+
+void EventLoop::on_event(std::uint64_t id, std::uint32_t events) {
+  if (id == kListenerId) return accept_all();
+  if (id == kWakeId) {
+    std::uint64_t count = 0;
+    [[maybe_unused]] const auto n = ::read(wake_fd_, &count, sizeof count);
+    return take_completions();
+  }
+  const auto found = connections_.find(id);
+  if (found == connections_.end()) return;
+  Connection& c = *found->second;
+  // EPOLLHUP: both directions are shut (a reset, or the client closed while we had
+  // shut ours): nothing can be delivered any more. It is reported whatever the interest,
+  // so it must close here or the loop would spin on it.
+  if (events & (EPOLLERR | EPOLLHUP)) return close(id);
+  if (events & EPOLLIN) read(c);
+  if (connections_.count(id) != 0 && (events & EPOLLOUT)) flush(c);
+}
+
+void EventLoop::accept_all() {
+  while (!stopping_) {
+    const int fd = accept4(listen_fd_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+    if (fd < 0) {
+      // EMFILE and the like: leave the connection in the backlog and retry on the
+      // next sweep's readiness rather than spinning.
+      return;
+    }
+    // Without TCP_NODELAY each keep-alive answer waits for the client's delayed ACK.
+    const int one = 1;
+    setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+    if (shared_.open_connections.fetch_add(1) >= config_.max_connections) {
+      shared_.open_connections.fetch_sub(1);
+      // Over the limit: a best-effort 503 on the fresh socket (its buffer is empty, so
+      // a short answer fits), then close.
+      std::string out;
+      Response busy = http_problem(503, "the service holds its maximum number of connections");
+      busy.headers.emplace_back("Retry-After", "1");
+      append_response(out, busy, WireOptions{1, false, false, 0, {}});
+      [[maybe_unused]] const auto n = ::send(fd, out.data(), out.size(), MSG_NOSIGNAL);
+      ::close(fd);
+      shared_.router.finish_unrouted("-", "-", 503);
+      continue;
+    }
+    const std::uint64_t id = next_id_++;
+    auto c = std::make_unique<Connection>(fd, id, parser_limits_, Clock::now());
+    Connection& ref = *c;
+    connections_.emplace(id, std::move(c));
+    epoll_event ev{};
+    ev.events = EPOLLIN;
+    ev.data.u64 = id;
+    epoll_ctl(epoll_fd_, EPOLL_CTL_ADD, fd, &ev);
+    ref.interest = EPOLLIN;
+  }
+}
+
+void EventLoop::read(Connection& c) {
+  char buffer[64 * 1024];
+  const ssize_t n = ::recv(c.fd, buffer, sizeof buffer, 0);
+  if (n < 0) {
+    if (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR) return;
+    return close(c.id);
+  }
+  if (c.lingering) {
+    if (n == 0) close(c.id);  // the client has read our answer and closed: done
+    return;
+  }
+  if (n == 0) {
+    // The client shut down its sending side (or closed): what it sent is still
+    // answered, then the connection closes.
+    c.peer_closed = true;
+    if (c.busy || c.out_pos < c.out.size()) return update_interest(c);
+    if (!c.parser.started() && c.in_pos == c.in.size()) return close(c.id);
+  } else {
+    c.in.append(buffer, static_cast<std::size_t>(n));
+  }
+  process(c);
+}
+
+void EventLoop::process(Connection& c) {
+  const std::uint64_t id = c.id;
+  while (!c.busy && !c.close_after_write && c.in_pos < c.in.size()) {
+    if (!c.parser.started()) c.request_start = Clock::now();
+    const auto progress = c.parser.feed(std::string_view(c.in).substr(c.in_pos));
+    c.in_pos += progress.used;
+    if (progress.state == HttpRequestParser::State::need_more) {
+      const HttpRequest& r = c.parser.request();
+      if (c.parser.awaiting_body() && r.expect_continue && !c.continue_sent) {
+        // curl waits up to a second for this before sending a body over 1 KiB.
+        c.out += kContinue;
+        c.continue_sent = true;
+      }
+      break;
+    }
+    if (progress.state == HttpRequestParser::State::error) {
+      refuse(c, c.parser.error().status, c.parser.error().detail);
+      break;
+    }
+    dispatch(c);
+  }
+  if (c.in_pos == c.in.size()) {
+    c.in.clear();
+    c.in_pos = 0;
+  } else if (c.in_pos > 64 * 1024) {
+    c.in.erase(0, c.in_pos);
+    c.in_pos = 0;
+  }
+  if (c.peer_closed && !c.busy && c.parser.started()) {
+    // The stream ended in the middle of a request: nothing more will come.
+    refuse(c, 400, "the connection ended in the middle of a request");
+  }
+  flush(c);
+  if (connections_.count(id) != 0) update_interest(c);
+}
+
+void EventLoop::dispatch(Connection& c) {
+  HttpRequest& request = c.parser.request();
+  const RequestView view{request.method, request.path,
+                         [&request](std::string_view name) { return request.header(name); }, request.body};
+  Router& router = shared_.router;
+  Exchange exchange = router.begin(view);
+  ++c.served;
+  WireOptions wire;
+  wire.minor_version = request.minor_version;
+  wire.keep_alive = request.keep_alive && !stopping_ && !c.peer_closed &&
+                    c.served < config_.keep_alive_max_requests;
+  wire.head_only = request.method == "HEAD";
+  wire.keep_alive_timeout_s = config_.keep_alive_timeout_s;
+
+  const auto finish_here = [&](const Response& response) {
+    wire.request_id = exchange.id;
+    respond(c, response, wire);
+    router.finish(exchange, request.method, request.path, response.status);
+    c.parser.reset();
+    c.continue_sent = false;
+  };
+
+  if (auto answer = router.answer(view)) return finish_here(*answer);
+  if (InlinePolicy::may_try(request.body.size())) {
+    Response inline_answer = router.compute(request.path, request.body, inline_limits_);
+    if (InlinePolicy::is_final(inline_answer)) return finish_here(inline_answer);
+  }
+
+  // To the compute pool: the task owns copies of what it needs, the connection waits
+  // (reading stops) and its next pipelined request stays in `in` until the answer.
+  auto pending = std::make_shared<Pending>(
+      Pending{std::move(exchange), std::string(request.method), std::string(request.path), wire});
+  auto body = std::make_shared<std::string>(std::move(request.body));
+  const std::uint64_t id = c.id;
+  const bool queued = shared_.pool.submit([this, id, pending, body] {
+    Response response = shared_.router.compute(pending->path, *body, config_.limits);
+    {
+      const std::lock_guard lock(completions_mutex_);
+      completions_.push_back({id, pending, std::move(response)});
+    }
+    const std::uint64_t one = 1;
+    [[maybe_unused]] const auto n = ::write(wake_fd_, &one, sizeof one);
+  });
+  if (!queued) {
+    Response full = http_problem(503, "the compute queue is full");
+    full.headers.emplace_back("Retry-After", "1");
+    pending->wire.request_id = pending->exchange.id;
+    respond(c, full, pending->wire);
+    router.finish(pending->exchange, pending->method, pending->path, full.status);
+    c.parser.reset();
+    c.continue_sent = false;
+    return;
+  }
+  c.busy = true;
+  c.parser.reset();
+  c.continue_sent = false;
+}
+
+void EventLoop::take_completions() {
+  std::vector<Completion> done;
+  {
+    const std::lock_guard lock(completions_mutex_);
+    done.swap(completions_);
+  }
+  for (Completion& completion : done) {
+    Pending& p = *completion.pending;
+    shared_.router.finish(p.exchange, p.method, p.path, completion.response.status);
+    const auto found = connections_.find(completion.connection);
+    if (found == connections_.end()) continue;  // the client went away meanwhile
+    Connection& c = *found->second;
+    c.busy = false;
+    // Stopping may have begun while it computed: the answer then closes the connection.
+    p.wire.keep_alive = p.wire.keep_alive && !stopping_;
+    p.wire.request_id = p.exchange.id;
+    respond(c, completion.response, p.wire);
+    process(c);  // the pipelined requests that waited, then flush
+  }
+}
+
+void EventLoop::respond(Connection& c, const Response& response, const WireOptions& wire) {
+  append_response(c.out, response, wire);
+  if (!wire.keep_alive) c.close_after_write = true;
+}
+
+void EventLoop::refuse(Connection& c, int status, std::string detail) {
+  // After a framing error the stream cannot be trusted to be at a request boundary:
+  // answer and close. What was parsed of the request (for a 413, its whole head) still
+  // gives the log line its method and path and the answer the client's X-Request-Id.
+  const HttpRequest& request = c.parser.request();
+  const RequestView view{request.method, request.path,
+                         [&request](std::string_view name) { return request.header(name); }, {}};
+  const Exchange exchange = shared_.router.begin(view);
+  const Response response = http_problem(status, std::move(detail));
+  respond(c, response, WireOptions{1, false, false, 0, exchange.id});
+  shared_.router.finish(exchange, request.method.empty() ? "-" : request.method,
+                        request.path.empty() ? "-" : request.path, status);
+  c.parser.reset();
+}
+
+void EventLoop::flush(Connection& c) {
+  while (c.out_pos < c.out.size()) {
+    const ssize_t n = ::send(c.fd, c.out.data() + c.out_pos, c.out.size() - c.out_pos, MSG_NOSIGNAL);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      if (errno == EAGAIN || errno == EWOULDBLOCK) break;
+      return close(c.id);
+    }
+    c.out_pos += static_cast<std::size_t>(n);
+    c.write_since = Clock::now();  // progress: the write timeout starts again
+  }
+  if (c.out_pos == c.out.size()) {
+    c.out.clear();
+    c.out_pos = 0;
+    if (!c.busy) {
+      if (c.close_after_write) return begin_lingering(c);
+      if (c.peer_closed && !c.parser.started() && c.in_pos == c.in.size()) return close(c.id);
+      if (!c.parser.started()) c.idle_since = Clock::now();
+    }
+  } else if (c.write_since == Clock::time_point{}) {
+    c.write_since = Clock::now();
+  }
+  update_interest(c);
+}
+
+void EventLoop::begin_lingering(Connection& c) {
+  // Closing a socket with unread input makes the kernel send a reset, which can destroy
+  // our answer before the client reads it: a 413 for a body still being sent, or the
+  // answers before a "Connection: close" to a client that pipelined more. So the
+  // sending side is shut down (the client sees the end of the answer) and what still
+  // arrives is read and discarded until the client closes, for at most kLingerTime
+  // (RFC 9112 §9.6).
+  if (c.peer_closed || c.lingering) return close(c.id);
+  ::shutdown(c.fd, SHUT_WR);
+  c.lingering = true;
+  c.linger_since = Clock::now();
+  c.in.clear();
+  c.in_pos = 0;
+  epoll_event ev{};
+  ev.events = EPOLLIN;
+  ev.data.u64 = c.id;
+  epoll_ctl(epoll_fd_, EPOLL_CTL_MOD, c.fd, &ev);
+  c.interest = EPOLLIN;
+}
+
+void EventLoop::update_interest(Connection& c) {
+  if (c.lingering) return;
+  std::uint32_t want = 0;
+  const bool output_waiting = c.out_pos < c.out.size();
+  if (!c.busy && !c.peer_closed && !c.close_after_write && c.out.size() - c.out_pos < kMaxBufferedOutput) {
+    want |= EPOLLIN;
+  }
+  if (output_waiting) want |= EPOLLOUT;
+  if (!output_waiting) c.write_since = {};
+  if (want == c.interest) return;
+  epoll_event ev{};
+  ev.events = want;
+  ev.data.u64 = c.id;
+  epoll_ctl(epoll_fd_, EPOLL_CTL_MOD, c.fd, &ev);
+  c.interest = want;
+}
+
+void EventLoop::close(std::uint64_t id) {
+  const auto found = connections_.find(id);
+  if (found == connections_.end()) return;
+  epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, found->second->fd, nullptr);
+  ::close(found->second->fd);
+  connections_.erase(found);
+  shared_.open_connections.fetch_sub(1);
+}
+
+bool EventLoop::idle(const Connection& c) const noexcept {
+  return !c.busy && !c.parser.started() && c.in_pos == c.in.size() && c.out_pos == c.out.size();
+}
+
+void EventLoop::sweep(Clock::time_point now) {
+  const auto read_timeout = std::chrono::seconds(config_.read_timeout_s);
+  const auto write_timeout = std::chrono::seconds(config_.write_timeout_s);
+  const auto idle_timeout = std::chrono::seconds(config_.keep_alive_timeout_s);
+  std::vector<std::uint64_t> to_close;
+  std::vector<std::uint64_t> timed_out;
+  for (auto& [id, c] : connections_) {
+    if (c->busy) continue;  // its answer is being computed, bounded by the work cap
+    if (c->lingering) {
+      if (now - c->linger_since > kLingerTime) to_close.push_back(id);
+    } else if (c->out_pos < c->out.size()) {
+      if (now - c->write_since > write_timeout) to_close.push_back(id);
+    } else if (c->parser.started()) {
+      // Counted from the request's first byte: a client sending a byte a second is
+      // closed at the timeout however steadily it sends.
+      if (now - c->request_start > read_timeout) timed_out.push_back(id);
+    } else if (stopping_ || now - c->idle_since > idle_timeout) {
+      to_close.push_back(id);
+    }
+  }
+  for (const auto id : to_close) close(id);
+  for (const auto id : timed_out) {
+    Connection& c = *connections_.at(id);
+    refuse(c, 408, "the request was not complete within " + std::to_string(config_.read_timeout_s) + " s");
+    flush(c);
+  }
+}
+
+void EventLoop::begin_stopping() {
+  stopping_ = true;
+  epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, listen_fd_, nullptr);
+  ::close(listen_fd_);
+  listen_fd_ = -1;
+  // Idle keep-alive connections close now; the others after their current answer,
+  // which goes out with "Connection: close".
+  std::vector<std::uint64_t> idle_ids;
+  for (const auto& [id, c] : connections_) {
+    if (idle(*c)) idle_ids.push_back(id);
+  }
+  for (const auto id : idle_ids) close(id);
+}
+
+}  // namespace bezier::service

@@ -1,0 +1,89 @@
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "service/compute_pool.hpp"
+#include "service/http_request_parser.hpp"
+#include "service/http_response_writer.hpp"
+#include "service/router.hpp"
+
+namespace bezier::service {
+
+/// One I/O thread of the epoll engine: it accepts from its own listening socket
+/// (SO_REUSEPORT: the kernel spreads connections over the loops), reads, parses and
+/// answers every connection it accepted, non-blocking and level-triggered. Cheap
+/// requests are answered on the loop; the others go to the ComputePool and their
+/// answers come back through an eventfd, so one slow request never holds up the
+/// loop's other connections. Timeouts (read, keep-alive idle, write) are checked by a
+/// sweep every kSweepInterval.
+class EventLoop {
+ public:
+  /// Shared by the loops of one engine.
+  struct Shared {
+    Router& router;
+    ComputePool& pool;
+    std::atomic<int>& open_connections;  ///< over all loops, for max_connections
+  };
+
+  EventLoop(Shared shared, int listen_fd);
+  ~EventLoop();
+  EventLoop(const EventLoop&) = delete;
+  EventLoop& operator=(const EventLoop&) = delete;
+
+  /// Serves until stop() and every connection is closed; false if epoll failed.
+  bool run();
+  /// Thread-safe: closes the listener, answers what is in flight with
+  /// "Connection: close", closes idle connections; run() returns once none is left.
+  void stop();
+
+  static constexpr std::chrono::milliseconds kSweepInterval{100};
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  struct Connection;
+  /// A computed answer on its way from a pool thread back to the loop.
+  struct Completion;
+  /// What a request on the pool needs to be answered and logged when it comes back.
+  struct Pending;
+
+  void accept_all();
+  void on_event(std::uint64_t id, std::uint32_t events);
+  void read(Connection& c);
+  void process(Connection& c);
+  void dispatch(Connection& c);
+  void respond(Connection& c, const Response& response, const WireOptions& wire);
+  void refuse(Connection& c, int status, std::string detail);
+  void flush(Connection& c);
+  void begin_lingering(Connection& c);
+  void update_interest(Connection& c);
+  void close(std::uint64_t id);
+  void take_completions();
+  void sweep(Clock::time_point now);
+  void begin_stopping();
+  [[nodiscard]] bool idle(const Connection& c) const noexcept;
+
+  Shared shared_;
+  const Config& config_;
+  const ParserLimits parser_limits_;
+  const api::Limits inline_limits_;
+  int listen_fd_;
+  int epoll_fd_ = -1;
+  int wake_fd_ = -1;  ///< eventfd: completions and stop()
+  std::uint64_t next_id_ = 2;
+  std::unordered_map<std::uint64_t, std::unique_ptr<Connection>> connections_;
+  std::atomic<bool> stop_requested_{false};
+  bool stopping_ = false;
+  Clock::time_point next_sweep_{};
+
+  std::mutex completions_mutex_;
+  std::vector<Completion> completions_;
+};
+
+}  // namespace bezier::service

@@ -1,0 +1,26 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "service/router.hpp"
+
+namespace bezier::service {
+
+/// How a response goes on the wire, beyond its own status, headers and body.
+struct WireOptions {
+  int minor_version = 1;         ///< of the request: HTTP/1.0 clients get "Connection: keep-alive"
+  bool keep_alive = true;        ///< false: "Connection: close", then the connection closes
+  bool head_only = false;        ///< HEAD: the headers (Content-Length of the body) without it
+  int keep_alive_timeout_s = 5;  ///< advertised in "Keep-Alive: timeout=N"
+  std::string_view request_id;   ///< X-Request-Id, when not empty
+};
+
+/// Appends the HTTP/1.1 response (status line, headers, blank line, body) to `out`, so
+/// that headers and body leave in one send.
+void append_response(std::string& out, const Response& response, const WireOptions& options);
+
+/// The reason phrase of a status ("OK", "Not Found", ...), "Unknown" for others.
+[[nodiscard]] std::string_view reason_phrase(int status) noexcept;
+
+}  // namespace bezier::service
