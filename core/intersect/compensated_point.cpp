@@ -1,6 +1,7 @@
 #include "core/intersect/compensated_point.hpp"
 
 #include "core/error_free.hpp"
+#include "core/intersect/fixed_extent.hpp"
 
 namespace bezier::core {
 
@@ -10,14 +11,16 @@ namespace {
 /// double-double path.
 constexpr std::size_t kMaxDegree = 23;
 
-/// One coordinate's rows: plain de Casteljau values b and their carried errors e.
+/// One coordinate's rows of E entries: plain de Casteljau values b and their carried errors e.
+template <std::size_t E>
 struct Rows {
-  double b[kMaxDegree + 1];
-  double e[kMaxDegree + 1];
+  double b[E];
+  double e[E];
 };
 
 /// One level of the compensated de Casteljau on `count` + 1 entries, with 1 - t = r_hi + r_lo.
-inline void level(Rows& row, std::size_t count, double t, double r_hi, double r_lo) noexcept {
+template <std::size_t E>
+inline void level(Rows<E>& row, std::size_t count, double t, double r_hi, double r_lo) noexcept {
   for (std::size_t k = 0; k < count; ++k) {
     const TwoTerm<double> p1 = two_product(r_hi, row.b[k]);
     const TwoTerm<double> p2 = two_product(t, row.b[k + 1]);
@@ -27,15 +30,11 @@ inline void level(Rows& row, std::size_t count, double t, double r_hi, double r_
   }
 }
 
-}  // namespace
-
-CompensatedPoint evaluate_compensated(const WorkingCurve& f, double t) {
-  const std::size_t n = f.x.size() - 1;
-  if (n > kMaxDegree) {
-    const PointDD p = evaluate_dd(f, t);
-    return {p.x, p.y, evaluate_with_tangent(f, t).tangent};
-  }
-  Rows x, y;
+/// evaluate_compensated on rows of E >= n + 1 entries: E = n + 1 fixed at compile time for
+/// degrees 1 to 3 (with_fixed_extent; the levels unroll), kMaxDegree + 1 otherwise.
+template <std::size_t E>
+CompensatedPoint compensated_rows(const WorkingCurve& f, std::size_t n, double t) noexcept {
+  Rows<E> x, y;
   for (std::size_t i = 0; i <= n; ++i) {
     x.b[i] = f.x[i];
     x.e[i] = f.x_lo[i];
@@ -56,6 +55,21 @@ CompensatedPoint evaluate_compensated(const WorkingCurve& f, double t) {
   out.x = {px.hi, px.lo};
   out.y = {py.hi, py.lo};
   return out;
+}
+
+}  // namespace
+
+CompensatedPoint evaluate_compensated(const WorkingCurve& f, double t) {
+  const std::size_t n = f.x.size() - 1;
+  if (n > kMaxDegree) {
+    const PointDD p = evaluate_dd(f, t);
+    return {p.x, p.y, evaluate_with_tangent(f, t).tangent};
+  }
+  return with_fixed_extent(n + 1, [&](auto e) {
+    constexpr std::size_t E = decltype(e)::value;
+    constexpr std::size_t kRow = E == std::dynamic_extent ? kMaxDegree + 1 : E;
+    return compensated_rows<kRow>(f, E == std::dynamic_extent ? n : E - 1, t);
+  });
 }
 
 }  // namespace bezier::core
