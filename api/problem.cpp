@@ -3,6 +3,8 @@
 #include <cmath>
 #include <optional>
 
+#include "api/dump_json.hpp"
+
 namespace bezier::api {
 
 namespace {
@@ -57,8 +59,7 @@ Reply problem_reply(ProblemKind kind, std::string detail, std::vector<FieldError
     body["errors"] = std::move(list);
   }
   // Invalid UTF-8 from the request may be echoed in a message: replace, never throw.
-  return {info.status, "application/problem+json",
-          body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)};
+  return {info.status, "application/problem+json", dump_json(body)};
 }
 
 Reply validation_reply(std::vector<FieldError> errors) {
@@ -70,17 +71,26 @@ Reply validation_reply(std::vector<FieldError> errors) {
 
 namespace {
 
-// The JSON Pointer of the first non-finite number in `value`, if any.
-std::optional<std::string> first_non_finite(const nlohmann::json& value, const std::string& at) {
+// The JSON Pointer of the first non-finite number in `value`, if any. The pointer is
+// built on the way back up, only when one is found: every answer passes through here,
+// and building the path of every number it holds cost more than writing the answer.
+std::string pointer_step(const std::string& token, const std::string& rest) {
+  std::string pointer = "/";
+  pointer += token;
+  pointer += rest;
+  return pointer;
+}
+
+std::optional<std::string> first_non_finite(const nlohmann::json& value) {
   if (value.is_number_float()) {
-    if (!std::isfinite(value.get<double>())) return at;
+    if (!std::isfinite(value.get<double>())) return std::string();
   } else if (value.is_array()) {
     for (std::size_t i = 0; i < value.size(); ++i) {
-      if (auto found = first_non_finite(value[i], at + "/" + std::to_string(i))) return found;
+      if (auto found = first_non_finite(value[i])) return pointer_step(std::to_string(i), *found);
     }
   } else if (value.is_object()) {
     for (const auto& [key, member] : value.items()) {
-      if (auto found = first_non_finite(member, at + "/" + key)) return found;
+      if (auto found = first_non_finite(member)) return pointer_step(key, *found);
     }
   }
   return std::nullopt;
@@ -92,14 +102,14 @@ Reply json_reply(const nlohmann::json& body) {
   // Finite input can still give a result beyond the double range (B(2) of a segment to
   // 1e308, a derivative of alternating ±1e308 points). JSON has no infinity and nlohmann
   // would write null in its place: the request is answered as unanswerable instead.
-  if (const auto where = first_non_finite(body, "")) {
+  if (const auto where = first_non_finite(body)) {
     return problem_reply(ProblemKind::validation,
                          "the result overflows the double range (answer field '" + *where + "')",
                          {{"/points", "coordinates too large for this computation: a result "
                                       "overflows the double range"}});
   }
-  // nlohmann writes doubles as the shortest string that reads back to the same double.
-  return {200, "application/json", body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)};
+  // Doubles are written as the shortest string that reads back to the same double.
+  return {200, "application/json", dump_json(body)};
 }
 
 }  // namespace bezier::api
