@@ -81,6 +81,19 @@ const Json* RequestReader::optional(const Json& object, std::string_view key) {
   return &*it;
 }
 
+namespace {
+
+// A finite number, or nullopt: the check of the common case, before any JSON Pointer is
+// built (building one per coordinate cost more than reading the whole curve).
+std::optional<double> plain_number(const Json& value) {
+  if (!value.is_number()) return std::nullopt;
+  const double v = value.get<double>();
+  if (!std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+}  // namespace
+
 std::optional<double> RequestReader::number(const Json& value, const std::string& pointer) {
   if (!value.is_number()) {
     fail(pointer, std::string("expected a number, got ") + type_name(value));
@@ -141,6 +154,10 @@ std::optional<std::vector<double>> RequestReader::numbers(const Json& value,
   out.reserve(value.size());
   bool all_ok = true;
   for (std::size_t i = 0; i < value.size(); ++i) {
+    if (const auto v = plain_number(value[i]); v && lo <= *v && *v <= hi) {
+      out.push_back(*v);
+      continue;
+    }
     const auto v = number_in(value[i], pointer_to(pointer, i), lo, hi);
     all_ok = all_ok && v.has_value();
     if (v) out.push_back(*v);
@@ -223,6 +240,16 @@ std::optional<std::variant<core::Curve, core::Curve3>> RequestReader::read_curve
   bool all_ok = true;
   for (std::size_t i = 0; i < value.size(); ++i) {
     const Json& p = value[i];
+    if (p.is_array() && p.size() == dimension) {
+      std::size_t k = 0;
+      for (; k < dimension; ++k) {
+        const auto c = plain_number(p[k]);
+        if (!c) break;
+        coords.push_back(*c);
+      }
+      if (k == dimension) continue;
+      coords.resize(coords.size() - k);
+    }
     const std::string at = pointer_to(pointer, i);
     if (!p.is_array() || p.size() != dimension) {
       const std::string got =
