@@ -45,6 +45,10 @@ bool is_post_route(std::string_view path) noexcept {
 
 Reply handle(std::string_view path, std::string_view body, const Limits& limits) {
   const ParsedJson parsed = parse_json(body);
+  if (parsed.too_deep) {
+    return validation_reply({{"", "the body nests arrays or objects deeper than " +
+                                      std::to_string(kMaxJsonDepth) + " levels"}});
+  }
   if (!parsed.ok) {
     return problem_reply(ProblemKind::malformed_json, "body is not valid JSON: at byte " +
                                                           std::to_string(parsed.error_offset) + ", " +

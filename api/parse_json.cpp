@@ -31,6 +31,7 @@ class Parser {
     out.value = nullptr;
     out.error_offset = pos_;
     out.error = error_;
+    out.too_deep = too_deep_;
     return out;
   }
 
@@ -74,7 +75,10 @@ class Parser {
   }
 
   bool object(nlohmann::json& out, int depth) {
-    if (depth > kMaxJsonDepth) return fail("nesting no deeper than 128 levels");
+    if (depth > kMaxJsonDepth) {
+      too_deep_ = true;
+      return fail("nesting no deeper than 128 levels");
+    }
     ++pos_;
     out = nlohmann::json::object();
     skip_space();
@@ -108,7 +112,10 @@ class Parser {
   }
 
   bool array(nlohmann::json& out, int depth) {
-    if (depth > kMaxJsonDepth) return fail("nesting no deeper than 128 levels");
+    if (depth > kMaxJsonDepth) {
+      too_deep_ = true;
+      return fail("nesting no deeper than 128 levels");
+    }
     ++pos_;
     out = nlohmann::json::array();
     skip_space();
@@ -300,6 +307,7 @@ class Parser {
   std::string_view text_;
   std::size_t pos_ = 0;
   std::string error_;
+  bool too_deep_ = false;
 };
 
 }  // namespace

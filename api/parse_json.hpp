@@ -14,6 +14,7 @@ struct ParsedJson {
   bool ok = false;
   std::size_t error_offset = 0;  ///< byte offset of the first offending byte
   std::string error;             ///< what was expected there
+  bool too_deep = false;         ///< valid JSON, maybe, but nested beyond kMaxJsonDepth
 };
 
 /// Parses RFC 8259 JSON text into nlohmann's document model, the same document
@@ -24,7 +25,9 @@ struct ParsedJson {
 /// time of a whole /evaluate request), and a literal beyond the double range becomes
 /// ±infinity (or ±0 below it) instead of failing the whole body, so the field that holds it
 /// can be reported. Strings must be valid UTF-8; nesting deeper than kMaxJsonDepth
-/// is refused (no valid request nests more than a few levels, and the parser recurses).
+/// is refused with `too_deep` set (no valid request nests more than a few levels, and the
+/// parser recurses), which the handler answers as a request it will not take, not as
+/// text that is not JSON.
 [[nodiscard]] ParsedJson parse_json(std::string_view text);
 
 inline constexpr int kMaxJsonDepth = 128;

@@ -194,6 +194,14 @@ TEST(EvaluateRoute, MalformedAndNonObjectBodiesAre400) {
   }
 }
 
+// JSON nested beyond the parser's depth is valid JSON, so not a 400: a 422 on the body.
+TEST(EvaluateRoute, BodiesNestedTooDeeplyAre422) {
+  const std::string deep = R"({"points":)" + std::string(200, '[') + std::string(200, ']') + R"(,"t":0})";
+  const json r = call(deep, 422);
+  EXPECT_EQ(r["type"], "urn:bezier-service:problem:validation");
+  EXPECT_EQ(pointers(r), (std::vector<std::string>{""}));
+}
+
 TEST(EvaluateRoute, ErrorListIsBounded) {
   std::string body = R"({"t":0,"points":[)";
   for (int i = 0; i < 20; ++i) body += std::string(i ? "," : "") + "[\"a\",\"b\"]";
