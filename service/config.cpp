@@ -14,7 +14,7 @@ ParsedConfig parse_config(int argc, char** argv) {
   app.add_option("--host", config.host, "Address to bind")->envname("BEZIER_HOST")->capture_default_str();
   app.add_option("--port", config.port, "Port to listen on (0 picks a free port)")
       ->envname("BEZIER_PORT")->check(CLI::Range(0, 65535))->capture_default_str();
-  std::string engine = "httplib";
+  std::string engine = "epoll";
   app.add_option("--http-engine", engine,
                  "HTTP front end: httplib (a thread per connection) or epoll (event loops + compute pool)")
       ->envname("BEZIER_HTTP_ENGINE")->check(CLI::IsMember({"httplib", "epoll"}))->capture_default_str();
@@ -67,7 +67,7 @@ ParsedConfig parse_config(int argc, char** argv) {
     return {std::nullopt, code, out.str()};
   }
   config.log_format = format == "json" ? LogFormat::json : LogFormat::text;
-  config.http_engine = engine == "epoll" ? HttpEngineKind::epoll : HttpEngineKind::httplib;
+  config.http_engine = engine == "httplib" ? HttpEngineKind::httplib : HttpEngineKind::epoll;
   return {config, 0, {}};
 }
 

@@ -19,7 +19,7 @@ enum class HttpEngineKind { httplib, epoll };
 struct Config {
   std::string host = "127.0.0.1";
   int port = 8080;
-  HttpEngineKind http_engine = HttpEngineKind::httplib;
+  HttpEngineKind http_engine = HttpEngineKind::epoll;
   /// Worker threads. httplib engine: always kept, and more are started when every worker
   /// holds a connection (cpp-httplib serves a keep-alive connection on one thread until
   /// it closes), up to max_connections; see service/elastic_task_queue.hpp. epoll
