@@ -137,9 +137,14 @@ void EventLoop::accept_all() {
   while (!stopping_) {
     const int fd = accept4(listen_fd_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
     if (fd < 0) {
-      // EMFILE and the like: leave the connection in the backlog and retry on the
-      // next sweep's readiness rather than spinning.
-      return;
+      if (errno == EMFILE || errno == ENFILE || errno == ENOBUFS || errno == ENOMEM) {
+        // Out of descriptors: the listener stays readable, and level-triggered epoll
+        // would spin on it. It leaves the epoll set until the next sweep, and the
+        // connection waits in the backlog meanwhile.
+        epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, listen_fd_, nullptr);
+        listener_paused_ = true;
+      }
+      return;  // EAGAIN: the backlog is empty
     }
     // Without TCP_NODELAY each keep-alive answer waits for the client's delayed ACK.
     const int one = 1;
@@ -423,6 +428,13 @@ void EventLoop::sweep(Clock::time_point now) {
     }
   }
   for (const auto id : to_close) close(id);
+  if (listener_paused_ && !stopping_) {
+    epoll_event ev{};
+    ev.events = EPOLLIN;
+    ev.data.u64 = kListenerId;
+    epoll_ctl(epoll_fd_, EPOLL_CTL_ADD, listen_fd_, &ev);
+    listener_paused_ = false;
+  }
   for (const auto id : timed_out) {
     Connection& c = *connections_.at(id);
     refuse(c, 408, "the request was not complete within " + std::to_string(config_.read_timeout_s) + " s");
@@ -432,7 +444,7 @@ void EventLoop::sweep(Clock::time_point now) {
 
 void EventLoop::begin_stopping() {
   stopping_ = true;
-  epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, listen_fd_, nullptr);
+  if (!listener_paused_) epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, listen_fd_, nullptr);
   ::close(listen_fd_);
   listen_fd_ = -1;
   // Idle keep-alive connections close now; the others after their current answer,

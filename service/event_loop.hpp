@@ -80,6 +80,7 @@ class EventLoop {
   std::unordered_map<std::uint64_t, std::unique_ptr<Connection>> connections_;
   std::atomic<bool> stop_requested_{false};
   bool stopping_ = false;
+  bool listener_paused_ = false;  ///< out of descriptors: off the epoll set until the next sweep
   Clock::time_point next_sweep_{};
 
   std::mutex completions_mutex_;
