@@ -45,7 +45,9 @@ bool is_post_route(std::string_view path) noexcept {
 
 Reply handle(std::string_view path, std::string_view body, const Limits& limits) {
   const ParsedJson parsed = parse_json(body);
-  if (parsed.too_deep) {
+  // Nested too deeply to parse: a body that is not an object is a 400 like any other; an
+  // object is a request this service will not take.
+  if (parsed.too_deep && parsed.root_is_object) {
     return validation_reply({{"", "the body nests arrays or objects deeper than " +
                                       std::to_string(kMaxJsonDepth) + " levels"}});
   }

@@ -20,6 +20,7 @@ class Parser {
     ParsedJson out;
     if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
     skip_space();
+    out.root_is_object = peek() == '{';
     if (value(out.value, 0)) {
       skip_space();
       if (pos_ == text_.size()) {

@@ -15,6 +15,7 @@ struct ParsedJson {
   std::size_t error_offset = 0;  ///< byte offset of the first offending byte
   std::string error;             ///< what was expected there
   bool too_deep = false;         ///< valid JSON, maybe, but nested beyond kMaxJsonDepth
+  bool root_is_object = false;   ///< the text starts with '{' (after blanks): known even then
 };
 
 /// Parses RFC 8259 JSON text into nlohmann's document model, the same document

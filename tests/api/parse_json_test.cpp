@@ -94,6 +94,8 @@ TEST(ParseJson, NestingIsBounded) {
   const auto deep = parse_json(std::string(static_cast<std::size_t>(max) + 1, '[') + std::string(static_cast<std::size_t>(max) + 1, ']'));
   EXPECT_FALSE(deep.ok);
   EXPECT_TRUE(deep.too_deep);
+  EXPECT_FALSE(deep.root_is_object);
+  EXPECT_TRUE(parse_json(" {\"a\":" + std::string(200, '[')).root_is_object);
   EXPECT_EQ(deep.error_offset, static_cast<std::size_t>(max));
   // A megabyte of brackets (a body at the size limit) is refused without recursing that deep.
   EXPECT_FALSE(parse_json(std::string(1 << 20, '[')).ok);
