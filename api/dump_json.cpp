@@ -11,7 +11,7 @@ namespace bezier::api {
 
 namespace {
 
-void write_string(const std::string& s, std::string& out) {
+void write_string(std::string_view s, std::string& out) {
   static constexpr char kHex[] = "0123456789abcdef";
   out += '"';
   std::size_t i = 0;
@@ -22,12 +22,12 @@ void write_string(const std::string& s, std::string& out) {
       if (c == '"' || c == '\\' || c < 0x20 || c >= 0x80) break;
       ++i;
     }
-    out.append(s, run, i - run);
+    out.append(s.substr(run, i - run));
     if (i == s.size()) break;
     const auto c = static_cast<unsigned char>(s[i]);
     if (c >= 0x80) {
       if (const std::size_t n = utf8_sequence_length(s, i)) {
-        out.append(s, i, n);
+        out.append(s.substr(i, n));
         i += n;
       } else {
         out += "\xEF\xBF\xBD";
@@ -155,6 +155,9 @@ void write_value(const nlohmann::json& value, std::string& out) {
 }
 
 }  // namespace
+
+void append_json_string(std::string_view text, std::string& out) { write_string(text, out); }
+void append_json_number(double value, std::string& out) { write_double(value, out); }
 
 std::string dump_json(const nlohmann::json& value) {
   std::string out;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -14,5 +15,9 @@ namespace bezier::api {
 /// string writer decodes every byte through a UTF-8 state machine, which made the answer
 /// of a problem+json half the time of the request.
 [[nodiscard]] std::string dump_json(const nlohmann::json& value);
+
+/// One string or number in exactly the text dump_json gives it, appended to `out`.
+void append_json_string(std::string_view text, std::string& out);
+void append_json_number(double value, std::string& out);
 
 }  // namespace bezier::api

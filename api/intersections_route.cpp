@@ -49,18 +49,25 @@ struct IntersectionsRequest {
   core::IntersectOptions options;
 };
 
-nlohmann::json interval_json(core::ParamInterval iv) {
-  return pair_json(iv.lo, iv.hi);
+// Members in key order, so the text is what a document of the same answer would dump to.
+void write_intersection(JsonWriter& w, const core::Intersection& x) {
+  w.begin_object();
+  w.key("kind").value(core::to_string(x.kind));
+  w.key("point").pair(x.point.x, x.point.y);
+  w.key("resolved").value(x.resolved);
+  w.key("s").value(x.s);
+  w.key("s_interval").pair(x.s_interval.lo, x.s_interval.hi);
+  w.key("t").value(x.t);
+  w.key("t_interval").pair(x.t_interval.lo, x.t_interval.hi);
+  w.end_object();
 }
 
-nlohmann::json intersection_json(const core::Intersection& x) {
-  return {{"t", x.t},
-          {"s", x.s},
-          {"t_interval", interval_json(x.t_interval)},
-          {"s_interval", interval_json(x.s_interval)},
-          {"point", point_json(x.point)},
-          {"kind", std::string(core::to_string(x.kind))},
-          {"resolved", x.resolved}};
+void write_overlap(JsonWriter& w, bool reversed, double s_lo, double s_hi, double t_lo, double t_hi) {
+  w.begin_object();
+  w.key("reversed").value(reversed);
+  w.key("s_interval").pair(s_lo, s_hi);
+  w.key("t_interval").pair(t_lo, t_hi);
+  w.end_object();
 }
 
 Reply work_cap_reply(std::int64_t steps, const Limits& limits) {
@@ -90,29 +97,32 @@ Reply two_curves_answer(const IntersectionsRequest& request, const Limits& limit
   if (r.status == core::IntersectStatus::tolerance_too_small) {
     return validation_reply({{"/tolerance", "below what doubles can guarantee"}});
   }
-  nlohmann::json intersections = nlohmann::json::array();
-  for (const core::Intersection& x : r.intersections) intersections.push_back(intersection_json(x));
-  nlohmann::json overlaps = nlohmann::json::array();
+  JsonWriter w;
+  w.begin_object();
+  w.key("intersections").begin_array();
+  for (const core::Intersection& x : r.intersections) write_intersection(w, x);
+  w.end_array();
+  w.key("overlaps").begin_array();
   for (const core::Overlap& o : r.overlaps) {
-    overlaps.push_back({{"t_interval", interval_json(o.t_interval)},
-                        {"s_interval", interval_json(o.s_interval)},
-                        {"reversed", o.reversed}});
+    write_overlap(w, o.reversed, o.s_interval.lo, o.s_interval.hi, o.t_interval.lo, o.t_interval.hi);
   }
-  nlohmann::json stats = {{"method", std::string(core::to_string(r.stats.method))},
-                          {"iterations", r.stats.iterations},
-                          {"work", r.stats.work},
-                          {"clipping_steps", r.stats.clipping_steps},
-                          {"subdivisions", r.stats.subdivisions},
-                          {"candidate_boxes", r.stats.candidate_boxes},
-                          {"compensated_steps", r.stats.compensated_steps},
-                          {"newton_iterations", r.stats.newton_iterations},
-                          {"max_depth", r.stats.max_depth}};
-  if (r.stats.method == core::IntersectMethod::hybrid)
-    stats["fat_curve_degree"] = request.options.fat_curve_degree;
-  return json_reply({{"intersections", std::move(intersections)},
-                     {"overlaps", std::move(overlaps)},
-                     {"tolerance", request.options.tolerance},
-                     {"stats", std::move(stats)}});
+  w.end_array();
+  const core::IntersectStats& stats = r.stats;
+  w.key("stats").begin_object();
+  w.key("candidate_boxes").value(stats.candidate_boxes);
+  w.key("clipping_steps").value(stats.clipping_steps);
+  w.key("compensated_steps").value(stats.compensated_steps);
+  if (stats.method == core::IntersectMethod::hybrid) w.key("fat_curve_degree").value(request.options.fat_curve_degree);
+  w.key("iterations").value(stats.iterations);
+  w.key("max_depth").value(stats.max_depth);
+  w.key("method").value(core::to_string(stats.method));
+  w.key("newton_iterations").value(stats.newton_iterations);
+  w.key("subdivisions").value(stats.subdivisions);
+  w.key("work").value(stats.work);
+  w.end_object();
+  w.key("tolerance").value(request.options.tolerance);
+  w.end_object();
+  return json_reply(std::move(w));
 }
 
 core::IntersectionKind kind_of(core::SelfIntersectionKind kind) {
@@ -170,33 +180,36 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   // a pair they cannot certify within it is reported as found, unresolved.
   const std::int64_t search_units = r.stats.work * core::self_intersection_box_cost(curve.degree());
   std::int64_t certification_work = 0, certification_steps = 0;
-  nlohmann::json intersections = nlohmann::json::array();
+  JsonWriter w;
+  w.begin_object();
+  w.key("intersections").begin_array();
   for (const core::SelfIntersection& pair : r.pairs) {
     const CertifiedPair c = certified_pair(curve, pair, request.options,
                                            limits.max_work - search_units - certification_work);
     certification_work += c.work;
     certification_steps += c.steps;
-    intersections.push_back(intersection_json(c.intersection));
+    write_intersection(w, c.intersection);
   }
-  nlohmann::json overlaps = nlohmann::json::array();
+  w.end_array();
+  w.key("overlaps").begin_array();
   for (const core::SelfOverlap& o : r.overlaps) {
     // The pieces run the same way when B(t_lo) is B(s_lo), backwards when it is B(s_hi).
     const core::Point2 a = core::evaluate(curve, o.t_lo);
     const double same = core::length(a - core::evaluate(curve, o.s_lo));
     const double opposite = core::length(a - core::evaluate(curve, o.s_hi));
-    overlaps.push_back({{"t_interval", pair_json(o.t_lo, o.t_hi)},
-                        {"s_interval", pair_json(o.s_lo, o.s_hi)},
-                        {"reversed", opposite < same}});
+    write_overlap(w, opposite < same, o.s_lo, o.s_hi, o.t_lo, o.t_hi);
   }
-  return json_reply({{"intersections", std::move(intersections)},
-                     {"overlaps", std::move(overlaps)},
-                     {"tolerance", request.options.tolerance},
-                     {"stats",
-                      {{"method", core::method_name(r.stats.method)},
-                       {"work", r.stats.work},
-                       {"max_depth", r.stats.max_depth},
-                       {"newton_iterations", r.stats.newton_iterations},
-                       {"certification_iterations", certification_steps}}}});
+  w.end_array();
+  w.key("stats").begin_object();
+  w.key("certification_iterations").value(certification_steps);
+  w.key("max_depth").value(r.stats.max_depth);
+  w.key("method").value(core::method_name(r.stats.method));
+  w.key("newton_iterations").value(r.stats.newton_iterations);
+  w.key("work").value(r.stats.work);
+  w.end_object();
+  w.key("tolerance").value(request.options.tolerance);
+  w.end_object();
+  return json_reply(std::move(w));
 }
 
 }  // namespace

@@ -71,9 +71,6 @@ Reply validation_reply(std::vector<FieldError> errors) {
 
 namespace {
 
-// The JSON Pointer of the first non-finite number in `value`, if any. The pointer is
-// built on the way back up, only when one is found: every answer passes through here,
-// and building the path of every number it holds cost more than writing the answer.
 std::string pointer_step(const std::string& token, const std::string& rest) {
   std::string pointer = "/";
   pointer += token;
@@ -81,6 +78,9 @@ std::string pointer_step(const std::string& token, const std::string& rest) {
   return pointer;
 }
 
+// The JSON Pointer of the first non-finite number in `value`, if any. The pointer is
+// built on the way back up, only when one is found: every answer passes through here,
+// and building the path of every number it holds cost more than writing the answer.
 std::optional<std::string> first_non_finite(const nlohmann::json& value) {
   if (value.is_number_float()) {
     if (!std::isfinite(value.get<double>())) return std::string();
@@ -96,20 +96,26 @@ std::optional<std::string> first_non_finite(const nlohmann::json& value) {
   return std::nullopt;
 }
 
+Reply overflow_reply(const std::string& where) {
+  return problem_reply(ProblemKind::validation, "the result overflows the double range" + where,
+                       {{"/points", "coordinates too large for this computation: a result "
+                                    "overflows the double range"}});
+}
+
 }  // namespace
 
 Reply json_reply(const nlohmann::json& body) {
   // Finite input can still give a result beyond the double range (B(2) of a segment to
   // 1e308, a derivative of alternating ±1e308 points). JSON has no infinity and nlohmann
   // would write null in its place: the request is answered as unanswerable instead.
-  if (const auto where = first_non_finite(body)) {
-    return problem_reply(ProblemKind::validation,
-                         "the result overflows the double range (answer field '" + *where + "')",
-                         {{"/points", "coordinates too large for this computation: a result "
-                                      "overflows the double range"}});
-  }
+  if (const auto where = first_non_finite(body)) return overflow_reply(" (answer field '" + *where + "')");
   // Doubles are written as the shortest string that reads back to the same double.
   return {200, "application/json", dump_json(body)};
+}
+
+Reply json_reply(JsonWriter&& answer) {
+  if (!answer.all_finite()) return overflow_reply("");
+  return {200, "application/json", std::move(answer).take()};
 }
 
 }  // namespace bezier::api

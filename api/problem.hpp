@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "api/json_writer.hpp"
+
 namespace bezier::api {
 
 /// One rejected field: a JSON Pointer (RFC 6901) into the request, and why.
@@ -47,6 +49,9 @@ enum class ProblemKind {
 /// 200 application/json with the numbers written so they round-trip; a 422 instead when
 /// a number of the answer is not finite (a result beyond the double range).
 [[nodiscard]] Reply json_reply(const nlohmann::json& body);
+/// The same for an answer written as text (JsonWriter), without the field's pointer in
+/// the 422.
+[[nodiscard]] Reply json_reply(JsonWriter&& answer);
 
 /// The HTTP status of a problem kind.
 [[nodiscard]] int status_of(ProblemKind kind) noexcept;
