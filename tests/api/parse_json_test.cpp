@@ -77,6 +77,16 @@ TEST(ParseJson, InvalidDocumentsAreRefusedLikeNlohmann) {
   for (const auto& text : texts) EXPECT_FALSE(expect_same_as_nlohmann(text)) << text;
 }
 
+// nlohmann's lexer reads a NUL byte as the end of the text (for C strings), so it accepts
+// "{}" followed by NUL and anything; RFC 8259 allows only blanks after the value.
+TEST(ParseJson, BytesAfterANulAreStillText) {
+  const std::string text("{\"t\":1}\0\0garbage", 15);
+  EXPECT_TRUE(json::parse(text, nullptr, /*allow_exceptions=*/false).is_object());
+  const auto ours = parse_json(text);
+  EXPECT_FALSE(ours.ok);
+  EXPECT_EQ(ours.error_offset, 7u);
+}
+
 TEST(ParseJson, LiteralsBeyondTheDoubleRangeBecomeSignedInfinityOrZero) {
   const auto big = parse_json(R"([1e999,-1e999,1e-999,-1e-999,123456789e400])");
   ASSERT_TRUE(big.ok);
