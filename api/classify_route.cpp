@@ -11,24 +11,39 @@ namespace {
 
 // The answer of DESIGN §3, plus the Loop–Blinn class of the unbounded curve:
 // {"type", "canonical_point": [x, y] | null, "inflections": [t...], "cusp": t | null,
-//  "self_intersection": {"t": [t1, t2], "point": [x, y]} | null, "loop_blinn"}.
-nlohmann::json classification_json(const core::CubicClassification& c) {
-  nlohmann::json inflections = nlohmann::json::array();
-  for (const double t : c.inflections.values()) inflections.push_back(t);
-  nlohmann::json answer = {
-      {"type", std::string(core::name(c.type))},
-      {"canonical_point", c.canonical_point ? point_json(*c.canonical_point) : nlohmann::json()},
-      {"inflections", std::move(inflections)},
-      {"cusp", c.cusp ? nlohmann::json(*c.cusp) : nlohmann::json()},
-      {"self_intersection", nullptr},
-      {"loop_blinn", std::string(core::name(c.loop_blinn))},
-  };
-  if (c.self_intersection) {
-    answer["self_intersection"] = {
-        {"t", pair_json(c.self_intersection->t1, c.self_intersection->t2)},
-        {"point", point_json(c.self_intersection->point)}};
+//  "self_intersection": {"t": [t1, t2], "point": [x, y]} | null, "loop_blinn"},
+// written with members in key order (the text a document of the answer would dump to).
+Reply classification_answer(const core::CubicClassification& c) {
+  JsonWriter w;
+  w.begin_object();
+  w.key("canonical_point");
+  if (c.canonical_point) {
+    write_point(w, *c.canonical_point);
+  } else {
+    w.null();
   }
-  return answer;
+  w.key("cusp");
+  if (c.cusp) {
+    w.value(*c.cusp);
+  } else {
+    w.null();
+  }
+  w.key("inflections").begin_array();
+  for (const double t : c.inflections.values()) w.value(t);
+  w.end_array();
+  w.key("loop_blinn").value(core::name(c.loop_blinn));
+  w.key("self_intersection");
+  if (c.self_intersection) {
+    w.begin_object();
+    write_point(w.key("point"), c.self_intersection->point);
+    w.key("t").pair(c.self_intersection->t1, c.self_intersection->t2);
+    w.end_object();
+  } else {
+    w.null();
+  }
+  w.key("type").value(core::name(c.type));
+  w.end_object();
+  return json_reply(std::move(w));
 }
 
 }  // namespace
@@ -47,7 +62,7 @@ Reply classify_route(const nlohmann::json& request, const Limits& limits) {
     }
   }
   if (!reader.ok()) return validation_reply(reader.take_errors());
-  return json_reply(classification_json(core::classify(*curve)));
+  return classification_answer(core::classify(*curve));
 }
 
 }  // namespace bezier::api

@@ -15,28 +15,38 @@ struct EvaluateRequest {
   std::optional<double> split;
 };
 
+// {"degree", "results": [{"derivatives"?, "point", "t"}], "split"?: {"left", "right", "t"}},
+// members in key order (the text a document of the answer would dump to).
 template <class P>
-nlohmann::json evaluate_answer(const core::BasicCurve<P>& curve, const EvaluateRequest& request) {
-  nlohmann::json results = nlohmann::json::array();
+Reply evaluate_answer(const core::BasicCurve<P>& curve, const EvaluateRequest& request) {
+  JsonWriter w;
+  w.begin_object();
+  w.key("degree").value(curve.degree());
+  w.key("results").begin_array();
   for (const double t : request.ts) {
-    nlohmann::json result = {{"t", t}, {"point", point_json(core::evaluate(curve, t))}};
+    w.begin_object();
     if (request.derivatives > 0) {
-      nlohmann::json derivs = nlohmann::json::array();
       // derivatives_at keeps the hodographs unrounded: within one rounding of the exact
       // value, where evaluating rounded hodograph points is not.
-      for (const auto& d : core::derivatives_at(curve, t, request.derivatives)) derivs.push_back(point_json(d));
-      result["derivatives"] = std::move(derivs);
+      w.key("derivatives").begin_array();
+      for (const auto& d : core::derivatives_at(curve, t, request.derivatives)) write_point(w, d);
+      w.end_array();
     }
-    results.push_back(std::move(result));
+    write_point(w.key("point"), core::evaluate(curve, t));
+    w.key("t").value(t);
+    w.end_object();
   }
-  nlohmann::json answer = {{"degree", curve.degree()}, {"results", std::move(results)}};
+  w.end_array();
   if (request.split) {
     const auto halves = core::subdivide(curve, *request.split);
-    answer["split"] = {{"t", *request.split},
-                       {"left", points_json(halves.left)},
-                       {"right", points_json(halves.right)}};
+    w.key("split").begin_object();
+    write_points(w.key("left"), halves.left.points());
+    write_points(w.key("right"), halves.right.points());
+    w.key("t").value(*request.split);
+    w.end_object();
   }
-  return answer;
+  w.end_object();
+  return json_reply(std::move(w));
 }
 
 }  // namespace
@@ -64,7 +74,7 @@ Reply evaluate_route(const nlohmann::json& request, const Limits& limits) {
     parsed.split = reader.number(*s, "/split");
   }
   if (!reader.ok()) return validation_reply(reader.take_errors());
-  return json_reply(std::visit([&](const auto& c) { return evaluate_answer(c, parsed); }, *curve));
+  return std::visit([&](const auto& c) { return evaluate_answer(c, parsed); }, *curve);
 }
 
 }  // namespace bezier::api

@@ -58,6 +58,12 @@ class JsonWriter {
     return *this;
   }
   JsonWriter& value(const char* text) { return value(std::string_view(text)); }
+  JsonWriter& null() {
+    separate();
+    out_ += "null";
+    after_value_ = true;
+    return *this;
+  }
 
   /// [a, b]: an interval or a 2-D point.
   JsonWriter& pair(double a, double b) { return begin_array().value(a).value(b).end_array(); }

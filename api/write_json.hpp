@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "api/json_writer.hpp"
 #include "core/curve.hpp"
 #include "core/point.hpp"
 
@@ -33,6 +34,18 @@ template <class P>
 /// [lo, hi]
 [[nodiscard]] inline nlohmann::json pair_json(double lo, double hi) {
   return nlohmann::json::array({lo, hi});
+}
+
+/// The same pieces written to text (JsonWriter).
+inline JsonWriter& write_point(JsonWriter& w, core::Point2 p) { return w.pair(p.x, p.y); }
+inline JsonWriter& write_point(JsonWriter& w, core::Point3 p) {
+  return w.begin_array().value(p.x).value(p.y).value(p.z).end_array();
+}
+template <class P>
+JsonWriter& write_points(JsonWriter& w, std::span<const P> points) {
+  w.begin_array();
+  for (const P& p : points) write_point(w, p);
+  return w.end_array();
 }
 
 }  // namespace bezier::api

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "api/dump_json.hpp"
 #include "api/handler.hpp"
 #include "core/classify.hpp"
 
@@ -18,6 +19,11 @@ json call(const std::string& body, int expected_status) {
   EXPECT_EQ(reply.status, expected_status) << reply.body;
   EXPECT_EQ(reply.content_type,
             expected_status == 200 ? "application/json" : "application/problem+json");
+  // Answers are written as text (JsonWriter), members in key order: exactly the text the
+  // same answer as a document would dump to.
+  if (reply.status == 200) {
+    EXPECT_EQ(dump_json(json::parse(reply.body)), reply.body);
+  }
   return json::parse(reply.body);
 }
 

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "api/dump_json.hpp"
 #include "api/handler.hpp"
 #include "core/derivative.hpp"
 #include "core/evaluate.hpp"
@@ -14,6 +15,11 @@ json call(const std::string& body, int expected_status, const Limits& limits = {
   const Reply reply = handle("/evaluate", body, limits);
   EXPECT_EQ(reply.status, expected_status) << reply.body;
   EXPECT_EQ(reply.content_type, expected_status == 200 ? "application/json" : "application/problem+json");
+  // Answers are written as text (JsonWriter), members in key order: exactly the text the
+  // same answer as a document would dump to.
+  if (reply.status == 200) {
+    EXPECT_EQ(dump_json(json::parse(reply.body)), reply.body);
+  }
   return json::parse(reply.body);
 }
 
