@@ -7,6 +7,7 @@
 #include <netinet/tcp.h>
 #include <sys/epoll.h>
 #include <sys/eventfd.h>
+#include <sys/ioctl.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -27,6 +28,14 @@ constexpr std::string_view kContinue = "HTTP/1.1 100 Continue\r\n\r\n";
 
 // How long a connection we close is drained after its last answer (see begin_lingering).
 constexpr std::chrono::seconds kLingerTime{2};
+
+// Whether the client has sent bytes the loop has not read yet: when stopping, such a
+// connection holds a request (it is read, answered with "Connection: close", closed),
+// not an idle keep-alive connection.
+bool has_unread_input(int fd) {
+  int bytes = 0;
+  return ioctl(fd, FIONREAD, &bytes) == 0 && bytes > 0;
+}
 
 }  // namespace
 
@@ -423,7 +432,7 @@ void EventLoop::sweep(Clock::time_point now) {
       // Counted from the request's first byte: a client sending a byte a second is
       // closed at the timeout however steadily it sends.
       if (now - c->request_start > read_timeout) timed_out.push_back(id);
-    } else if (stopping_ || now - c->idle_since > idle_timeout) {
+    } else if ((stopping_ && !has_unread_input(c->fd)) || now - c->idle_since > idle_timeout) {
       to_close.push_back(id);
     }
   }
@@ -443,6 +452,9 @@ void EventLoop::sweep(Clock::time_point now) {
 }
 
 void EventLoop::begin_stopping() {
+  // Connections already in the backlog were accepted by the kernel: take them, so
+  // that a request they sent is answered rather than reset with the listener.
+  if (!listener_paused_) accept_all();
   stopping_ = true;
   if (!listener_paused_) epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, listen_fd_, nullptr);
   ::close(listen_fd_);
@@ -451,7 +463,7 @@ void EventLoop::begin_stopping() {
   // which goes out with "Connection: close".
   std::vector<std::uint64_t> idle_ids;
   for (const auto& [id, c] : connections_) {
-    if (idle(*c)) idle_ids.push_back(id);
+    if (idle(*c) && !has_unread_input(c->fd)) idle_ids.push_back(id);
   }
   for (const auto id : idle_ids) close(id);
 }

@@ -296,7 +296,9 @@ TEST(EpollEngineShutdown, RequestOnTheComputePoolIsAnsweredBeforeExit) {
   Connection idle(service.port());
   ASSERT_TRUE(idle.send_all("GET /healthz HTTP/1.1\r\nHost: x\r\n\r\n"));
   ASSERT_EQ(idle.responses(1).size(), 1u);
-  // Degree 9: above the inline try, so it runs on the pool.
+  // Degree 9: above the inline try, so it runs on the pool. The connection sent nothing
+  // else, so it may still be in the backlog when the signal comes: stopping takes the
+  // backlog's connections too.
   Connection busy(service.port());
   ASSERT_TRUE(busy.send_all(post("/evaluate", R"({"points":[[0,0],[1,0],[2,0],[3,0],[4,0],[5,0],[6,0],[7,0],[8,0],[9,0]],"samples":2000,"derivatives":2})")));
   service.signal(SIGTERM);
