@@ -7,7 +7,8 @@
 /// registers), which made compensated evaluation about 4x slower. `flatten` inlines every
 /// callee into each copy: a helper left out of line would be compiled once, for plain
 /// x86-64, and the fma copy would only call it. Both copies round every operation the
-/// same way (fma is exact-then-rounded either way), so results are bit for bit equal.
+/// same way (fma is exact-then-rounded either way, and the build turns off contraction of
+/// a * b + c, -ffp-contract=off in CMakeLists.txt), so results are bit for bit equal.
 /// Elsewhere, and under clang (the fuzzing builds; it refuses `flatten` on clones), the
 /// macro is empty.
 #if defined(__x86_64__) && defined(__linux__) && !defined(__FMA__) && defined(__GNUC__) && !defined(__clang__)
