@@ -11,6 +11,7 @@
 // every field within the documented rules, 200, the work-cap 422 or the 422 for a result
 // beyond the double range, nothing else.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -67,6 +68,15 @@ class RequestBuilder {
       const int k = data_.ConsumeIntegralInRange<int>(-1, limits_.max_degree + 1);
       valid_ = valid_ && 0 <= k && k <= limits_.max_degree;
       request["derivatives"] = k;
+      // The answer's size rule (openapi: t values times (derivatives + 1) at most max_t_values).
+      std::size_t values = 1;
+      if (const auto t = request.find("t"); t != request.end() && t->is_array()) {
+        values = t->size();
+      } else if (const auto n = request.find("samples"); n != request.end() && n->is_number_integer()) {
+        values = static_cast<std::size_t>(std::max(0, n->get<int>()));
+      }
+      valid_ = valid_ && values * static_cast<std::size_t>(std::max(k, 0) + 1) <=
+                             static_cast<std::size_t>(limits_.max_t_values);
     }
     if (flip(4)) request["split"] = any_number();
     return request;
