@@ -9,9 +9,7 @@
 
 namespace bezier::api {
 
-namespace {
-
-void write_string(std::string_view s, std::string& out) {
+void append_json_string(std::string_view s, std::string& out) {
   static constexpr char kHex[] = "0123456789abcdef";
   out += '"';
   std::size_t i = 0;
@@ -55,7 +53,7 @@ void write_string(std::string_view s, std::string& out) {
 
 // nlohmann's layout (detail::dtoa_impl::format_buffer) of the shortest digits d1 d2 ... dk
 // with value 0.d1...dk * 10^n: fixed notation for -4 < n <= 15, scientific otherwise.
-void write_double(double v, std::string& out) {
+void append_json_number(double v, std::string& out) {
   if (!std::isfinite(v)) {
     out += "null";
     return;
@@ -109,6 +107,8 @@ void write_double(double v, std::string& out) {
   }
 }
 
+namespace {
+
 template <class Integer>
 void write_integer(Integer v, std::string& out) {
   char buffer[24];
@@ -125,7 +125,7 @@ void write_value(const nlohmann::json& value, std::string& out) {
       for (const auto& [key, member] : value.items()) {
         if (!first) out += ',';
         first = false;
-        write_string(key, out);
+        append_json_string(key, out);
         out += ':';
         write_value(member, out);
       }
@@ -143,11 +143,11 @@ void write_value(const nlohmann::json& value, std::string& out) {
       out += ']';
       return;
     }
-    case Type::string: write_string(value.get_ref<const std::string&>(), out); return;
+    case Type::string: append_json_string(value.get_ref<const std::string&>(), out); return;
     case Type::boolean: out += value.get<bool>() ? "true" : "false"; return;
     case Type::number_integer: write_integer(value.get<std::int64_t>(), out); return;
     case Type::number_unsigned: write_integer(value.get<std::uint64_t>(), out); return;
-    case Type::number_float: write_double(value.get<double>(), out); return;
+    case Type::number_float: append_json_number(value.get<double>(), out); return;
     case Type::null:
     case Type::binary:  // never built by the api
     case Type::discarded: out += "null"; return;
@@ -156,8 +156,6 @@ void write_value(const nlohmann::json& value, std::string& out) {
 
 }  // namespace
 
-void append_json_string(std::string_view text, std::string& out) { write_string(text, out); }
-void append_json_number(double value, std::string& out) { write_double(value, out); }
 
 std::string dump_json(const nlohmann::json& value) {
   std::string out;

@@ -83,8 +83,7 @@ const Json* RequestReader::optional(const Json& object, std::string_view key) {
 
 namespace {
 
-// A finite number, or nullopt: the check of the common case, before any JSON Pointer is
-// built (building one per coordinate cost more than reading the whole curve).
+// A finite number, or nullopt: the common case, checked before any JSON Pointer is built.
 std::optional<double> plain_number(const Json& value) {
   if (!value.is_number()) return std::nullopt;
   const double v = value.get<double>();
@@ -95,17 +94,14 @@ std::optional<double> plain_number(const Json& value) {
 }  // namespace
 
 std::optional<double> RequestReader::number(const Json& value, const std::string& pointer) {
+  if (const auto v = plain_number(value)) return v;
   if (!value.is_number()) {
     fail(pointer, std::string("expected a number, got ") + type_name(value));
-    return std::nullopt;
-  }
-  const double v = value.get<double>();
-  // 1e999 parses to infinity: JSON has no infinities, and the kernel takes none.
-  if (!std::isfinite(v)) {
+  } else {
+    // 1e999 parses to infinity: JSON has no infinities, and the kernel takes none.
     fail(pointer, "number is not finite (out of double range)");
-    return std::nullopt;
   }
-  return v;
+  return std::nullopt;
 }
 
 std::optional<double> RequestReader::number_in(const Json& value, const std::string& pointer,
@@ -240,26 +236,19 @@ std::optional<std::variant<core::Curve, core::Curve3>> RequestReader::read_curve
   bool all_ok = true;
   for (std::size_t i = 0; i < value.size(); ++i) {
     const Json& p = value[i];
-    if (p.is_array() && p.size() == dimension) {
-      std::size_t k = 0;
-      for (; k < dimension; ++k) {
-        const auto c = plain_number(p[k]);
-        if (!c) break;
-        coords.push_back(*c);
-      }
-      if (k == dimension) continue;
-      coords.resize(coords.size() - k);
-    }
-    const std::string at = pointer_to(pointer, i);
+    // Pointers are built only for what is rejected: one per coordinate cost more than
+    // reading the whole curve.
     if (!p.is_array() || p.size() != dimension) {
       const std::string got =
           p.is_array() ? std::to_string(p.size()) + " coordinates" : std::string(type_name(p));
-      fail(at, "expected a point of " + std::to_string(dimension) + " numbers like the first, got " + got);
+      fail(pointer_to(pointer, i),
+           "expected a point of " + std::to_string(dimension) + " numbers like the first, got " + got);
       all_ok = false;
       continue;
     }
     for (std::size_t k = 0; k < dimension; ++k) {
-      const auto c = number(p[k], pointer_to(at, k));
+      auto c = plain_number(p[k]);
+      if (!c) c = number(p[k], pointer_to(pointer_to(pointer, i), k));
       all_ok = all_ok && c.has_value();
       coords.push_back(c.value_or(0.0));
     }
