@@ -75,8 +75,9 @@ Reply work_cap_reply(std::int64_t steps, const Limits& limits) {
                        "the intersection search took " + std::to_string(steps) +
                            " steps without finishing and ran out of the per-request work cap of " +
                            std::to_string(limits.max_work) +
-                           " units (curves that retrace each other along a non-linear "
-                           "reparametrisation, or touch to a high order, need unbounded work)");
+                           " units (curves that come within rounding of each other along an "
+                           "arc without coinciding, or touch to a high order, need work that "
+                           "grows without bound as they get closer)");
 }
 
 Reply self_work_cap_reply(std::int64_t boxes, const Limits& limits) {

@@ -6,6 +6,7 @@
 
 #include "core/intersect/bernstein1d.hpp"
 #include "core/intersect/collinear.hpp"
+#include "core/intersect/common_arc.hpp"
 #include "core/intersect/fat_curve.hpp"
 #include "core/intersect/kind.hpp"
 #include "core/intersect/merge.hpp"
@@ -153,7 +154,10 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
       return result;
     }
   }
-  const std::vector<OverlapFinding> overlaps = find_overlaps(wf, wg);
+  // An improper curve (one that traces its arc more than once) overlaps the other along
+  // polynomial reparametrisations; two proper ones only along an affine map.
+  std::vector<OverlapFinding> overlaps = find_arc_overlaps(wf, wg);
+  if (overlaps.empty()) overlaps = find_overlaps(wf, wg);
   for (const OverlapFinding& o : overlaps) result.overlaps.push_back(o.overlap);
   // A point curve's parameter is free: one exact root (at 0, its interval widened to [0, 1]
   // below) per end of the other curve that is the point. The search alone can miss a point

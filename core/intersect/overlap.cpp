@@ -7,7 +7,9 @@
 #include "core/binomial.hpp"
 #include "core/degree.hpp"
 #include "core/intersect/bernstein1d.hpp"
-#include "core/intersect/fixed_extent.hpp"
+#include "core/intersect/common_arc.hpp"
+#include "core/intersect/gauss_newton.hpp"
+#include "core/intersect/monomial.hpp"
 
 namespace bezier::core {
 
@@ -16,51 +18,6 @@ namespace {
 constexpr double kU = bernstein::kU;
 /// Overlaps shorter than this (in s) are left to the search.
 constexpr double kShortestOverlap = 0x1p-30;
-
-/// Monomial coefficients a_k = C(n,k) Δ^k P_0 of one coordinate (Δ^k: the k-th forward
-/// difference of the control points; Farin, §5.4), by repeated differences in place.
-/// The differences for monomial, in place in d (E entries, with_fixed_extent: a constant
-/// number for degrees 1 to 3, so the loops unroll).
-template <std::size_t E>
-Coeffs monomial_from(std::span<double, E> d) {
-  const std::size_t n = d.size() - 1;
-  Coeffs a(d.size(), Coeffs::Uninitialized{});
-  double choose = 1.0;  // C(n, k), exact for the degrees accepted
-  for (std::size_t k = 0; k <= n; ++k) {
-    a[k] = choose * d[0];
-    for (std::size_t i = 0; i + k < n; ++i) d[i] = d[i + 1] - d[i];
-    choose = choose * static_cast<double>(n - k) / static_cast<double>(k + 1);
-  }
-  return a;
-}
-
-Coeffs monomial(std::span<const double> c) {
-  return with_fixed_extent(c.size(), [&](auto e) {
-    constexpr std::size_t E = decltype(e)::value;
-    if constexpr (E == std::dynamic_extent) {
-      Coeffs d(c);
-      return monomial_from(d.span());
-    } else {
-      std::array<double, E> d;
-      std::copy(c.begin(), c.end(), d.begin());
-      return monomial_from(std::span<double, E>(d));
-    }
-  });
-}
-
-/// The largest k whose monomial coefficient is above the rounding of the conversion
-/// (C(n,k) 2^k u magnitude, with a safety factor of 64): a degree-elevated curve, rounded
-/// to doubles, has nothing else above its true degree.
-int true_degree(const Coeffs& ax, const Coeffs& ay, double magnitude) {
-  const int n = static_cast<int>(ax.size()) - 1;
-  for (int k = n; k >= 1; --k) {
-    const double tol = 64 * binomial(n, k) * std::ldexp(1.0, k) * kU * magnitude;
-    const double v = bernstein::max2(std::fabs(ax[static_cast<std::size_t>(k)]),
-                                     std::fabs(ay[static_cast<std::size_t>(k)]));
-    if (v > tol) return k;
-  }
-  return 0;
-}
 
 /// How far the monomial coefficient a_k of a curve may be from that of a curve whose
 /// control points are within overlap_tolerance(degree) of its own: C(n, k) 2^k times that
@@ -144,6 +101,8 @@ class HullRegion {
   double d_lo_ = 0.0, d_hi_ = 0.0;
 };
 
+}  // namespace
+
 /// A necessary condition for find_overlaps to find anything, far cheaper than its monomial
 /// coefficients. Each end of an overlap it reports is an end of f or of g (two different
 /// ends: both of g, both of f, or one of each), and there the verified pieces' first (or
@@ -164,27 +123,15 @@ bool ends_may_overlap(const WorkingCurve& f, const WorkingCurve& g) noexcept {
   return ends >= 2;
 }
 
-}  // namespace
-
 double overlap_tolerance(int degree) noexcept {
   return 0x1p-42 * bernstein::max2(1, degree);
 }
 
-double locate_on_curve(const WorkingCurve& f, PointDD p, double start) {
-  double t = start;
-  for (int i = 0; i < 30; ++i) {
+double locate_on_curve(const WorkingCurve& f, PointDD p, double start, double converged) {
+  return gauss_newton(start, 30, converged, [&](double t) {
     const Residual r = residual(f, t, p);
-    const Point2 d = evaluate_with_tangent(f, t).tangent;
-    const double dd2 = d.x * d.x + d.y * d.y;
-    if (!(dd2 > 0)) break;
-    const double step = (r.x * d.x + r.y * d.y) / dd2;
-    // A refinement, not a search: a large step means f' nearly vanishes here (a turning
-    // point or cusp), where Gauss-Newton is unreliable; keep the guess.
-    if (!std::isfinite(step) || std::fabs(step) > 0x1p-20) break;
-    t -= step;
-    if (std::fabs(step) <= 0x1p-60) break;
-  }
-  return bernstein::min2(1.0, bernstein::max2(0.0, t));
+    return ResidualAndSlope{{r.x, r.y}, evaluate_with_tangent(f, t).tangent};
+  });
 }
 
 std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCurve& g) {
@@ -293,17 +240,12 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
   return out;
 }
 
-bool covered_by_overlap(const WorkingCurve& f, const CoincidenceMap& map, ParamInterval t,
-                        ParamInterval s) {
-  constexpr double kSlack = 0x1p-40;
-  const double p0 = map.alpha + map.beta * s.lo, p1 = map.alpha + map.beta * s.hi;
-  const double lo = bernstein::min2(p0, p1), hi = bernstein::max2(p0, p1);
-  if (hi < t.lo - kSlack || lo > t.hi + kSlack) return false;
-  const int n = f.degree;
+bool injective_on(std::span<const double> x, std::span<const double> y, double magnitude,
+                  double lo, double hi) {
+  const int n = static_cast<int>(x.size()) - 1;
   if (n < 1) return false;
-  const double u_lo = bernstein::min2(t.lo, lo) - kSlack, u_hi = bernstein::max2(t.hi, hi) + kSlack;
-  const Coeffs qx = bernstein::portion<double>(f.x, u_lo, u_hi);
-  const Coeffs qy = bernstein::portion<double>(f.y, u_lo, u_hi);
+  const Coeffs qx = bernstein::portion<double>(x, lo, hi);
+  const Coeffs qy = bernstein::portion<double>(y, lo, hi);
   Coeffs hx(static_cast<std::size_t>(n)), hy(static_cast<std::size_t>(n));
   double h_max = 0.0;
   for (std::size_t i = 0; i < hx.size(); ++i) {
@@ -312,10 +254,10 @@ bool covered_by_overlap(const WorkingCurve& f, const CoincidenceMap& map, ParamI
     h_max = bernstein::max2(h_max, bernstein::max2(std::fabs(hx[i]), std::fabs(hy[i])));
   }
   if (!(h_max > 0)) return false;
-  // Extrapolated pieces (U reaching outside [0, 1]) are larger; bound their rounding by the
+  // Extrapolated pieces (reaching outside [0, 1]) are larger; bound their rounding by the
   // largest control point.
   const double q_max = bernstein::max2(bernstein::max_abs(qx), bernstein::max_abs(qy));
-  const double err = 8 * (n + 1) * kU * bernstein::max2(q_max, f.magnitude) + 0x1p-40 * h_max;
+  const double err = 8 * (n + 1) * kU * bernstein::max2(q_max, magnitude) + 0x1p-40 * h_max;
   const std::size_t last = hx.size() - 1;
   const double n0 = std::hypot(hx[0], hy[0]), n1 = std::hypot(hx[last], hy[last]);
   const Point2 candidates[] = {
@@ -333,6 +275,16 @@ bool covered_by_overlap(const WorkingCurve& f, const CoincidenceMap& map, ParamI
     if (all) return true;
   }
   return false;
+}
+
+bool covered_by_overlap(const WorkingCurve& f, const CoincidenceMap& map, ParamInterval t,
+                        ParamInterval s) {
+  constexpr double kSlack = 0x1p-40;
+  const double p0 = map.alpha + map.beta * s.lo, p1 = map.alpha + map.beta * s.hi;
+  const double lo = bernstein::min2(p0, p1), hi = bernstein::max2(p0, p1);
+  if (hi < t.lo - kSlack || lo > t.hi + kSlack) return false;
+  const double u_lo = bernstein::min2(t.lo, lo) - kSlack, u_hi = bernstein::max2(t.hi, hi) + kSlack;
+  return injective_on(f.x, f.y, f.magnitude, u_lo, u_hi);
 }
 
 bool coincide_at_precision(const WorkingCurve& f, const WorkingCurve& g, ParamInterval t,
@@ -359,7 +311,8 @@ bool coincide_at_precision(const WorkingCurve& f, const WorkingCurve& g, ParamIn
   return true;
 }
 
-bool on_overlap(const OverlapFinding& o, double t, double s) noexcept {
+bool on_overlap(const OverlapFinding& o, double t, double s) {
+  if (o.arc) return on_arc_overlap(*o.arc, o.overlap, t, s);
   constexpr double kSlack = 0x1p-30;
   if (s < o.overlap.s_interval.lo - kSlack || s > o.overlap.s_interval.hi + kSlack) return false;
   return std::fabs(t - (o.map.alpha + o.map.beta * s)) <= kSlack;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <memory>
+#include <span>
 #include <vector>
 
 #include "core/intersect/result.hpp"
@@ -15,10 +17,21 @@ struct CoincidenceMap {
 };
 
 /// One overlap and the map that produced it.
+struct CommonArc;
+
+/// One overlap and the map that produced it: linear (map), or, when `arc` is set, the
+/// polynomial reparametrisations of a common arc (common_arc.hpp; map is then unused).
 struct OverlapFinding {
   Overlap overlap;
   CoincidenceMap map;
+  std::shared_ptr<const CommonArc> arc;
 };
+
+/// A necessary condition for two curves to overlap, far cheaper than any overlap test:
+/// each end of an overlap is an end of f or of g, where the other curve passes, so at least
+/// two of the four end points lie within 2 overlap_tolerance (plus rounding) of the other
+/// curve's hull (its control points' bounding box and fat line).
+[[nodiscard]] bool ends_may_overlap(const WorkingCurve& f, const WorkingCurve& g) noexcept;
 
 /// The overlap tolerance: two pieces coincide when their control points (written with the
 /// same degree) agree to within 2^-42 n of the curves' working scale (about 256 n ulps of
@@ -37,9 +50,16 @@ struct OverlapFinding {
 /// verified: f on [t_a, t_b] and g on [s_a, s_b] must have the same control points to
 /// within overlap_tolerance. Overlaps shorter than 2^-30 in s are left to the search, which
 /// reports them as contacts. Improper parametrisations (g(s) = f(q(s)) with q of degree
-/// >= 2) are not detected here; the search then runs into its work cap.
+/// >= 2) are find_arc_overlaps' (common_arc.hpp).
 [[nodiscard]] std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f,
                                                         const WorkingCurve& g);
+
+/// True when the curve with control points (x, y) is injective on [lo, hi] (which may reach
+/// outside [0, 1]): the hodograph's control vectors of that piece lie in an open half-plane,
+/// with a margin for the rounding of the portion, so the curve is strictly monotone along a
+/// direction there.
+[[nodiscard]] bool injective_on(std::span<const double> x, std::span<const double> y,
+                                double magnitude, double lo, double hi);
 
 /// True when every intersection inside the box t x s lies on the overlap's diagonal
 /// t = alpha + beta s, so the box holds nothing but overlap points and can be dropped: the
@@ -51,7 +71,7 @@ struct OverlapFinding {
                                       ParamInterval t, ParamInterval s);
 
 /// True when (t, s) lies on the overlap's diagonal to within 2^-30 in t.
-[[nodiscard]] bool on_overlap(const OverlapFinding& o, double t, double s) noexcept;
+[[nodiscard]] bool on_overlap(const OverlapFinding& o, double t, double s);
 
 /// True when f on t lies on g to within the rounding of the box's compensated pieces: f at
 /// five points of t, projected onto g (Gauss-Newton with double-double residuals, starting
@@ -65,9 +85,10 @@ struct OverlapFinding {
                                          ParamInterval t, ParamInterval s, Point2 center);
 
 /// Solves f(t) = p for t near `start` (Gauss-Newton on |f(t) - p|^2 with double-double
-/// residuals): the parameter of a point known to lie on f, refined from a close guess.
-/// Steps larger than 2^-20 end the iteration (f' nearly zero: the guess is kept). Result
-/// clamped to [0, 1].
-[[nodiscard]] double locate_on_curve(const WorkingCurve& f, PointDD p, double start);
+/// residuals, gauss_newton.hpp): the parameter of a point known to lie on f, refined from a
+/// close guess, until a step is at most `converged` (or 30 steps). Steps larger than 2^-20
+/// end the iteration (f' nearly zero: the guess is kept). Result clamped to [0, 1].
+[[nodiscard]] double locate_on_curve(const WorkingCurve& f, PointDD p, double start,
+                                     double converged = 0x1p-60);
 
 }  // namespace bezier::core

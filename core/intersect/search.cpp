@@ -9,6 +9,7 @@
 
 #include "core/intersect/bernstein1d.hpp"
 #include "core/intersect/bezier_clip.hpp"
+#include "core/intersect/common_arc.hpp"
 #include "core/intersect/hybrid.hpp"
 #include "core/intersect/implicit_clip.hpp"
 #include "core/intersect/kind.hpp"
@@ -215,8 +216,15 @@ class Searcher {
   }
 
   [[nodiscard]] bool covered(const Box& b) const {
+    const CommonArc* tested = nullptr;  // the overlaps of one arc share one test
     for (const OverlapFinding& o : in_.overlaps) {
-      if (covered_by_overlap(*in_.f, o.map, b.t, b.s)) return true;
+      if (o.arc) {
+        if (o.arc.get() == tested) continue;
+        tested = o.arc.get();
+        if (covered_by_arc(*o.arc, b.t, b.s)) return true;
+      } else if (covered_by_overlap(*in_.f, o.map, b.t, b.s)) {
+        return true;
+      }
     }
     return false;
   }

@@ -70,7 +70,8 @@ struct SearchOutput {
 /// intersection is ever dropped. When the bounds dominate a test (a tangency: the curves
 /// stay within rounding of each other), the box switches to compensated pieces
 /// (double-double, in a frame centred on the box); when even those cannot decide, the box
-/// is returned unresolved. Boxes covered by an overlap are dropped (covered_by_overlap).
+/// is returned unresolved. Boxes covered by an overlap are dropped (covered_by_overlap,
+/// covered_by_arc).
 [[nodiscard]] SearchOutput search(const SearchInput& input);
 
 }  // namespace bezier::core

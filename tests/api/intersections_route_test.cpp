@@ -202,21 +202,36 @@ TEST(IntersectionsRoute, DegreeAboveTheLimitIsRejected) {
       (Pointers{"/curves/0/points"}));
 }
 
+TEST(IntersectionsRoute, RetracedCurvesAnswerTheirOverlaps) {
+  // g(s) = f(4s(1 - s)) runs along f and back (the spec's "retraced" example): f on [0, 1]
+  // is g on [0, 1/2] and, reversed, g on [1/2, 1].
+  const json r = call(
+      R"({"curves":[{"points":[[0,0],[3,6],[6,0]]},{"points":[[0,0],[6,12],[8,-16],[6,12],[0,0]]}]})",
+      200);
+  EXPECT_TRUE(r["intersections"].empty());
+  ASSERT_EQ(r["overlaps"].size(), 2u);
+  EXPECT_EQ(r["overlaps"][0]["t_interval"], json::parse("[0.0, 1.0]"));
+  EXPECT_EQ(r["overlaps"][0]["s_interval"], json::parse("[0.0, 0.5]"));
+  EXPECT_EQ(r["overlaps"][0]["reversed"], false);
+  EXPECT_EQ(r["overlaps"][1]["t_interval"], json::parse("[0.0, 1.0]"));
+  EXPECT_EQ(r["overlaps"][1]["s_interval"], json::parse("[0.5, 1.0]"));
+  EXPECT_EQ(r["overlaps"][1]["reversed"], true);
+}
+
 TEST(IntersectionsRoute, WorkCapAnswers422NotAHang) {
-  // g(s) = f(4s(1 - s)) runs along f and back (the spec's "retraced" example).
+  // The retraced pair with g's middle control point moved by 4e-10: within about 1e-10 of
+  // f all along without coinciding, which takes the hybrid search about a million units.
+  const std::string near_retraced =
+      R"({"curves":[{"points":[[0,0],[3,6],[6,0]]},{"points":[[0,0],[6,12],[8,-15.9999999996],[6,12],[0,0]]}])";
   Limits limits;
   limits.max_work = 5000;
-  const json problem = call(
-      R"({"curves":[{"points":[[0,0],[3,6],[6,0]]},{"points":[[0,0],[6,12],[8,-16],[6,12],[0,0]]}]})",
-      422, limits);
+  const json problem = call(near_retraced + "}", 422, limits);
   EXPECT_EQ(problem["type"], "urn:bezier-service:problem:work-cap");
   EXPECT_EQ(problem["status"], 422);
   const std::string detail = problem["detail"].get<std::string>();
   EXPECT_NE(detail.find("work cap of 5000 units"), std::string::npos) << detail;
-  // The default cap stops it too.
-  const json at_default = call(
-      R"({"curves":[{"points":[[0,0],[3,6],[6,0]]},{"points":[[0,0],[6,12],[8,-16],[6,12],[0,0]]}]})",
-      422);
+  // Subdivision converges only linearly along it: the default cap stops it too.
+  const json at_default = call(near_retraced + R"(,"method":"subdivision"})", 422);
   EXPECT_EQ(at_default["type"], "urn:bezier-service:problem:work-cap");
 }
 

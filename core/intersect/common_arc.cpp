@@ -1,0 +1,450 @@
+#include "core/intersect/common_arc.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include "core/bernstein_roots.hpp"
+#include "core/binomial.hpp"
+#include "core/intersect/bernstein1d.hpp"
+#include "core/intersect/double_double.hpp"
+#include "core/intersect/gauss_newton.hpp"
+#include "core/intersect/monomial.hpp"
+
+namespace bezier::core {
+
+namespace {
+
+constexpr double kU = bernstein::kU;
+/// Overlaps shorter than this in t or s are left to the search (as in find_overlaps).
+constexpr double kShortestOverlap = 0x1p-30;
+/// How far the approximations of h, p and q (about 1e-10 of the curves' size for the
+/// degrees accepted) may put a point of u, h's parameter: the coverage test widens the
+/// ranges of p and q by this much.
+constexpr double kArcSlack = 0x1p-24;
+/// The candidate filters' relative tolerance: far above the rounding of monomial
+/// coefficients of degree 20 (2^20 u), far below any curve that is not improper.
+constexpr double kFilter = 1e-6;
+/// Changes of p or q (whose ranges are about [0, 1]) below this are rounding, not turns.
+constexpr double kTurnNoise = 0x1p-40;
+
+/// Monomial coefficients, constant first.
+using Monomial = std::vector<double>;
+
+double max_abs(std::span<const double> v) noexcept {
+  double m = 0.0;
+  for (const double x : v) m = bernstein::max2(m, std::fabs(x));
+  return m;
+}
+
+/// The monic right factor p (with p(0) = 0) of degree k of a polynomial a of degree n = d k
+/// (monomial coefficients a[0..n]): p + e = (a / a_n)^(1/d) truncated at infinity. With
+/// z = 1/t, (p + e)(t) = t^k (1 + sum_j e_j z^j) and a / a_n = t^n (1 + sum_j g_j z^j),
+/// g_j = a_(n-j) / a_n; the coefficients of F = G^(1/d) follow from G F' = (1/d) G' F:
+/// j e_j = sum_{i=1..j} ((1/d + 1) i - j) g_i e_(j-i), e_0 = 1.
+Monomial right_factor(const Coeffs& a, int n, int k) {
+  const double alpha = 1.0 / (n / k);
+  std::vector<double> g(static_cast<std::size_t>(k) + 1), e(static_cast<std::size_t>(k) + 1);
+  for (int j = 1; j <= k; ++j) g[j] = a[static_cast<std::size_t>(n - j)] / a[static_cast<std::size_t>(n)];
+  e[0] = 1.0;
+  for (int j = 1; j <= k; ++j) {
+    double sum = 0.0;
+    for (int i = 1; i <= j; ++i) sum += ((alpha + 1) * i - j) * g[i] * e[j - i];
+    e[j] = sum / j;
+  }
+  Monomial p(static_cast<std::size_t>(k) + 1, 0.0);
+  p[static_cast<std::size_t>(k)] = 1.0;
+  for (int j = 1; j < k; ++j) p[static_cast<std::size_t>(k - j)] = e[j];
+  return p;  // e_k, the constant, is dropped: p(0) = 0
+}
+
+/// True when x (monomial, degree <= n) is a polynomial in the monic p to within kFilter
+/// of `size` (the largest coefficient of either coordinate): every remainder of the
+/// repeated division by p is a constant.
+bool is_polynomial_in(const Coeffs& x, int n, const Monomial& p, double size) {
+  const int k = static_cast<int>(p.size()) - 1;
+  Monomial r(x.begin(), x.begin() + n + 1);
+  const double tol = kFilter * size * bernstein::max2(1.0, max_abs(p));
+  const auto constant_below = [&](int degree) {
+    for (int j = 1; j <= degree; ++j)
+      if (!(std::fabs(r[static_cast<std::size_t>(j)]) <= tol)) return false;
+    return true;
+  };
+  for (int degree = n; degree >= k; degree -= k) {
+    Monomial quotient(static_cast<std::size_t>(degree - k) + 1);
+    for (int top = degree; top >= k; --top) {
+      const double c = r[static_cast<std::size_t>(top)];
+      quotient[static_cast<std::size_t>(top - k)] = c;
+      for (int l = 0; l <= k; ++l) r[static_cast<std::size_t>(top - k + l)] -= c * p[static_cast<std::size_t>(l)];
+    }
+    if (!constant_below(k - 1)) return false;
+    r = std::move(quotient);
+  }
+  return constant_below(static_cast<int>(r.size()) - 1);
+}
+
+/// Bernstein coefficients on [0, 1] of a monomial polynomial: b_i = sum_{j<=i} C(i,j)/C(m,j) a_j.
+Coeffs bernstein_from(const Monomial& a) {
+  const int m = static_cast<int>(a.size()) - 1;
+  Coeffs b(a.size());
+  for (int i = 0; i <= m; ++i) {
+    double sum = 0.0;
+    for (int j = 0; j <= i; ++j) sum += binomial(i, j) / binomial(m, j) * a[static_cast<std::size_t>(j)];
+    b[static_cast<std::size_t>(i)] = sum;
+  }
+  return b;
+}
+
+double value(const Coeffs& c, double t) { return bernstein::evaluate(c, t); }
+
+Point2 point_of(const WorkingCurve& c, double t) {
+  const PointDD p = evaluate_dd(c, t);
+  return {dd::to_double(p.x), dd::to_double(p.y)};
+}
+
+/// A t in [lo, hi] with c(t) = u, where c(lo) <= u <= c(hi) or c(lo) >= u >= c(hi)
+/// (bisection on the sign of c - u: a crossing, monotone or not).
+double crossing(const Coeffs& c, double lo, double hi, double u) {
+  const bool rising = value(c, hi) >= value(c, lo);
+  for (int i = 0; i < 80 && lo != hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid == lo || mid == hi) break;
+    if ((value(c, mid) < u) == rising)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/// Solves the (d+1) x (d+1) system m x = b in place (Gaussian elimination with partial
+/// pivoting); false when singular.
+bool solve(std::vector<std::vector<double>>& m, std::vector<double>& b1, std::vector<double>& b2) {
+  const std::size_t n = m.size();
+  for (std::size_t col = 0; col < n; ++col) {
+    std::size_t pivot = col;
+    for (std::size_t r = col + 1; r < n; ++r)
+      if (std::fabs(m[r][col]) > std::fabs(m[pivot][col])) pivot = r;
+    if (!(std::fabs(m[pivot][col]) > 0)) return false;
+    std::swap(m[pivot], m[col]);
+    std::swap(b1[pivot], b1[col]);
+    std::swap(b2[pivot], b2[col]);
+    for (std::size_t r = col + 1; r < n; ++r) {
+      const double f = m[r][col] / m[col][col];
+      for (std::size_t c = col; c < n; ++c) m[r][c] -= f * m[col][c];
+      b1[r] -= f * b1[col];
+      b2[r] -= f * b2[col];
+    }
+  }
+  for (std::size_t i = n; i-- > 0;) {
+    for (std::size_t c = i + 1; c < n; ++c) {
+      b1[i] -= m[i][c] * b1[c];
+      b2[i] -= m[i][c] * b2[c];
+    }
+    b1[i] /= m[i][i];
+    b2[i] /= m[i][i];
+  }
+  return true;
+}
+
+/// Where the polynomial c (Bernstein, [0, 1]) turns, and the pieces between: [0, 1] split
+/// at the roots of c' where c changes direction.
+std::vector<ParamInterval> monotone_pieces(const Coeffs& c) {
+  std::vector<double> breaks{0.0};
+  if (c.size() > 2) {
+    Coeffs d(c.size() - 1);
+    for (std::size_t i = 0; i + 1 < c.size(); ++i) d[i] = c[i + 1] - c[i];
+    for (const double r : bernstein_roots(d.span()).roots) {
+      if (r > 0x1p-40 && r < 1 - 0x1p-40 && r - breaks.back() > 0x1p-40) breaks.push_back(r);
+    }
+  }
+  breaks.push_back(1.0);
+  // A first piece within the noise joins the next one.
+  if (breaks.size() > 2 && std::fabs(value(c, breaks[1]) - value(c, 0.0)) <= kTurnNoise) {
+    breaks.erase(breaks.begin() + 1);
+  }
+  std::vector<ParamInterval> pieces;
+  for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+    const ParamInterval next{breaks[i], breaks[i + 1]};
+    // A turn within the rounding of c's coefficients (a factor's noise near a double root
+    // at an end, such as t^2 computed as t^2 - 1e-16 t) is no turn: its piece joins the
+    // last one.
+    if (std::fabs(value(c, next.hi) - value(c, next.lo)) <= kTurnNoise && !pieces.empty()) {
+      pieces.back().hi = next.hi;
+      continue;
+    }
+    // A root of c' where c keeps its direction (an inflection of c) splits nothing.
+    if (!pieces.empty()) {
+      const ParamInterval last = pieces.back();
+      const bool last_rises = value(c, last.hi) >= value(c, last.lo);
+      const bool next_rises = value(c, next.hi) >= value(c, next.lo);
+      if (last_rises == next_rises) {
+        pieces.back().hi = next.hi;
+        continue;
+      }
+    }
+    pieces.push_back(next);
+  }
+  return pieces;
+}
+
+/// The factorisation c = h(p) for a right factor p (monomial, monic) of degree k, n = d k:
+/// p scaled to the range [0, 1] over [0, 1], h interpolated at the Chebyshev-Lobatto
+/// nodes of u (each node's t found on p by bisection between where p is 0 and 1).
+std::optional<Factorisation> factor_through(const WorkingCurve& c, const Monomial& p_monic, int d) {
+  Coeffs p = bernstein_from(p_monic);
+  double t_lo = 0.0, t_hi = 0.0, lo = p[0], hi = p[0];
+  std::vector<double> extremes{1.0};
+  for (const ParamInterval piece : monotone_pieces(p)) extremes.push_back(piece.lo);
+  for (const double t : extremes) {
+    const double v = value(p, t);
+    if (v < lo) lo = v, t_lo = t;
+    if (v > hi) hi = v, t_hi = t;
+  }
+  if (!(hi - lo > 0)) return std::nullopt;
+  for (double& v : p.span()) v = (v - lo) / (hi - lo);
+  const std::size_t size = static_cast<std::size_t>(d) + 1;
+  std::vector<std::vector<double>> m(size, std::vector<double>(size));
+  std::vector<double> bx(size), by(size);
+  for (std::size_t j = 0; j < size; ++j) {
+    const double u = 0.5 * (1 - std::cos(std::numbers::pi * static_cast<double>(j) / d));
+    const double t = j == 0 ? t_lo : j + 1 == size ? t_hi : crossing(p, t_lo, t_hi, u);
+    const double uj = j == 0 ? 0.0 : j + 1 == size ? 1.0 : value(p, t);
+    for (int i = 0; i <= d; ++i)
+      m[j][static_cast<std::size_t>(i)] = binomial(d, i) * std::pow(uj, i) * std::pow(1 - uj, d - i);
+    const Point2 q = point_of(c, t);
+    bx[j] = q.x;
+    by[j] = q.y;
+  }
+  if (!solve(m, bx, by)) return std::nullopt;
+  Factorisation out;
+  out.hx = Coeffs(std::span<const double>(bx));
+  out.hy = Coeffs(std::span<const double>(by));
+  out.p = std::move(p);
+  const int samples = 2 * c.degree + 1;
+  for (int i = 0; i < samples; ++i) {
+    const double t = static_cast<double>(i) / (samples - 1);
+    const Point2 a = point_of(c, t);
+    const double u = value(out.p, t);
+    const double ex = value(out.hx, u) - a.x, ey = value(out.hy, u) - a.y;
+    if (!(std::fabs(ex) <= kFilter * c.magnitude && std::fabs(ey) <= kFilter * c.magnitude)) {
+      return std::nullopt;
+    }
+  }
+  return out;
+}
+
+/// A proper curve as its own factorisation: h = c, p(t) = t.
+Factorisation identity(const WorkingCurve& c) {
+  Factorisation out;
+  out.hx = c.x;
+  out.hy = c.y;
+  out.p = Coeffs(2);
+  out.p[1] = 1.0;
+  return out;
+}
+
+/// Newton's method for a turning point of c's parametrisation (c'(t) = 0 where the curve
+/// retraces itself): t minimising |c'|, from a guess close to it. Steps above 2^-20 end it.
+double refine_turn(const WorkingCurve& c, double t) {
+  const int n = c.degree;
+  if (n < 2) return t;
+  Coeffs d1x(static_cast<std::size_t>(n)), d1y(static_cast<std::size_t>(n));
+  for (std::size_t i = 0; i < d1x.size(); ++i) {
+    d1x[i] = n * (c.x[i + 1] - c.x[i]);
+    d1y[i] = n * (c.y[i + 1] - c.y[i]);
+  }
+  Coeffs d2x(d1x.size() - 1), d2y(d1x.size() - 1);
+  for (std::size_t i = 0; i < d2x.size(); ++i) {
+    d2x[i] = (n - 1) * (d1x[i + 1] - d1x[i]);
+    d2y[i] = (n - 1) * (d1y[i + 1] - d1y[i]);
+  }
+  return gauss_newton(t, 8, 0x1p-60, [&](double u) {
+    return ResidualAndSlope{{value(d1x, u), value(d1y, u)}, {value(d2x, u), value(d2y, u)}};
+  });
+}
+
+/// A t in the monotone piece with c(t) = u, clamped to the piece.
+double preimage(const Coeffs& c, ParamInterval piece, double u) {
+  const double a = value(c, piece.lo), b = value(c, piece.hi);
+  if (u <= bernstein::min2(a, b)) return a <= b ? piece.lo : piece.hi;
+  if (u >= bernstein::max2(a, b)) return a <= b ? piece.hi : piece.lo;
+  return crossing(c, piece.lo, piece.hi, u);
+}
+
+/// True when f on [t0, t1] lies on g: at 2 (m + n) + 1 points of it, f's point projected
+/// onto g from the matching point q^-1(p(t)) of g's piece is within the overlap tolerance
+/// (plus rounding) of g.
+bool piece_lies_on(const WorkingCurve& f, const WorkingCurve& g, const CommonArc& arc,
+                   double t0, double t1, ParamInterval s_piece) {
+  const int degree = std::max(f.degree, g.degree);
+  const double floor = overlap_tolerance(degree) +
+                       64 * degree * kU * bernstein::max2(f.magnitude, g.magnitude) +
+                       f.frame_error + g.frame_error;
+  const int samples = 2 * (f.degree + g.degree) + 1;
+  for (int i = 0; i < samples; ++i) {
+    const double t = t0 + (t1 - t0) * ((i + 0.5) / samples);
+    const PointDD pt = evaluate_dd(f, t);
+    // From a guess within about 1e-9 (q's accuracy), steps of 2^-50 move g(s) far less
+    // than the tolerance: converged.
+    const double s = locate_on_curve(g, pt, preimage(arc.q, s_piece, value(arc.p, t)), 0x1p-50);
+    const PointDD ps = evaluate_dd(g, s);
+    const double ex = dd::to_double(dd::sub(ps.x, pt.x)), ey = dd::to_double(dd::sub(ps.y, pt.y));
+    if (!(std::fabs(ex) <= floor && std::fabs(ey) <= floor)) return false;
+  }
+  return true;
+}
+
+/// The overlaps of the pieces of f (t) and g (s) on which p and q are monotone; false when
+/// a piece long enough to report fails its verification.
+bool arc_pieces(const WorkingCurve& f, const WorkingCurve& g, CommonArc& arc,
+                std::vector<Overlap>& out) {
+  const std::vector<ParamInterval> t_pieces = monotone_pieces(arc.p);
+  const std::vector<ParamInterval> s_pieces = monotone_pieces(arc.q);
+  for (const ParamInterval I : t_pieces) {
+    const double p0 = value(arc.p, I.lo), p1 = value(arc.p, I.hi);
+    for (const ParamInterval J : s_pieces) {
+      const double q0 = value(arc.q, J.lo), q1 = value(arc.q, J.hi);
+      const double p_lo = bernstein::min2(p0, p1), p_hi = bernstein::max2(p0, p1);
+      const double q_lo = bernstein::min2(q0, q1), q_hi = bernstein::max2(q0, q1);
+      const double u_lo = bernstein::max2(p_lo, q_lo), u_hi = bernstein::min2(p_hi, q_hi);
+      if (u_hi < u_lo - kArcSlack) continue;  // the pieces trace different parts of h
+      double ends_t[2], ends_s[2];
+      for (int e = 0; e < 2; ++e) {
+        const double u = e == 0 ? u_lo : u_hi;
+        // The end comes from f's piece (an end of f or a turning point on f) or from g's,
+        // or from both when their bounds agree (an end of each: Newton could not move
+        // from a turning point).
+        const double p_end = e == 0 ? p_lo : p_hi, q_end = e == 0 ? q_lo : q_hi;
+        const bool both = std::fabs(p_end - q_end) <= kTurnNoise;
+        const bool from_f = both || (e == 0 ? p_lo >= q_lo : p_hi <= q_hi);
+        const bool from_g = both || !from_f;
+        if (from_f) {
+          double t = (e == 0) == (p0 <= p1) ? I.lo : I.hi;
+          if (t != 0.0 && t != 1.0) t = refine_turn(f, t);
+          ends_t[e] = t;
+        }
+        if (from_g) {
+          double s = (e == 0) == (q0 <= q1) ? J.lo : J.hi;
+          if (s != 0.0 && s != 1.0) s = refine_turn(g, s);
+          ends_s[e] = s;
+        }
+        if (!from_g) ends_s[e] = locate_on_curve(g, evaluate_dd(f, ends_t[e]), preimage(arc.q, J, u));
+        if (!from_f) ends_t[e] = locate_on_curve(f, evaluate_dd(g, ends_s[e]), preimage(arc.p, I, u));
+      }
+      const ParamInterval t_range{bernstein::min2(ends_t[0], ends_t[1]),
+                                  bernstein::max2(ends_t[0], ends_t[1])};
+      const ParamInterval s_range{bernstein::min2(ends_s[0], ends_s[1]),
+                                  bernstein::max2(ends_s[0], ends_s[1])};
+      if (!(u_hi - u_lo > kArcSlack) || !(t_range.width() > kShortestOverlap) ||
+          !(s_range.width() > kShortestOverlap)) {
+        arc.searched.push_back({{t_range.lo - kShortestOverlap, t_range.hi + kShortestOverlap},
+                                {s_range.lo - kShortestOverlap, s_range.hi + kShortestOverlap}});
+        continue;
+      }
+      if (!piece_lies_on(f, g, arc, t_range.lo, t_range.hi, J)) return false;
+      Overlap o;
+      o.t_interval = t_range;
+      o.s_interval = s_range;
+      o.reversed = (p0 <= p1) != (q0 <= q1);
+      out.push_back(o);
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<Factorisation> factorise(const WorkingCurve& c) {
+  if (c.is_point || c.degree < 4) return std::nullopt;
+  const Coeffs ax = monomial(c.x), ay = monomial(c.y);
+  const int n = true_degree(ax, ay, c.magnitude);
+  const Coeffs& a = std::fabs(ax[static_cast<std::size_t>(n)]) >= std::fabs(ay[static_cast<std::size_t>(n)]) ? ax : ay;
+  const double size = bernstein::max2(max_abs(ax), max_abs(ay));
+  // Every common right factor of x and y is one of the largest (Lüroth), so the first k
+  // that works, from the top, is the largest.
+  for (int k = n / 2; k >= 2; --k) {
+    if (n % k != 0) continue;
+    const Monomial p = right_factor(a, n, k);
+    if (!is_polynomial_in(ax, n, p, size) || !is_polynomial_in(ay, n, p, size)) continue;
+    if (auto found = factor_through(c, p, n / k)) return found;
+  }
+  return std::nullopt;
+}
+
+std::vector<OverlapFinding> find_arc_overlaps(const WorkingCurve& f, const WorkingCurve& g) {
+  if (f.is_point || g.is_point || (f.degree < 4 && g.degree < 4)) return {};
+  const std::optional<Factorisation> ff = factorise(f), fg = factorise(g);
+  if (!ff && !fg) return {};
+  const Factorisation a = ff ? *ff : identity(f), b = fg ? *fg : identity(g);
+  // h_b(v) = h_a(alpha + beta v), found as find_overlaps finds its map, from the top two
+  // monomial coefficients of the dominant coordinate.
+  const Coeffs ax = monomial(a.hx), ay = monomial(a.hy), bx = monomial(b.hx), by = monomial(b.hy);
+  const double a_size = bernstein::max2(max_abs(a.hx), max_abs(a.hy));
+  const double b_size = bernstein::max2(max_abs(b.hx), max_abs(b.hy));
+  const int d = true_degree(ax, ay, a_size);
+  if (d < 2 || d != true_degree(bx, by, b_size)) return {};
+  const std::size_t top = static_cast<std::size_t>(d);
+  const bool use_x = std::fabs(ax[top]) >= std::fabs(ay[top]);
+  const Coeffs& A = use_x ? ax : ay;
+  const Coeffs& B = use_x ? bx : by;
+  const double r = B[top] / A[top];
+  std::vector<double> betas;
+  if (d % 2 == 1) {
+    betas.push_back(std::copysign(std::pow(std::fabs(r), 1.0 / d), r));
+  } else if (r > 0) {
+    betas.push_back(std::pow(r, 1.0 / d));
+    betas.push_back(-betas.back());
+  }
+  for (const double beta : betas) {
+    const double alpha = (B[top - 1] / std::pow(beta, d - 1) - A[top - 1]) / (d * A[top]);
+    if (!std::isfinite(alpha) || !std::isfinite(beta) || beta == 0.0) continue;
+    bool same = true;
+    for (int i = 0; i <= 4 && same; ++i) {
+      const double v = i / 4.0, u = alpha + beta * v;
+      same = std::fabs(value(b.hx, v) - value(a.hx, u)) <= kFilter * b_size &&
+             std::fabs(value(b.hy, v) - value(a.hy, u)) <= kFilter * b_size;
+    }
+    if (!same) continue;
+    auto arc = std::make_shared<CommonArc>();
+    arc->hx = a.hx;
+    arc->hy = a.hy;
+    arc->h_magnitude = a_size;
+    arc->p = a.p;
+    arc->q = b.p;
+    for (double& v : arc->q.span()) v = alpha + beta * v;
+    std::vector<Overlap> overlaps;
+    if (!arc_pieces(f, g, *arc, overlaps) || overlaps.empty()) continue;
+    std::vector<OverlapFinding> out;
+    for (const Overlap& o : overlaps) {
+      OverlapFinding found;
+      found.overlap = o;
+      found.arc = arc;
+      out.push_back(found);
+    }
+    return out;
+  }
+  return {};
+}
+
+bool covered_by_arc(const CommonArc& arc, ParamInterval t, ParamInterval s) {
+  for (const auto& [bt, bs] : arc.searched) {
+    if (t.lo <= bt.hi && bt.lo <= t.hi && s.lo <= bs.hi && bs.lo <= s.hi) return false;
+  }
+  const Coeffs pt = bernstein::portion<double>(arc.p, t.lo, t.hi);
+  const Coeffs qs = bernstein::portion<double>(arc.q, s.lo, s.hi);
+  double lo = pt[0], hi = pt[0];
+  for (const double v : pt) lo = bernstein::min2(lo, v), hi = bernstein::max2(hi, v);
+  for (const double v : qs) lo = bernstein::min2(lo, v), hi = bernstein::max2(hi, v);
+  return injective_on(arc.hx, arc.hy, arc.h_magnitude, lo - kArcSlack, hi + kArcSlack);
+}
+
+bool on_arc_overlap(const CommonArc& arc, const Overlap& overlap, double t, double s) {
+  constexpr double kSlack = 0x1p-30;
+  if (t < overlap.t_interval.lo - kSlack || t > overlap.t_interval.hi + kSlack) return false;
+  if (s < overlap.s_interval.lo - kSlack || s > overlap.s_interval.hi + kSlack) return false;
+  return std::fabs(value(arc.p, t) - value(arc.q, s)) <= kSlack;
+}
+
+}  // namespace bezier::core

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <span>
+
+#include "core/binomial.hpp"
+#include "core/intersect/bernstein1d.hpp"
+#include "core/intersect/coeffs.hpp"
+#include "core/intersect/fixed_extent.hpp"
+
+namespace bezier::core {
+
+namespace monomial_detail {
+
+/// The differences for monomial, in place in d (E entries, with_fixed_extent: a constant
+/// number for degrees 1 to 3, so the loops unroll).
+template <std::size_t E>
+Coeffs monomial_from(std::span<double, E> d) {
+  const std::size_t n = d.size() - 1;
+  Coeffs a(d.size(), Coeffs::Uninitialized{});
+  double choose = 1.0;  // C(n, k), exact for the degrees accepted
+  for (std::size_t k = 0; k <= n; ++k) {
+    a[k] = choose * d[0];
+    for (std::size_t i = 0; i + k < n; ++i) d[i] = d[i + 1] - d[i];
+    choose = choose * static_cast<double>(n - k) / static_cast<double>(k + 1);
+  }
+  return a;
+}
+
+}  // namespace monomial_detail
+
+/// Monomial coefficients a_k = C(n,k) Δ^k P_0 of one coordinate of a Bézier curve on
+/// [0, 1] (Δ^k: the k-th forward difference of the control points; Farin, §5.4), by
+/// repeated differences.
+[[nodiscard]] inline Coeffs monomial(std::span<const double> c) {
+  return with_fixed_extent(c.size(), [&](auto e) {
+    constexpr std::size_t E = decltype(e)::value;
+    if constexpr (E == std::dynamic_extent) {
+      Coeffs d(c);
+      return monomial_detail::monomial_from(d.span());
+    } else {
+      std::array<double, E> d;
+      std::copy(c.begin(), c.end(), d.begin());
+      return monomial_detail::monomial_from(std::span<double, E>(d));
+    }
+  });
+}
+
+/// The largest k whose monomial coefficient (of either coordinate) is above the rounding of
+/// the conversion (C(n,k) 2^k u magnitude, with a safety factor of 64): a degree-elevated
+/// curve, rounded to doubles, has nothing else above its true degree.
+[[nodiscard]] inline int true_degree(const Coeffs& ax, const Coeffs& ay, double magnitude) {
+  const int n = static_cast<int>(ax.size()) - 1;
+  for (int k = n; k >= 1; --k) {
+    const double tol = 64 * binomial(n, k) * std::ldexp(1.0, k) * bernstein::kU * magnitude;
+    const double v = bernstein::max2(std::fabs(ax[static_cast<std::size_t>(k)]),
+                                     std::fabs(ay[static_cast<std::size_t>(k)]));
+    if (v > tol) return k;
+  }
+  return 0;
+}
+
+}  // namespace bezier::core

@@ -1,0 +1,239 @@
+// Overlaps along polynomial reparametrisations (issue 4, item 3): curves g = h(q(s)) that
+// trace an arc of a proper curve h at a non-uniform speed, or more than once. Each curve is
+// built in exact rationals (the composition of Bézier curves through de Casteljau's
+// algorithm on polynomials in Bernstein form) and rounded once; each expected overlap comes
+// from the closed form of the reparametrisations: f(t) = h(p(t)) and g(s) = h(q(s)) meet
+// exactly where p(t) = q(s).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/binomial.hpp"
+#include "core/curve.hpp"
+#include "core/degree.hpp"
+#include "core/evaluate.hpp"
+#include "core/intersect/intersect.hpp"
+#include "tests/support/exact.hpp"
+
+namespace bezier::core {
+namespace {
+
+using test::Rational;
+using Poly = std::vector<Rational>;  // Bernstein coefficients on [0, 1]
+
+Rational choose(int n, int k) {
+  return Rational(static_cast<long long>(binomial(n, k)));
+}
+
+/// The product of two polynomials in Bernstein form: degree a + b, coefficients
+/// sum_j C(a,j) C(b,i-j) / C(a+b,i) A_j B_(i-j).
+Poly multiply(const Poly& a, const Poly& b) {
+  const int m = static_cast<int>(a.size()) - 1, n = static_cast<int>(b.size()) - 1;
+  Poly out(static_cast<std::size_t>(m + n + 1), Rational(0));
+  for (int i = 0; i <= m + n; ++i) {
+    Rational sum(0);
+    for (int j = std::max(0, i - n); j <= std::min(m, i); ++j) {
+      sum = sum + choose(m, j) * choose(n, i - j) * a[static_cast<std::size_t>(j)] *
+                      b[static_cast<std::size_t>(i - j)];
+    }
+    out[static_cast<std::size_t>(i)] = sum / choose(m + n, i);
+  }
+  return out;
+}
+
+Poly add(const Poly& a, const Poly& b) {
+  Poly out(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) out[i] = a[i] + b[i];
+  return out;
+}
+
+/// h(q(s)) for h with control points hx, hy and q in Bernstein form: de Casteljau's
+/// algorithm with polynomial entries, h_i <- (1 - q) h_i + q h_(i+1).
+Curve compose(const std::vector<std::pair<Rational, Rational>>& h, const Poly& q) {
+  Poly one_minus_q(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) one_minus_q[i] = Rational(1) - q[i];
+  std::vector<Poly> x, y;
+  for (const auto& [px, py] : h) {
+    x.push_back({px});
+    y.push_back({py});
+  }
+  for (std::size_t level = h.size() - 1; level > 0; --level) {
+    for (std::size_t i = 0; i < level; ++i) {
+      x[i] = add(multiply(one_minus_q, x[i]), multiply(q, x[i + 1]));
+      y[i] = add(multiply(one_minus_q, y[i]), multiply(q, y[i + 1]));
+    }
+  }
+  std::vector<Point2> pts;
+  for (std::size_t i = 0; i < x[0].size(); ++i) pts.push_back({x[0][i].to_double(), y[0][i].to_double()});
+  return Curve(pts);
+}
+
+/// A parabola through (0, 0), (1, 2), (3, 0): proper (a quadratic that is not a line).
+std::vector<std::pair<Rational, Rational>> parabola() {
+  return {{Rational(0), Rational(0)}, {Rational(1), Rational(2)}, {Rational(3), Rational(0)}};
+}
+
+/// A cubic with a loop-free S shape: proper.
+std::vector<std::pair<Rational, Rational>> s_cubic() {
+  return {{Rational(0), Rational(0)}, {Rational(1), Rational(3)},
+          {Rational(2), Rational(-3)}, {Rational(3), Rational(0)}};
+}
+
+Curve curve_of(const std::vector<std::pair<Rational, Rational>>& h) {
+  return compose(h, {Rational(0), Rational(1)});
+}
+
+/// q(s) = s^2, s^3, 4 s (1 - s), ... in Bernstein form.
+const Poly kSquare = {Rational(0), Rational(0), Rational(1)};
+const Poly kCube = {Rational(0), Rational(0), Rational(0), Rational(1)};
+const Poly kOutAndBack = {Rational(0), Rational(2), Rational(0)};  // 4 s (1 - s)
+
+struct Expected {
+  double t_lo, t_hi, s_lo, s_hi;
+  bool reversed;
+};
+
+void expect_overlaps(const IntersectionResult& r, const std::vector<Expected>& expected,
+                     double tol = 1e-12) {
+  ASSERT_EQ(r.status, IntersectStatus::ok);
+  EXPECT_TRUE(r.intersections.empty()) << r.intersections.size() << " intersections, first at t "
+                                       << (r.intersections.empty() ? 0 : r.intersections[0].t);
+  ASSERT_EQ(r.overlaps.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_NEAR(r.overlaps[i].t_interval.lo, expected[i].t_lo, tol);
+    EXPECT_NEAR(r.overlaps[i].t_interval.hi, expected[i].t_hi, tol);
+    EXPECT_NEAR(r.overlaps[i].s_interval.lo, expected[i].s_lo, tol);
+    EXPECT_NEAR(r.overlaps[i].s_interval.hi, expected[i].s_hi, tol);
+    EXPECT_EQ(r.overlaps[i].reversed, expected[i].reversed);
+  }
+}
+
+/// The same pair in the other order: every overlap with t and s swapped.
+std::vector<Expected> swapped(std::vector<Expected> e) {
+  for (Expected& x : e) {
+    std::swap(x.t_lo, x.s_lo);
+    std::swap(x.t_hi, x.s_hi);
+  }
+  std::sort(e.begin(), e.end(), [](const Expected& a, const Expected& b) {
+    return a.t_lo != b.t_lo ? a.t_lo < b.t_lo : a.s_lo < b.s_lo;
+  });
+  return e;
+}
+
+const IntersectMethod kMethods[] = {IntersectMethod::hybrid, IntersectMethod::bezier_clipping,
+                                    IntersectMethod::subdivision};
+
+void check_both_orders(const Curve& f, const Curve& g, const std::vector<Expected>& expected,
+                       double tol = 1e-12) {
+  for (const IntersectMethod m : kMethods) {
+    SCOPED_TRACE(std::string(to_string(m)));
+    IntersectOptions options;
+    options.method = m;
+    expect_overlaps(intersect(f, g, options), expected, tol);
+    expect_overlaps(intersect(g, f, options), swapped(expected), tol);
+  }
+}
+
+TEST(ArcOverlap, ParabolaAtNonUniformSpeed) {
+  // g(s) = h(s^2): the whole of h, t = s^2.
+  check_both_orders(curve_of(parabola()), compose(parabola(), kSquare), {{0, 1, 0, 1, false}});
+}
+
+TEST(ArcOverlap, CubicTracedByADegreeSixCurve) {
+  check_both_orders(curve_of(s_cubic()), compose(s_cubic(), kSquare), {{0, 1, 0, 1, false}});
+}
+
+TEST(ArcOverlap, OutAndBack) {
+  // g(s) = h(4 s (1 - s)) runs along h to its end at s = 1/2 and back.
+  check_both_orders(curve_of(parabola()), compose(parabola(), kOutAndBack),
+                    {{0, 1, 0, 0.5, false}, {0, 1, 0.5, 1, true}});
+}
+
+TEST(ArcOverlap, BothImproper) {
+  // h(t^2) against h(s^3): p(t) = q(s) on the curve t^2 = s^3, the whole square.
+  check_both_orders(compose(parabola(), kSquare), compose(parabola(), kCube), {{0, 1, 0, 1, false}});
+}
+
+TEST(ArcOverlap, ImproperCurveAgainstItself) {
+  // f = g = h(4 t (1 - t)): the identity and the mirror t = 1 - s, each on two pieces.
+  const Curve f = compose(s_cubic(), kOutAndBack);
+  check_both_orders(f, f,
+                    {{0, 0.5, 0, 0.5, false},
+                     {0, 0.5, 0.5, 1, true},
+                     {0.5, 1, 0, 0.5, true},
+                     {0.5, 1, 0.5, 1, false}});
+}
+
+TEST(ArcOverlap, SpeedsUpBeyondTheOtherCurve) {
+  // q(s) = (3 s^2 - 1/2) / 2 runs over [-1/4, 5/4]: the overlap is where q is in [0, 1],
+  // s in [sqrt(1/6), sqrt(5/6)].
+  const Poly q = {Rational(-1, 4), Rational(-1, 4), Rational(5, 4)};
+  check_both_orders(curve_of(parabola()), compose(parabola(), q),
+                    {{0, 1, std::sqrt(1.0 / 6), std::sqrt(5.0 / 6), false}});
+}
+
+TEST(ArcOverlap, TurningPointsOnBothCurvesAndNoEndOnTheOther) {
+  // p(t) = 1 - 12/5 t (1 - t) turns at u = 2/5, q(s) = 12/5 s (1 - s) at u = 3/5: neither
+  // curve's ends lie on the other, and the arc u in [2/5, 3/5] is traced twice by each.
+  // p in [2/5, 3/5] where t (1 - t) >= 1/6: t in [a, 1 - a], a = (1 - 1/sqrt 3) / 2.
+  const Poly p = {Rational(1), Rational(-1, 5), Rational(1)};
+  const Poly q = {Rational(0), Rational(6, 5), Rational(0)};
+  const double a = (1 - 1 / std::sqrt(3.0)) / 2;
+  check_both_orders(compose(parabola(), p), compose(parabola(), q),
+                    {{a, 0.5, a, 0.5, true},
+                     {a, 0.5, 0.5, 1 - a, false},
+                     {0.5, 1 - a, a, 0.5, false},
+                     {0.5, 1 - a, 0.5, 1 - a, true}});
+}
+
+TEST(ArcOverlap, HighDegreeRetracing) {
+  // A degree-10 curve h (proper: it is degree-elevated from nothing, its control points
+  // are on no lower-degree curve) traced as h(s^2) at degree 20 against h itself.
+  std::vector<std::pair<Rational, Rational>> h;
+  for (int i = 0; i <= 10; ++i) h.push_back({Rational(i), Rational((i * i * 7) % 11 - 5)});
+  check_both_orders(curve_of(h), compose(h, kSquare), {{0, 1, 0, 1, false}}, 1e-10);
+}
+
+TEST(ArcOverlap, ACurveOffTheArcIsNotAnOverlap) {
+  // h(s^2) moved off h by 2^-20 at one control point: no overlap may be claimed.
+  Curve g = compose(parabola(), kSquare);
+  std::vector<Point2> pts(g.points().begin(), g.points().end());
+  pts[2].y += 0x1p-20;
+  IntersectOptions options;
+  const IntersectionResult r = intersect(curve_of(parabola()), Curve(pts), options);
+  EXPECT_TRUE(r.overlaps.empty());
+}
+
+TEST(ArcOverlap, TheArcsOwnCrossingIsStillFound) {
+  // h, a cubic with a loop, against h(s^2): they overlap along all of h, and h's double
+  // point h(u1) = h(u2) is besides that a crossing of f = h and g at (u1, sqrt u2) and
+  // (u2, sqrt u1), which the overlap must not hide.
+  const std::vector<std::pair<Rational, Rational>> loop = {
+      {Rational(0), Rational(0)}, {Rational(3), Rational(3)}, {Rational(-1), Rational(3)},
+      {Rational(2), Rational(0)}};
+  const Curve f = curve_of(loop), g = compose(loop, kSquare);
+  for (const IntersectMethod m : kMethods) {
+    SCOPED_TRACE(std::string(to_string(m)));
+    IntersectOptions options;
+    options.method = m;
+    const IntersectionResult r = intersect(f, g, options);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    ASSERT_EQ(r.overlaps.size(), 1u);
+    ASSERT_EQ(r.intersections.size(), 2u);
+    const double u1 = r.intersections[0].t, u2 = r.intersections[1].t;
+    EXPECT_GT(u2 - u1, 0.1);
+    const Point2 a = evaluate(f, u1), b = evaluate(f, u2);  // the double point, twice
+    EXPECT_NEAR(a.x, b.x, 1e-12);
+    EXPECT_NEAR(a.y, b.y, 1e-12);
+    EXPECT_NEAR(r.intersections[0].s, std::sqrt(u2), 1e-12);
+    EXPECT_NEAR(r.intersections[1].s, std::sqrt(u1), 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace bezier::core
