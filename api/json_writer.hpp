@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -33,7 +34,7 @@ class JsonWriter {
 
   JsonWriter& value(double number) {
     separate();
-    all_finite_ = all_finite_ && std::isfinite(number);
+    if (!std::isfinite(number) && first_non_finite_ == kNone) first_non_finite_ = out_.size();
     append_json_number(number, out_);
     after_value_ = true;
     return *this;
@@ -70,7 +71,12 @@ class JsonWriter {
 
   /// False once a NaN or an infinity was written (as null, like dump_json): JSON has
   /// neither, so such an answer is not sent.
-  [[nodiscard]] bool all_finite() const noexcept { return all_finite_; }
+  [[nodiscard]] bool all_finite() const noexcept { return first_non_finite_ == kNone; }
+  /// The JSON Pointer (RFC 6901) of the first NaN or infinity written, "" for a bare
+  /// number; precondition: !all_finite(). Only an answer that is refused needs it, so the
+  /// writer keeps no path while it writes: the pointer is read back from the text before
+  /// the number. Member names are used as written (the answers' names need no escaping).
+  [[nodiscard]] std::string first_non_finite_pointer() const;
   [[nodiscard]] std::string take() && { return std::move(out_); }
 
  private:
@@ -89,9 +95,11 @@ class JsonWriter {
     return *this;
   }
 
+  static constexpr std::size_t kNone = std::string::npos;
+
   std::string out_;
   bool after_value_ = false;
-  bool all_finite_ = true;
+  std::size_t first_non_finite_ = kNone;  ///< where its text begins in out_
 };
 
 }  // namespace bezier::api

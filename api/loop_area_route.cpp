@@ -56,9 +56,9 @@ Reply area_out_of_range() {
                             "the coordinates are too large"}});
 }
 
-nlohmann::json closed_area_json(const core::Curve& curve) {
-  const auto area = core::closed_area(curve);
-  return area ? nlohmann::json(*area) : nlohmann::json(nullptr);
+/// A number, or null when there is none (closed_area of a curve that is not closed).
+JsonWriter& write_optional(JsonWriter& w, const std::optional<double>& number) {
+  return number ? w.value(*number) : w.null();
 }
 
 /// `interval`: exactly two numbers in [0, 1], strictly increasing.
@@ -77,20 +77,28 @@ std::optional<std::pair<double, double>> read_interval(RequestReader& reader, co
   return std::pair{(*ts)[0], (*ts)[1]};
 }
 
+// {"area", "chord": [B(t1), B(t2)], "closed", "closed_area", "degree", "interval",
+//  "signed_area"}, members in key order (the text a document of the answer would dump to).
 Reply interval_answer(const core::Curve& curve, double t1, double t2) {
   const double signed_area = core::enclosed_area(curve, t1, t2);
   const auto closed = core::closed_area(curve);
   if (!std::isfinite(signed_area) || (closed && !std::isfinite(*closed))) {
     return area_out_of_range();
   }
-  return json_reply({{"degree", curve.degree()},
-                     {"interval", pair_json(t1, t2)},
-                     {"area", std::fabs(signed_area)},
-                     {"signed_area", signed_area},
-                     {"chord", nlohmann::json::array({point_json(core::evaluate(curve, t1)),
-                                                      point_json(core::evaluate(curve, t2))})},
-                     {"closed", core::is_closed(curve)},
-                     {"closed_area", closed_area_json(curve)}});
+  JsonWriter w;
+  w.begin_object();
+  w.key("area").value(std::fabs(signed_area));
+  w.key("chord").begin_array();
+  write_point(w, core::evaluate(curve, t1));
+  write_point(w, core::evaluate(curve, t2));
+  w.end_array();
+  w.key("closed").value(core::is_closed(curve));
+  write_optional(w.key("closed_area"), closed);
+  w.key("degree").value(curve.degree());
+  w.key("interval").pair(t1, t2);
+  w.key("signed_area").value(signed_area);
+  w.end_object();
+  return json_reply(std::move(w));
 }
 
 Reply loops_answer(const core::Curve& curve, const Limits& limits) {
@@ -109,31 +117,43 @@ Reply loops_answer(const core::Curve& curve, const Limits& limits) {
   if (!std::isfinite(result.area) || (result.closed_area && !std::isfinite(*result.closed_area))) {
     return area_out_of_range();  // the total is infinite when any loop's area is
   }
-  nlohmann::json loops = nlohmann::json::array();
+  // {"area", "closed", "closed_area", "degree",
+  //  "loops": [{"area", "kind", "point", "signed_area", "t"}], "overlaps": [{"s_interval",
+  //  "t_interval"}], "stats": {"max_depth", "method", "newton_iterations", "work"}}, members
+  // in key order (the text a document of the answer would dump to).
+  JsonWriter w;
+  w.begin_object();
+  w.key("area").value(result.area);
+  w.key("closed").value(result.closed);
+  write_optional(w.key("closed_area"), result.closed_area);
+  w.key("degree").value(curve.degree());
+  w.key("loops").begin_array();
   for (const core::Loop& loop : result.loops) {
-    loops.push_back({{"t", pair_json(loop.t1, loop.t2)},
-                     {"point", point_json(loop.point)},
-                     {"area", loop.area},
-                     {"signed_area", loop.signed_area},
-                     {"kind", kind_name(loop.kind)}});
+    w.begin_object();
+    w.key("area").value(loop.area);
+    w.key("kind").value(kind_name(loop.kind));
+    write_point(w.key("point"), loop.point);
+    w.key("signed_area").value(loop.signed_area);
+    w.key("t").pair(loop.t1, loop.t2);
+    w.end_object();
   }
-  nlohmann::json overlaps = nlohmann::json::array();
+  w.end_array();
+  w.key("overlaps").begin_array();
   for (const core::SelfOverlap& o : result.overlaps) {
-    overlaps.push_back(
-        {{"t_interval", pair_json(o.t_lo, o.t_hi)}, {"s_interval", pair_json(o.s_lo, o.s_hi)}});
+    w.begin_object();
+    w.key("s_interval").pair(o.s_lo, o.s_hi);
+    w.key("t_interval").pair(o.t_lo, o.t_hi);
+    w.end_object();
   }
-  return json_reply({{"degree", curve.degree()},
-                     {"loops", std::move(loops)},
-                     {"area", result.area},
-                     {"closed", result.closed},
-                     {"closed_area", result.closed_area ? nlohmann::json(*result.closed_area)
-                                                        : nlohmann::json(nullptr)},
-                     {"overlaps", std::move(overlaps)},
-                     {"stats",
-                      {{"method", core::method_name(result.stats.method)},
-                       {"work", result.stats.work},
-                       {"max_depth", result.stats.max_depth},
-                       {"newton_iterations", result.stats.newton_iterations}}}});
+  w.end_array();
+  w.key("stats").begin_object();
+  w.key("max_depth").value(result.stats.max_depth);
+  w.key("method").value(core::method_name(result.stats.method));
+  w.key("newton_iterations").value(result.stats.newton_iterations);
+  w.key("work").value(result.stats.work);
+  w.end_object();
+  w.end_object();
+  return json_reply(std::move(w));
 }
 
 }  // namespace

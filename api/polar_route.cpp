@@ -18,20 +18,28 @@ struct PolarRequest {
   std::vector<double> ts;  ///< where to evaluate the polar curve
 };
 
+// {"blossom"?, "control_points", "curve_point"?, "degree", "results": [{"point", "t"}]},
+// members in key order (the text a document of the answer would dump to).
 template <class P>
-nlohmann::json polar_answer(const core::BasicCurve<P>& curve, const PolarRequest& request) {
+Reply polar_answer(const core::BasicCurve<P>& curve, const PolarRequest& request) {
   const core::BasicCurve<P> polar_curve = core::polar(curve, request.us);
-  nlohmann::json results = nlohmann::json::array();
-  for (const double t : request.ts) {
-    results.push_back({{"t", t}, {"point", point_json(core::evaluate(polar_curve, t))}});
-  }
-  nlohmann::json answer = {{"degree", polar_curve.degree()},
-                           {"control_points", points_json(polar_curve)},
-                           {"results", std::move(results)}};
-  if (request.first_polar) answer["curve_point"] = point_json(core::evaluate(curve, request.us[0]));
+  JsonWriter w;
+  w.begin_object();
   // With all n arguments fixed the polar is a single point: the blossom value.
-  if (polar_curve.degree() == 0) answer["blossom"] = point_json(polar_curve.front());
-  return answer;
+  if (polar_curve.degree() == 0) write_point(w.key("blossom"), polar_curve.front());
+  write_points(w.key("control_points"), polar_curve.points());
+  if (request.first_polar) write_point(w.key("curve_point"), core::evaluate(curve, request.us[0]));
+  w.key("degree").value(polar_curve.degree());
+  w.key("results").begin_array();
+  for (const double t : request.ts) {
+    w.begin_object();
+    write_point(w.key("point"), core::evaluate(polar_curve, t));
+    w.key("t").value(t);
+    w.end_object();
+  }
+  w.end_array();
+  w.end_object();
+  return json_reply(std::move(w));
 }
 
 }  // namespace
@@ -58,7 +66,7 @@ Reply polar_route(const nlohmann::json& request, const Limits& limits) {
   }
   parsed.ts = reader.parameters(request, /*required=*/false);
   if (!reader.ok()) return validation_reply(reader.take_errors());
-  return json_reply(std::visit([&](const auto& c) { return polar_answer(c, parsed); }, *curve));
+  return std::visit([&](const auto& c) { return polar_answer(c, parsed); }, *curve);
 }
 
 }  // namespace bezier::api

@@ -1,7 +1,6 @@
 #include "api/problem.hpp"
 
-#include <cmath>
-#include <optional>
+#include <nlohmann/json.hpp>
 
 #include "api/dump_json.hpp"
 
@@ -69,52 +68,17 @@ Reply validation_reply(std::vector<FieldError> errors) {
   return problem_reply(ProblemKind::validation, std::move(detail), std::move(errors));
 }
 
-namespace {
-
-std::string pointer_step(const std::string& token, const std::string& rest) {
-  std::string pointer = "/";
-  pointer += token;
-  pointer += rest;
-  return pointer;
-}
-
-// The JSON Pointer of the first non-finite number in `value`, if any. The pointer is
-// built on the way back up, only when one is found: every answer passes through here,
-// and building the path of every number it holds cost more than writing the answer.
-std::optional<std::string> first_non_finite(const nlohmann::json& value) {
-  if (value.is_number_float()) {
-    if (!std::isfinite(value.get<double>())) return std::string();
-  } else if (value.is_array()) {
-    for (std::size_t i = 0; i < value.size(); ++i) {
-      if (auto found = first_non_finite(value[i])) return pointer_step(std::to_string(i), *found);
-    }
-  } else if (value.is_object()) {
-    for (const auto& [key, member] : value.items()) {
-      if (auto found = first_non_finite(member)) return pointer_step(key, *found);
-    }
-  }
-  return std::nullopt;
-}
-
-Reply overflow_reply(const std::string& where) {
-  return problem_reply(ProblemKind::validation, "the result overflows the double range" + where,
-                       {{"/points", "coordinates too large for this computation: a result "
-                                    "overflows the double range"}});
-}
-
-}  // namespace
-
-Reply json_reply(const nlohmann::json& body) {
-  // Finite input can still give a result beyond the double range (B(2) of a segment to
-  // 1e308, a derivative of alternating ±1e308 points). JSON has no infinity and nlohmann
-  // would write null in its place: the request is answered as unanswerable instead.
-  if (const auto where = first_non_finite(body)) return overflow_reply(" (answer field '" + *where + "')");
-  // Doubles are written as the shortest string that reads back to the same double.
-  return {200, "application/json", dump_json(body)};
-}
-
 Reply json_reply(JsonWriter&& answer) {
-  if (!answer.all_finite()) return overflow_reply("");
+  // Finite input can still give a result beyond the double range (B(2) of a segment to
+  // 1e308, a derivative of alternating ±1e308 points). JSON has no infinity and the
+  // writer put null in its place: the request is answered as unanswerable instead.
+  if (!answer.all_finite()) {
+    return problem_reply(ProblemKind::validation,
+                         "the result overflows the double range (answer field '" +
+                             answer.first_non_finite_pointer() + "')",
+                         {{"/points", "coordinates too large for this computation: a result "
+                                      "overflows the double range"}});
+  }
   return {200, "application/json", std::move(answer).take()};
 }
 

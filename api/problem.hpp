@@ -4,8 +4,6 @@
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "api/json_writer.hpp"
 
 namespace bezier::api {
@@ -46,11 +44,9 @@ enum class ProblemKind {
 /// 422 with every field error found in the request.
 [[nodiscard]] Reply validation_reply(std::vector<FieldError> errors);
 
-/// 200 application/json with the numbers written so they round-trip; a 422 instead when
-/// a number of the answer is not finite (a result beyond the double range).
-[[nodiscard]] Reply json_reply(const nlohmann::json& body);
-/// The same for an answer written as text (JsonWriter), without the field's pointer in
-/// the 422.
+/// 200 application/json with the answer's text; a 422 instead when a number of the answer
+/// is not finite (a result beyond the double range), its detail naming the first such
+/// field by its JSON Pointer into the answer.
 [[nodiscard]] Reply json_reply(JsonWriter&& answer);
 
 /// The HTTP status of a problem kind.

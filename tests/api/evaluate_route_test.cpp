@@ -79,6 +79,16 @@ TEST(EvaluateRoute, AnyFiniteTExtrapolates) {
   EXPECT_EQ(r["results"][1]["point"], json::parse("[5.0, 10.0]"));
 }
 
+TEST(EvaluateRoute, ResultBeyondTheDoubleRangeNamesItsField) {
+  // B(2) of the segment 0 -> 1e308 and B' of -1e308 -> 1e308 are 2e308: finite input, a
+  // result JSON cannot carry. The detail names the first such number of the answer.
+  json r = call(R"({"points":[[0,0],[1e308,0]],"t":[0.5,2]})", 422);
+  EXPECT_EQ(pointers(r), std::vector<std::string>{"/points"});
+  EXPECT_EQ(r["detail"], "the result overflows the double range (answer field '/results/1/point/0')");
+  r = call(R"({"points":[[-1e308,0],[1e308,0]],"t":0.5,"derivatives":1})", 422);
+  EXPECT_EQ(r["detail"], "the result overflows the double range (answer field '/results/0/derivatives/0/0')");
+}
+
 TEST(EvaluateRoute, AnswersAreTheKernelsBitForBit) {
   // Degree 20, control points alternating around ±1000 (the issue-2 accuracy case): the
   // API must return exactly the compensated kernel's values (whose accuracy

@@ -48,8 +48,32 @@ TEST(JsonWriter, NonFiniteNumbersMarkTheAnswer) {
     JsonWriter w;
     w.begin_array().value(1.0).value(bad).end_array();
     EXPECT_FALSE(w.all_finite());
+    EXPECT_EQ(w.first_non_finite_pointer(), "/1");
     EXPECT_EQ(std::move(w).take(), "[1.0,null]");
   }
+}
+
+TEST(JsonWriter, PointerOfTheFirstNonFiniteNumber) {
+  // Closed containers before it, strings holding brackets, commas, colons and quotes, and
+  // a second non-finite number after it do not move the pointer.
+  JsonWriter w;
+  w.begin_object();
+  w.key("a").begin_array().value(1.0).begin_object().key("x").value(2.0).end_object().end_array();
+  w.key("b \"[,:").value("],{\"");
+  w.key("c").begin_array();
+  w.begin_object().key("p").pair(0.0, 1.0).end_object();
+  w.begin_object().key("d").begin_array().end_array().key("p").pair(2.0, HUGE_VAL).end_object();
+  w.end_array();
+  w.key("e").value(std::nan(""));
+  w.end_object();
+  ASSERT_FALSE(w.all_finite());
+  EXPECT_EQ(w.first_non_finite_pointer(), "/c/1/p/1");
+  JsonWriter bare;
+  bare.value(-HUGE_VAL);
+  EXPECT_EQ(bare.first_non_finite_pointer(), "");
+  JsonWriter member;
+  member.begin_object().key("k").value(1.0).key("m").value(HUGE_VAL).end_object();
+  EXPECT_EQ(member.first_non_finite_pointer(), "/m");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "api/dump_json.hpp"
 #include "api/handler.hpp"
 #include "core/loop_area.hpp"
 #include "core/self_intersection_work_cost.hpp"
@@ -23,6 +24,11 @@ json call(const std::string& body, int expected_status, const Limits& limits = L
   EXPECT_EQ(reply.status, expected_status) << reply.body;
   EXPECT_EQ(reply.content_type,
             expected_status == 200 ? "application/json" : "application/problem+json");
+  // Answers are written as text (JsonWriter), members in key order: exactly the text the
+  // same answer as a document would dump to.
+  if (reply.status == 200) {
+    EXPECT_EQ(dump_json(json::parse(reply.body)), reply.body);
+  }
   return json::parse(reply.body);
 }
 

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "api/dump_json.hpp"
 #include "api/handler.hpp"
 
 namespace bezier::api {
@@ -11,6 +12,12 @@ using nlohmann::json;
 json call(const std::string& body, int expected_status) {
   const Reply reply = handle("/polar", body, Limits{});
   EXPECT_EQ(reply.status, expected_status) << reply.body;
+  EXPECT_EQ(reply.content_type, expected_status == 200 ? "application/json" : "application/problem+json");
+  // Answers are written as text (JsonWriter), members in key order: exactly the text the
+  // same answer as a document would dump to.
+  if (reply.status == 200) {
+    EXPECT_EQ(dump_json(json::parse(reply.body)), reply.body);
+  }
   return json::parse(reply.body);
 }
 
@@ -48,6 +55,27 @@ TEST(PolarRoute, T0OutsideTheUnitIntervalIsAllowed) {
   const json r = call(R"({"points":[[0,0],[2,4],[4,0]],"t0":2})", 200);
   // b_i = -P_i + 2 P_{i+1}
   EXPECT_EQ(r["control_points"], json::parse("[[4.0,8.0],[6.0,-4.0]]"));
+}
+
+TEST(PolarRoute, AnswerMembersInKeyOrder) {
+  // Every optional member at once is not possible (curve_point is a first polar's, blossom
+  // a polar of all n arguments') except for a degree-1 curve: the exact bytes of both.
+  const Reply first = handle("/polar", R"({"points":[[0,0],[4,8]],"t0":0.25,"t":[0,1]})", Limits{});
+  EXPECT_EQ(first.body,
+            R"({"blossom":[1.0,2.0],"control_points":[[1.0,2.0]],"curve_point":[1.0,2.0],"degree":0,)"
+            R"("results":[{"point":[1.0,2.0],"t":0.0},{"point":[1.0,2.0],"t":1.0}]})");
+  const Reply space = handle("/polar", R"({"points":[[0,0,0],[2,4,6],[4,0,2]],"t0":[0.5]})", Limits{});
+  EXPECT_EQ(space.body, R"({"control_points":[[1.0,2.0,3.0],[3.0,2.0,4.0]],"degree":1,"results":[]})");
+}
+
+TEST(PolarRoute, ResultBeyondTheDoubleRangeNamesItsField) {
+  // The first polar of the segment 0 -> 1e308 at t0 = 2 is 2e308, beyond the largest double.
+  json r = call(R"({"points":[[0,0],[1e308,0]],"t0":2})", 422);
+  EXPECT_EQ(r["errors"][0]["pointer"], "/points");
+  EXPECT_EQ(r["detail"], "the result overflows the double range (answer field '/blossom/0')");
+  // Finite polar control points, evaluated far outside [0, 1].
+  r = call(R"({"points":[[0,0],[0,1],[1e308,2]],"t0":0.5,"t":[0.5,5]})", 422);
+  EXPECT_EQ(r["detail"], "the result overflows the double range (answer field '/results/1/point/0')");
 }
 
 TEST(PolarRoute, Errors) {
