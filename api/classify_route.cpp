@@ -61,7 +61,7 @@ Reply classify_route(const nlohmann::json& request, const Limits& limits) {
       curve = reader.curve2(*points, "/points");
     }
   }
-  if (!reader.ok()) return validation_reply(reader.take_errors());
+  if (!reader.ok()) return reader.refusal();
   return classification_answer(core::classify(*curve));
 }
 

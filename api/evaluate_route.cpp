@@ -61,19 +61,22 @@ Reply evaluate_route(const nlohmann::json& request, const Limits& limits) {
   EvaluateRequest parsed;
   parsed.ts = reader.parameters(request, /*required=*/true);
   if (const auto* d = RequestReader::optional(request, "derivatives")) {
-    if (const auto k = reader.integer(*d, "/derivatives", 0, limits.max_degree)) parsed.derivatives = *k;
+    if (const auto k = reader.integer(*d, "/derivatives", 0, limits.max_degree, RequestReader::Bound::limit)) {
+      parsed.derivatives = *k;
+    }
   }
   // Each derivative is another point per t: the answer is bounded by points, not by t
   // values, so 10000 t with 20 derivatives (9.5 MB, 0.24 s) is not one request.
   const std::size_t answer_points = parsed.ts.size() * static_cast<std::size_t>(parsed.derivatives + 1);
   if (answer_points > static_cast<std::size_t>(limits.max_t_values)) {
-    reader.fail("/derivatives", "t values x (derivatives + 1) = " + std::to_string(answer_points) +
-                                    " points is above the limit of " + std::to_string(limits.max_t_values));
+    reader.fail_limit("/derivatives", "t values x (derivatives + 1) = " + std::to_string(answer_points) +
+                                          " points is above the limit of " +
+                                          std::to_string(limits.max_t_values));
   }
   if (const auto* s = RequestReader::optional(request, "split")) {
     parsed.split = reader.number(*s, "/split");
   }
-  if (!reader.ok()) return validation_reply(reader.take_errors());
+  if (!reader.ok()) return reader.refusal();
   return std::visit([&](const auto& c) { return evaluate_answer(c, parsed); }, *curve);
 }
 

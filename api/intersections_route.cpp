@@ -146,6 +146,9 @@ struct CertifiedPair {
   core::Intersection intersection;
   std::int64_t work = 0;   ///< work units spent
   std::int64_t steps = 0;  ///< search steps taken
+  /// Left unresolved for want of work units (none left, or the search hit its budget):
+  /// with a larger work cap it might have been certified.
+  bool out_of_work = false;
 };
 
 CertifiedPair certified_pair(const core::Curve& curve, const core::SelfIntersection& pair,
@@ -159,15 +162,16 @@ CertifiedPair certified_pair(const core::Curve& curve, const core::SelfIntersect
   x.kind = kind_of(pair.kind);
   x.resolved = false;
   const double w = std::min(0x1p-20, (pair.s - pair.t) / 4);
-  if (!(w > 0) || budget <= 0) return {x, 0, 0};
+  if (!(w > 0)) return {x, 0, 0, false};
+  if (budget <= 0) return {x, 0, 0, true};
   core::IntersectOptions local = options;
   local.max_work = budget;
   const core::IntersectionResult r =
       core::intersect_in(curve, curve, {std::max(0.0, pair.t - w), std::min(1.0, pair.t + w)},
                          {std::max(0.0, pair.s - w), std::min(1.0, pair.s + w)}, local);
   if (r.status != core::IntersectStatus::ok || r.intersections.size() != 1)
-    return {x, r.stats.work, r.stats.iterations};
-  return {r.intersections.front(), r.stats.work, r.stats.iterations};
+    return {x, r.stats.work, r.stats.iterations, r.status == core::IntersectStatus::work_cap_reached};
+  return {r.intersections.front(), r.stats.work, r.stats.iterations, false};
 }
 
 Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits) {
@@ -181,6 +185,7 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   // a pair they cannot certify within it is reported as found, unresolved.
   const std::int64_t search_units = r.stats.work * core::self_intersection_box_cost(curve.degree());
   std::int64_t certification_work = 0, certification_steps = 0;
+  bool out_of_work = false;
   JsonWriter w;
   w.begin_object();
   w.key("intersections").begin_array();
@@ -189,6 +194,7 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
                                            limits.max_work - search_units - certification_work);
     certification_work += c.work;
     certification_steps += c.steps;
+    out_of_work = out_of_work || c.out_of_work;
     write_intersection(w, c.intersection);
   }
   w.end_array();
@@ -210,7 +216,10 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   w.end_object();
   w.key("tolerance").value(request.options.tolerance);
   w.end_object();
-  return json_reply(std::move(w));
+  Reply reply = json_reply(std::move(w));
+  // A pair left unresolved for want of work units is an answer the cap decided.
+  reply.limit_reached = out_of_work;
+  return reply;
 }
 
 }  // namespace
@@ -262,7 +271,7 @@ Reply intersections_route(const nlohmann::json& request, const Limits& limits) {
     if (const auto v = reader.integer(*k, "/fat_curve_degree", 2, 3))
       parsed.options.fat_curve_degree = *v;
   }
-  if (!reader.ok()) return validation_reply(reader.take_errors());
+  if (!reader.ok()) return reader.refusal();
   return parsed.curves.size() == 1 ? one_curve_answer(parsed, limits)
                                     : two_curves_answer(parsed, limits);
 }

@@ -167,7 +167,7 @@ Reply loop_area_route(const nlohmann::json& request, const Limits& limits) {
   std::optional<std::pair<double, double>> interval;
   if (const auto* value = RequestReader::optional(request, "interval"))
     interval = read_interval(reader, *value);
-  if (!reader.ok()) return validation_reply(reader.take_errors());
+  if (!reader.ok()) return reader.refusal();
   if (interval) return interval_answer(*curve, interval->first, interval->second);
   return loops_answer(*curve, limits);
 }

@@ -65,7 +65,7 @@ Reply polar_route(const nlohmann::json& request, const Limits& limits) {
     }
   }
   parsed.ts = reader.parameters(request, /*required=*/false);
-  if (!reader.ok()) return validation_reply(reader.take_errors());
+  if (!reader.ok()) return reader.refusal();
   return std::visit([&](const auto& c) { return polar_answer(c, parsed); }, *curve);
 }
 

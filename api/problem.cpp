@@ -58,7 +58,7 @@ Reply problem_reply(ProblemKind kind, std::string detail, std::vector<FieldError
     body["errors"] = std::move(list);
   }
   // Invalid UTF-8 from the request may be echoed in a message: replace, never throw.
-  return {info.status, "application/problem+json", dump_json(body)};
+  return {info.status, "application/problem+json", dump_json(body), kind == ProblemKind::work_cap};
 }
 
 Reply validation_reply(std::vector<FieldError> errors) {

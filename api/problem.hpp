@@ -19,6 +19,16 @@ struct Reply {
   int status = 200;
   std::string content_type = "application/json";
   std::string body;
+  /// A limit of Limits decided this answer: it refused the request (a 422: a degree, a
+  /// count of t values, samples, derivatives or answer points above its limit, a
+  /// `derivatives` or `samples` below the range whose message names the limit, or the work
+  /// cap), or the work cap cut part of the answer short (a 200 with a self-intersection
+  /// left unresolved because its certification ran out of work units). Such an answer may
+  /// differ under larger limits (its message names the limit, if nothing else); every other
+  /// answer is the same under any limits at least as large, since each limit check only
+  /// refuses what is above it. A caller that tries a request under smaller limits first
+  /// (the epoll engine's inline try) must compute it again only when this is set.
+  bool limit_reached = false;
 };
 
 /// The kinds of problem the API reports. Each has a stable `type` URI, a `title` and an
@@ -37,11 +47,12 @@ enum class ProblemKind {
 };
 
 /// RFC 9457 problem details: `type`, `title`, `status`, `detail`, and for validation
-/// problems an `errors` list of {pointer, message}.
+/// problems an `errors` list of {pointer, message}. A work_cap problem has limit_reached set.
 [[nodiscard]] Reply problem_reply(ProblemKind kind, std::string detail,
                                   std::vector<FieldError> errors = {});
 
-/// 422 with every field error found in the request.
+/// 422 with every field error found in the request (limit_reached not set: a field refused
+/// by a limit is RequestReader::refusal()'s).
 [[nodiscard]] Reply validation_reply(std::vector<FieldError> errors);
 
 /// 200 application/json with the answer's text; a 422 instead when a number of the answer

@@ -58,6 +58,17 @@ void RequestReader::fail(std::string pointer, std::string message) {
   if (errors_.size() < kMaxRecordedErrors) errors_.push_back({std::move(pointer), std::move(message)});
 }
 
+void RequestReader::fail_limit(std::string pointer, std::string message) {
+  limit_reached_ = true;
+  fail(std::move(pointer), std::move(message));
+}
+
+Reply RequestReader::refusal() {
+  Reply reply = validation_reply(std::move(errors_));
+  reply.limit_reached = limit_reached_;
+  return reply;
+}
+
 void RequestReader::reject_unknown_fields(const Json& object,
                                           std::initializer_list<std::string_view> known,
                                           const std::string& pointer) {
@@ -116,7 +127,7 @@ std::optional<double> RequestReader::number_in(const Json& value, const std::str
 }
 
 std::optional<int> RequestReader::integer(const Json& value, const std::string& pointer, int lo,
-                                          int hi) {
+                                          int hi, Bound hi_is) {
   const auto v = number(value, pointer);
   if (!v) return std::nullopt;
   if (*v != std::floor(*v)) {
@@ -124,7 +135,13 @@ std::optional<int> RequestReader::integer(const Json& value, const std::string& 
     return std::nullopt;
   }
   if (!(lo <= *v && *v <= hi)) {
-    fail(pointer, "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    std::string message = "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    // Below lo too: the message names the limit.
+    if (hi_is == Bound::limit) {
+      fail_limit(pointer, std::move(message));
+    } else {
+      fail(pointer, std::move(message));
+    }
     return std::nullopt;
   }
   return static_cast<int>(*v);
@@ -142,7 +159,7 @@ std::optional<std::vector<double>> RequestReader::numbers(const Json& value,
     return std::nullopt;
   }
   if (value.size() > static_cast<std::size_t>(limits_.max_t_values)) {
-    fail(pointer, "at most " + std::to_string(limits_.max_t_values) + " values allowed, got " +
+    fail_limit(pointer, "at most " + std::to_string(limits_.max_t_values) + " values allowed, got " +
                       std::to_string(value.size()));
     return std::nullopt;
   }
@@ -194,7 +211,7 @@ std::vector<double> RequestReader::parameters(const Json& request, bool required
   } else if (t != nullptr) {
     if (auto ts = number_or_numbers(*t, "/t", -kAnyFinite, kAnyFinite)) return std::move(*ts);
   } else if (samples != nullptr) {
-    if (const auto n = integer(*samples, "/samples", 1, limits_.max_t_values)) {
+    if (const auto n = integer(*samples, "/samples", 1, limits_.max_t_values, Bound::limit)) {
       return core::uniform_parameters(*n);
     }
   } else if (required) {
@@ -216,7 +233,7 @@ std::optional<std::variant<core::Curve, core::Curve3>> RequestReader::read_curve
     return std::nullopt;
   }
   if (value.size() > max_points) {
-    fail(pointer, "degree " + std::to_string(value.size() - 1) + " is above the limit of " +
+    fail_limit(pointer, "degree " + std::to_string(value.size() - 1) + " is above the limit of " +
                       std::to_string(limits_.max_degree) + " (at most " +
                       std::to_string(max_points) + " control points)");
     return std::nullopt;

@@ -31,8 +31,13 @@ class RequestReader {
 
   [[nodiscard]] const Limits& limits() const noexcept { return limits_; }
   void fail(std::string pointer, std::string message);
+  /// fail() for a value refused by one of limits() (above it, or a message that names it):
+  /// the refusal then says so (Reply::limit_reached), even when the error list is full.
+  void fail_limit(std::string pointer, std::string message);
   [[nodiscard]] bool ok() const noexcept { return errors_.empty(); }
-  [[nodiscard]] std::vector<FieldError> take_errors() { return std::move(errors_); }
+  /// The 422 of every recorded error (precondition: !ok()), limit_reached when one of
+  /// them was a limit's.
+  [[nodiscard]] Reply refusal();
 
   /// Rejects every member of `object` whose name is not in `known` (typos must not be
   /// silently ignored: a misspelt `derivative` would otherwise return no derivatives).
@@ -49,9 +54,15 @@ class RequestReader {
   /// A finite number in [lo, hi].
   std::optional<double> number_in(const Json& value, const std::string& pointer, double lo,
                                   double hi);
+  /// What the upper bound of a range is: a fixed rule of the API, or a value of limits()
+  /// (then a value out of the range is refused through fail_limit: the message names the
+  /// limit, even for a value below lo).
+  enum class Bound { fixed, limit };
   /// An integer in [lo, hi] (1.0 is accepted as an integer, 1.5 is not).
-  std::optional<int> integer(const Json& value, const std::string& pointer, int lo, int hi);
-  /// A non-empty array of at most limits().max_t_values finite numbers, each in [lo, hi].
+  std::optional<int> integer(const Json& value, const std::string& pointer, int lo, int hi,
+                             Bound hi_is = Bound::fixed);
+  /// A non-empty array of at most limits().max_t_values finite numbers, each in [lo, hi]
+  /// (more values is a limit's refusal).
   std::optional<std::vector<double>> numbers(const Json& value, const std::string& pointer,
                                              double lo, double hi);
   /// A number or an array of numbers, each in [lo, hi].
@@ -67,7 +78,8 @@ class RequestReader {
   /// both. When neither is given: empty, or an error at /t if `required`.
   std::vector<double> parameters(const Json& request, bool required);
 
-  /// Control points of a planar curve: 2 to max_degree + 1 points [x, y].
+  /// Control points of a planar curve: 2 to max_degree + 1 points [x, y] (more is a limit's
+  /// refusal).
   std::optional<core::Curve> curve2(const Json& value, const std::string& pointer);
   /// Control points of a planar or space curve: every point [x, y] or every point [x, y, z].
   std::optional<std::variant<core::Curve, core::Curve3>> curve(const Json& value,
@@ -81,6 +93,7 @@ class RequestReader {
 
   const Limits& limits_;
   std::vector<FieldError> errors_;
+  bool limit_reached_ = false;
 };
 
 }  // namespace bezier::api

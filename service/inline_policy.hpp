@@ -14,10 +14,14 @@ namespace bezier::service {
 /// microseconds: 1/2000 of the caller's work cap (the default 22 M units is ~100 ms,
 /// so ~50 µs) for the kernels that honour max_work (/intersections, the loop search of
 /// /loop-area), and at most 32 t values and degree 7 for the routes whose cost is
-/// t values x degree^2 x derivatives instead (/evaluate, /polar). A request those
-/// limits refuse (422: work cap, too many t values, degree too high) is not answered:
-/// it is computed again on the compute pool with the caller's full limits, so the
-/// inline limits change where a request runs, never its answer.
+/// t values x degree^2 x derivatives instead (/evaluate, /polar). An answer that a limit
+/// decided (api::Reply::limit_reached: the work cap, too many t values, samples,
+/// derivatives or answer points, a degree too high; or a self-intersection left
+/// unresolved when its certification ran out of work units) is not sent: the request is
+/// computed again on the compute pool with the caller's full limits. Every other answer
+/// is the one the full limits give too (each limit check refuses only what is above it),
+/// so a plain validation error is answered from the inline try, and the inline limits
+/// change where a request runs, never its answer.
 /// BENCHMARKS.md §3 has the measurements behind the numbers.
 struct InlinePolicy {
   static constexpr std::size_t kMaxBodyBytes = 4096;
@@ -29,9 +33,11 @@ struct InlinePolicy {
   [[nodiscard]] static bool may_try(std::size_t body_bytes) noexcept { return body_bytes <= kMaxBodyBytes; }
   /// The limits of the inline try.
   [[nodiscard]] static api::Limits limits(const api::Limits& full) noexcept;
-  /// Whether the inline answer is the answer (false: re-run on the pool).
+  /// Whether the inline answer is the answer (false: re-run on the pool). A refusal by a
+  /// limit the inline try does not shrink (a degree above the full limit) is re-run too:
+  /// the same answer again, for one more parse of a body of at most kMaxBodyBytes.
   [[nodiscard]] static bool is_final(const Response& inline_answer) noexcept {
-    return inline_answer.status != 422;
+    return !inline_answer.limit_reached;
   }
 };
 

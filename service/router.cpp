@@ -61,6 +61,7 @@ Response to_response(api::Reply reply) {
   response.status = reply.status;
   response.content_type = std::move(reply.content_type);
   response.body = std::move(reply.body);
+  response.limit_reached = reply.limit_reached;
   return response;
 }
 

@@ -34,6 +34,9 @@ struct Response {
   std::string content_type = "application/json";
   std::string body;
   std::vector<std::pair<std::string_view, std::string>> headers;
+  /// api::Reply::limit_reached of a computed answer: a limit decided it, so under larger
+  /// limits it may differ. Not sent; the epoll engine's inline try reads it.
+  bool limit_reached = false;
 };
 
 /// The request's start time and id, from Router::begin to Router::finish.
