@@ -80,16 +80,6 @@ Reply work_cap_reply(std::int64_t steps, const Limits& limits) {
                            "grows without bound as they get closer)");
 }
 
-Reply self_work_cap_reply(std::int64_t boxes, const Limits& limits) {
-  return problem_reply(ProblemKind::work_cap,
-                       "the self-intersection search examined " + std::to_string(boxes) +
-                           " parameter boxes without finishing and ran out of the per-request "
-                           "work cap of " +
-                           std::to_string(limits.max_work) +
-                           " units (a curve that retraces part of itself, other than a line or "
-                           "a palindrome, needs unbounded work)");
-}
-
 Reply two_curves_answer(const IntersectionsRequest& request, const Limits& limits) {
   const core::IntersectionResult r =
       core::intersect(request.curves[0], request.curves[1], request.options);
@@ -180,7 +170,7 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   options.max_work = core::self_intersection_box_budget(limits.max_work, curve.degree());
   const core::SelfIntersectionResult r = core::self_intersections(curve, options);
   if (r.status == core::SelfIntersectionStatus::work_cap_reached)
-    return self_work_cap_reply(r.stats.work, limits);
+    return self_intersection_work_cap_reply(r.stats.work, limits.max_work);
   // The certification searches share what the self-intersection search left of the budget;
   // a pair they cannot certify within it is reported as found, unresolved.
   const std::int64_t search_units = r.stats.work * core::self_intersection_box_cost(curve.degree());

@@ -106,13 +106,7 @@ Reply loops_answer(const core::Curve& curve, const Limits& limits) {
   options.max_work = core::self_intersection_box_budget(limits.max_work, curve.degree());
   const core::LoopAreaResult result = core::loop_area(curve, options);
   if (result.status == core::SelfIntersectionStatus::work_cap_reached) {
-    return problem_reply(
-        ProblemKind::work_cap,
-        "the self-intersection search examined " + std::to_string(result.stats.work) +
-            " parameter boxes without finishing and ran out of the per-request work cap of " +
-            std::to_string(limits.max_work) +
-            " units (a curve that retraces part of itself, other than a line or a palindrome, "
-            "needs unbounded work)");
+    return self_intersection_work_cap_reply(result.stats.work, limits.max_work);
   }
   if (!std::isfinite(result.area) || (result.closed_area && !std::isfinite(*result.closed_area))) {
     return area_out_of_range();  // the total is infinite when any loop's area is

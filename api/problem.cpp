@@ -82,4 +82,15 @@ Reply json_reply(JsonWriter&& answer) {
   return {200, "application/json", std::move(answer).take()};
 }
 
+Reply self_intersection_work_cap_reply(std::int64_t boxes, std::int64_t max_work) {
+  return problem_reply(ProblemKind::work_cap,
+                       "the self-intersection search examined " + std::to_string(boxes) +
+                           " parameter boxes without finishing and ran out of the per-request "
+                           "work cap of " +
+                           std::to_string(max_work) +
+                           " units (a curve that comes within rounding of retracing part of "
+                           "itself without doing so needs work that grows without bound as it "
+                           "gets closer)");
+}
+
 }  // namespace bezier::api

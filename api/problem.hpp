@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -50,6 +51,10 @@ enum class ProblemKind {
 /// problems an `errors` list of {pointer, message}. A work_cap problem has limit_reached set.
 [[nodiscard]] Reply problem_reply(ProblemKind kind, std::string detail,
                                   std::vector<FieldError> errors = {});
+
+/// The work-cap problem of a self-intersection search (/intersections with one curve,
+/// /loop-area), which counts parameter boxes.
+[[nodiscard]] Reply self_intersection_work_cap_reply(std::int64_t boxes, std::int64_t max_work);
 
 /// 422 with every field error found in the request (limit_reached not set: a field refused
 /// by a limit is RequestReader::refusal()'s).

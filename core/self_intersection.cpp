@@ -5,12 +5,15 @@
 #include <limits>
 #include <optional>
 
+#include "core/bernstein_roots.hpp"
 #include "core/casteljau_row.hpp"
 #include "core/collinear_self_overlap.hpp"
 #include "core/cubic_double_point.hpp"
 #include "core/cubic_predicates.hpp"
 #include "core/error_free.hpp"
 #include "core/evaluate.hpp"
+#include "core/intersect/common_arc.hpp"
+#include "core/intersect/working_curve.hpp"
 #include "core/self_intersection_refine.hpp"
 #include "core/self_intersection_search.hpp"
 #include "core/subdivide.hpp"
@@ -356,6 +359,62 @@ SelfIntersectionResult retracing_result(const CurveFacts& facts,
   return result;
 }
 
+/// The t in [0, 1] with p(t) = u, for p in Bernstein form with range [0, 1]. u comes from
+/// an approximation of h (about 1e-10 off): an end of [0, 1] within 2^-30 of the level
+/// counts too (a root just outside, which the polish on B then settles).
+std::vector<double> level_set(const Coeffs& p, double u) {
+  constexpr double kEndSlack = 0x1p-30;
+  std::vector<double> shifted(p.begin(), p.end());
+  for (double& c : shifted) c -= u;
+  std::vector<double> roots = bernstein_roots(shifted).roots;
+  if (std::fabs(shifted.front()) <= kEndSlack && (roots.empty() || roots.front() > kEndSlack)) {
+    roots.insert(roots.begin(), 0.0);
+  }
+  if (std::fabs(shifted.back()) <= kEndSlack && (roots.empty() || roots.back() < 1 - kEndSlack)) {
+    roots.push_back(1.0);
+  }
+  return roots;
+}
+
+/// An improper curve B = h(p(t)) (factorise, intersect/common_arc.hpp) that turns back on
+/// itself: B(t) = B(s) exactly where p(t) = p(s), between different pieces on which p is
+/// monotone (the overlaps: find_self_arc_overlaps), or where h crosses itself,
+/// h(u1) = h(u2): every t with p(t) = u1 against every s with p(s) = u2, found from h's own
+/// self-intersections (h is proper: the search resolves them) and polished on B. The palindrome is the case p(1 - t) = p(t); the general
+/// search cannot see either (a continuum of pairs). Nothing when B is proper or p monotone
+/// (no retraced piece: the general search then works).
+std::optional<SelfIntersectionResult> improper_result(const CurveFacts& facts,
+                                                      const SelfIntersectionOptions& options) {
+  if (facts.curve.degree() < 4) return std::nullopt;
+  const WorkingCurve w = to_working(facts.curve, working_frame(facts.curve, facts.curve));
+  const std::vector<OverlapFinding> found = find_self_arc_overlaps(w);
+  if (found.empty()) return std::nullopt;
+  SelfIntersectionResult result;
+  for (const OverlapFinding& o : found) {
+    const Overlap& v = o.overlap;
+    result.overlaps.push_back({v.t_interval.lo, v.t_interval.hi, v.s_interval.lo, v.s_interval.hi});
+  }
+  const CommonArc& arc = *found.front().arc;
+  std::vector<Point2> h;
+  for (std::size_t i = 0; i < arc.hx.size(); ++i) h.push_back({arc.hx[i], arc.hy[i]});
+  const SelfIntersectionResult on_h = self_intersections(Curve(std::move(h)), options);
+  result.stats = on_h.stats;
+  std::vector<Candidate> candidates;
+  for (const SelfIntersection& pair : on_h.pairs) {
+    const bool tangent = pair.kind == SelfIntersectionKind::tangent;
+    for (const double t : level_set(arc.p, pair.t)) {
+      for (const double s : level_set(arc.p, pair.s)) {
+        candidates.push_back({std::min(t, s), std::max(t, s), 0.0, tangent});
+      }
+    }
+  }
+  result.pairs = clean_up(candidates, facts);
+  result.status = on_h.status == SelfIntersectionStatus::work_cap_reached
+                      ? SelfIntersectionStatus::work_cap_reached
+                      : SelfIntersectionStatus::degenerate;
+  return result;
+}
+
 /// What the cubic closed form says: a loop (`result`), no loop on [0, 1] other than a closed
 /// curve's trivial pair (the caller then still checks for a collinear or palindromic,
 /// retracing, cubic, which the closed form does not describe), or nothing certain.
@@ -452,6 +511,8 @@ SelfIntersectionResult self_intersections(const Curve& curve,
     result = collinear_result(facts, *frame, options);
   } else if (is_palindrome(points)) {
     result = retracing_result(facts, options);
+  } else if (auto improper = improper_result(facts, options)) {
+    result = std::move(*improper);
   } else if (cubic.verdict == ClosedFormVerdict::no_loop) {
     result.stats.method = SelfIntersectionMethod::closed_form_cubic;
   } else {

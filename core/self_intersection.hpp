@@ -28,8 +28,9 @@ struct SelfIntersection {
 /// A continuum of self-intersections: the curve retraces itself, B on [t_lo, t_hi] runs
 /// over the same points as B on [s_lo, s_hi] (t_hi <= s_lo). Reported for collinear curves
 /// (every control point within the distance tolerance of one line), single points (t and s
-/// both cover [0, 1]) and palindromic control points (P_i = P_{n-i}: B(1 - t) = B(t), the
-/// overlap [0, 1/2] x [1/2, 1]).
+/// both cover [0, 1]), palindromic control points (P_i = P_{n-i}: B(1 - t) = B(t), the
+/// overlap [0, 1/2] x [1/2, 1]) and any other improper parametrisation B = C(p(t)) with p
+/// turning back (the pieces where p(t) = p(s)).
 struct SelfOverlap {
   double t_lo = 0.0;
   double t_hi = 0.0;
@@ -148,7 +149,9 @@ struct SelfIntersectionOptions {
 /// curvatures differ, to about half the digits when they agree). Every stage counts against
 /// options.max_work; running out gives status work_cap_reached, never a long run. Other curves that
 /// retrace part of themselves (improper parametrisations C(p(t)) with p not symmetric about 1/2,
-/// e.g. p = (t - 1/4)^2) exhaust the work budget.
+/// e.g. p = (t - 1/4)^2) are factored (intersect/common_arc.hpp): their retraced pieces come
+/// from p, their pairs from C's own double points. Curves within rounding of retracing
+/// themselves without doing so can exhaust the budget.
 ///
 /// The approach of classifying boxes of the (t, s) square follows the divided-difference
 /// view of self-intersection (Pekerman, Elber, Kim, "Self-intersection detection and

@@ -60,11 +60,14 @@ Monomial right_factor(const Coeffs& a, int n, int k) {
 }
 
 /// True when x (monomial, degree <= n) is a polynomial in the monic p to within kFilter
-/// of `size` (the largest coefficient of either coordinate): every remainder of the
-/// repeated division by p is a constant.
-bool is_polynomial_in(const Coeffs& x, int n, const Monomial& p, double size) {
+/// of its own coefficients, or of `noise` (their rounding) if that is larger: every
+/// remainder of the repeated division by p is a constant. (Relative to the other
+/// coordinate's coefficients instead, a line x = t would pass beside a y = T_20(2t - 1),
+/// whose coefficients reach 1e11.)
+bool is_polynomial_in(const Coeffs& x, int n, const Monomial& p, double noise) {
   const int k = static_cast<int>(p.size()) - 1;
   Monomial r(x.begin(), x.begin() + n + 1);
+  const double size = bernstein::max2(max_abs(r), noise);
   const double tol = kFilter * size * bernstein::max2(1.0, max_abs(p));
   const auto constant_below = [&](int degree) {
     for (int j = 1; j <= degree; ++j)
@@ -299,12 +302,14 @@ bool piece_lies_on(const WorkingCurve& f, const WorkingCurve& g, const CommonArc
 /// The overlaps of the pieces of f (t) and g (s) on which p and q are monotone; false when
 /// a piece long enough to report fails its verification.
 bool arc_pieces(const WorkingCurve& f, const WorkingCurve& g, CommonArc& arc,
-                std::vector<Overlap>& out) {
+                std::vector<Overlap>& out, bool later_pieces_only = false) {
   const std::vector<ParamInterval> t_pieces = monotone_pieces(arc.p);
   const std::vector<ParamInterval> s_pieces = monotone_pieces(arc.q);
-  for (const ParamInterval I : t_pieces) {
+  for (std::size_t i = 0; i < t_pieces.size(); ++i) {
+    const ParamInterval I = t_pieces[i];
     const double p0 = value(arc.p, I.lo), p1 = value(arc.p, I.hi);
-    for (const ParamInterval J : s_pieces) {
+    for (std::size_t j = later_pieces_only ? i + 1 : 0; j < s_pieces.size(); ++j) {
+      const ParamInterval J = s_pieces[j];
       const double q0 = value(arc.q, J.lo), q1 = value(arc.q, J.hi);
       const double p_lo = bernstein::min2(p0, p1), p_hi = bernstein::max2(p0, p1);
       const double q_lo = bernstein::min2(q0, q1), q_hi = bernstein::max2(q0, q1);
@@ -354,6 +359,19 @@ bool arc_pieces(const WorkingCurve& f, const WorkingCurve& g, CommonArc& arc,
   return true;
 }
 
+/// The overlaps as findings that share their arc.
+std::vector<OverlapFinding> findings(std::shared_ptr<const CommonArc> arc,
+                                     const std::vector<Overlap>& overlaps) {
+  std::vector<OverlapFinding> out;
+  for (const Overlap& o : overlaps) {
+    OverlapFinding found;
+    found.overlap = o;
+    found.arc = arc;
+    out.push_back(found);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::optional<Factorisation> factorise(const WorkingCurve& c) {
@@ -361,13 +379,14 @@ std::optional<Factorisation> factorise(const WorkingCurve& c) {
   const Coeffs ax = monomial(c.x), ay = monomial(c.y);
   const int n = true_degree(ax, ay, c.magnitude);
   const Coeffs& a = std::fabs(ax[static_cast<std::size_t>(n)]) >= std::fabs(ay[static_cast<std::size_t>(n)]) ? ax : ay;
-  const double size = bernstein::max2(max_abs(ax), max_abs(ay));
+  // The conversion's rounding (true_degree's bound at its largest, k = n/2 or so).
+  const double noise = 64 * binomial(n, n / 2) * std::ldexp(1.0, n) * kU * c.magnitude;
   // Every common right factor of x and y is one of the largest (Lüroth), so the first k
   // that works, from the top, is the largest.
   for (int k = n / 2; k >= 2; --k) {
     if (n % k != 0) continue;
     const Monomial p = right_factor(a, n, k);
-    if (!is_polynomial_in(ax, n, p, size) || !is_polynomial_in(ay, n, p, size)) continue;
+    if (!is_polynomial_in(ax, n, p, noise) || !is_polynomial_in(ay, n, p, noise)) continue;
     if (auto found = factor_through(c, p, n / k)) return found;
   }
   return std::nullopt;
@@ -416,16 +435,23 @@ std::vector<OverlapFinding> find_arc_overlaps(const WorkingCurve& f, const Worki
     for (double& v : arc->q.span()) v = alpha + beta * v;
     std::vector<Overlap> overlaps;
     if (!arc_pieces(f, g, *arc, overlaps) || overlaps.empty()) continue;
-    std::vector<OverlapFinding> out;
-    for (const Overlap& o : overlaps) {
-      OverlapFinding found;
-      found.overlap = o;
-      found.arc = arc;
-      out.push_back(found);
-    }
-    return out;
+    return findings(std::move(arc), overlaps);
   }
   return {};
+}
+
+std::vector<OverlapFinding> find_self_arc_overlaps(const WorkingCurve& c) {
+  const std::optional<Factorisation> fc = factorise(c);
+  if (!fc) return {};
+  auto arc = std::make_shared<CommonArc>();
+  arc->hx = fc->hx;
+  arc->hy = fc->hy;
+  arc->h_magnitude = bernstein::max2(max_abs(fc->hx), max_abs(fc->hy));
+  arc->p = fc->p;
+  arc->q = fc->p;
+  std::vector<Overlap> overlaps;
+  if (!arc_pieces(c, c, *arc, overlaps, true)) return {};
+  return findings(std::move(arc), overlaps);
 }
 
 bool covered_by_arc(const CommonArc& arc, ParamInterval t, ParamInterval s) {

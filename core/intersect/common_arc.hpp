@@ -55,6 +55,11 @@ struct CommonArc {
 [[nodiscard]] std::vector<OverlapFinding> find_arc_overlaps(const WorkingCurve& f,
                                                             const WorkingCurve& g);
 
+/// The pieces an improper curve c = h(p) retraces: one overlap (t before s) per pair of
+/// different pieces on which p is monotone whose ranges share more than a point, found and
+/// verified as find_arc_overlaps does. Empty when c is proper.
+[[nodiscard]] std::vector<OverlapFinding> find_self_arc_overlaps(const WorkingCurve& c);
+
 /// True when every intersection in the box t x s is a point of the arc's overlaps: h is
 /// injective on the hull of p(t) and q(s) (so f(t') = g(s') there forces p(t') = q(s')),
 /// and the box avoids the arc's searched boxes.

@@ -56,8 +56,9 @@ Halves halves(ParamInterval iv) noexcept {
 /// Boxes wider than this are never declared "coincident to within rounding": a contact of
 /// order 3 reaches its precision floor near 1e-8 (double-precision local coordinates hold
 /// the curves' gap c d^3 down to about u |f'| d), while wider coincident boxes are
-/// improper overlaps (the same point set traced along a non-linear reparametrisation),
-/// which the search must not report as one contact; they run into the work cap instead.
+/// near-coincidences along an arc (improper overlaps, the same point set traced along a
+/// non-linear reparametrisation, are found before the search: common_arc.hpp), which the
+/// search must not report as one contact; they run into the work cap instead.
 constexpr double kFloorWidth = 0x1p-20;
 
 /// The sine of the angle between two pieces' chords is below this: they run nearly parallel,

@@ -245,12 +245,24 @@ TEST(IntersectionsRoute, WorkSpentStaysWithinTheCap) {
   EXPECT_LE(r["stats"]["work"].get<std::int64_t>(), limits.max_work);
 }
 
+TEST(IntersectionsRoute, ACurveRetracingPartOfItselfAnswersTheOverlap) {
+  // B = C(4 (t - 1/4)^2), C quadratic: B(1/4 - x) = B(1/4 + x), so B on [0, 1/4] is B on
+  // [1/4, 1/2] reversed.
+  const json r = call(
+      R"({"curves":[{"points":[[0.75,0.5625],[-0.75,-0.9375],[-0.25,1.5625],[2.25,-3.9375],[6.75,18.5625]]}]})",
+      200);
+  EXPECT_TRUE(r["intersections"].empty());
+  EXPECT_EQ(r["overlaps"],
+            json::parse(R"([{"reversed":true,"s_interval":[0.25,0.5],"t_interval":[0.0,0.25]}])"));
+}
+
 TEST(IntersectionsRoute, SelfIntersectionWorkCapAnswers422) {
-  // B = C(4 (t - 1/4)^2), C quadratic: B(1/4 - x) = B(1/4 + x), a continuum of pairs.
+  // The curve above with one coordinate moved by 1e-9: no longer retracing itself, but
+  // within rounding of it along a whole piece, which needs more boxes than this cap buys.
   Limits limits;
   limits.max_work = 20000;
   const json problem = call(
-      R"({"curves":[{"points":[[0.75,0.5625],[-0.75,-0.9375],[-0.25,1.5625],[2.25,-3.9375],[6.75,18.5625]]}]})",
+      R"({"curves":[{"points":[[0.75,0.5625],[-0.75,-0.9375],[-0.25,1.562500001],[2.25,-3.9375],[6.75,18.5625]]}]})",
       422, limits);
   EXPECT_EQ(problem["type"], "urn:bezier-service:problem:work-cap");
   const std::string detail = problem["detail"].get<std::string>();

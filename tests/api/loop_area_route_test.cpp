@@ -198,12 +198,22 @@ TEST(LoopAreaRoute, WorkCapIsA422Problem) {
   // The interval form does no search and is not capped.
   limits.max_work = 1;
   call(std::string(R"({"points":)") + kDegree7 + R"(,"interval":[0.1,0.9]})", 200, limits);
-  // A curve retracing part of itself (B = C(4 (t - 1/4)^2), C quadratic: B(1/4 - x) =
-  // B(1/4 + x)) exhausts the default cap.
+  // A curve within rounding of retracing part of itself (B = C(4 (t - 1/4)^2), C quadratic,
+  // with one coordinate moved by 1e-9) needs far more boxes than this cap buys.
+  limits.max_work = 100000;
   const json cap = call(
-      R"({"points":[[0.75,0.5625],[-0.75,-0.9375],[-0.25,1.5625],[2.25,-3.9375],[6.75,18.5625]]})",
-      422);
+      R"({"points":[[0.75,0.5625],[-0.75,-0.9375],[-0.25,1.562500001],[2.25,-3.9375],[6.75,18.5625]]})",
+      422, limits);
   EXPECT_EQ(cap["type"], "urn:bezier-service:problem:work-cap");
+}
+
+TEST(LoopAreaRoute, ACurveRetracingPartOfItselfHasAnOverlapAndNoLoop) {
+  // The same curve exactly: B(1/4 - x) = B(1/4 + x), B on [0, 1/4] is B on [1/4, 1/2].
+  const json r = call(
+      R"({"points":[[0.75,0.5625],[-0.75,-0.9375],[-0.25,1.5625],[2.25,-3.9375],[6.75,18.5625]]})",
+      200);
+  EXPECT_EQ(r["loops"], json::array());
+  EXPECT_EQ(r["overlaps"], json::parse(R"([{"t_interval":[0.0,0.25],"s_interval":[0.25,0.5]}])"));
 }
 
 TEST(LoopAreaRoute, PalindromicCurveRetracesItself) {

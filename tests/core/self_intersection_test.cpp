@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "core/evaluate.hpp"
@@ -393,6 +394,21 @@ Curve composed_with_quadratic(const Poly& p) {
   return c.value_or(Curve({{0, 0}, {1, 0}}));
 }
 
+/// scale * H(phi(t)) for H given by its control points and phi in power form, exactly
+/// (nullopt when a control point is not a double).
+std::optional<Curve> composed(const Curve& h, const Poly& phi, const Rational& scale) {
+  const test::PowerCurve hp = test::power_form(h);
+  Poly x{Rational(0)}, y{Rational(0)}, power{Rational(1)};
+  for (std::size_t k = 0; k < hp.x.size(); ++k) {
+    x = test::poly_sub(x, test::poly_mul(power, {-hp.x[k]}));
+    y = test::poly_sub(y, test::poly_mul(power, {-hp.y[k]}));
+    power = test::poly_mul(power, phi);
+  }
+  for (Rational& v : x) v *= scale;
+  for (Rational& v : y) v *= scale;
+  return test::exact_curve(test::bernstein_from_power(x, y));
+}
+
 TEST(SelfIntersection, PalindromicControlPointsRetraceTheCurve) {
   // p(t) = 4t(1 - t) is symmetric about 1/2, so B(1 - t) = B(t): the control points read
   // the same backwards, and the curve runs out along a parabola and back.
@@ -416,17 +432,8 @@ TEST(SelfIntersection, PalindromeOfALoopHasFourPairsPerLoop) {
   // 1/10: h = (1 ∓ sqrt(3/5)) / 2. 4t(1 - t) = h gives t = (1 - sqrt(1 - h)) / 2 on the way
   // out and 1 - t on the way back: four pairs.
   const Curve h({{0, 0}, {1, 1}, {-0.5, 1}, {0.5, 0}});
-  const test::PowerCurve hp = test::power_form(h);
-  const Poly phi{Rational(0), Rational(4), Rational(-4)};
-  Poly x{Rational(0)}, y{Rational(0)}, power{Rational(1)};
-  for (std::size_t k = 0; k < hp.x.size(); ++k) {
-    x = test::poly_sub(x, test::poly_mul(power, {-hp.x[k]}));
-    y = test::poly_sub(y, test::poly_mul(power, {-hp.y[k]}));
-    power = test::poly_mul(power, phi);
-  }
-  for (Rational& v : x) v *= Rational(15);  // keeps the degree-6 control points dyadic
-  for (Rational& v : y) v *= Rational(15);
-  const auto c = test::exact_curve(test::bernstein_from_power(x, y));
+  // Times 15: keeps the degree-6 control points dyadic.
+  const auto c = composed(h, {Rational(0), Rational(4), Rational(-4)}, Rational(15));
   ASSERT_TRUE(c.has_value());
   const double h1 = (1 - std::sqrt(0.6)) / 2, h2 = (1 + std::sqrt(0.6)) / 2;
   const double a = (1 - std::sqrt(1 - h1)) / 2, b = (1 - std::sqrt(1 - h2)) / 2;
@@ -441,15 +448,57 @@ TEST(SelfIntersection, PalindromeOfALoopHasFourPairsPerLoop) {
   }
 }
 
-TEST(SelfIntersection, WorkCapIsReportedNotHidden) {
+TEST(SelfIntersection, AFoldThatIsNoPalindromeRetracesTheCurve) {
   // p(t) = 4 (t - 1/4)^2 is symmetric about 1/4: B(1/4 - x) = B(1/4 + x) for x in
-  // [0, 1/4], a continuum of pairs that no finite subdivision resolves, and the control
-  // points are no palindrome.
+  // [0, 1/4], a continuum of pairs, and the control points are no palindrome. B = h(p) is
+  // found as improper: t in [0, 1/4] retraced by s in [1/4, 1/2].
   const Curve c = composed_with_quadratic({q(1, 4), Rational(-2), Rational(4)});
   ASSERT_NE(c[0], c[4]);
+  const SelfIntersectionResult r = self_intersections(c);
+  EXPECT_EQ(r.status, SelfIntersectionStatus::degenerate);
+  EXPECT_TRUE(r.pairs.empty());  // the parabola itself does not cross itself
+  ASSERT_EQ(r.overlaps.size(), 1u);
+  EXPECT_NEAR(r.overlaps[0].t_lo, 0.0, 1e-15);
+  EXPECT_NEAR(r.overlaps[0].t_hi, 0.25, 1e-12);
+  EXPECT_NEAR(r.overlaps[0].s_lo, 0.25, 1e-12);
+  EXPECT_NEAR(r.overlaps[0].s_hi, 0.5, 1e-12);
+}
+
+TEST(SelfIntersection, AFoldedLoopPairsEveryPreimageOfItsDoublePoint) {
+  // B(t) = H(p(t)) with H = (-9,0), (13,16), (-13,16), (9,0), whose double point is
+  // H(1/4) = H(3/4) = (0, 9) (x(u) = 0 at u = 1/4, 3/4 and x is odd about 1/2), and
+  // p(t) = ((3t - 1) / 2)^2, which turns at t = 1/3: B on [0, 1/3] is retraced by B on
+  // [1/3, 2/3]. p(t) = 1/4 at t = 0 and 2/3, p(t) = 3/4 at t = (1 + sqrt 3) / 3 only: two
+  // pairs.
+  const Curve h({{-9, 0}, {13, 16}, {-13, 16}, {9, 0}});
+  // Times 60: keeps the degree-6 control points dyadic.
+  const auto c = composed(h, {q(1, 4), q(-3, 2), q(9, 4)}, Rational(60));
+  ASSERT_TRUE(c.has_value());
+  const SelfIntersectionResult r = self_intersections(*c);
+  EXPECT_EQ(r.status, SelfIntersectionStatus::degenerate);
+  ASSERT_EQ(r.overlaps.size(), 1u);
+  EXPECT_NEAR(r.overlaps[0].t_lo, 0.0, 1e-15);
+  EXPECT_NEAR(r.overlaps[0].t_hi, 1.0 / 3, 1e-12);
+  EXPECT_NEAR(r.overlaps[0].s_lo, 1.0 / 3, 1e-12);
+  EXPECT_NEAR(r.overlaps[0].s_hi, 2.0 / 3, 1e-12);
+  const double far = (1 + std::sqrt(3.0)) / 3;
+  ASSERT_EQ(r.pairs.size(), 2u);
+  EXPECT_EQ(r.pairs[0].t, 0.0);
+  EXPECT_NEAR(r.pairs[0].s, far, 1e-14);
+  EXPECT_NEAR(r.pairs[1].t, 2.0 / 3, 1e-14);
+  EXPECT_NEAR(r.pairs[1].s, far, 1e-14);
+}
+
+TEST(SelfIntersection, WorkCapIsReportedNotHidden) {
+  // The fold of AFoldThatIsNoPalindromeRetracesTheCurve with one control point moved by
+  // 2^-30 of the curve's size: no longer improper, but within rounding of retracing itself
+  // along [0, 1/4] x [1/4, 1/2], which needs far more than this budget.
+  Curve c = composed_with_quadratic({q(1, 4), Rational(-2), Rational(4)});
+  std::vector<Point2> pts(c.points().begin(), c.points().end());
+  pts[2].y += 0x1p-30 * scale(c);
   SelfIntersectionOptions options;
   options.max_work = 2000;
-  const SelfIntersectionResult r = self_intersections(c, options);
+  const SelfIntersectionResult r = self_intersections(Curve(pts), options);
   EXPECT_EQ(r.status, SelfIntersectionStatus::work_cap_reached);
   EXPECT_EQ(r.stats.work, 2000);
 }

@@ -132,10 +132,11 @@ TEST(InlinePolicy, WorkCapRunsAgain) {
   EXPECT_EQ(t.inline_answer.status, 422) << t.inline_answer.body;
   EXPECT_FALSE(t.final);
   EXPECT_EQ(t.pool_answer.status, 200) << t.pool_answer.body;
-  // A curve that retraces part of itself exhausts any cap: the pool's 422 names its cap.
+  // A curve within 1e-10 of retracing another, by subdivision (the spec's near-retraced
+  // example), exhausts the full cap too: the pool's 422 names it.
   const Tried retrace = try_inline(
-      "/loop-area",
-      R"({"points":[[0.75,0.5625],[-0.75,-0.9375],[-0.25,1.5625],[2.25,-3.9375],[6.75,18.5625]]})");
+      "/intersections",
+      R"({"curves":[{"points":[[0,0],[3,6],[6,0]]},{"points":[[0,0],[6,12],[8,-15.9999999996],[6,12],[0,0]]}],"method":"subdivision"})");
   EXPECT_FALSE(retrace.final);
   EXPECT_EQ(retrace.pool_answer.status, 422);
   EXPECT_NE(retrace.pool_answer.body.find("work cap of 22000000 units"), std::string::npos)
