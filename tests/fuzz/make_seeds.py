@@ -39,14 +39,17 @@ class Seed:
         return self.byte(raw >> 8).byte(raw & 0xFF)
 
     def number(self, x):
-        """A NumberSource double: a small integer (selector 1) or k / 2^j (selector 2)."""
+        """A NumberSource double: a small integer (selector 1) or k / 2^j (selector 2); any
+        other value (a rational such as 1/3) as its nearest double (selector 0)."""
         x = Fraction(x)
         if x.denominator == 1 and -8 <= x <= 8:
             return self.byte(1).int_in_range(int(x), -8, 8)
         j = 0
-        while (x * 2**j).denominator != 1:
+        while (x * 2**j).denominator != 1 and j <= 20:
             j += 1
         k = x * 2**j
+        if k.denominator != 1 or not -32768 <= k <= 32767:
+            return self.raw_double(float(x))
         assert k.denominator == 1 and -32768 <= k <= 32767 and j <= 20, x
         return self.byte(2).int16(int(k)).int_in_range(j, 0, 20)
 
@@ -81,8 +84,33 @@ def intersect_seed(name, f, g, method=0, fat3=False, tolerance_index=0, flags=7,
     config = next(c for c in range(256)
                   if c % 3 == method and bool(c & 4) == fat3 and (c >> 3) % 8 == tolerance_index)
     seed = Seed().byte(config).byte(flags).int_in_range(scale, -60, 60)
-    seed.byte(len(f) - 1).byte(len(g) - 1).points(f).points(g)
+    seed.byte(degree_byte(len(f) - 1)).byte(degree_byte(len(g) - 1)).points(f).points(g)
     write("intersect_fuzzer", name, seed)
+
+
+def degree_byte(n):
+    """The byte pick_degree reads as degree n: b % 5 below 224, b % 21 from 224 on."""
+    return n if n < 5 else next(b for b in range(224, 256) if b % 21 == n)
+
+
+def compose(h, q):
+    """The control points of h(q(s)) (h's control points, q in Bernstein form, exact
+    rationals): de Casteljau's algorithm on polynomials in Bernstein form."""
+    from math import comb
+
+    def multiply(a, b):
+        m, n = len(a) - 1, len(b) - 1
+        return [sum(Fraction(comb(m, j) * comb(n, i - j), comb(m + n, i)) * a[j] * b[i - j]
+                    for j in range(max(0, i - n), min(m, i) + 1)) for i in range(m + n + 1)]
+
+    q = [Fraction(v) for v in q]
+    one_minus_q = [1 - v for v in q]
+    rows = [[[Fraction(x)], [Fraction(y)]] for x, y in h]
+    for level in range(len(h) - 1, 0, -1):
+        for i in range(level):
+            rows[i] = [[a + b for a, b in zip(multiply(one_minus_q, rows[i][c]),
+                                               multiply(q, rows[i + 1][c]))] for c in (0, 1)]
+    return list(zip(rows[0][0], rows[0][1]))
 
 
 S_CURVE = [(0, 0), (1, 4), (3, -4), (4, 0)]
@@ -98,6 +126,13 @@ intersect_seed("collinear_segments", [(0, 0), (4, 0)], [(2, 0), (6, 0)], method=
 intersect_seed("quartics_dyadic", [(0, 0), (0.5, 3), (1.25, -3), (2.75, 3), (4, 0)],
                [(0, 1), (1.5, -2.5), (2, 3.5), (3.5, -1), (4, 1.125)], fat3=True, tolerance_index=2)
 intersect_seed("wild_far_apart", [(0, 0), (1, 1)], [(2, 2), (3, 0)], flags=3)
+# Curves tracing one arc at different speeds (core/intersect/common_arc.hpp).
+PARABOLA = [(0, 0), (1, 2), (3, 0)]
+intersect_seed("arc_square", PARABOLA, compose(PARABOLA, [0, 0, 1]))
+intersect_seed("arc_retraced", PARABOLA, compose(PARABOLA, [0, 2, 0]), method=2)
+intersect_seed("arc_both_turn", compose(PARABOLA, [1, Fraction(-1, 5), 1]),
+               compose(PARABOLA, [0, Fraction(6, 5), 0]), fat3=True)
+intersect_seed("arc_cubic_square", S_CURVE, compose(S_CURVE, [0, 0, 1]), method=1)
 
 # self_intersection_fuzzer: flags (1 general method instead of the cubic closed form,
 # 2 scaling, 4 compare methods, 8 tame), scale exponent, degree byte (1 + b % 5 for
