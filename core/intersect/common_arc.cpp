@@ -101,16 +101,18 @@ Coeffs bernstein_from(const Monomial& a) {
 
 double value(const Coeffs& c, double t) { return bernstein::evaluate(c, t); }
 
+/// c(t) by de Casteljau in doubles (the hi parts): good to about 2 n u of c's magnitude,
+/// far below every tolerance here, at a tenth of the double-double evaluation's cost.
 Point2 point_of(const WorkingCurve& c, double t) {
-  const PointDD p = evaluate_dd(c, t);
-  return {dd::to_double(p.x), dd::to_double(p.y)};
+  return {value(c.x, t), value(c.y, t)};
 }
 
 /// A t in [lo, hi] with c(t) = u, where c(lo) <= u <= c(hi) or c(lo) >= u >= c(hi)
-/// (bisection on the sign of c - u: a crossing, monotone or not).
-double crossing(const Coeffs& c, double lo, double hi, double u) {
+/// (bisection on the sign of c - u: a crossing, monotone or not), to within `width`; lo
+/// may be the larger end.
+double crossing(const Coeffs& c, double lo, double hi, double u, double width) {
   const bool rising = value(c, hi) >= value(c, lo);
-  for (int i = 0; i < 80 && lo != hi; ++i) {
+  while (std::fabs(hi - lo) > width) {
     const double mid = 0.5 * (lo + hi);
     if (mid == lo || mid == hi) break;
     if ((value(c, mid) < u) == rising)
@@ -212,7 +214,8 @@ std::optional<Factorisation> factor_through(const WorkingCurve& c, const Monomia
   std::vector<double> bx(size), by(size);
   for (std::size_t j = 0; j < size; ++j) {
     const double u = 0.5 * (1 - std::cos(std::numbers::pi * static_cast<double>(j) / d));
-    const double t = j == 0 ? t_lo : j + 1 == size ? t_hi : crossing(p, t_lo, t_hi, u);
+    // The nodes' t to 2^-44: h interpolated through them is as good as p.
+    const double t = j == 0 ? t_lo : j + 1 == size ? t_hi : crossing(p, t_lo, t_hi, u, 0x1p-44);
     const double uj = j == 0 ? 0.0 : j + 1 == size ? 1.0 : value(p, t);
     for (int i = 0; i <= d; ++i)
       m[j][static_cast<std::size_t>(i)] = binomial(d, i) * std::pow(uj, i) * std::pow(1 - uj, d - i);
@@ -273,12 +276,14 @@ double preimage(const Coeffs& c, ParamInterval piece, double u) {
   const double a = value(c, piece.lo), b = value(c, piece.hi);
   if (u <= bernstein::min2(a, b)) return a <= b ? piece.lo : piece.hi;
   if (u >= bernstein::max2(a, b)) return a <= b ? piece.hi : piece.lo;
-  return crossing(c, piece.lo, piece.hi, u);
+  // A starting point for Newton's method on the curves: 2^-32 is well inside its reach.
+  return crossing(c, piece.lo, piece.hi, u, 0x1p-32);
 }
 
 /// True when f on [t0, t1] lies on g: at 2 (m + n) + 1 points of it, f's point projected
-/// onto g from the matching point q^-1(p(t)) of g's piece is within the overlap tolerance
-/// (plus rounding) of g.
+/// onto g (Gauss-Newton from the matching point q^-1(p(t)) of g's piece, within about 1e-9
+/// of it) is within the overlap tolerance of g, plus the rounding of the evaluations in
+/// doubles (a few n u of the magnitude: 2^-42 n is some 2^9 times more).
 bool piece_lies_on(const WorkingCurve& f, const WorkingCurve& g, const CommonArc& arc,
                    double t0, double t1, ParamInterval s_piece) {
   const int degree = std::max(f.degree, g.degree);
@@ -288,13 +293,14 @@ bool piece_lies_on(const WorkingCurve& f, const WorkingCurve& g, const CommonArc
   const int samples = 2 * (f.degree + g.degree) + 1;
   for (int i = 0; i < samples; ++i) {
     const double t = t0 + (t1 - t0) * ((i + 0.5) / samples);
-    const PointDD pt = evaluate_dd(f, t);
-    // From a guess within about 1e-9 (q's accuracy), steps of 2^-50 move g(s) far less
-    // than the tolerance: converged.
-    const double s = locate_on_curve(g, pt, preimage(arc.q, s_piece, value(arc.p, t)), 0x1p-50);
-    const PointDD ps = evaluate_dd(g, s);
-    const double ex = dd::to_double(dd::sub(ps.x, pt.x)), ey = dd::to_double(dd::sub(ps.y, pt.y));
-    if (!(std::fabs(ex) <= floor && std::fabs(ey) <= floor)) return false;
+    const Point2 pt = point_of(f, t);
+    const auto on_g = [&](double s) {
+      const PointAndTangent e = evaluate_with_tangent(g, s);
+      return ResidualAndSlope{e.point - pt, e.tangent};
+    };
+    const double s = gauss_newton(preimage(arc.q, s_piece, value(arc.p, t)), 8, 0x1p-50, on_g);
+    const Point2 r = on_g(s).r;
+    if (!(std::fabs(r.x) <= floor && std::fabs(r.y) <= floor)) return false;
   }
   return true;
 }

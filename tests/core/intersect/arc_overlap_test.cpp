@@ -199,6 +199,29 @@ TEST(ArcOverlap, HighDegreeRetracing) {
   check_both_orders(curve_of(h), compose(h, kSquare), {{0, 1, 0, 1, false}}, 1e-10);
 }
 
+TEST(ArcOverlap, AFactorThatFallsOnTheUnitInterval) {
+  // q(s) = 2s - s^2: its monic form s^2 - 2s falls on [0, 1], and the factorisation must
+  // turn it around (p scaled to the range [0, 1] either way).
+  check_both_orders(curve_of(parabola()), compose(parabola(), {Rational(0), Rational(1), Rational(1)}),
+                    {{0, 1, 0, 1, false}});
+}
+
+// Known limitation (issue 4): the right factor comes from the top monomial coefficients in
+// t, which the conversion of a degree-20 curve rounds most; for the second curve below the
+// factor s^2 - 3s comes out as s^2 - 2.9999985 s, too far off for the filters, so neither
+// curve is recognised as improper and the search ends at the work cap. Monomials in
+// 2t - 1 round a thousand times less and recognise both (tried in session 4), but the
+// remainder filter then needs a new scale. Enable when factorise handles it.
+TEST(ArcOverlap, DISABLED_HighDegreeBothImproper) {
+  // The degree-10 h of HighDegreeRetracing at two quadratic speeds, t/2 + t^2/2 and
+  // 3s/2 - s^2/2 (both onto [0, 1]): two degree-20 curves overlapping all along.
+  std::vector<std::pair<Rational, Rational>> h;
+  for (int i = 0; i <= 10; ++i) h.push_back({Rational(i), Rational((i * i * 7) % 11 - 5)});
+  check_both_orders(compose(h, {Rational(0), Rational(1, 4), Rational(1)}),
+                    compose(h, {Rational(0), Rational(3, 4), Rational(1)}), {{0, 1, 0, 1, false}},
+                    1e-10);
+}
+
 TEST(ArcOverlap, ACurveOffTheArcIsNotAnOverlap) {
   // h(s^2) moved off h by 2^-20 at one control point: no overlap may be claimed.
   Curve g = compose(parabola(), kSquare);
