@@ -206,12 +206,13 @@ TEST(ArcOverlap, AFactorThatFallsOnTheUnitInterval) {
                     {{0, 1, 0, 1, false}});
 }
 
-// Known limitation (issue 4): the right factor comes from the top monomial coefficients in
-// t, which the conversion of a degree-20 curve rounds most; for the second curve below the
-// factor s^2 - 3s comes out as s^2 - 2.9999985 s, too far off for the filters, so neither
-// curve is recognised as improper and the search ends at the work cap. Monomials in
-// 2t - 1 round a thousand times less and recognise both (tried in session 4), but the
-// remainder filter then needs a new scale. Enable when factorise handles it.
+// Known limitation (issue 4): the right factor comes from the top coefficients of the
+// curve's power form, and for the second curve below (whose power form cancels a lot: its
+// coefficients reach 4e5 on control points below 1) the factor s^2 - 3s comes out as
+// s^2 - 2.9999985 s, too far off for the division filter, so the pair is not recognised
+// and the search ends at the work cap. Monomials in 2t - 1 give no better factor (tried in
+// session 4): the loss is in taking the root from the top coefficients. A factor refined
+// on samples of the curve (Gauss-Newton on c - h(p)) would. Enable when factorise does.
 TEST(ArcOverlap, DISABLED_HighDegreeBothImproper) {
   // The degree-10 h of HighDegreeRetracing at two quadratic speeds, t/2 + t^2/2 and
   // 3s/2 - s^2/2 (both onto [0, 1]): two degree-20 curves overlapping all along.
