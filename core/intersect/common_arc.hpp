@@ -65,7 +65,8 @@ struct CommonArc {
 /// and the box avoids the arc's searched boxes.
 [[nodiscard]] bool covered_by_arc(const CommonArc& arc, ParamInterval t, ParamInterval s);
 
-/// True when (t, s) lies on the overlap (of this arc) to within 2^-30.
+/// True when (t, s) lies on the overlap (of this arc): inside its intervals to within
+/// 2^-30, and p(t) = q(s) to within the accuracy of p and q (2^-24).
 [[nodiscard]] bool on_arc_overlap(const CommonArc& arc, const Overlap& overlap, double t,
                                   double s);
 
