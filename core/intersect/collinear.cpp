@@ -164,20 +164,29 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
                                                         std::span<const ExactRoot> exact_roots) {
   const double quick_tol = overlap_tolerance(std::max(f.degree, g.degree));
   if (!roughly_straight(f, quick_tol) || !roughly_straight(g, quick_tol)) return std::nullopt;
-  // The line through f's first control point and the control point farthest from it.
-  const Point2 origin = {f.x[0], f.y[0]};
-  Point2 dir = {0.0, 0.0};
-  double best = -1.0;
+  // The line through the two control points farthest apart, of both curves, from the
+  // lexicographically smaller: the same line whichever curve comes first (from f's first
+  // control point, the decision near the tolerance depended on the order: finding F26).
+  std::vector<Point2> all;
   for (const WorkingCurve* c : {&f, &g}) {
-    for (std::size_t i = 0; i < c->x.size(); ++i) {
-      const Point2 v = {c->x[i] - origin.x, c->y[i] - origin.y};
+    for (std::size_t i = 0; i < c->x.size(); ++i) all.push_back({c->x[i], c->y[i]});
+  }
+  const auto before = [](Point2 a, Point2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
+  std::sort(all.begin(), all.end(), before);
+  Point2 origin = all.front(), far = all.front();
+  double best = -1.0;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    for (std::size_t j = i + 1; j < all.size(); ++j) {
+      const Point2 v = all[j] - all[i];
       const double d = std::sqrt(v.x * v.x + v.y * v.y);  // working frame: no overflow
-      if (d > best) {
+      if (d > best) {  // the first of equal pairs in sorted order: no dependence on input order
         best = d;
-        dir = v;
+        origin = all[i];
+        far = all[j];
       }
     }
   }
+  const Point2 dir = far - origin;
   if (!(best > 0)) return std::nullopt;
   const double tol = overlap_tolerance(std::max(f.degree, g.degree));
   for (const WorkingCurve* c : {&f, &g}) {

@@ -252,6 +252,47 @@ TEST(FuzzRegressions, F20_FlatEndIsNoOverlapOfWidthZero) {
 // 0 (Ai the signed area of the triangle X P_j P_k, {i, j, k} = {0, 1, 2}: barycentric
 // coordinates, tau_1^2 = 4 tau_0 tau_2 on a quadratic), and h(f(t)) changes sign, in exact
 // rationals, between t = 7.6e-6 and 2^-17, where f is within 1e-9 of g(1).
+TEST(FuzzRegressions, F26_NearlyCollinearCurvesOverlapInBothOrders) {
+  // Two quadratics within 2^-29 of the line x = 0 (relative 1e-13 of their 4096 extent):
+  // one line for both. y_f falls from 0.031 to -4096, y_g rises from -1 to its turning
+  // point at s = 1/9 (y_g' = 2 ((1 - s) (y1 - y0) + s (y2 - y1)) with y1 about 0) and falls to
+  // -8: g on [0, 1/9] and on [1/9, 1] each retrace part of f. The line through f's first
+  // control point made the collinear test pass in one order only (the other answered one
+  // crossing and no overlap).
+  const Curve f({{0x0p+0, 0x1.ff8ff2p-6}, {0x1.0000000000002p-31, -0x1p+3}, {0x0p+0, -0x1p+12}});
+  const Curve g({{0x1p-31, -0x1p+0}, {0x0p+0, 0x1.fep-30}, {-0x1.fep-30, -0x1p+3}});
+  // t with y_f(t) = y: the root in [0, 1] of a (1-t)^2 + 2b t(1-t) + c t^2 = y.
+  const auto t_at = [](double y) {
+    const double a = 0x1.ff8ff2p-6, b = -8.0, c = -4096.0;
+    const double qa = a - 2 * b + c, qb = 2 * (b - a), qc = a - y;
+    return (-qb - std::sqrt(qb * qb - 4 * qa * qc)) / (2 * qa);
+  };
+  const auto y_g = [](double s) {
+    return -1.0 * (1 - s) * (1 - s) + 2 * 0x1.fep-30 * s * (1 - s) - 8.0 * s * s;
+  };
+  const double turn = 1.0 / 9;
+  for (const bool swapped : {false, true}) {
+    const IntersectionResult r = swapped ? intersect(g, f) : intersect(f, g);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    EXPECT_TRUE(r.intersections.empty());
+    ASSERT_EQ(r.overlaps.size(), 2u) << "swapped " << swapped;
+    const auto t_of = [&](const Overlap& o) { return swapped ? o.s_interval : o.t_interval; };
+    const auto s_of = [&](const Overlap& o) { return swapped ? o.t_interval : o.s_interval; };
+    // g rising on [0, 1/9]: f between y = -1 and y_g(1/9), in the other direction.
+    EXPECT_NEAR(s_of(r.overlaps[0]).lo, 0.0, 1e-12);
+    EXPECT_NEAR(s_of(r.overlaps[0]).hi, turn, 1e-8);
+    EXPECT_NEAR(t_of(r.overlaps[0]).lo, t_at(y_g(turn)), 1e-9);
+    EXPECT_NEAR(t_of(r.overlaps[0]).hi, t_at(-1.0), 1e-9);
+    EXPECT_TRUE(r.overlaps[0].reversed);
+    // g falling on [1/9, 1]: f between y_g(1/9) and y = -8, the same way.
+    EXPECT_NEAR(s_of(r.overlaps[1]).lo, turn, 1e-8);
+    EXPECT_NEAR(s_of(r.overlaps[1]).hi, 1.0, 1e-12);
+    EXPECT_NEAR(t_of(r.overlaps[1]).lo, t_at(y_g(turn)), 1e-9);
+    EXPECT_NEAR(t_of(r.overlaps[1]).hi, t_at(-8.0), 1e-9);
+    EXPECT_FALSE(r.overlaps[1].reversed);
+  }
+}
+
 TEST(FuzzRegressions, F20c_CrossingNextToASharedEndPointIsFound) {
   using bezier::test::Rational;
   const Curve f({{0.0, 0.0}, {2.0, 0.0}, {-0x1p19, -8.0}});
