@@ -293,6 +293,20 @@ TEST(FuzzRegressions, F26_NearlyCollinearCurvesOverlapInBothOrders) {
   }
 }
 
+TEST(FuzzRegressions, F26_ACurveTheSizeOfAnotherCurvesRoundingIsNoOverlap) {
+  // g runs from (1, 0) to (0, 0) along the x axis as (1 - s)^4 (an improper curve: it
+  // factors through (1 - s)^2); f starts at (0, 0) and reaches 2^27. Near its start f
+  // stays within 2^-40 of the frame (f's size) of g for t up to 9e-5, but it leaves at
+  // the angle of (-1, -1/2) to g's direction: no overlap. The overlap tolerance taken
+  // relative to the frame alone let g, 2^-27 of it, pass in one order.
+  const Curve f({{0x0p+0, 0x0p+0}, {-0x1.ff006bfc6cp-1, -0x1.ff006bfc6cp-2}, {0x1p+27, 0x1.555555554554p+9}});
+  const Curve g({{1.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}});
+  const IntersectionResult a = intersect(f, g), b = intersect(g, f);
+  EXPECT_TRUE(a.overlaps.empty());
+  EXPECT_TRUE(b.overlaps.empty());
+  EXPECT_EQ(a.status, b.status);
+}
+
 TEST(FuzzRegressions, F20c_CrossingNextToASharedEndPointIsFound) {
   using bezier::test::Rational;
   const Curve f({{0.0, 0.0}, {2.0, 0.0}, {-0x1p19, -8.0}});

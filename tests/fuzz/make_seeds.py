@@ -138,8 +138,14 @@ intersect_seed("arc_cubic_square", S_CURVE, compose(S_CURVE, [0, 0, 1]), method=
 # 2 scaling, 4 compare methods, 8 tame), scale exponent, degree byte (1 + b % 5 for
 # b < 224), then the points.
 def self_seed(name, pts, flags=0b1110, scale=-5):
-    seed = Seed().byte(flags).int_in_range(scale, -60, 60).byte(len(pts) - 2).points(pts)
+    seed = Seed().byte(flags).int_in_range(scale, -60, 60).byte(self_degree_byte(len(pts) - 1))
+    seed.points(pts)
     write("self_intersection_fuzzer", name, seed)
+
+
+def self_degree_byte(n):
+    """The byte the target reads as degree n: 1 + b % 5 below 224, 1 + b % 20 from 224 on."""
+    return n - 1 if n <= 5 else next(b for b in range(224, 256) if 1 + b % 20 == n)
 
 
 self_seed("cubic_loop", [(0, 0), (2, 2), (-1, 2), (1, 0)])
@@ -151,6 +157,10 @@ self_seed("quintic_two_loops", [(0, 0), (4, 4), (-2, 4), (6, -4), (0, -4), (4, 0
 self_seed("collinear_retracing", [(0, 0), (2, 0), (-1, 0), (1, 0)])
 self_seed("point", [(1, 1), (1, 1), (1, 1)])
 self_seed("line", [(0, 0), (3, 1)])
+# Improper curves that turn back on themselves (core/self_intersection.cpp's improper branch).
+self_seed("fold", compose(PARABOLA, [Fraction(1, 16), Fraction(-3, 16), Fraction(9, 16)]))
+self_seed("folded_loop", compose([(-9, 0), (13, 16), (-13, 16), (9, 0)],
+                                 [Fraction(1, 4), Fraction(-1, 2), Fraction(1)]), scale=-10)
 
 # classify_fuzzer: scale exponent (-40..40), then the four points.
 def classify_seed(name, pts, scale=7):
