@@ -12,8 +12,8 @@ namespace bezier::core {
 
 /// An improperly parametrised curve written through its proper one: c(t) = h(p(t)) for
 /// every t, with h a polynomial curve of degree d and p a polynomial of degree k >= 2,
-/// n = d k. A polynomial curve has such a factorisation exactly when it traces its point
-/// set more than once (Lüroth's theorem: the field R(x(t), y(t)) is R(p(t)) for some p,
+/// n = d k. A polynomial curve has such a factorisation exactly when, over all real t, it
+/// traces its point set more than once (Lüroth's theorem: the field R(x(t), y(t)) is R(p(t)) for some p,
 /// and for a polynomial curve p can be taken polynomial); p is unique up to an affine map
 /// of u, fixed here by p([0, 1]) = [0, 1], so h on [0, 1] is the arc c traces.
 struct Factorisation {
@@ -25,11 +25,12 @@ struct Factorisation {
 /// The right factor p of each candidate degree k | n comes from the top k monomial
 /// coefficients of c's dominant coordinate a: a = A_d (p + e)^d + O(p^(d-2)) for monic p,
 /// so p + e is the truncated d-th root of a / A_d at infinity (Kozen & Landau,
-/// "Polynomial decomposition algorithms", J. Symbolic Comput. 7, 1989). It is kept when
-/// both coordinates divide by p down to constants (to within 1e-6 of their coefficients:
-/// a filter, not a proof); h then comes from interpolating c at d + 1 points, and
-/// c = h(p) is checked at 2n + 1 samples. Every use of a factorisation verifies what it
-/// concludes on the curves themselves.
+/// "Polynomial decomposition algorithms", J. Symbolic Comput. 7, 1989). It goes on when
+/// both coordinates divide by p down to constants (to within 1e-4 of their coefficients:
+/// a filter, not a proof); h then comes from interpolating c at d + 1 points, p is refined
+/// on the curve when h(p) nearly fits (Gauss-Newton; the root loses digits where the
+/// power form cancels), and c = h(p) must hold to 1e-9 at 2n + 1 samples. Every use of a
+/// factorisation verifies what it concludes on the curves themselves.
 [[nodiscard]] std::optional<Factorisation> factorise(const WorkingCurve& c);
 
 /// Two curves tracing one arc: f(t) = h(p(t)) and g(s) = h(q(s)) with h proper. Then
