@@ -367,31 +367,13 @@ double preimage(const Coeffs& c, ParamInterval piece, double u) {
   return crossing(c, piece.lo, piece.hi, u, 0x1p-32);
 }
 
-/// The side of c's control points' bounding box, the larger (a curve's size in the frame).
-double extent(const WorkingCurve& c) {
-  double x_lo = c.x[0], x_hi = c.x[0], y_lo = c.y[0], y_hi = c.y[0];
-  for (std::size_t i = 1; i < c.x.size(); ++i) {
-    x_lo = bernstein::min2(x_lo, c.x[i]);
-    x_hi = bernstein::max2(x_hi, c.x[i]);
-    y_lo = bernstein::min2(y_lo, c.y[i]);
-    y_hi = bernstein::max2(y_hi, c.y[i]);
-  }
-  return bernstein::max2(x_hi - x_lo, y_hi - y_lo);
-}
-
 /// True when f on [t0, t1] lies on g: at 2 (m + n) + 1 points of it, f's point projected
 /// onto g (Gauss-Newton from the matching point q^-1(p(t)) of g's piece, within about 1e-9
-/// of it) is within the overlap tolerance of g, plus the rounding of the evaluations in
-/// doubles (a few n u of the magnitude: 2^-42 n is some 2^9 times more).
+/// of it) is within coincidence_tolerance of g (which covers the rounding of evaluations
+/// in doubles, a few n u of the magnitude).
 bool piece_lies_on(const WorkingCurve& f, const WorkingCurve& g, const CommonArc& arc,
                    double t0, double t1, ParamInterval s_piece) {
-  const int degree = std::max(f.degree, g.degree);
-  // The tolerance scales with the smaller curve: relative to the frame (the larger one), a
-  // curve 2^-27 the size of the other lay within it of a piece of the other's (finding
-  // F26: a false overlap in one order).
-  const double floor = overlap_tolerance(degree) * bernstein::min2(1.0, bernstein::min2(extent(f), extent(g))) +
-                       64 * degree * kU * bernstein::max2(f.magnitude, g.magnitude) +
-                       f.frame_error + g.frame_error;
+  const double floor = coincidence_tolerance(f, g);
   const int samples = 2 * (f.degree + g.degree) + 1;
   for (int i = 0; i < samples; ++i) {
     const double t = t0 + (t1 - t0) * ((i + 0.5) / samples);

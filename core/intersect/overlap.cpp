@@ -127,6 +127,25 @@ double overlap_tolerance(int degree) noexcept {
   return 0x1p-42 * bernstein::max2(1, degree);
 }
 
+double extent(const WorkingCurve& c) noexcept {
+  double x_lo = c.x[0], x_hi = c.x[0], y_lo = c.y[0], y_hi = c.y[0];
+  for (std::size_t i = 1; i < c.x.size(); ++i) {
+    x_lo = bernstein::min2(x_lo, c.x[i]);
+    x_hi = bernstein::max2(x_hi, c.x[i]);
+    y_lo = bernstein::min2(y_lo, c.y[i]);
+    y_hi = bernstein::max2(y_hi, c.y[i]);
+  }
+  return bernstein::max2(x_hi - x_lo, y_hi - y_lo);
+}
+
+double coincidence_tolerance(const WorkingCurve& f, const WorkingCurve& g) noexcept {
+  const int degree = std::max(f.degree, g.degree);
+  const double smaller = bernstein::min2(1.0, bernstein::min2(extent(f), extent(g)));
+  return overlap_tolerance(degree) * smaller +
+         64 * degree * kU * bernstein::max2(f.magnitude, g.magnitude) + f.frame_error +
+         g.frame_error;
+}
+
 double locate_on_curve(const WorkingCurve& f, PointDD p, double start, double converged) {
   return gauss_newton(start, 30, converged, [&](double t) {
     const Residual r = residual(f, t, p);
@@ -227,7 +246,7 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
       gap =
           bernstein::max2(gap, bernstein::max2(std::fabs(px[i] - qx[i]), std::fabs(py[i] - qy[i])));
     }
-    if (!(gap <= overlap_tolerance(degree))) continue;
+    if (!(gap <= coincidence_tolerance(f, g))) continue;
     OverlapFinding found;
     found.map.beta = (ends_t[1] - ends_t[0]) / (ends_s[1] - ends_s[0]);
     found.map.alpha = ends_t[0] - found.map.beta * ends_s[0];

@@ -39,6 +39,16 @@ struct OverlapFinding {
 /// refinement, far below any visible gap.
 [[nodiscard]] double overlap_tolerance(int degree) noexcept;
 
+/// The larger side of c's control points' bounding box: the curve's size in the frame.
+[[nodiscard]] double extent(const WorkingCurve& c) noexcept;
+
+/// How far two pieces may be apart and still coincide: overlap_tolerance of the smaller
+/// curve's size (at most the frame's, about 1), plus the rounding of pieces and
+/// evaluations in doubles (64 n u of the magnitude) and of the frame. Relative to the frame
+/// alone, a curve 2^-27 the size of the other passed as an overlap of a piece of it
+/// (finding F26).
+[[nodiscard]] double coincidence_tolerance(const WorkingCurve& f, const WorkingCurve& g) noexcept;
+
 /// Overlaps of two curves that are not both collinear, by linear reparametrisation: if f
 /// and g share a piece, both proper, then g(s) = f(alpha + beta s) (a polynomial curve's
 /// proper parametrisations differ by affine maps). This covers identical, reversed
@@ -48,7 +58,7 @@ struct OverlapFinding {
 /// b_{d-1} = beta^(d-1) (a_{d-1} + d alpha a_d). The candidate's overlap in [0,1]^2 is then
 /// pinned down by Newton's method at its ends (each end is an end of f or of g) and
 /// verified: f on [t_a, t_b] and g on [s_a, s_b] must have the same control points to
-/// within overlap_tolerance. Overlaps shorter than 2^-30 in s are left to the search, which
+/// within coincidence_tolerance. Overlaps shorter than 2^-30 in s are left to the search, which
 /// reports them as contacts. Improper parametrisations (g(s) = f(q(s)) with q of degree
 /// >= 2) are find_arc_overlaps' (common_arc.hpp).
 [[nodiscard]] std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f,
