@@ -307,6 +307,22 @@ TEST(FuzzRegressions, F26_ACurveTheSizeOfAnotherCurvesRoundingIsNoOverlap) {
   EXPECT_EQ(a.status, b.status);
 }
 
+TEST(FuzzRegressions, F26_ACurveComingWithin2eMinus9OfAnotherDoesNotMeetIt) {
+  // f = (2^-9 t (1 - t), 139264 (1 - t)^2) has x >= 0 on [0, 1], zero only at its ends
+  // (0, 139264) and (0, 0). g lies on x = 0 with y = a (1 - s)^2 + c s^2, a = 0x1.fap-30,
+  // c = 0x1.8ffep-14, never below a c / (a + c) > 0: it misses both of f's ends, so the
+  // curves do not meet. With the frame's tolerance (f's size, 2^17) both orders answered
+  // two overlaps.
+  const Curve f({{0.0, 0x1.1p+17}, {0x1p-10, 0.0}, {0.0, 0.0}});
+  const Curve g({{0.0, 0x1.fap-30}, {0.0, 0.0}, {0.0, 0x1.8ffep-14}});
+  for (const bool swapped : {false, true}) {
+    const IntersectionResult r = swapped ? intersect(g, f) : intersect(f, g);
+    EXPECT_EQ(r.status, IntersectStatus::ok);
+    EXPECT_TRUE(r.overlaps.empty()) << "swapped " << swapped;
+    EXPECT_TRUE(r.intersections.empty()) << "swapped " << swapped;
+  }
+}
+
 TEST(FuzzRegressions, F20c_CrossingNextToASharedEndPointIsFound) {
   using bezier::test::Rational;
   const Curve f({{0.0, 0.0}, {2.0, 0.0}, {-0x1p19, -8.0}});
