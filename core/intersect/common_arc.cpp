@@ -46,11 +46,7 @@ constexpr double kTurnNoise = 0x1p-40;
 /// Monomial coefficients, constant first.
 using Monomial = std::vector<double>;
 
-double max_abs(std::span<const double> v) noexcept {
-  double m = 0.0;
-  for (const double x : v) m = bernstein::max2(m, std::fabs(x));
-  return m;
-}
+using bernstein::max_abs;
 
 /// The monic right factor p (with p(0) = 0) of degree k of a polynomial a of degree n = d k
 /// (monomial coefficients a[0..n]): p + e = (a / a_n)^(1/d) truncated at infinity. With
