@@ -2,6 +2,7 @@
 
 #include "core/error_free.hpp"
 #include "core/intersect/fixed_extent.hpp"
+#include "core/multiversion.hpp"
 
 namespace bezier::core {
 
@@ -59,7 +60,7 @@ CompensatedPoint compensated_rows(const WorkingCurve& f, std::size_t n, double t
 
 }  // namespace
 
-CompensatedPoint evaluate_compensated(const WorkingCurve& f, double t) {
+BEZIER_FMA_CLONES CompensatedPoint evaluate_compensated(const WorkingCurve& f, double t) {
   const std::size_t n = f.x.size() - 1;
   if (n > kMaxDegree) {
     const PointDD p = evaluate_dd(f, t);
