@@ -6,6 +6,7 @@
 
 #include "core/intersect/bernstein1d.hpp"
 #include "core/intersect/fixed_extent.hpp"
+#include "core/multiversion.hpp"
 
 namespace bezier::core {
 
@@ -439,7 +440,8 @@ std::optional<ParamInterval> kept_interval_of(std::span<const double, E> p, doub
 
 }  // namespace
 
-std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo, double hi) {
+BEZIER_FMA_CLONES std::optional<ParamInterval> kept_interval(std::span<const double> p, double lo,
+                                                             double hi) {
   return with_fixed_extent(p.size(), [&](auto e) {
     return kept_interval_of(fixed_span<decltype(e)::value>(p.data(), p.size()), lo, hi);
   });

@@ -6,6 +6,7 @@
 
 #include "core/intersect/bernstein1d.hpp"
 #include "core/intersect/fixed_extent.hpp"
+#include "core/multiversion.hpp"
 
 namespace bezier::core {
 
@@ -59,7 +60,7 @@ bool is_noisy(const FatLine& line, const DistanceCoefficients& d) noexcept {
   return 4 * noise > signal;
 }
 
-bool bounding_boxes_disjoint(const Piece& f, const Piece& g) noexcept {
+BEZIER_FMA_CLONES bool bounding_boxes_disjoint(const Piece& f, const Piece& g) noexcept {
   // One dispatch for both pieces when their degrees agree (every step of two cubics).
   if (f.x.size() == g.x.size()) {
     return with_fixed_extent(f.x.size(), [&](auto e) {

@@ -4,6 +4,7 @@
 
 #include "core/intersect/bernstein1d.hpp"
 #include "core/intersect/fixed_extent.hpp"
+#include "core/multiversion.hpp"
 
 namespace bezier::core {
 
@@ -123,7 +124,8 @@ DistanceCoefficients distance_coefficients_of(const FatLine& line, std::span<con
 
 }  // namespace
 
-FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection direction) {
+BEZIER_FMA_CLONES FatLine fat_line(const Piece& g, const Piece& other,
+                                   PointLineDirection direction) {
   const std::size_t size = g.x.size();
   return with_fixed_extent(size, [&](auto e) {
     constexpr std::size_t E = decltype(e)::value;
@@ -132,7 +134,7 @@ FatLine fat_line(const Piece& g, const Piece& other, PointLineDirection directio
   });
 }
 
-DistanceCoefficients distance_coefficients(const FatLine& line, const Piece& f) {
+BEZIER_FMA_CLONES DistanceCoefficients distance_coefficients(const FatLine& line, const Piece& f) {
   const std::size_t size = f.x.size();
   return with_fixed_extent(size, [&](auto e) {
     constexpr std::size_t E = decltype(e)::value;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/intersect/bernstein1d.hpp"
+#include "core/multiversion.hpp"
 
 namespace bezier::core {
 
@@ -109,8 +110,9 @@ double snap(double t) noexcept {
 
 }  // namespace
 
-KrawczykResult krawczyk(const WorkingCurve& f, const WorkingCurve& g, const Piece& f_piece,
-                        const Piece& g_piece, ParamInterval t, ParamInterval s, double radius) {
+BEZIER_FMA_CLONES KrawczykResult krawczyk(const WorkingCurve& f, const WorkingCurve& g,
+                                          const Piece& f_piece, const Piece& g_piece,
+                                          ParamInterval t, ParamInterval s, double radius) {
   KrawczykResult out;
   if (f.degree < 1 || g.degree < 1 || f.x.size() > kMaxDegree + 1 || g.x.size() > kMaxDegree + 1)
     return out;

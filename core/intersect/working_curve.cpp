@@ -8,6 +8,7 @@
 
 #include "core/intersect/bernstein1d.hpp"
 #include "core/intersect/fixed_extent.hpp"
+#include "core/multiversion.hpp"
 
 namespace bezier::core {
 
@@ -137,7 +138,7 @@ Piece fast_piece(const WorkingCurve& f, double a, double b) {
   return p;
 }
 
-void fast_piece_into(const WorkingCurve& f, double a, double b, Piece& out) {
+BEZIER_FMA_CLONES void fast_piece_into(const WorkingCurve& f, double a, double b, Piece& out) {
   const std::size_t count = f.x.size();
   if (out.x.size() != count) {
     out.x = Coeffs(count, Coeffs::Uninitialized{});
