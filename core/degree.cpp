@@ -1,65 +1,25 @@
 #include "core/degree.hpp"
 
 #include <cassert>
-#include <cmath>
+#include <optional>
 #include <utility>
 
 #include "core/binomial.hpp"
+#include "core/linear_solve.hpp"
 
 namespace bezier::core {
 
 namespace {
 
-/// Row-major long double matrix with its column count (small: the Gram systems here have
-/// k + 1 <= 11 rows).
-struct Matrix {
-  std::size_t rows = 0, cols = 0;
-  std::vector<long double> v;
-  Matrix(std::size_t r, std::size_t c) : rows(r), cols(c), v(r * c, 0.0L) {}
-  long double& operator()(std::size_t i, std::size_t j) { return v[i * cols + j]; }
-  long double operator()(std::size_t i, std::size_t j) const { return v[i * cols + j]; }
-  void swap_rows(std::size_t a, std::size_t b) {
-    for (std::size_t j = 0; j < cols; ++j) std::swap((*this)(a, j), (*this)(b, j));
-  }
-};
-
 long double binomial_ld(int n, int k) {
   return static_cast<long double>(binomial(n, k));
 }
 
-/// Solves A X = B for X (A square, B with several columns) by Gaussian elimination with
-/// partial pivoting. A is a Gram matrix of a basis, so it is symmetric positive definite
-/// and never singular.
-Matrix solve(Matrix a, Matrix b) {
-  const std::size_t n = a.rows;
-  const std::size_t m = b.cols;
-  for (std::size_t col = 0; col < n; ++col) {
-    std::size_t pivot = col;
-    for (std::size_t r = col + 1; r < n; ++r) {
-      if (std::fabs(a(r, col)) > std::fabs(a(pivot, col))) pivot = r;
-    }
-    a.swap_rows(col, pivot);
-    b.swap_rows(col, pivot);
-    for (std::size_t r = col + 1; r < n; ++r) {
-      const long double factor = a(r, col) / a(col, col);
-      for (std::size_t c = col; c < n; ++c) a(r, c) -= factor * a(col, c);
-      for (std::size_t c = 0; c < m; ++c) b(r, c) -= factor * b(col, c);
-    }
-  }
-  Matrix x(n, m);
-  for (std::size_t r = n; r-- > 0;) {
-    for (std::size_t c = 0; c < m; ++c) {
-      long double sum = b(r, c);
-      for (std::size_t j = r + 1; j < n; ++j) sum -= a(r, j) * x(j, c);
-      x(r, c) = sum / a(r, r);
-    }
-  }
-  return x;
-}
-
 /// L2 reduction matrices for the fat curves (k = 2, 3) of every degree up to 20, computed
-/// at compile time by the same Gram-system elimination as below, so that building a fat
-/// curve operator costs no elimination per request.
+/// at compile time by the same Gram-system elimination as l2_reduction_matrix's (the
+/// arithmetic of solve_linear, in the same order), so that building a fat curve operator
+/// costs no elimination per request. Written out here because solve_linear is not
+/// constexpr (std::fabs is not before C++23, and it is defined out of line).
 constexpr int kTableDegree = 20;
 
 constexpr long double const_binomial(int n, int k) {
@@ -185,7 +145,8 @@ BernsteinMatrix l2_reduction_matrix(int n, int k) {
     return {k + 1, n + 1, std::vector<double>(e, e + (k + 1) * (n + 1))};
   }
   const auto K = static_cast<std::size_t>(k), N = static_cast<std::size_t>(n);
-  Matrix gram(K + 1, K + 1), mixed(K + 1, N + 1);
+  // In long double: G_k's condition grows like 4^k (see the header).
+  DenseMatrix<long double> gram(K + 1, K + 1), mixed(K + 1, N + 1);
   for (int i = 0; i <= k; ++i) {
     for (int j = 0; j <= k; ++j) {
       gram(static_cast<std::size_t>(i), static_cast<std::size_t>(j)) =
@@ -196,10 +157,12 @@ BernsteinMatrix l2_reduction_matrix(int n, int k) {
           binomial_ld(k, i) * binomial_ld(n, j) / ((k + n + 1) * binomial_ld(k + n, i + j));
     }
   }
-  const Matrix r = solve(std::move(gram), std::move(mixed));
+  // G_k is a Gram matrix of a basis: symmetric positive definite, never singular.
+  const std::optional<DenseMatrix<long double>> r = solve_linear(std::move(gram), std::move(mixed));
+  assert(r.has_value());
   BernsteinMatrix out{k + 1, n + 1, {}};
-  out.entries.reserve(r.v.size());
-  for (const long double v : r.v) out.entries.push_back(static_cast<double>(v));
+  out.entries.reserve(r->entries.size());
+  for (const long double v : r->entries) out.entries.push_back(static_cast<double>(v));
   return out;
 }
 

@@ -11,6 +11,7 @@
 #include "core/intersect/double_double.hpp"
 #include "core/intersect/gauss_newton.hpp"
 #include "core/intersect/monomial.hpp"
+#include "core/linear_solve.hpp"
 
 namespace bezier::core {
 
@@ -133,36 +134,6 @@ double crossing(const Coeffs& c, double lo, double hi, double u, double width) {
   return 0.5 * (lo + hi);
 }
 
-/// Solves the (d+1) x (d+1) system m x = b in place (Gaussian elimination with partial
-/// pivoting); false when singular.
-bool solve(std::vector<std::vector<double>>& m, std::vector<double>& b1, std::vector<double>& b2) {
-  const std::size_t n = m.size();
-  for (std::size_t col = 0; col < n; ++col) {
-    std::size_t pivot = col;
-    for (std::size_t r = col + 1; r < n; ++r)
-      if (std::fabs(m[r][col]) > std::fabs(m[pivot][col])) pivot = r;
-    if (!(std::fabs(m[pivot][col]) > 0)) return false;
-    std::swap(m[pivot], m[col]);
-    std::swap(b1[pivot], b1[col]);
-    std::swap(b2[pivot], b2[col]);
-    for (std::size_t r = col + 1; r < n; ++r) {
-      const double f = m[r][col] / m[col][col];
-      for (std::size_t c = col; c < n; ++c) m[r][c] -= f * m[col][c];
-      b1[r] -= f * b1[col];
-      b2[r] -= f * b2[col];
-    }
-  }
-  for (std::size_t i = n; i-- > 0;) {
-    for (std::size_t c = i + 1; c < n; ++c) {
-      b1[i] -= m[i][c] * b1[c];
-      b2[i] -= m[i][c] * b2[c];
-    }
-    b1[i] /= m[i][i];
-    b2[i] /= m[i][i];
-  }
-  return true;
-}
-
 /// Where the polynomial c (Bernstein, [0, 1]) turns, and the pieces between: [0, 1] split
 /// at the roots of c' where c changes direction.
 std::vector<ParamInterval> monotone_pieces(const Coeffs& c) {
@@ -221,23 +192,29 @@ std::optional<Factorisation> interpolated(const WorkingCurve& c, const Monomial&
   if (!(hi - lo > 0)) return std::nullopt;
   for (double& v : p.span()) v = (v - lo) / (hi - lo);
   const std::size_t size = static_cast<std::size_t>(d) + 1;
-  std::vector<std::vector<double>> m(size, std::vector<double>(size));
-  std::vector<double> bx(size), by(size);
+  // Columns 0 and 1 of the right-hand side: the x and y of the curve at the nodes.
+  DenseMatrix<double> m(size, size), rhs(size, 2);
   for (std::size_t j = 0; j < size; ++j) {
     const double u = 0.5 * (1 - std::cos(std::numbers::pi * static_cast<double>(j) / d));
     // The nodes' t to 2^-44: h interpolated through them is as good as p.
     const double t = j == 0 ? t_lo : j + 1 == size ? t_hi : crossing(p, t_lo, t_hi, u, 0x1p-44);
     const double uj = j == 0 ? 0.0 : j + 1 == size ? 1.0 : value(p, t);
     for (int i = 0; i <= d; ++i)
-      m[j][static_cast<std::size_t>(i)] = binomial(d, i) * std::pow(uj, i) * std::pow(1 - uj, d - i);
+      m(j, static_cast<std::size_t>(i)) =
+          binomial(d, i) * std::pow(uj, i) * std::pow(1 - uj, d - i);
     const Point2 q = point_of(c, t);
-    bx[j] = q.x;
-    by[j] = q.y;
+    rhs(j, 0) = q.x;
+    rhs(j, 1) = q.y;
   }
-  if (!solve(m, bx, by)) return std::nullopt;
+  const std::optional<DenseMatrix<double>> h = solve_linear(std::move(m), std::move(rhs));
+  if (!h) return std::nullopt;
   Factorisation out;
-  out.hx = Coeffs(std::span<const double>(bx));
-  out.hy = Coeffs(std::span<const double>(by));
+  out.hx = Coeffs(size);
+  out.hy = Coeffs(size);
+  for (std::size_t i = 0; i < size; ++i) {
+    out.hx[i] = (*h)(i, 0);
+    out.hy[i] = (*h)(i, 1);
+  }
   out.p = std::move(p);
   return out;
 }
@@ -284,21 +261,23 @@ Monomial refined_on_curve(const WorkingCurve& c, Monomial p, int d) {
       jacobian[u].resize(r->size());
       for (std::size_t i = 0; i < r->size(); ++i) jacobian[u][i] = ((*shifted)[i] - (*r)[i]) / h;
     }
-    std::vector<std::vector<double>> normal(unknowns, std::vector<double>(unknowns));
-    std::vector<double> step(unknowns), unused(unknowns);
+    // The normal equations J^T J step = -J^T r.
+    DenseMatrix<double> normal(unknowns, unknowns), gradient(unknowns, 1);
     for (std::size_t a = 0; a < unknowns; ++a) {
       for (std::size_t b = 0; b < unknowns; ++b) {
         double sum = 0.0;
         for (std::size_t i = 0; i < r->size(); ++i) sum += jacobian[a][i] * jacobian[b][i];
-        normal[a][b] = sum;
+        normal(a, b) = sum;
       }
       double sum = 0.0;
       for (std::size_t i = 0; i < r->size(); ++i) sum += jacobian[a][i] * (*r)[i];
-      step[a] = -sum;
+      gradient(a, 0) = -sum;
     }
-    if (!solve(normal, step, unused)) break;
+    const std::optional<DenseMatrix<double>> step =
+        solve_linear(std::move(normal), std::move(gradient));
+    if (!step) break;
     Monomial next = p;
-    for (std::size_t u = 0; u < unknowns; ++u) next[u + 1] += step[u];
+    for (std::size_t u = 0; u < unknowns; ++u) next[u + 1] += (*step)(u, 0);
     const std::optional<std::vector<double>> next_r = misfit_of(next);
     if (!next_r || !(max_abs(*next_r) < size)) break;
     p = std::move(next);
