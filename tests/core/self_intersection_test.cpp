@@ -381,32 +381,21 @@ TEST(SelfIntersection, CollinearCurvesReportOverlaps) {
   EXPECT_EQ(point.overlaps[0].s_hi, 1.0);
 }
 
-/// B(t) = 3 C(p(t)) for C(p) = (p, p^2 + p / 2) and a quadratic p(t) (power form).
-Curve composed_with_quadratic(const Poly& p) {
-  const Poly p2 = test::poly_mul(p, p);
-  Poly cy = p2, cx = p;
-  for (std::size_t k = 0; k < p.size(); ++k) cy[k] += p[k] / Rational(2);
-  cx.resize(cy.size(), Rational(0));
-  for (Rational& v : cx) v *= Rational(3);
-  for (Rational& v : cy) v *= Rational(3);
-  const auto c = test::exact_curve(test::bernstein_from_power(cx, cy));
-  EXPECT_TRUE(c.has_value());
-  return c.value_or(Curve({{0, 0}, {1, 0}}));
-}
-
 /// scale * H(phi(t)) for H given by its control points and phi in power form, exactly
 /// (nullopt when a control point is not a double).
 std::optional<Curve> composed(const Curve& h, const Poly& phi, const Rational& scale) {
-  const test::PowerCurve hp = test::power_form(h);
-  Poly x{Rational(0)}, y{Rational(0)}, power{Rational(1)};
-  for (std::size_t k = 0; k < hp.x.size(); ++k) {
-    x = test::poly_sub(x, test::poly_mul(power, {-hp.x[k]}));
-    y = test::poly_sub(y, test::poly_mul(power, {-hp.y[k]}));
-    power = test::poly_mul(power, phi);
-  }
-  for (Rational& v : x) v *= scale;
-  for (Rational& v : y) v *= scale;
-  return test::exact_curve(test::bernstein_from_power(x, y));
+  std::vector<RPoint2> pts =
+      test::exact_compose(test::exact_points(h), test::bernstein_from_power(phi));
+  for (RPoint2& p : pts) p = scale * p;
+  return test::exact_curve(pts);
+}
+
+/// B(t) = 3 C(p(t)) for C(p) = (p, p^2 + p / 2) and a quadratic p(t) (power form). C's
+/// control points (0, 0), (1/2, 1/4), (1, 3/2) are its power form's Bernstein coefficients.
+Curve composed_with_quadratic(const Poly& p) {
+  const auto c = composed(Curve({{0, 0}, {0.5, 0.25}, {1, 1.5}}), p, Rational(3));
+  EXPECT_TRUE(c.has_value());
+  return c.value_or(Curve({{0, 0}, {1, 0}}));
 }
 
 TEST(SelfIntersection, PalindromicControlPointsRetraceTheCurve) {

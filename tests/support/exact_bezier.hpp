@@ -5,6 +5,7 @@
 // scales that floating-point errors are measured against, the accuracy contract of the
 // compensated kernel (core/evaluate.hpp, CasteljauRow), and seeded random test curves.
 
+#include <algorithm>
 #include <cassert>
 #include <cstdint>
 #include <cstdio>
@@ -73,6 +74,66 @@ template <class RP>
   const Rational n(static_cast<long long>(pts.size() - 1));
   for (std::size_t i = 0; i + 1 < pts.size(); ++i) h.push_back(n * (pts[i + 1] - pts[i]));
   return h;
+}
+
+/// C(n, k) as an exact integer (small n: every intermediate c (n - j) fits in 64 bits).
+[[nodiscard]] inline long long binom(int n, int k) {
+  long long c = 1;
+  for (int j = 0; j < k; ++j) c = c * (n - j) / (j + 1);
+  return c;
+}
+
+/// A scalar polynomial by its Bernstein coefficients on [0, 1]: b_i of B_i^m, m = size - 1.
+using BernsteinPoly = std::vector<Rational>;
+
+/// The product of two polynomials in Bernstein form, exactly: degree m + n, coefficients
+/// (A B)_i = Σ_j C(m,j) C(n,i-j) / C(m+n,i) A_j B_(i-j) (Farouki & Rajan, "Algorithms for
+/// polynomials in Bernstein form", CAGD 5, 1988).
+[[nodiscard]] inline BernsteinPoly exact_bernstein_product(const BernsteinPoly& a,
+                                                           const BernsteinPoly& b) {
+  const int m = static_cast<int>(a.size()) - 1, n = static_cast<int>(b.size()) - 1;
+  BernsteinPoly out;
+  for (int i = 0; i <= m + n; ++i) {
+    Rational sum(0);
+    for (int j = std::max(0, i - n); j <= std::min(m, i); ++j) {
+      sum += Rational(binom(m, j) * binom(n, i - j)) * a[static_cast<std::size_t>(j)] *
+             b[static_cast<std::size_t>(i - j)];
+    }
+    out.push_back(sum / Rational(binom(m + n, i)));
+  }
+  return out;
+}
+
+/// H(q(s)) exactly, for H with control points h (degree n) and q in Bernstein form
+/// (degree m): the control points of degree n m, by de Casteljau's algorithm with
+/// polynomial entries, H_i <- (1 - q) H_i + q H_(i+1) (the polar with every argument q).
+/// Any q: the composition traces H's points at another speed where q runs within [0, 1]
+/// and leaves them elsewhere.
+[[nodiscard]] inline std::vector<RPoint2> exact_compose(const std::vector<RPoint2>& h,
+                                                        const BernsteinPoly& q) {
+  assert(!h.empty() && !q.empty());
+  BernsteinPoly one_minus_q;
+  for (const Rational& c : q) one_minus_q.push_back(Rational(1) - c);
+  std::vector<BernsteinPoly> x, y;
+  for (const RPoint2& p : h) {
+    x.push_back({p.x});
+    y.push_back({p.y});
+  }
+  const auto step = [&](const BernsteinPoly& lo, const BernsteinPoly& hi) {
+    BernsteinPoly sum = exact_bernstein_product(one_minus_q, lo);
+    const BernsteinPoly right = exact_bernstein_product(q, hi);
+    for (std::size_t k = 0; k < sum.size(); ++k) sum[k] += right[k];
+    return sum;
+  };
+  for (std::size_t level = h.size() - 1; level > 0; --level) {
+    for (std::size_t i = 0; i < level; ++i) {
+      x[i] = step(x[i], x[i + 1]);
+      y[i] = step(y[i], y[i + 1]);
+    }
+  }
+  std::vector<RPoint2> out;
+  for (std::size_t k = 0; k < x[0].size(); ++k) out.push_back({x[0][k], y[0][k]});
+  return out;
 }
 
 /// γ_m = m u / (1 - m u) with u = 2^-53: the bound on m accumulated relative roundings

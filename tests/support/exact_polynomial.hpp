@@ -56,12 +56,6 @@ inline Rational poly_value(const Poly& a, const Rational& t) {
   return v;
 }
 
-inline long long binom(int n, int k) {
-  long long c = 1;
-  for (int j = 0; j < k; ++j) c = c * (n - j) / (j + 1);
-  return c;
-}
-
 /// x(t), y(t) of a Bézier curve in the power basis: Σ_i C(n,i) t^i (1-t)^(n-i) P_i expanded
 /// with the binomial theorem, exactly.
 struct PowerCurve {
@@ -110,22 +104,27 @@ inline Rational exact_enclosed_area(const PowerCurve& pc, const Rational& a, con
          rcross(power_value(pc, b), power_value(pc, a)) / Rational(2);
 }
 
-/// Control points from power coefficients (x_k, y_k of t^k, degree n = size - 1):
-/// P_i = Σ_{k <= i} C(i,k) / C(n,k) a_k, from t^k = Σ_{i >= k} C(i,k) / C(n,k) B_i^n(t)
+/// Bernstein coefficients from power coefficients (a_k of t^k, degree n = size - 1):
+/// b_i = Σ_{k <= i} C(i,k) / C(n,k) a_k, from t^k = Σ_{i >= k} C(i,k) / C(n,k) B_i^n(t)
 /// (the inverse of power_form).
+inline BernsteinPoly bernstein_from_power(const Poly& a) {
+  const int n = static_cast<int>(a.size()) - 1;
+  BernsteinPoly b;
+  for (int i = 0; i <= n; ++i) {
+    Rational sum(0);
+    for (int k = 0; k <= i; ++k)
+      sum += Rational(binom(i, k)) / Rational(binom(n, k)) * a[static_cast<std::size_t>(k)];
+    b.push_back(sum);
+  }
+  return b;
+}
+
+/// Control points from the power coefficients of both coordinates (same degree).
 inline std::vector<RPoint2> bernstein_from_power(const Poly& x, const Poly& y) {
   assert(x.size() == y.size());
-  const int n = static_cast<int>(x.size()) - 1;
+  const BernsteinPoly bx = bernstein_from_power(x), by = bernstein_from_power(y);
   std::vector<RPoint2> pts;
-  for (int i = 0; i <= n; ++i) {
-    RPoint2 p{Rational(0), Rational(0)};
-    for (int k = 0; k <= i; ++k) {
-      const Rational w = Rational(binom(i, k)) / Rational(binom(n, k));
-      p.x += w * x[static_cast<std::size_t>(k)];
-      p.y += w * y[static_cast<std::size_t>(k)];
-    }
-    pts.push_back(p);
-  }
+  for (std::size_t i = 0; i < bx.size(); ++i) pts.push_back({bx[i], by[i]});
   return pts;
 }
 

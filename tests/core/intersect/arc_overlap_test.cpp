@@ -12,78 +12,41 @@
 #include <string>
 #include <vector>
 
-#include "core/binomial.hpp"
 #include "core/curve.hpp"
 #include "core/degree.hpp"
 #include "core/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
 #include "tests/support/exact.hpp"
+#include "tests/support/exact_bezier.hpp"
 
 namespace bezier::core {
 namespace {
 
 using test::Rational;
-using Poly = std::vector<Rational>;  // Bernstein coefficients on [0, 1]
+using test::RPoint2;
+using Poly = test::BernsteinPoly;
 
-Rational choose(int n, int k) {
-  return Rational(static_cast<long long>(binomial(n, k)));
-}
-
-/// The product of two polynomials in Bernstein form: degree a + b, coefficients
-/// sum_j C(a,j) C(b,i-j) / C(a+b,i) A_j B_(i-j).
-Poly multiply(const Poly& a, const Poly& b) {
-  const int m = static_cast<int>(a.size()) - 1, n = static_cast<int>(b.size()) - 1;
-  Poly out(static_cast<std::size_t>(m + n + 1), Rational(0));
-  for (int i = 0; i <= m + n; ++i) {
-    Rational sum(0);
-    for (int j = std::max(0, i - n); j <= std::min(m, i); ++j) {
-      sum = sum + choose(m, j) * choose(n, i - j) * a[static_cast<std::size_t>(j)] *
-                      b[static_cast<std::size_t>(i - j)];
-    }
-    out[static_cast<std::size_t>(i)] = sum / choose(m + n, i);
-  }
-  return out;
-}
-
-Poly add(const Poly& a, const Poly& b) {
-  Poly out(a.size());
-  for (std::size_t i = 0; i < a.size(); ++i) out[i] = a[i] + b[i];
-  return out;
-}
-
-/// h(q(s)) for h with control points hx, hy and q in Bernstein form: de Casteljau's
-/// algorithm with polynomial entries, h_i <- (1 - q) h_i + q h_(i+1).
-Curve compose(const std::vector<std::pair<Rational, Rational>>& h, const Poly& q) {
-  Poly one_minus_q(q.size());
-  for (std::size_t i = 0; i < q.size(); ++i) one_minus_q[i] = Rational(1) - q[i];
-  std::vector<Poly> x, y;
-  for (const auto& [px, py] : h) {
-    x.push_back({px});
-    y.push_back({py});
-  }
-  for (std::size_t level = h.size() - 1; level > 0; --level) {
-    for (std::size_t i = 0; i < level; ++i) {
-      x[i] = add(multiply(one_minus_q, x[i]), multiply(q, x[i + 1]));
-      y[i] = add(multiply(one_minus_q, y[i]), multiply(q, y[i + 1]));
-    }
-  }
+/// h(q(s)) rounded once per coordinate (test::exact_compose).
+Curve compose(const std::vector<RPoint2>& h, const Poly& q) {
   std::vector<Point2> pts;
-  for (std::size_t i = 0; i < x[0].size(); ++i) pts.push_back({x[0][i].to_double(), y[0][i].to_double()});
+  for (const RPoint2& p : test::exact_compose(h, q)) pts.push_back(test::to_double(p));
   return Curve(pts);
 }
 
 /// A parabola through (0, 0), (1, 2), (3, 0): proper (a quadratic that is not a line).
-std::vector<std::pair<Rational, Rational>> parabola() {
+std::vector<RPoint2> parabola() {
   return {{Rational(0), Rational(0)}, {Rational(1), Rational(2)}, {Rational(3), Rational(0)}};
 }
 
 /// A cubic with a loop-free S shape: proper.
-std::vector<std::pair<Rational, Rational>> s_cubic() {
-  return {{Rational(0), Rational(0)}, {Rational(1), Rational(3)},
-          {Rational(2), Rational(-3)}, {Rational(3), Rational(0)}};
+std::vector<RPoint2> s_cubic() {
+  return {{Rational(0), Rational(0)},
+          {Rational(1), Rational(3)},
+          {Rational(2), Rational(-3)},
+          {Rational(3), Rational(0)}};
 }
 
-Curve curve_of(const std::vector<std::pair<Rational, Rational>>& h) {
+Curve curve_of(const std::vector<RPoint2>& h) {
   return compose(h, {Rational(0), Rational(1)});
 }
 
@@ -194,7 +157,7 @@ TEST(ArcOverlap, TurningPointsOnBothCurvesAndNoEndOnTheOther) {
 TEST(ArcOverlap, HighDegreeRetracing) {
   // A degree-10 curve h (proper: it is degree-elevated from nothing, its control points
   // are on no lower-degree curve) traced as h(s^2) at degree 20 against h itself.
-  std::vector<std::pair<Rational, Rational>> h;
+  std::vector<RPoint2> h;
   for (int i = 0; i <= 10; ++i) h.push_back({Rational(i), Rational((i * i * 7) % 11 - 5)});
   check_both_orders(curve_of(h), compose(h, kSquare), {{0, 1, 0, 1, false}}, 1e-10);
 }
@@ -211,7 +174,7 @@ TEST(ArcOverlap, HighDegreeBothImproper) {
   // 3s/2 - s^2/2 (both onto [0, 1]): two degree-20 curves overlapping all along. The second
   // one's power form cancels a lot (coefficients up to 4e5 on control points below 1), so
   // its factor from the top coefficients is 5e-7 off and has to be refined on the curve.
-  std::vector<std::pair<Rational, Rational>> h;
+  std::vector<RPoint2> h;
   for (int i = 0; i <= 10; ++i) h.push_back({Rational(i), Rational((i * i * 7) % 11 - 5)});
   check_both_orders(compose(h, {Rational(0), Rational(1, 4), Rational(1)}),
                     compose(h, {Rational(0), Rational(3, 4), Rational(1)}), {{0, 1, 0, 1, false}},
@@ -232,7 +195,7 @@ TEST(ArcOverlap, TheArcsOwnCrossingIsStillFound) {
   // h, a cubic with a loop, against h(s^2): they overlap along all of h, and h's double
   // point h(u1) = h(u2) is besides that a crossing of f = h and g at (u1, sqrt u2) and
   // (u2, sqrt u1), which the overlap must not hide.
-  const std::vector<std::pair<Rational, Rational>> loop = {
+  const std::vector<RPoint2> loop = {
       {Rational(0), Rational(0)}, {Rational(3), Rational(3)}, {Rational(-1), Rational(3)},
       {Rational(2), Rational(0)}};
   const Curve f = curve_of(loop), g = compose(loop, kSquare);
