@@ -162,8 +162,12 @@ void hold_exact_root(CollinearOutcome& out, ExactRoot r) {
 std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
                                                         const WorkingCurve& g,
                                                         std::span<const ExactRoot> exact_roots) {
-  const double quick_tol = overlap_tolerance(std::max(f.degree, g.degree));
-  if (!roughly_straight(f, quick_tol) || !roughly_straight(g, quick_tol)) return std::nullopt;
+  // Relative to the smaller curve, as the overlap tests: a curve 2^-15 the size of the other
+  // and bent by 4e-9 of its own size lay within the frame's tolerance of the other's line,
+  // and its end 1e-4 off that line was taken for a touch, placed differently in the two
+  // orders (finding F26).
+  const double tol = coincidence_tolerance(f, g);
+  if (!roughly_straight(f, tol) || !roughly_straight(g, tol)) return std::nullopt;
   // The line through the two control points farthest apart, of both curves, from the
   // lexicographically smaller: the same line whichever curve comes first (from f's first
   // control point, the decision near the tolerance depended on the order: finding F26).
@@ -188,7 +192,6 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
   }
   const Point2 dir = far - origin;
   if (!(best > 0)) return std::nullopt;
-  const double tol = overlap_tolerance(std::max(f.degree, g.degree));
   for (const WorkingCurve* c : {&f, &g}) {
     for (std::size_t i = 0; i < c->x.size(); ++i) {
       const Point2 v = {c->x[i] - origin.x, c->y[i] - origin.y};

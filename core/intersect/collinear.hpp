@@ -24,13 +24,13 @@ struct CollinearOutcome {
   std::vector<CollinearContact> touches;
 };
 
-/// When every control point of f and of g lies on one line (to within the overlap
-/// tolerance), the problem is one-dimensional: with u(t) and v(s) the positions along the
-/// line (scalar Bernstein polynomials), f(t) = g(s) iff u(t) = v(s). Each curve is cut at
-/// the roots of its derivative into monotone pieces (a straight curve may double back);
-/// every pair of pieces whose ranges overlap gives an overlap, with the parameters of the
-/// range's ends found by bisection on the monotone pieces; ranges that only touch give a
-/// single contact. nullopt when the curves are not on one common line (the general search
+/// When every control point of f and of g lies on one line (to within
+/// coincidence_tolerance, relative to the smaller curve), the problem is one-dimensional: with u(t)
+/// and v(s) the positions along the line (scalar Bernstein polynomials), f(t) = g(s) iff u(t) =
+/// v(s). Each curve is cut at the roots of its derivative into monotone pieces (a straight curve
+/// may double back); every pair of pieces whose ranges overlap gives an overlap, with the
+/// parameters of the range's ends found by bisection on the monotone pieces; ranges that only touch
+/// give a single contact. nullopt when the curves are not on one common line (the general search
 /// then applies; collinear curves on different lines cross at most at isolated points).
 /// End points equal bit for bit (exact_roots) are part of the answer: an overlap that ends
 /// within 2^-40 of one ends on it, a contact next to one is estimated at it, and any other

@@ -94,6 +94,32 @@ namespace bezier::core {
 namespace {
 
 // Whether (t, s) lies in the box of a reported intersection or in a reported overlap.
+using RationalPoint = std::array<bezier::test::Rational, 2>;
+
+/// q(t) of a quadratic in exact rationals (t and the control points as the doubles they are).
+RationalPoint exact_point(const Curve& q, double t) {
+  using bezier::test::Rational;
+  const Rational tr(t), one(1), two(2);
+  const Rational b0 = (one - tr) * (one - tr), b1 = two * tr * (one - tr), b2 = tr * tr;
+  return {b0 * Rational(q[0].x) + b1 * Rational(q[1].x) + b2 * Rational(q[2].x),
+          b0 * Rational(q[0].y) + b1 * Rational(q[1].y) + b2 * Rational(q[2].y)};
+}
+
+/// The implicit equation of the parabola a quadratic q lies on, at x, in exact rationals:
+/// A1^2 - 4 A0 A2 (Ai the signed area of the triangle x P_j P_k, {i, j, k} = {0, 1, 2}:
+/// barycentric coordinates, and tau_1^2 = 4 tau_0 tau_2 on a quadratic). It changes sign
+/// where a curve crosses the parabola.
+bezier::test::Rational on_parabola(const Curve& q, const RationalPoint& x) {
+  using bezier::test::Rational;
+  const auto area = [](const RationalPoint& a, const RationalPoint& b, const RationalPoint& c) {
+    return (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+  };
+  const RationalPoint p0{Rational(q[0].x), Rational(q[0].y)},
+      p1{Rational(q[1].x), Rational(q[1].y)}, p2{Rational(q[2].x), Rational(q[2].y)};
+  const Rational a0 = area(x, p1, p2), a1 = area(p0, x, p2), a2 = area(p0, p1, x);
+  return a1 * a1 - Rational(4) * a0 * a2;
+}
+
 bool covered(const IntersectionResult& r, double t, double s) {
   for (const auto& x : r.intersections) {
     if (x.t_interval.contains(t) && x.s_interval.contains(s)) return true;
@@ -252,44 +278,66 @@ TEST(FuzzRegressions, F20_FlatEndIsNoOverlapOfWidthZero) {
 // 0 (Ai the signed area of the triangle X P_j P_k, {i, j, k} = {0, 1, 2}: barycentric
 // coordinates, tau_1^2 = 4 tau_0 tau_2 on a quadratic), and h(f(t)) changes sign, in exact
 // rationals, between t = 7.6e-6 and 2^-17, where f is within 1e-9 of g(1).
-TEST(FuzzRegressions, F26_NearlyCollinearCurvesOverlapInBothOrders) {
-  // Two quadratics within 2^-29 of the line x = 0 (relative 1e-13 of their 4096 extent):
-  // one line for both. y_f falls from 0.031 to -4096, y_g rises from -1 to its turning
-  // point at s = 1/9 (y_g' = 2 ((1 - s) (y1 - y0) + s (y2 - y1)) with y1 about 0) and falls to
-  // -8: g on [0, 1/9] and on [1/9, 1] each retrace part of f. The line through f's first
-  // control point made the collinear test pass in one order only (the other answered one
-  // crossing and no overlap).
+TEST(FuzzRegressions, F26_NearlyCollinearCurvesOfDifferentSizesCrossOnce) {
+  // Two quadratics near the line x = 0: f within 2^-31 of it over its 4096 extent (1e-13 of
+  // its size), g bent by 2^-30 over its extent of 8 (1e-10 of its own size). The line
+  // through f's first control point made the collinear test pass in one order only (one
+  // answered two overlaps along the line, the other a crossing); with the line through the
+  // two control points farthest apart both orders answered the overlaps. But g is no
+  // straight segment to within its own rounding, and two different quadratics share no
+  // piece: with the collinear test relative to the smaller curve (as the overlap tests are)
+  // both orders answer the one crossing. y_f falls monotonically from 0.031 to -4096, so f
+  // has one t for each y, and g crosses the parabola f lies on (A1^2 - 4 A0 A2 = 0, exact)
+  // between s = 0.32572355795 and 0.32572355796.
   const Curve f({{0x0p+0, 0x1.ff8ff2p-6}, {0x1.0000000000002p-31, -0x1p+3}, {0x0p+0, -0x1p+12}});
   const Curve g({{0x1p-31, -0x1p+0}, {0x0p+0, 0x1.fep-30}, {-0x1.fep-30, -0x1p+3}});
+  const double s_lo = 0.32572355795, s_hi = 0.32572355796;
+  ASSERT_LT(
+      on_parabola(f, exact_point(g, s_lo)).sign() * on_parabola(f, exact_point(g, s_hi)).sign(), 0);
   // t with y_f(t) = y: the root in [0, 1] of a (1-t)^2 + 2b t(1-t) + c t^2 = y.
   const auto t_at = [](double y) {
     const double a = 0x1.ff8ff2p-6, b = -8.0, c = -4096.0;
     const double qa = a - 2 * b + c, qb = 2 * (b - a), qc = a - y;
     return (-qb - std::sqrt(qb * qb - 4 * qa * qc)) / (2 * qa);
   };
-  const auto y_g = [](double s) {
-    return -1.0 * (1 - s) * (1 - s) + 2 * 0x1.fep-30 * s * (1 - s) - 8.0 * s * s;
-  };
-  const double turn = 1.0 / 9;
+  const double t_lo = t_at(evaluate(g, s_hi).y), t_hi = t_at(evaluate(g, s_lo).y);
   for (const bool swapped : {false, true}) {
     const IntersectionResult r = swapped ? intersect(g, f) : intersect(f, g);
     ASSERT_EQ(r.status, IntersectStatus::ok);
-    EXPECT_TRUE(r.intersections.empty());
-    ASSERT_EQ(r.overlaps.size(), 2u) << "swapped " << swapped;
-    const auto t_of = [&](const Overlap& o) { return swapped ? o.s_interval : o.t_interval; };
-    const auto s_of = [&](const Overlap& o) { return swapped ? o.t_interval : o.s_interval; };
-    // g rising on [0, 1/9]: f between y = -1 and y_g(1/9), in the other direction.
-    EXPECT_NEAR(s_of(r.overlaps[0]).lo, 0.0, 1e-12);
-    EXPECT_NEAR(s_of(r.overlaps[0]).hi, turn, 1e-8);
-    EXPECT_NEAR(t_of(r.overlaps[0]).lo, t_at(y_g(turn)), 1e-9);
-    EXPECT_NEAR(t_of(r.overlaps[0]).hi, t_at(-1.0), 1e-9);
-    EXPECT_TRUE(r.overlaps[0].reversed);
-    // g falling on [1/9, 1]: f between y_g(1/9) and y = -8, the same way.
-    EXPECT_NEAR(s_of(r.overlaps[1]).lo, turn, 1e-8);
-    EXPECT_NEAR(s_of(r.overlaps[1]).hi, 1.0, 1e-12);
-    EXPECT_NEAR(t_of(r.overlaps[1]).lo, t_at(y_g(turn)), 1e-9);
-    EXPECT_NEAR(t_of(r.overlaps[1]).hi, t_at(-8.0), 1e-9);
-    EXPECT_FALSE(r.overlaps[1].reversed);
+    EXPECT_TRUE(r.overlaps.empty()) << "swapped " << swapped;
+    ASSERT_EQ(r.intersections.size(), 1u) << "swapped " << swapped;
+    const Intersection& x = r.intersections[0];
+    const double t = swapped ? x.s : x.t, s = swapped ? x.t : x.s;
+    EXPECT_TRUE(x.resolved);
+    EXPECT_EQ(x.kind, IntersectionKind::transversal);
+    EXPECT_LE(s_lo, s);
+    EXPECT_LE(s, s_hi);
+    EXPECT_NEAR(t, (t_lo + t_hi) / 2, 1e-9);
+  }
+}
+
+TEST(FuzzRegressions, F26_ASmallCurveBentAboveItsRoundingIsNotOnALargeCurvesLine) {
+  // f runs from (0, 0) out along the x axis to x = 2^29 and back to x = 2^-31 (y <= 2^-31);
+  // g, 2^-15 of its size, is the parabola from (0, 2^-13) out to x = -16383 and back to
+  // (0, 0), tangent to the x axis there. Relative to f's size g lies on the x axis, and
+  // both orders took the pair for collinear: a touch at f(0) and g's first end, 2^-13
+  // apart, placed at (0, 2^-57) in one order and at (2^-70, 0) in the other. The curves
+  // meet only at f(0) = g(1): x_f > 0 on (0, 1] (every control point's x >= 0, P1's > 0)
+  // and x_g < 0 on (0, 1) (-2 (1 - s) s 32748 plus 0 at both ends), so a common point has
+  // x = 0, t = 0 and s in {0, 1}, and g(0) = (0, 2^-13) is not f(0). Both tangents there
+  // are horizontal to within 1e-13: a tangency.
+  const Curve f({{0x0p+0, 0x0p+0},
+                 {0x1.f404004cp+11, 0x1.000002b001204p-31},
+                 {0x1.28p+29, 0x0p+0},
+                 {0x1.72b0112011919p-31, 0x0p+0}});
+  const Curve g({{0x0p+0, 0x1.000000c02808p-13}, {-0x1.ffecp+14, 0x0p+0}, {0x0p+0, 0x0p+0}});
+  for (const bool swapped : {false, true}) {
+    const IntersectionResult r = swapped ? intersect(g, f) : intersect(f, g);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    EXPECT_TRUE(r.overlaps.empty()) << "swapped " << swapped;
+    ASSERT_EQ(r.intersections.size(), 1u) << "swapped " << swapped;
+    EXPECT_TRUE(swapped ? covered(r, 1.0, 0.0) : covered(r, 0.0, 1.0));
+    EXPECT_EQ(r.intersections[0].kind, IntersectionKind::tangent);
   }
 }
 
@@ -299,7 +347,8 @@ TEST(FuzzRegressions, F26_ACurveTheSizeOfAnotherCurvesRoundingIsNoOverlap) {
   // stays within 2^-40 of the frame (f's size) of g for t up to 9e-5, but it leaves at
   // the angle of (-1, -1/2) to g's direction: no overlap. The overlap tolerance taken
   // relative to the frame alone let g, 2^-27 of it, pass in one order.
-  const Curve f({{0x0p+0, 0x0p+0}, {-0x1.ff006bfc6cp-1, -0x1.ff006bfc6cp-2}, {0x1p+27, 0x1.555555554554p+9}});
+  const Curve f(
+      {{0x0p+0, 0x0p+0}, {-0x1.ff006bfc6cp-1, -0x1.ff006bfc6cp-2}, {0x1p+27, 0x1.555555554554p+9}});
   const Curve g({{1.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}});
   const IntersectionResult a = intersect(f, g), b = intersect(g, f);
   EXPECT_TRUE(a.overlaps.empty());
@@ -324,22 +373,9 @@ TEST(FuzzRegressions, F26_ACurveComingWithin2eMinus9OfAnotherDoesNotMeetIt) {
 }
 
 TEST(FuzzRegressions, F20c_CrossingNextToASharedEndPointIsFound) {
-  using bezier::test::Rational;
   const Curve f({{0.0, 0.0}, {2.0, 0.0}, {-0x1p19, -8.0}});
   const Curve g({{376.5, 0.043}, {0.043, -1.0}, {0.0, 0.0}});
-  const auto area = [](std::array<Rational, 2> a, std::array<Rational, 2> b,
-                       std::array<Rational, 2> c) {
-    return (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
-  };
-  const auto h_of_f = [&](double t) {
-    const Rational tr(t);
-    const std::array<Rational, 2> x{Rational(4) * tr - Rational(4 + 0x1p19) * tr * tr,
-                                    Rational(-8) * tr * tr};
-    const std::array<Rational, 2> p0{Rational(376.5), Rational(0.043)},
-        p1{Rational(0.043), Rational(-1)}, p2{Rational(0), Rational(0)};
-    const Rational a0 = area(x, p1, p2), a1 = area(p0, x, p2), a2 = area(p0, p1, x);
-    return a1 * a1 - Rational(4) * a0 * a2;
-  };
+  const auto h_of_f = [&](double t) { return on_parabola(g, exact_point(f, t)); };
   const double t_lo = 7.6e-6, t_hi = 0x1p-17;
   ASSERT_LT(h_of_f(t_lo).sign() * h_of_f(t_hi).sign(), 0);
   for (const IntersectMethod method :
@@ -349,7 +385,8 @@ TEST(FuzzRegressions, F20c_CrossingNextToASharedEndPointIsFound) {
     for (const bool swapped : {false, true}) {
       const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
       ASSERT_EQ(r.status, IntersectStatus::ok);
-      ASSERT_EQ(r.intersections.size(), 2u) << "method " << static_cast<int>(method) << " swapped " << swapped;
+      ASSERT_EQ(r.intersections.size(), 2u)
+          << "method " << static_cast<int>(method) << " swapped " << swapped;
       EXPECT_TRUE(swapped ? covered(r, 1.0, 0.0) : covered(r, 0.0, 1.0));
       bool crossing = false;
       for (const Intersection& x : r.intersections) {
@@ -367,10 +404,9 @@ TEST(FuzzRegressions, F20c_CrossingNextToASharedEndPointIsFound) {
 // 1 and t2 was clamped below 1, so the pair came out reversed (t1 = 1 > t2). The type is the
 // exact rational oracle's; the pair must keep its order and stay strictly inside (0, 1).
 TEST(FuzzRegressions, F21_LoopNextToAnEndKeepsItsParametersOrdered) {
-  const std::array<Point2, 4> p{Point2{-0x1.f2fc8ffffff65p+260, -0x1.62fc8fffffff1p+261},
-                                Point2{0x1.62fc8fffffff1p+261, 0.0},
-                                Point2{-0x1.1548p+11, -0x1.1548p+10},
-                                Point2{0x1.1548p+10, -0x1.1548p+10}};
+  const std::array<Point2, 4> p{
+      Point2{-0x1.f2fc8ffffff65p+260, -0x1.62fc8fffffff1p+261}, Point2{0x1.62fc8fffffff1p+261, 0.0},
+      Point2{-0x1.1548p+11, -0x1.1548p+10}, Point2{0x1.1548p+10, -0x1.1548p+10}};
   const CubicClassification c = classify(p);
   ASSERT_TRUE(c.exact);
   EXPECT_EQ(c.type, bezier::test::exact_type(p));
