@@ -82,9 +82,12 @@ bool control_boxes_disjoint(const Curve& f, const Curve& g) noexcept {
   return fhi.x < glo.x || ghi.x < flo.x || fhi.y < glo.y || ghi.y < flo.y;
 }
 
-/// End points of f and g equal bit for bit: exact roots, unless they lie on an overlap.
+/// End points of f and g equal bit for bit: exact roots, unless they lie on an overlap,
+/// which then reaches them exactly (its ends, pinned by Newton's method, may stop a
+/// rounding short: t from 3e-27 instead of 0 on two curves sharing their first point, so
+/// the answer did not contain that point; finding F26).
 std::vector<ExactRoot> exact_end_roots(const Curve& f, const Curve& g,
-                                       std::span<const OverlapFinding> overlaps) {
+                                       std::span<OverlapFinding> overlaps) {
   const Point2 f_ends[2] = {f.front(), f.back()}, g_ends[2] = {g.front(), g.back()};
   // Most pairs share no end point: no vector, no loop over the overlaps.
   if (!(f_ends[0] == g_ends[0] || f_ends[0] == g_ends[1] || f_ends[1] == g_ends[0] ||
@@ -95,11 +98,17 @@ std::vector<ExactRoot> exact_end_roots(const Curve& f, const Curve& g,
   for (const int t : {0, 1}) {
     for (const int s : {0, 1}) {
       if (!(f_ends[t] == g_ends[s])) continue;
+      const double rt = t, rs = s;
       bool on = false;
-      for (const OverlapFinding& o : overlaps) {
-        on = on || on_overlap(o, static_cast<double>(t), static_cast<double>(s));
+      for (OverlapFinding& o : overlaps) {
+        if (!on_overlap(o, rt, rs)) continue;
+        on = true;
+        ParamInterval& ti = o.overlap.t_interval;
+        ParamInterval& si = o.overlap.s_interval;
+        ti = {std::min(ti.lo, rt), std::max(ti.hi, rt)};
+        si = {std::min(si.lo, rs), std::max(si.hi, rs)};
       }
-      if (!on) roots.push_back({static_cast<double>(t), static_cast<double>(s)});
+      if (!on) roots.push_back({rt, rs});
     }
   }
   return roots;
@@ -158,11 +167,11 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   // polynomial reparametrisations; two proper ones only along an affine map.
   std::vector<OverlapFinding> overlaps = find_arc_overlaps(wf, wg);
   if (overlaps.empty()) overlaps = find_overlaps(wf, wg);
-  for (const OverlapFinding& o : overlaps) result.overlaps.push_back(o.overlap);
   // A point curve's parameter is free: one exact root (at 0, its interval widened to [0, 1]
   // below) per end of the other curve that is the point. The search alone can miss a point
   // lying exactly on an end (found by the fuzzer once F4's gate was gone).
   std::vector<ExactRoot> exact = exact_end_roots(f, g, overlaps);
+  for (const OverlapFinding& o : overlaps) result.overlaps.push_back(o.overlap);
   std::erase_if(exact, [&](const ExactRoot& r) {
     if (wf.is_point) return r.t != 0.0 || !s_range.contains(r.s);
     if (wg.is_point) return r.s != 0.0 || !t_range.contains(r.t);

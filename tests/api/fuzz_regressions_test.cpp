@@ -372,6 +372,29 @@ TEST(FuzzRegressions, F26_ACurveComingWithin2eMinus9OfAnotherDoesNotMeetIt) {
   }
 }
 
+TEST(FuzzRegressions, F26_AnOverlapReachesTheEndPointTheCurvesShare) {
+  // Two quartics with the same first four control points, the last one's y differing by
+  // 2^-38 (1e-13 of their size): one overlap of the whole curves, to within the tolerance.
+  // They start at (0, 0) bit for bit, so the answer must contain (0, 0); the overlap's end,
+  // pinned by Newton's method, stopped at t = 3e-27 in one order and the exact end root
+  // was dropped as lying on the overlap.
+  std::vector<Point2> points = {{0x0p+0, 0x0p+0},
+                                {0x0p+0, 0x1.801090201027fp-31},
+                                {-0x1p+0, 0x1.801090201027fp-31},
+                                {-0x1.cp+2, -0x1.f6p+7},
+                                {-0x1.8p+2, 0x1.1010704010204p+4}};
+  const Curve f(points);
+  points[4].y = 0x1.1010704010606p+4;
+  const Curve g(points);
+  for (const bool swapped : {false, true}) {
+    const IntersectionResult r = swapped ? intersect(g, f) : intersect(f, g);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    ASSERT_EQ(r.overlaps.size(), 1u) << "swapped " << swapped;
+    EXPECT_TRUE(r.intersections.empty()) << "swapped " << swapped;
+    EXPECT_TRUE(covered(r, 0.0, 0.0)) << "swapped " << swapped;
+  }
+}
+
 TEST(FuzzRegressions, F20c_CrossingNextToASharedEndPointIsFound) {
   const Curve f({{0.0, 0.0}, {2.0, 0.0}, {-0x1p19, -8.0}});
   const Curve g({{376.5, 0.043}, {0.043, -1.0}, {0.0, 0.0}});
