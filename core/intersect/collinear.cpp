@@ -210,9 +210,12 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
       double sa = invert(v, pg, w0), sb = invert(v, pg, w1);
       // Each end of the shared range is an end of one of the two pieces, where that
       // curve's parameter is exact; the other parameter, from bisection on the rounded
-      // positions, is pinned down by Newton's method on the exact point.
+      // positions, is pinned down by Newton's method on the exact point. When it is an end
+      // of both, both parameters are exact: moving either would depend on which curve
+      // comes first (finding F26: a touch at (0, 2^-43) in one order, (0, 0) in the other).
       const auto refine = [&](double w, double& t, double& s) {
-        const bool from_f = w == pf.u0 || w == pf.u1;
+        const bool from_f = w == pf.u0 || w == pf.u1, from_g = w == pg.u0 || w == pg.u1;
+        if (from_f && from_g) return;
         if (from_f) {
           s = locate_on_curve(g, evaluate_dd(f, t), s);
         } else {

@@ -395,6 +395,32 @@ TEST(FuzzRegressions, F26_AnOverlapReachesTheEndPointTheCurvesShare) {
   }
 }
 
+TEST(FuzzRegressions, F26_ATouchAtTwoEndsIsTheSameInBothOrders) {
+  // f runs from (0, 0) to x = -2^26 within 2^-28 of the x axis; g is the segment from
+  // (0, 0x1.f2p-22) to (1.31, 0), 2^-26 of f's size. Both lie on the x axis to within the
+  // rounding of coordinates of 2^26 (64 n u of them is 1e-6), so the pair is taken as
+  // collinear, and the ranges along the axis touch at x = 0, an end of both curves. Each
+  // order kept its first curve's end exact and moved the other's parameter to the foot of
+  // that point on it: (0, 2^-43) one way, (0, 0) the other.
+  const Curve f({{0x0p+0, 0x0p+0}, {0x0p+0, 0x1.ef8p-28}, {-0x1p+26, 0x0p+0}});
+  const Curve g({{0x0p+0, 0x1.f2p-22}, {0x1.4fb8000ff8p+0, 0x0p+0}});
+  for (const IntersectMethod method :
+       {IntersectMethod::hybrid, IntersectMethod::bezier_clipping, IntersectMethod::subdivision}) {
+    IntersectOptions options;
+    options.method = method;
+    const IntersectionResult a = intersect(f, g, options), b = intersect(g, f, options);
+    ASSERT_EQ(a.intersections.size(), b.intersections.size());
+    EXPECT_TRUE(a.overlaps.empty() && b.overlaps.empty());
+    for (std::size_t i = 0; i < a.intersections.size(); ++i) {
+      const Intersection &x = a.intersections[i], &y = b.intersections[i];
+      EXPECT_EQ(x.t_interval, y.s_interval);
+      EXPECT_EQ(x.s_interval, y.t_interval);
+      EXPECT_EQ(x.t, 0.0);
+      EXPECT_EQ(x.s, 0.0);
+    }
+  }
+}
+
 TEST(FuzzRegressions, F20c_CrossingNextToASharedEndPointIsFound) {
   const Curve f({{0.0, 0.0}, {2.0, 0.0}, {-0x1p19, -8.0}});
   const Curve g({{376.5, 0.043}, {0.043, -1.0}, {0.0, 0.0}});
