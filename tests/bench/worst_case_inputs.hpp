@@ -12,24 +12,24 @@
 //     coefficients up to C(40, 20) / C(20, 10) ~ 7.5e5 at n = 20: heavily cancelling;
 //   * (1 - 2t)^n: Bernstein coefficients (-1)^k, one root of multiplicity n at t = 1/2;
 //   * A∘φ: a curve composed with a polynomial reparametrisation φ in Bernstein form,
-//     computed exactly in rationals (product rule for Bernstein polynomials,
-//     r_k = Σ_{i+j=k} C(m,i) C(n,j) / C(m+n,k) p_i q_j) and rounded once per coordinate:
+//     computed exactly in rationals (exact_compose, tests/support/exact_bezier.hpp) and
+//     rounded once per coordinate:
 //     the same point set as A traced at another speed (non-linear when φ is), or, when φ is
 //     not monotone, a curve that retraces itself.
 
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "core/curve.hpp"
 #include "core/degree.hpp"
 #include "core/polar.hpp"
 #include "tests/support/exact.hpp"
+#include "tests/support/exact_bezier.hpp"
 #include "tests/support/mulberry32.hpp"
 
 namespace bezier::test::worst_case {
@@ -44,12 +44,6 @@ struct Request {
   std::string body;
 };
 
-inline long long binomial_ll(int n, int k) {
-  long long c = 1;
-  for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;  // exact at every step
-  return c;
-}
-
 inline Curve random_curve(std::uint32_t seed, int degree) {
   Mulberry32 rng(seed);
   std::vector<Point2> pts(static_cast<std::size_t>(degree) + 1);
@@ -61,7 +55,7 @@ inline Curve random_curve(std::uint32_t seed, int degree) {
 inline std::vector<double> chebyshev(int n) {
   std::vector<double> c;
   for (int k = 0; k <= n; ++k) {
-    const Rational v = Rational(binomial_ll(2 * n, 2 * k)) / Rational(binomial_ll(n, k));
+    const Rational v = Rational(binom(2 * n, 2 * k)) / Rational(binom(n, k));
     c.push_back(((n - k) % 2 == 0 ? v : -v).to_double());
   }
   return c;
@@ -80,48 +74,13 @@ inline Curve from_coordinates(const std::vector<double>& x, const std::vector<do
   return Curve(std::move(pts));
 }
 
-/// The product of two Bernstein polynomials, exactly.
-inline std::vector<Rational> bernstein_product(const std::vector<Rational>& p, const std::vector<Rational>& q) {
-  const int m = static_cast<int>(p.size()) - 1, n = static_cast<int>(q.size()) - 1;
-  std::vector<Rational> r(static_cast<std::size_t>(m + n) + 1, Rational(0));
-  for (int i = 0; i <= m; ++i) {
-    for (int j = 0; j <= n; ++j) {
-      r[static_cast<std::size_t>(i + j)] += Rational(binomial_ll(m, i) * binomial_ll(n, j)) /
-                                            Rational(binomial_ll(m + n, i + j)) * p[static_cast<std::size_t>(i)] *
-                                            q[static_cast<std::size_t>(j)];
-    }
-  }
-  return r;
-}
-
 /// A∘φ for φ given by its Bernstein coefficients (degree d): a curve of degree n d, its
 /// control points rounded once from the exact composition.
 inline Curve compose(const Curve& a, const std::vector<double>& phi) {
-  const int n = a.degree();
-  std::vector<Rational> u, one_minus_u;
-  for (const double c : phi) {
-    u.emplace_back(c);
-    one_minus_u.push_back(Rational(1) - Rational(c));
-  }
-  // powers[i] = u^i, co_powers[i] = (1 - u)^i, as Bernstein coefficient vectors.
-  std::vector<std::vector<Rational>> powers{{Rational(1)}}, co_powers{{Rational(1)}};
-  for (int i = 1; i <= n; ++i) {
-    powers.push_back(bernstein_product(powers.back(), u));
-    co_powers.push_back(bernstein_product(co_powers.back(), one_minus_u));
-  }
-  const std::size_t size = static_cast<std::size_t>(n) * (phi.size() - 1) + 1;
-  std::vector<Rational> x(size, Rational(0)), y(size, Rational(0));
-  for (int i = 0; i <= n; ++i) {
-    const std::vector<Rational> basis = bernstein_product(powers[static_cast<std::size_t>(i)],
-                                                          co_powers[static_cast<std::size_t>(n - i)]);
-    const Rational c(binomial_ll(n, i));
-    for (std::size_t k = 0; k < size; ++k) {
-      x[k] += c * Rational(a[i].x) * basis[k];
-      y[k] += c * Rational(a[i].y) * basis[k];
-    }
-  }
+  const BernsteinPoly q(phi.begin(), phi.end());
   std::vector<Point2> pts;
-  for (std::size_t k = 0; k < size; ++k) pts.push_back({x[k].to_double(), y[k].to_double()});
+  for (const RPoint2& p : exact_compose(exact_points(a), q))
+    pts.push_back({p.x.to_double(), p.y.to_double()});
   return Curve(std::move(pts));
 }
 
@@ -157,36 +116,39 @@ struct Curves {
   Curve random10 = random_curve(10, 10);
   Curve random6 = random_curve(6, 6);
   Curve random3 = random_curve(3, 3);
-  Curve wave = from_coordinates(identity(20), chebyshev(20));            // (t, T_20(2t-1))
-  Curve wave_t = from_coordinates(chebyshev(20), identity(20));          // (T_20(2s-1), s)
-  Curve wave15 = from_coordinates(identity(15), chebyshev(15));          // 225 crossings with wave15_t
+  Curve wave = from_coordinates(identity(20), chebyshev(20));    // (t, T_20(2t-1))
+  Curve wave_t = from_coordinates(chebyshev(20), identity(20));  // (T_20(2s-1), s)
+  Curve wave15 = from_coordinates(identity(15), chebyshev(15));  // 225 crossings with wave15_t
   Curve wave15_t = from_coordinates(chebyshev(15), identity(15));
   Curve lissajous = from_coordinates(chebyshev(20), core::elevate_degree(chebyshev(19), 20));
-  Curve contact20 = [] {                                                 // (t, (1-2t)^20)
+  Curve contact20 = [] {  // (t, (1-2t)^20)
     std::vector<double> y;
     for (int k = 0; k <= 20; ++k) y.push_back(k % 2 == 0 ? 1.0 : -1.0);
     return from_coordinates(identity(20), y);
   }();
   Curve axis20 = from_coordinates(identity(20), std::vector<double>(21, 0.0));  // the x axis
-  Curve retrace_slow = compose(random10, {0.0, 0.25, 1.0});   // A10 at another, non-linear, speed
+  Curve retrace_slow = compose(random10, {0.0, 0.25, 1.0});  // A10 at another, non-linear, speed
   Curve retrace_fast = compose(random10, {0.0, 0.75, 1.0});
-  Curve palindrome = compose(random10, {0.0, 2.0, 0.0});      // A10 there and back: B(1-t) = B(t)
-  Curve fold = compose(random6, {0.0, 1.2, -0.2, 0.6});       // A6 forth, back, forth again
-  Curve zigzag = [] {                                          // collinear, doubling back 20 times
+  Curve palindrome = compose(random10, {0.0, 2.0, 0.0});  // A10 there and back: B(1-t) = B(t)
+  Curve fold = compose(random6, {0.0, 1.2, -0.2, 0.6});   // A6 forth, back, forth again
+  Curve zigzag = [] {                                     // collinear, doubling back 20 times
     std::vector<Point2> pts;
     for (int k = 0; k <= 20; ++k) pts.push_back(k % 2 == 0 ? Point2{0.0, 0.0} : Point2{1.0, 2.0});
     return Curve(std::move(pts));
   }();
 };
 
-inline std::string two_curves(const Curve& a, const Curve& b, const std::string& method, double tolerance = 1e-12) {
+inline std::string two_curves(const Curve& a, const Curve& b, const std::string& method,
+                              double tolerance = 1e-12) {
   nlohmann::json body = {{"curves", {{{"points", points_json(a)}}, {{"points", points_json(b)}}}},
                          {"method", method}};
   if (tolerance != 1e-12) body["tolerance"] = tolerance;
   return body.dump();
 }
 
-inline std::string one_curve(const Curve& a) { return nlohmann::json{{"curves", {{{"points", points_json(a)}}}}}.dump(); }
+inline std::string one_curve(const Curve& a) {
+  return nlohmann::json{{"curves", {{{"points", points_json(a)}}}}}.dump();
+}
 
 /// Every request, in the order the benchmark registers them.
 inline std::vector<Request> requests() {
@@ -200,23 +162,36 @@ inline std::vector<Request> requests() {
   for (double& t : far) t = rng.uniform(-1e15, 1e15);
   r.push_back({"evaluate/deg20_samples10000", "/evaluate",
                nlohmann::json{{"points", points_json(c.random20)}, {"samples", 10000}}.dump()});
-  r.push_back({"evaluate/deg20_samples10000_deriv20", "/evaluate",
-               nlohmann::json{{"points", points_json(c.random20)}, {"samples", 10000}, {"derivatives", 20}}.dump()});
-  r.push_back({"evaluate/deg20_samples10000_deriv20_3d", "/evaluate",
-               nlohmann::json{{"points", points3_json(c.random20, 1.0)}, {"samples", 10000}, {"derivatives", 20}}.dump()});
+  r.push_back(
+      {"evaluate/deg20_samples10000_deriv20", "/evaluate",
+       nlohmann::json{{"points", points_json(c.random20)}, {"samples", 10000}, {"derivatives", 20}}
+           .dump()});
+  r.push_back(
+      {"evaluate/deg20_samples10000_deriv20_3d", "/evaluate",
+       nlohmann::json{
+           {"points", points3_json(c.random20, 1.0)}, {"samples", 10000}, {"derivatives", 20}}
+           .dump()});
   // The most derivatives the t-values x (derivatives + 1) <= max_t_values rule allows.
   r.push_back({"evaluate/deg20_samples476_deriv20_3d", "/evaluate",
-               nlohmann::json{{"points", points3_json(c.random20, 1.0)}, {"samples", 476}, {"derivatives", 20}}.dump()});
-  r.push_back({"evaluate/deg20_t10000_deriv20_split", "/evaluate",
-               nlohmann::json{{"points", points_json(c.random20)}, {"t", ts}, {"derivatives", 20}, {"split", 0.5}}.dump()});
+               nlohmann::json{
+                   {"points", points3_json(c.random20, 1.0)}, {"samples", 476}, {"derivatives", 20}}
+                   .dump()});
+  r.push_back(
+      {"evaluate/deg20_t10000_deriv20_split", "/evaluate",
+       nlohmann::json{
+           {"points", points_json(c.random20)}, {"t", ts}, {"derivatives", 20}, {"split", 0.5}}
+           .dump()});
   r.push_back({"evaluate/deg20_t10000_far_deriv20", "/evaluate",
-               nlohmann::json{{"points", points_json(c.random20)}, {"t", far}, {"derivatives", 20}}.dump()});
+               nlohmann::json{{"points", points_json(c.random20)}, {"t", far}, {"derivatives", 20}}
+                   .dump()});
   r.push_back({"polar/deg20_t0x19_samples10000_3d", "/polar",
                nlohmann::json{{"points", points3_json(c.random20, 1.0)},
                               {"t0", std::vector<double>(ts.begin(), ts.begin() + 19)},
-                              {"samples", 10000}}.dump()});
+                              {"samples", 10000}}
+                   .dump()});
   r.push_back({"polar/deg20_t0_samples10000", "/polar",
-               nlohmann::json{{"points", points_json(c.random20)}, {"t0", 0.3}, {"samples", 10000}}.dump()});
+               nlohmann::json{{"points", points_json(c.random20)}, {"t0", 0.3}, {"samples", 10000}}
+                   .dump()});
 
   // /intersections, two curves, every method.
   const std::pair<const char*, std::pair<const Curve*, const Curve*>> pairs_[] = {
@@ -234,10 +209,13 @@ inline std::vector<Request> requests() {
     const std::string m = method;
     for (const auto& [name, curves] : pairs_) {
       const Curve& b = curves.second ? *curves.second : ulp;
-      r.push_back({"intersections/" + m + "/" + name, "/intersections", two_curves(*curves.first, b, m)});
+      r.push_back(
+          {"intersections/" + m + "/" + name, "/intersections", two_curves(*curves.first, b, m)});
     }
-    r.push_back({"intersections/" + m + "/reversed_deg20", "/intersections", two_curves(c.random20, reversed, m)});
-    r.push_back({"intersections/" + m + "/piece_deg20", "/intersections", two_curves(c.random20, piece, m)});
+    r.push_back({"intersections/" + m + "/reversed_deg20", "/intersections",
+                 two_curves(c.random20, reversed, m)});
+    r.push_back({"intersections/" + m + "/piece_deg20", "/intersections",
+                 two_curves(c.random20, piece, m)});
     for (const double gap : {1e-12, 1e-9, 1e-6}) {
       char name[64];
       std::snprintf(name, sizeof name, "/gap_%.0e_deg20", gap);
@@ -261,21 +239,27 @@ inline std::vector<Request> requests() {
   {
     nlohmann::json spike = nlohmann::json::array({{1.0, 0.0}});
     for (int k = 0; k < 20; ++k) spike.push_back({0.0, 0.0});
-    r.push_back({"intersections/hybrid/f7_spike_deg20_vs_point", "/intersections",
-                 nlohmann::json{{"curves", {{{"points", spike}}, {{"points", {{0.0, 0.0}, {0.0, 0.0}}}}}}}.dump()});
-    const nlohmann::json wide = {{1, 0.5}, {0.5, -6.9e14}, {6.9e14, -6.9e14}, {-9807.5, -0.61}, {-7.4e-16, -0.61}};
-    r.push_back({"self/f7_wide_quartic_subdivision", "/intersections",
-                 nlohmann::json{{"curves", {{{"points", wide}}}}, {"method", "subdivision"}}.dump()});
+    r.push_back(
+        {"intersections/hybrid/f7_spike_deg20_vs_point", "/intersections",
+         nlohmann::json{{"curves", {{{"points", spike}}, {{"points", {{0.0, 0.0}, {0.0, 0.0}}}}}}}
+             .dump()});
+    const nlohmann::json wide = {
+        {1, 0.5}, {0.5, -6.9e14}, {6.9e14, -6.9e14}, {-9807.5, -0.61}, {-7.4e-16, -0.61}};
+    r.push_back(
+        {"self/f7_wide_quartic_subdivision", "/intersections",
+         nlohmann::json{{"curves", {{{"points", wide}}}}, {"method", "subdivision"}}.dump()});
   }
 
   // Self-intersections (/intersections with one curve) and /loop-area on the same curves.
   const std::pair<const char*, const Curve*> singles[] = {
-      {"random_deg20", &c.random20}, {"lissajous_20_19", &c.lissajous}, {"palindrome_deg20", &c.palindrome},
-      {"fold_deg18", &c.fold},       {"zigzag_deg20", &c.zigzag},       {"wave_deg20", &c.wave},
+      {"random_deg20", &c.random20},       {"lissajous_20_19", &c.lissajous},
+      {"palindrome_deg20", &c.palindrome}, {"fold_deg18", &c.fold},
+      {"zigzag_deg20", &c.zigzag},         {"wave_deg20", &c.wave},
   };
   for (const auto& [name, curve] : singles) {
     r.push_back({std::string("self/") + name, "/intersections", one_curve(*curve)});
-    r.push_back({std::string("loop_area/") + name, "/loop-area", nlohmann::json{{"points", points_json(*curve)}}.dump()});
+    r.push_back({std::string("loop_area/") + name, "/loop-area",
+                 nlohmann::json{{"points", points_json(*curve)}}.dump()});
   }
   return r;
 }
