@@ -16,10 +16,9 @@ long double binomial_ld(int n, int k) {
 }
 
 /// L2 reduction matrices for the fat curves (k = 2, 3) of every degree up to 20, computed
-/// at compile time by the same Gram-system elimination as l2_reduction_matrix's (the
-/// arithmetic of solve_linear, in the same order), so that building a fat curve operator
-/// costs no elimination per request. Written out here because solve_linear is not
-/// constexpr (std::fabs is not before C++23, and it is defined out of line).
+/// at compile time by the same Gram-system elimination as l2_reduction_matrix's
+/// (solve_linear in long double), so that building a fat curve operator costs no
+/// elimination per request.
 constexpr int kTableDegree = 20;
 
 constexpr long double const_binomial(int n, int k) {
@@ -27,10 +26,6 @@ constexpr long double const_binomial(int n, int k) {
   long double c = 1.0L;
   for (int j = 0; j < k; ++j) c = c * (n - j) / (j + 1);
   return c;
-}
-
-constexpr long double const_abs(long double x) {
-  return x < 0 ? -x : x;
 }
 
 struct ReductionTable {
@@ -42,42 +37,22 @@ constexpr ReductionTable make_reduction_table() {
   ReductionTable table;
   for (int k = 2; k <= 3; ++k) {
     for (int n = k + 1; n <= kTableDegree; ++n) {
-      long double a[4][4] = {};
-      long double b[4][kTableDegree + 1] = {};
+      const auto K = static_cast<std::size_t>(k), N = static_cast<std::size_t>(n);
+      DenseMatrix<long double> a(K + 1, K + 1), b(K + 1, N + 1);
       for (int i = 0; i <= k; ++i) {
         for (int j = 0; j <= k; ++j) {
-          a[i][j] = const_binomial(k, i) * const_binomial(k, j) /
+          a(i, j) = const_binomial(k, i) * const_binomial(k, j) /
                     ((2 * k + 1) * const_binomial(2 * k, i + j));
         }
         for (int j = 0; j <= n; ++j) {
-          b[i][j] = const_binomial(k, i) * const_binomial(n, j) /
+          b(i, j) = const_binomial(k, i) * const_binomial(n, j) /
                     ((k + n + 1) * const_binomial(k + n, i + j));
         }
       }
-      for (int col = 0; col <= k; ++col) {
-        int pivot = col;
-        for (int r = col + 1; r <= k; ++r) {
-          if (const_abs(a[r][col]) > const_abs(a[pivot][col])) pivot = r;
-        }
-        for (int j = 0; j <= k; ++j) std::swap(a[col][j], a[pivot][j]);
-        for (int j = 0; j <= n; ++j) std::swap(b[col][j], b[pivot][j]);
-        for (int r = col + 1; r <= k; ++r) {
-          const long double factor = a[r][col] / a[col][col];
-          for (int c = col; c <= k; ++c) a[r][c] -= factor * a[col][c];
-          for (int c = 0; c <= n; ++c) b[r][c] -= factor * b[col][c];
-        }
-      }
-      long double x[4][kTableDegree + 1] = {};
-      for (int r = k; r >= 0; --r) {
-        for (int c = 0; c <= n; ++c) {
-          long double sum = b[r][c];
-          for (int j = r + 1; j <= k; ++j) sum -= a[r][j] * x[j][c];
-          x[r][c] = sum / a[r][r];
-        }
-      }
+      const std::optional<DenseMatrix<long double>> x = solve_linear(std::move(a), std::move(b));
       for (int i = 0; i <= k; ++i) {
         for (int j = 0; j <= n; ++j)
-          table.entries[k - 2][n][i * (n + 1) + j] = static_cast<double>(x[i][j]);
+          table.entries[k - 2][n][i * (n + 1) + j] = static_cast<double>((*x)(i, j));
       }
     }
   }
