@@ -166,8 +166,9 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
   // and bent by 4e-9 of its own size lay within the frame's tolerance of the other's line,
   // and its end 1e-4 off that line was taken for a touch, placed differently in the two
   // orders (finding F26).
+  const double quick_tol = coincidence_tolerance_bound(f, g);
+  if (!roughly_straight(f, quick_tol) || !roughly_straight(g, quick_tol)) return std::nullopt;
   const double tol = coincidence_tolerance(f, g);
-  if (!roughly_straight(f, tol) || !roughly_straight(g, tol)) return std::nullopt;
   // The line through the two control points farthest apart, of both curves, from the
   // lexicographically smaller: the same line whichever curve comes first (from f's first
   // control point, the decision near the tolerance depended on the order: finding F26).

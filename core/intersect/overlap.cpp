@@ -146,6 +146,13 @@ double coincidence_tolerance(const WorkingCurve& f, const WorkingCurve& g) noexc
          g.frame_error;
 }
 
+double coincidence_tolerance_bound(const WorkingCurve& f, const WorkingCurve& g) noexcept {
+  const int degree = std::max(f.degree, g.degree);
+  return 2 *
+         (overlap_tolerance(degree) + 64 * degree * kU * bernstein::max2(f.magnitude, g.magnitude) +
+          f.frame_error + g.frame_error);
+}
+
 double locate_on_curve(const WorkingCurve& f, PointDD p, double start, double converged) {
   return gauss_newton(start, 30, converged, [&](double t) {
     const Residual r = residual(f, t, p);
@@ -259,8 +266,8 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
   return out;
 }
 
-bool injective_on(std::span<const double> x, std::span<const double> y, double magnitude,
-                  double lo, double hi) {
+bool injective_on(std::span<const double> x, std::span<const double> y, double magnitude, double lo,
+                  double hi) {
   const int n = static_cast<int>(x.size()) - 1;
   if (n < 1) return false;
   const Coeffs qx = bernstein::portion<double>(x, lo, hi);

@@ -49,6 +49,12 @@ struct OverlapFinding {
 /// (finding F26).
 [[nodiscard]] double coincidence_tolerance(const WorkingCurve& f, const WorkingCurve& g) noexcept;
 
+/// At least coincidence_tolerance(f, g) (twice its value with the smaller curve's size taken
+/// as 1, the most it can be, so rounding cannot put it below), without the two curves'
+/// extents: for quick necessary tests that most pairs fail.
+[[nodiscard]] double coincidence_tolerance_bound(const WorkingCurve& f,
+                                                 const WorkingCurve& g) noexcept;
+
 /// Overlaps of two curves that are not both collinear, by linear reparametrisation: if f
 /// and g share a piece, both proper, then g(s) = f(alpha + beta s) (a polynomial curve's
 /// proper parametrisations differ by affine maps). This covers identical, reversed
