@@ -57,7 +57,8 @@ using bernstein::max_abs;
 Monomial right_factor(const Coeffs& a, int n, int k) {
   const double alpha = 1.0 / (n / k);
   std::vector<double> g(static_cast<std::size_t>(k) + 1), e(static_cast<std::size_t>(k) + 1);
-  for (int j = 1; j <= k; ++j) g[j] = a[static_cast<std::size_t>(n - j)] / a[static_cast<std::size_t>(n)];
+  for (int j = 1; j <= k; ++j)
+    g[j] = a[static_cast<std::size_t>(n - j)] / a[static_cast<std::size_t>(n)];
   e[0] = 1.0;
   for (int j = 1; j <= k; ++j) {
     double sum = 0.0;
@@ -90,7 +91,8 @@ bool is_polynomial_in(const Coeffs& x, int n, const Monomial& p, double size) {
     for (int top = degree; top >= k; --top) {
       const double c = r[static_cast<std::size_t>(top)];
       quotient[static_cast<std::size_t>(top - k)] = c;
-      for (int l = 0; l <= k; ++l) r[static_cast<std::size_t>(top - k + l)] -= c * p[static_cast<std::size_t>(l)];
+      for (int l = 0; l <= k; ++l)
+        r[static_cast<std::size_t>(top - k + l)] -= c * p[static_cast<std::size_t>(l)];
     }
     if (!constant_below(k - 1)) return false;
     r = std::move(quotient);
@@ -104,13 +106,16 @@ Coeffs bernstein_from(const Monomial& a) {
   Coeffs b(a.size());
   for (int i = 0; i <= m; ++i) {
     double sum = 0.0;
-    for (int j = 0; j <= i; ++j) sum += binomial(i, j) / binomial(m, j) * a[static_cast<std::size_t>(j)];
+    for (int j = 0; j <= i; ++j)
+      sum += binomial(i, j) / binomial(m, j) * a[static_cast<std::size_t>(j)];
     b[static_cast<std::size_t>(i)] = sum;
   }
   return b;
 }
 
-double value(const Coeffs& c, double t) { return bernstein::evaluate(c, t); }
+double value(const Coeffs& c, double t) {
+  return bernstein::evaluate(c, t);
+}
 
 /// c(t) by de Casteljau in doubles (the hi parts): good to about 2 n u of c's magnitude,
 /// far below every tolerance here, at a tenth of the double-double evaluation's cost.
@@ -346,8 +351,8 @@ double preimage(const Coeffs& c, ParamInterval piece, double u) {
 /// onto g (Gauss-Newton from the matching point q^-1(p(t)) of g's piece, within about 1e-9
 /// of it) is within coincidence_tolerance of g (which covers the rounding of evaluations
 /// in doubles, a few n u of the magnitude).
-bool piece_lies_on(const WorkingCurve& f, const WorkingCurve& g, const CommonArc& arc,
-                   double t0, double t1, ParamInterval s_piece) {
+bool piece_lies_on(const WorkingCurve& f, const WorkingCurve& g, const CommonArc& arc, double t0,
+                   double t1, ParamInterval s_piece) {
   const double floor = coincidence_tolerance(f, g);
   const int samples = 2 * (f.degree + g.degree) + 1;
   for (int i = 0; i < samples; ++i) {
@@ -400,8 +405,10 @@ bool arc_pieces(const WorkingCurve& f, const WorkingCurve& g, CommonArc& arc,
           if (s != 0.0 && s != 1.0) s = refine_turn(g, s);
           ends_s[e] = s;
         }
-        if (!from_g) ends_s[e] = locate_on_curve(g, evaluate_dd(f, ends_t[e]), preimage(arc.q, J, u));
-        if (!from_f) ends_t[e] = locate_on_curve(f, evaluate_dd(g, ends_s[e]), preimage(arc.p, I, u));
+        if (!from_g)
+          ends_s[e] = locate_on_curve(g, evaluate_dd(f, ends_t[e]), preimage(arc.q, J, u));
+        if (!from_f)
+          ends_t[e] = locate_on_curve(f, evaluate_dd(g, ends_s[e]), preimage(arc.p, I, u));
       }
       const ParamInterval t_range{bernstein::min2(ends_t[0], ends_t[1]),
                                   bernstein::max2(ends_t[0], ends_t[1])};
@@ -443,7 +450,9 @@ std::optional<Factorisation> factorise(const WorkingCurve& c) {
   if (c.is_point || c.degree < 4) return std::nullopt;
   const Coeffs ax = monomial(c.x), ay = monomial(c.y);
   const int n = true_degree(ax, ay, c.magnitude);
-  const Coeffs& a = std::fabs(ax[static_cast<std::size_t>(n)]) >= std::fabs(ay[static_cast<std::size_t>(n)]) ? ax : ay;
+  const Coeffs& a =
+      std::fabs(ax[static_cast<std::size_t>(n)]) >= std::fabs(ay[static_cast<std::size_t>(n)]) ? ax
+                                                                                               : ay;
   const double size = bernstein::max2(max_abs(ax), max_abs(ay));
   // Every common right factor of x and y is one of the largest (Lüroth), so the first k
   // that works, from the top, is the largest.
@@ -456,9 +465,22 @@ std::optional<Factorisation> factorise(const WorkingCurve& c) {
   return std::nullopt;
 }
 
+namespace {
+
+bool same_coefficients(const WorkingCurve& f, const WorkingCurve& g) {
+  const auto same = [](const Coeffs& a, const Coeffs& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end());
+  };
+  return same(f.x, g.x) && same(f.y, g.y) && same(f.x_lo, g.x_lo) && same(f.y_lo, g.y_lo);
+}
+
+}  // namespace
+
 std::vector<OverlapFinding> find_arc_overlaps(const WorkingCurve& f, const WorkingCurve& g) {
   if (f.is_point || g.is_point || (f.degree < 4 && g.degree < 4)) return {};
-  const std::optional<Factorisation> ff = factorise(f), fg = factorise(g);
+  // A curve against itself (one-curve /intersections certifies its pairs so) is factored once.
+  const std::optional<Factorisation> ff = factorise(f);
+  const std::optional<Factorisation> fg = same_coefficients(f, g) ? ff : factorise(g);
   if (!ff && !fg) return {};
   const Factorisation a = ff ? *ff : identity(f), b = fg ? *fg : identity(g);
   // h_b(v) = h_a(alpha + beta v), found as find_overlaps finds its map, from the top two
