@@ -421,6 +421,42 @@ TEST(FuzzRegressions, F26_ATouchAtTwoEndsIsTheSameInBothOrders) {
   }
 }
 
+TEST(FuzzRegressions, F27_ACurveEndingBesideAnotherDoesNotMeetItThere) {
+  // f ends at (0, 0x1.4cp-30) coming straight down; g starts at (-0x1.009cfc7c7p-23, 0) and
+  // crosses x = 0 at y of about -1.2e-7 (slope -1), 5e-15 of the curves' size 2^24 below
+  // f's end: the curves' extensions meet a few ulps of t beyond f's end. The curves do not
+  // meet with s < 1e-3: every control point of f has x <= 0 and y >= 0, and y_f = 0 only
+  // at t = 0 (the origin). For s in [0, 1e-3], x_g <= 0 only up to s of about 1.7e-15 (g
+  // starts 1.2e-7 left of the axis with x_g' about 7e7), and there y_g <= 0 (the term
+  // 3 s (1 - s)^2 y_1 with y_1 = -0x1.6a0a00009cfc7p+24 dominates). So a common point
+  // would have y = 0: f at the origin, g at its first point, which is not the origin. The
+  // fast pieces' rounding (1e-15 of the working scale) hid that gap, and one order
+  // reported a box at (1, 2^-49).
+  const Curve f({{0x0p+0, 0x0p+0},
+                 {-0x1p+24, 0x1p+24},
+                 {-0x1.a7a7a7a8p-28, 0x1.307p+24},
+                 {0x0p+0, 0x1.4cp-30}});
+  const Curve g({{-0x1.009cfc7c7p-23, 0x0p+0},
+                 {0x1.6a0a00009cfc7p+24, -0x1.6a0a00009cfc7p+24},
+                 {0x1.fffffefep+10, 0x1.fffffefep+9},
+                 {-0x1.fbd8p+13, 0x1.001206a8a802p+10}});
+  for (const IntersectMethod method :
+       {IntersectMethod::hybrid, IntersectMethod::bezier_clipping, IntersectMethod::subdivision}) {
+    IntersectOptions options;
+    options.method = method;
+    options.tolerance = 0x1.0c6f7a0b5ed8dp-20;
+    const IntersectionResult a = intersect(f, g, options), b = intersect(g, f, options);
+    EXPECT_EQ(a.intersections.size(), b.intersections.size())
+        << "method " << static_cast<int>(method);
+    for (const Intersection& x : a.intersections) {
+      EXPECT_FALSE(x.t > 1 - 1e-3 && x.s < 1e-3) << "method " << static_cast<int>(method);
+    }
+    for (const Intersection& x : b.intersections) {
+      EXPECT_FALSE(x.s > 1 - 1e-3 && x.t < 1e-3) << "method " << static_cast<int>(method);
+    }
+  }
+}
+
 TEST(FuzzRegressions, F20c_CrossingNextToASharedEndPointIsFound) {
   const Curve f({{0.0, 0.0}, {2.0, 0.0}, {-0x1p19, -8.0}});
   const Curve g({{376.5, 0.043}, {0.043, -1.0}, {0.0, 0.0}});
