@@ -11,22 +11,37 @@ namespace bezier::core {
 
 namespace {
 
-long double binomial_ld(int n, int k) {
+constexpr long double binomial_ld(int n, int k) {
   return static_cast<long double>(binomial(n, k));
 }
 
-/// L2 reduction matrices for the fat curves (k = 2, 3) of every degree up to 20, computed
-/// at compile time by the same Gram-system elimination as l2_reduction_matrix's
-/// (solve_linear in long double), so that building a fat curve operator costs no
-/// elimination per request.
-constexpr int kTableDegree = 20;
-
-constexpr long double const_binomial(int n, int k) {
-  if (k < 0 || k > n) return 0.0L;
-  long double c = 1.0L;
-  for (int j = 0; j < k; ++j) c = c * (n - j) / (j + 1);
-  return c;
+/// The L2 reduction matrix of degree n to degree k in long double: the Gram system
+/// G_k X = M_kn in Bernstein form, (G_k)_ij = C(k,i) C(k,j) / ((2k+1) C(2k,i+j)) and
+/// (M_kn)_ij = C(k,i) C(n,j) / ((k+n+1) C(k+n,i+j)), solved by solve_linear. In long double:
+/// G_k's condition grows like 4^k (see the header). constexpr, so that the fat curves'
+/// table below is built by the same arithmetic at compile time.
+constexpr DenseMatrix<long double> reduction_in_long_double(int n, int k) {
+  const auto K = static_cast<std::size_t>(k), N = static_cast<std::size_t>(n);
+  DenseMatrix<long double> gram(K + 1, K + 1), mixed(K + 1, N + 1);
+  for (int i = 0; i <= k; ++i) {
+    for (int j = 0; j <= k; ++j) {
+      gram(static_cast<std::size_t>(i), static_cast<std::size_t>(j)) =
+          binomial_ld(k, i) * binomial_ld(k, j) / ((2 * k + 1) * binomial_ld(2 * k, i + j));
+    }
+    for (int j = 0; j <= n; ++j) {
+      mixed(static_cast<std::size_t>(i), static_cast<std::size_t>(j)) =
+          binomial_ld(k, i) * binomial_ld(n, j) / ((k + n + 1) * binomial_ld(k + n, i + j));
+    }
+  }
+  // G_k is a Gram matrix of a basis: symmetric positive definite, never singular.
+  const std::optional<DenseMatrix<long double>> x = solve_linear(std::move(gram), std::move(mixed));
+  assert(x.has_value());
+  return *x;
 }
+
+/// L2 reduction matrices for the fat curves (k = 2, 3) of every degree up to 20, computed
+/// at compile time, so that building a fat curve operator costs no elimination per request.
+constexpr int kTableDegree = 20;
 
 struct ReductionTable {
   // [k - 2][n] -> (k + 1) x (n + 1) entries, row-major.
@@ -37,22 +52,10 @@ constexpr ReductionTable make_reduction_table() {
   ReductionTable table;
   for (int k = 2; k <= 3; ++k) {
     for (int n = k + 1; n <= kTableDegree; ++n) {
-      const auto K = static_cast<std::size_t>(k), N = static_cast<std::size_t>(n);
-      DenseMatrix<long double> a(K + 1, K + 1), b(K + 1, N + 1);
-      for (int i = 0; i <= k; ++i) {
-        for (int j = 0; j <= k; ++j) {
-          a(i, j) = const_binomial(k, i) * const_binomial(k, j) /
-                    ((2 * k + 1) * const_binomial(2 * k, i + j));
-        }
-        for (int j = 0; j <= n; ++j) {
-          b(i, j) = const_binomial(k, i) * const_binomial(n, j) /
-                    ((k + n + 1) * const_binomial(k + n, i + j));
-        }
-      }
-      const std::optional<DenseMatrix<long double>> x = solve_linear(std::move(a), std::move(b));
+      const DenseMatrix<long double> x = reduction_in_long_double(n, k);
       for (int i = 0; i <= k; ++i) {
         for (int j = 0; j <= n; ++j)
-          table.entries[k - 2][n][i * (n + 1) + j] = static_cast<double>((*x)(i, j));
+          table.entries[k - 2][n][i * (n + 1) + j] = static_cast<double>(x(i, j));
       }
     }
   }
@@ -74,7 +77,7 @@ constexpr ElevationTable make_elevation_table() {
         for (int j = 0; j <= from; ++j) {
           if (i - j < 0 || i - j > to - from) continue;
           table.entries[from - 1][to][i * (from + 1) + j] = static_cast<double>(
-              const_binomial(from, j) * const_binomial(to - from, i - j) / const_binomial(to, i));
+              binomial_ld(from, j) * binomial_ld(to - from, i - j) / binomial_ld(to, i));
         }
       }
     }
@@ -119,25 +122,10 @@ BernsteinMatrix l2_reduction_matrix(int n, int k) {
     const double* e = kReductionTable.entries[k - 2][n];
     return {k + 1, n + 1, std::vector<double>(e, e + (k + 1) * (n + 1))};
   }
-  const auto K = static_cast<std::size_t>(k), N = static_cast<std::size_t>(n);
-  // In long double: G_k's condition grows like 4^k (see the header).
-  DenseMatrix<long double> gram(K + 1, K + 1), mixed(K + 1, N + 1);
-  for (int i = 0; i <= k; ++i) {
-    for (int j = 0; j <= k; ++j) {
-      gram(static_cast<std::size_t>(i), static_cast<std::size_t>(j)) =
-          binomial_ld(k, i) * binomial_ld(k, j) / ((2 * k + 1) * binomial_ld(2 * k, i + j));
-    }
-    for (int j = 0; j <= n; ++j) {
-      mixed(static_cast<std::size_t>(i), static_cast<std::size_t>(j)) =
-          binomial_ld(k, i) * binomial_ld(n, j) / ((k + n + 1) * binomial_ld(k + n, i + j));
-    }
-  }
-  // G_k is a Gram matrix of a basis: symmetric positive definite, never singular.
-  const std::optional<DenseMatrix<long double>> r = solve_linear(std::move(gram), std::move(mixed));
-  assert(r.has_value());
+  const DenseMatrix<long double> r = reduction_in_long_double(n, k);
   BernsteinMatrix out{k + 1, n + 1, {}};
-  out.entries.reserve(r->entries.size());
-  for (const long double v : r->entries) out.entries.push_back(static_cast<double>(v));
+  out.entries.reserve(r.entries.size());
+  for (const long double v : r.entries) out.entries.push_back(static_cast<double>(v));
   return out;
 }
 

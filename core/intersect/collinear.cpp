@@ -162,7 +162,7 @@ void hold_exact_root(CollinearOutcome& out, ExactRoot r) {
 std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
                                                         const WorkingCurve& g,
                                                         std::span<const ExactRoot> exact_roots) {
-  // Relative to the smaller curve, as the overlap tests: a curve 2^-15 the size of the other
+  // Relative to the smaller curve, as the overlap tests: a curve about 2^-14 the size of the other
   // and bent by 4e-9 of its own size lay within the frame's tolerance of the other's line,
   // and its end 1e-4 off that line was taken for a touch, placed differently in the two
   // orders (finding F26).

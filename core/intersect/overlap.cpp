@@ -127,30 +127,38 @@ double overlap_tolerance(int degree) noexcept {
   return 0x1p-42 * bernstein::max2(1, degree);
 }
 
-double extent(const WorkingCurve& c) noexcept {
-  double x_lo = c.x[0], x_hi = c.x[0], y_lo = c.y[0], y_hi = c.y[0];
-  for (std::size_t i = 1; i < c.x.size(); ++i) {
-    x_lo = bernstein::min2(x_lo, c.x[i]);
-    x_hi = bernstein::max2(x_hi, c.x[i]);
-    y_lo = bernstein::min2(y_lo, c.y[i]);
-    y_hi = bernstein::max2(y_hi, c.y[i]);
+double extent(std::span<const double> x, std::span<const double> y) noexcept {
+  double x_lo = x[0], x_hi = x[0], y_lo = y[0], y_hi = y[0];
+  for (std::size_t i = 1; i < x.size(); ++i) {
+    x_lo = bernstein::min2(x_lo, x[i]);
+    x_hi = bernstein::max2(x_hi, x[i]);
+    y_lo = bernstein::min2(y_lo, y[i]);
+    y_hi = bernstein::max2(y_hi, y[i]);
   }
   return bernstein::max2(x_hi - x_lo, y_hi - y_lo);
 }
 
-double coincidence_tolerance(const WorkingCurve& f, const WorkingCurve& g) noexcept {
+namespace {
+
+/// coincidence_tolerance with the smaller curve's size (at most 1) given.
+double coincidence_tolerance_at(const WorkingCurve& f, const WorkingCurve& g,
+                                double smaller) noexcept {
   const int degree = std::max(f.degree, g.degree);
-  const double smaller = bernstein::min2(1.0, bernstein::min2(extent(f), extent(g)));
   return overlap_tolerance(degree) * smaller +
          64 * degree * kU * bernstein::max2(f.magnitude, g.magnitude) + f.frame_error +
          g.frame_error;
 }
 
+}  // namespace
+
+double coincidence_tolerance(const WorkingCurve& f, const WorkingCurve& g) noexcept {
+  return coincidence_tolerance_at(
+      f, g, bernstein::min2(1.0, bernstein::min2(extent(f.x, f.y), extent(g.x, g.y))));
+}
+
 double coincidence_tolerance_bound(const WorkingCurve& f, const WorkingCurve& g) noexcept {
-  const int degree = std::max(f.degree, g.degree);
-  return 2 *
-         (overlap_tolerance(degree) + 64 * degree * kU * bernstein::max2(f.magnitude, g.magnitude) +
-          f.frame_error + g.frame_error);
+  // Every operation rounds monotonically, so a size of 1 gives at least any smaller one's.
+  return coincidence_tolerance_at(f, g, 1.0);
 }
 
 double locate_on_curve(const WorkingCurve& f, PointDD p, double start, double converged) {

@@ -39,8 +39,9 @@ struct OverlapFinding {
 /// refinement, far below any visible gap.
 [[nodiscard]] double overlap_tolerance(int degree) noexcept;
 
-/// The larger side of c's control points' bounding box: the curve's size in the frame.
-[[nodiscard]] double extent(const WorkingCurve& c) noexcept;
+/// The larger side of the bounding box of the control points (x_i, y_i): a curve's or a
+/// piece's size in its frame.
+[[nodiscard]] double extent(std::span<const double> x, std::span<const double> y) noexcept;
 
 /// How far two pieces may be apart and still coincide: overlap_tolerance of the smaller
 /// curve's size (at most the frame's, about 1), plus the rounding of pieces and
@@ -49,9 +50,9 @@ struct OverlapFinding {
 /// (finding F26).
 [[nodiscard]] double coincidence_tolerance(const WorkingCurve& f, const WorkingCurve& g) noexcept;
 
-/// At least coincidence_tolerance(f, g) (twice its value with the smaller curve's size taken
-/// as 1, the most it can be, so rounding cannot put it below), without the two curves'
-/// extents: for quick necessary tests that most pairs fail.
+/// At least coincidence_tolerance(f, g): its value with the smaller curve's size taken as 1,
+/// the most it can be, without the two curves' extents, for quick necessary tests that
+/// most pairs fail.
 [[nodiscard]] double coincidence_tolerance_bound(const WorkingCurve& f,
                                                  const WorkingCurve& g) noexcept;
 

@@ -14,6 +14,7 @@
 #include "core/intersect/implicit_clip.hpp"
 #include "core/intersect/kind.hpp"
 #include "core/intersect/krawczyk.hpp"
+#include "core/intersect/overlap.hpp"
 #include "core/intersect/subdivision.hpp"
 #include "core/intersect/work_cost.hpp"
 
@@ -76,18 +77,6 @@ bool nearly_parallel(const Piece& a, const Piece& b) noexcept {
   const Point2 ca = {a.x.back() - a.x[0], a.y.back() - a.y[0]};
   const Point2 cb = {b.x.back() - b.x[0], b.y.back() - b.y[0]};
   return sine_between(ca, cb) <= kParallelSine;
-}
-
-/// The larger side of a piece's control-point bounding box.
-double piece_extent(const Piece& p) noexcept {
-  double xl = p.x[0], xh = p.x[0], yl = p.y[0], yh = p.y[0];
-  for (std::size_t i = 1; i < p.x.size(); ++i) {
-    xl = p.x[i] < xl ? p.x[i] : xl;
-    xh = p.x[i] > xh ? p.x[i] : xh;
-    yl = p.y[i] < yl ? p.y[i] : yl;
-    yh = p.y[i] > yh ? p.y[i] : yh;
-  }
-  return xh - xl > yh - yl ? xh - xl : yh - yl;
 }
 
 /// Boxes narrower than this in t and s (hybrid, fast pieces) try the Krawczyk test
@@ -394,7 +383,7 @@ class Searcher {
           // than the other, halving it still helps (its fat line was the blunt one); a wide
           // box is halved too (the pieces may coincide along a stretch: an improper
           // overlap); otherwise this is the precision floor.
-          const double ef = piece_extent(f_piece_), eg = piece_extent(g_piece_);
+          const double ef = extent(f_piece_.x, f_piece_.y), eg = extent(g_piece_.x, g_piece_.y);
           if (!td && !sd && (ef > 8 * eg || eg > 8 * ef)) {
             split(box, ef > eg, eg >= ef);
             return;

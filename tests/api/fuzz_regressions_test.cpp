@@ -295,8 +295,8 @@ TEST(FuzzRegressions, F26_NearlyCollinearCurvesOfDifferentSizesCrossOnce) {
   ASSERT_LT(
       on_parabola(f, exact_point(g, s_lo)).sign() * on_parabola(f, exact_point(g, s_hi)).sign(), 0);
   // t with y_f(t) = y: the root in [0, 1] of a (1-t)^2 + 2b t(1-t) + c t^2 = y.
-  const auto t_at = [](double y) {
-    const double a = 0x1.ff8ff2p-6, b = -8.0, c = -4096.0;
+  const auto t_at = [&](double y) {
+    const double a = f[0].y, b = f[1].y, c = f[2].y;
     const double qa = a - 2 * b + c, qb = 2 * (b - a), qc = a - y;
     return (-qb - std::sqrt(qb * qb - 4 * qa * qc)) / (2 * qa);
   };
@@ -317,13 +317,13 @@ TEST(FuzzRegressions, F26_NearlyCollinearCurvesOfDifferentSizesCrossOnce) {
 }
 
 TEST(FuzzRegressions, F26_ASmallCurveBentAboveItsRoundingIsNotOnALargeCurvesLine) {
-  // f runs from (0, 0) out along the x axis to x = 2^29 and back to x = 2^-31 (y <= 2^-31);
-  // g, 2^-15 of its size, is the parabola from (0, 2^-13) out to x = -16383 and back to
+  // f runs from (0, 0) out along the x axis past x = 2^28 and back to x = 2^-31 (y <= 2^-31);
+  // g, about 2^-14 of its size, is the parabola from (0, 2^-13) out to x = -16381.5 and back to
   // (0, 0), tangent to the x axis there. Relative to f's size g lies on the x axis, and
   // both orders took the pair for collinear: a touch at f(0) and g's first end, 2^-13
   // apart, placed at (0, 2^-57) in one order and at (2^-70, 0) in the other. The curves
   // meet only at f(0) = g(1): x_f > 0 on (0, 1] (every control point's x >= 0, P1's > 0)
-  // and x_g < 0 on (0, 1) (-2 (1 - s) s 32748 plus 0 at both ends), so a common point has
+  // and x_g < 0 on (0, 1) (-2 (1 - s) s 32763 plus 0 at both ends), so a common point has
   // x = 0, t = 0 and s in {0, 1}, and g(0) = (0, 2^-13) is not f(0). Both tangents there
   // are horizontal to within 1e-13: a tangency.
   const Curve f({{0x0p+0, 0x0p+0},

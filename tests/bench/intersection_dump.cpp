@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/intersect/intersect.hpp"
+#include "tests/support/exact_bezier.hpp"
 #include "tests/support/mulberry32.hpp"
 
 namespace {
@@ -29,20 +30,13 @@ using bezier::core::Point2;
 
 using Pairs = std::vector<std::pair<Curve, Curve>>;
 
+/// Control points uniform in [0, 1)^2 (mulberry32's draws themselves, x then y), f's then g's.
 Pairs random_pairs(std::uint32_t seed, int f_degree, int g_degree, int count) {
   bezier::test::Mulberry32 rng(seed);
-  const auto curve = [&](int degree) {
-    std::vector<Point2> points(static_cast<std::size_t>(degree) + 1);
-    for (Point2& p : points) {
-      p.x = rng.next();
-      p.y = rng.next();
-    }
-    return Curve(std::move(points));
-  };
   Pairs pairs;
   for (int i = 0; i < count; ++i) {
-    Curve f = curve(f_degree);
-    Curve g = curve(g_degree);
+    Curve f = bezier::test::random_curve<Point2>(rng, f_degree, 0.0, 1.0);
+    Curve g = bezier::test::random_curve<Point2>(rng, g_degree, 0.0, 1.0);
     pairs.emplace_back(std::move(f), std::move(g));
   }
   return pairs;
