@@ -1,6 +1,7 @@
 #include "core/intersect/band_solve.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -123,17 +124,40 @@ CubicRoots real_roots_up_to_cubic(double c0, double c1, double c2, double c3, do
   return out;
 }
 
-std::optional<ParamInterval> kept_interval_by_hulls(std::span<const double> p, double lo,
-                                                    double hi) {
+namespace {
+
+/// Room for the E coefficients of a portion: on the stack when E is fixed.
+template <std::size_t E>
+struct CoefficientBuffer {
+  explicit CoefficientBuffer(std::size_t /*size*/) noexcept {}
+  double* data() noexcept { return values.data(); }
+  std::array<double, E> values;
+};
+template <>
+struct CoefficientBuffer<std::dynamic_extent> {
+  explicit CoefficientBuffer(std::size_t size)
+      : values(size, SmallArray<double>::Uninitialized{}) {}
+  double* data() noexcept { return values.data(); }
+  SmallArray<double> values;
+};
+
+template <std::size_t E>
+std::optional<ParamInterval> kept_interval_by_hulls_of(std::span<const double, E> p, double lo,
+                                                       double hi) {
   const int k = static_cast<int>(p.size()) - 1;
   const double e = 3.02 * k * kU * bernstein::max_abs(p) + 0x1p-1000;
+  CoefficientBuffer<E> piece(p.size());
   ParamInterval range{0.0, 1.0};
   for (int iteration = 0; iteration < 3; ++iteration) {
     // The first pass clips p itself (exact coefficients, no margin).
-    const auto clip = iteration == 0
-                          ? bernstein::hull_clip(p, lo, hi)
-                          : bernstein::hull_clip(bernstein::portion<double>(p, range.lo, range.hi),
-                                                 lo - e, hi + e);
+    std::optional<ParamInterval> clip;
+    if (iteration == 0) {
+      clip = bernstein::hull_clip_of(p, lo, hi);
+    } else {
+      bernstein::portion_into(std::span<const double>(p), range.lo, range.hi, piece.data());
+      clip = bernstein::hull_clip_of(std::span<const double, E>(piece.data(), p.size()), lo - e,
+                                     hi + e);
+    }
     if (!clip) return std::nullopt;
     const double w = range.hi - range.lo;
     ParamInterval next = range;
@@ -144,6 +168,13 @@ std::optional<ParamInterval> kept_interval_by_hulls(std::span<const double> p, d
     if (!shrank_enough) break;
   }
   return range;
+}
+
+}  // namespace
+
+std::optional<ParamInterval> kept_interval_by_hulls(std::span<const double> p, double lo,
+                                                    double hi) {
+  return kept_interval_by_hulls_of<std::dynamic_extent>(p, lo, hi);
 }
 
 namespace {
@@ -177,10 +208,6 @@ Ends end_pieces(std::span<const double, E> p, double a, double b) noexcept {
   }
   return out;
 }
-
-}  // namespace
-
-namespace {
 
 /// de Casteljau value of a degree-k <= 3 polynomial.
 template <std::size_t E>
@@ -219,124 +246,6 @@ double monotone_root(std::span<const double, E> p, const double* c, double level
   return t;
 }
 
-/// A cubic's stretches between its critical points in (0, 1), where it is monotone (up to
-/// the rounding of the critical points), with its values (Horner) at their ends.
-struct Stretches {
-  double at[4];
-  double value[4];
-  int count = 0;  ///< number of ends: stretches + 1
-};
-
-Stretches monotone_stretches(const double* c) noexcept {
-  Stretches st;
-  st.at[st.count++] = 0.0;
-  // p' = c1 + 2 c2 t + 3 c3 t^2.
-  const CubicRoots r = real_roots_up_to_cubic(c[1], 2 * c[2], 3 * c[3], 0.0, 0.0, 1.0);
-  for (int i = 0; i < r.count; ++i) {
-    if (r.t[i] > st.at[st.count - 1] && r.t[i] < 1.0) st.at[st.count++] = r.t[i];
-  }
-  st.at[st.count++] = 1.0;
-  for (int i = 0; i < st.count; ++i) st.value[i] = horner(c[0], c[1], c[2], c[3], st.at[i]);
-  return st;
-}
-
-/// The root of p = level in the stretch [a, b] where p goes from va to vb across the level:
-/// regula falsi start, then Newton's method kept inside the stretch.
-double stretch_root(const double* c, double a, double b, double va, double vb,
-                    double level) noexcept {
-  double t = a + (b - a) * ((level - va) / (vb - va));
-  if (!(t >= a && t <= b)) t = a + (b - a) / 2;
-  for (int iteration = 0; iteration < 4; ++iteration) {
-    const double f = horner(c[0] - level, c[1], c[2], c[3], t);
-    const double df = (3 * c[3] * t + 2 * c[2]) * t + c[1];
-    if (!(df != 0.0)) break;
-    double next = t - f / df;
-    next = next < a ? a : (next > b ? b : next);
-    if (!(next == next)) break;
-    const bool small = std::fabs(next - t) <= 0x1p-40;
-    t = next;
-    if (small) break;
-  }
-  return t;
-}
-
-/// Where p first enters [lo, hi] going right from 0 (2 when it seems never to).
-double first_in_band(const double* c, const Stretches& st, double lo, double hi) noexcept {
-  if (lo <= st.value[0] && st.value[0] <= hi) return 0.0;
-  for (int i = 0; i + 1 < st.count; ++i) {
-    const double va = st.value[i], vb = st.value[i + 1];
-    if (va < lo && vb >= lo) return stretch_root(c, st.at[i], st.at[i + 1], va, vb, lo);
-    if (va > hi && vb <= hi) return stretch_root(c, st.at[i], st.at[i + 1], va, vb, hi);
-  }
-  return 2.0;
-}
-
-/// Where p last leaves [lo, hi] going right, i.e. first enters it going left from 1 (-1 when
-/// it seems never to).
-double last_in_band(const double* c, const Stretches& st, double lo, double hi) noexcept {
-  const int n = st.count - 1;
-  if (lo <= st.value[n] && st.value[n] <= hi) return 1.0;
-  for (int i = n; i > 0; --i) {
-    const double vb = st.value[i], va = st.value[i - 1];
-    if (vb < lo && va >= lo) return stretch_root(c, st.at[i - 1], st.at[i], va, vb, lo);
-    if (vb > hi && va <= hi) return stretch_root(c, st.at[i - 1], st.at[i], va, vb, hi);
-  }
-  return -1.0;
-}
-
-/// The cubic's Bernstein coefficients on [a, b] (the blossom values of bernstein::portion,
-/// error at most 3.01 * 3 u max|p| for a, b in [0, 1]).
-void cubic_portion(const double* p, double a, double b, double out[4]) noexcept {
-  using bernstein::lerp;
-  const double a10 = lerp(p[0], p[1], a), a11 = lerp(p[1], p[2], a), a12 = lerp(p[2], p[3], a);
-  const double a20 = lerp(a10, a11, a), a21 = lerp(a11, a12, a);
-  const double b10 = lerp(p[0], p[1], b), b11 = lerp(p[1], p[2], b), b12 = lerp(p[2], p[3], b);
-  const double b20 = lerp(b10, b11, b), b21 = lerp(b11, b12, b);
-  out[0] = lerp(a20, a21, a);
-  out[1] = lerp(a20, a21, b);
-  out[2] = lerp(b20, b21, a);
-  out[3] = lerp(b20, b21, b);
-}
-
-/// The cubic certainly avoids [lo, hi] on [a, b]: on each part of [a, b] between the
-/// stretches' ends, its Bernstein coefficients (with their rounding bound e) are all below
-/// lo or all above hi.
-bool outside_over_stretches(const double* p, const Stretches& st, double a, double b, double lo,
-                            double hi, double e) noexcept {
-  double from = a;
-  for (int i = 1; i <= st.count; ++i) {
-    const double to = i < st.count && st.at[i] < b ? st.at[i] : b;
-    if (to > from) {
-      double q[4];
-      cubic_portion(p, from, to, q);
-      if (!certainly_outside(q, lo, hi, e)) return false;
-      from = to;
-    }
-    if (to >= b) break;
-  }
-  return true;
-}
-
-/// The non-monotone cubic case of kept_interval (power coefficients c, rounding bound e of a
-/// portion): where p first enters and last leaves the band, from its monotone stretches,
-/// widened by kRootPad and certified stretch by stretch; the hull iteration when a
-/// certificate fails.
-std::optional<ParamInterval> kept_interval_cubic(const double* p, const double* c, double lo,
-                                                 double hi, double e) {
-  const Stretches st = monotone_stretches(c);
-  double alpha = first_in_band(c, st, lo, hi);
-  double beta = last_in_band(c, st, lo, hi);
-  const std::span<const double> coefficients(p, 4);
-  if (beta < alpha) return kept_interval_by_hulls(coefficients, lo, hi);
-  alpha = alpha - kRootPad > 0 ? alpha - kRootPad : 0.0;
-  beta = beta + kRootPad < 1 ? beta + kRootPad : 1.0;
-  if ((alpha > 0.0 && !outside_over_stretches(p, st, 0.0, alpha, lo, hi, e)) ||
-      (beta < 1.0 && !outside_over_stretches(p, st, beta, 1.0, lo, hi, e))) {
-    return kept_interval_by_hulls(coefficients, lo, hi);
-  }
-  return ParamInterval{alpha, beta};
-}
-
 /// kept_interval for p of E coefficients: E fixed at compile time for degrees 1 to 3 (the
 /// loops unroll and the branches on the degree fold; the arithmetic is the same), dynamic
 /// for the rest, which only take the quick exits and the hull iteration.
@@ -350,7 +259,7 @@ std::optional<ParamInterval> kept_interval_of(std::span<const double, E> p, doub
   }
   if (p_max < lo || p_min > hi) return std::nullopt;
   if (lo <= p_min && p_max <= hi) return ParamInterval{0.0, 1.0};
-  if (k < 1 || k > 3) return kept_interval_by_hulls(p, lo, hi);
+  if (k < 1 || k > 3) return kept_interval_by_hulls_of(p, lo, hi);
   // Power basis: p(t) = c0 + c1 t + c2 t^2 + c3 t^3.
   double c[4] = {p[0], 0.0, 0.0, 0.0};
   if (k == 1) {
@@ -401,7 +310,13 @@ std::optional<ParamInterval> kept_interval_of(std::span<const double, E> p, doub
     }
     if (certified && alpha <= beta) return ParamInterval{alpha, beta};
   }
-  if (k == 3) return kept_interval_cubic(p.data(), c, lo, hi, e);
+  // Not monotone, degree 3 (57 % of the clips of the cubic benchmark pairs, nearly all on
+  // the first, large pieces): the hull iteration. The exact set from the cubic's monotone
+  // stretches (Newton's method per stretch, a certificate per stretch, the hull iteration
+  // when one failed: a quarter of them) was tighter, but its branches cost more than the
+  // few extra steps the looser bound takes (BENCHMARKS.md §2d); near a root, where the
+  // convergence order counts, the distance function is monotone and takes the path above.
+  if (k == 3) return kept_interval_by_hulls_of(p, lo, hi);
   // Not monotone, degree <= 2: the roots of p = lo and p = hi in closed form; segments between
   // them are kept when p at their midpoint (Horner: only a guess, certified below) is in the
   // band.
@@ -425,7 +340,7 @@ std::optional<ParamInterval> kept_interval_of(std::span<const double, E> p, doub
       beta = beta > breaks[i + 1] ? beta : breaks[i + 1];
     }
   }
-  if (beta < alpha) return kept_interval_by_hulls(p, lo, hi);
+  if (beta < alpha) return kept_interval_by_hulls_of(p, lo, hi);
   alpha = alpha - kRootPad > 0 ? alpha - kRootPad : 0.0;
   beta = beta + kRootPad < 1 ? beta + kRootPad : 1.0;
   const Ends ends = end_pieces(p, alpha, beta);
@@ -433,7 +348,7 @@ std::optional<ParamInterval> kept_interval_of(std::span<const double, E> p, doub
   const std::span<const double> right(ends.right, static_cast<std::size_t>(k + 1));
   if ((alpha > 0.0 && !certainly_outside(left, lo, hi, e)) ||
       (beta < 1.0 && !certainly_outside(right, lo, hi, e))) {
-    return kept_interval_by_hulls(p, lo, hi);
+    return kept_interval_by_hulls_of(p, lo, hi);
   }
   return ParamInterval{alpha, beta};
 }

@@ -135,9 +135,11 @@ template <class T>
 /// points inside the band are exact. The crossing abscissae are computed with a few
 /// roundings; the result is widened by 8 u on each side and clamped to [0, 1]. Empty
 /// (nullopt) exactly when every c_i < lo or every c_i > hi. This is the clip of
-/// Sederberg & Nishita (1990), without building the hull.
-[[nodiscard]] inline std::optional<ParamInterval> hull_clip(std::span<const double> c, double lo,
-                                                            double hi) {
+/// Sederberg & Nishita (1990), without building the hull. For E coefficients, E fixed at
+/// compile time for the low degrees (fixed_extent.hpp: the loops unroll) or dynamic.
+template <std::size_t E>
+[[nodiscard]] std::optional<ParamInterval> hull_clip_of(std::span<const double, E> c, double lo,
+                                                        double hi) {
   const std::size_t n = c.size() - 1;
   bool any_below = false, any_above = false, any_inside = false;
   for (const double v : c) {
@@ -174,6 +176,11 @@ template <class T>
   }
   const double pad = 8 * kU;
   return ParamInterval{max2(0.0, t_min - pad), min2(1.0, t_max + pad)};
+}
+
+[[nodiscard]] inline std::optional<ParamInterval> hull_clip(std::span<const double> c, double lo,
+                                                            double hi) {
+  return hull_clip_of<std::dynamic_extent>(c, lo, hi);
 }
 
 }  // namespace bezier::core::bernstein

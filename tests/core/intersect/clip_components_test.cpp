@@ -130,34 +130,116 @@ TEST(ClipComponents, KeptIntervalContainsEveryParameterInTheBand) {
   EXPECT_GT(grazing, 50);
 }
 
-TEST(ClipComponents, KeptIntervalOfANonMonotoneCubicIsTight) {
-  // p(t) = 6t(1 - t)(1 - 2t) (Bernstein 0, 2, -2, 0) rises to a maximum near t = 0.21 and
-  // falls to a minimum near 0.79. {p >= 1/5} is [r1, r2] with r1, r2 the roots of
-  // p = 1/5 left of t = 1/2, found here by bisection on the exact rational values; the kept
-  // interval must hold [r1, r2] and be within 1e-8 of it (the clip's pad is 2^-32).
-  const std::vector<double> p = {0.0, 2.0, -2.0, 0.0};
-  const Rational level(Rational(1) / Rational(5));
-  const auto root = [&](double a, double b) {  // p - level changes sign on [a, b]
-    const bool rising = exact_value(p, Rational(a)) < level;
-    for (int i = 0; i < 60; ++i) {
-      const double m = a + (b - a) / 2;
-      if ((exact_value(p, Rational(m)) < level) == rising)
-        a = m;
-      else
-        b = m;
+/// The root of the exact p - level in [a, b], where it changes sign, bracketed to 2^-60 by
+/// bisection on exact rational values.
+std::pair<double, double> exact_root(const std::vector<double>& p, const Rational& level, double a,
+                                     double b) {
+  const bool rising = exact_value(p, Rational(a)) < level;
+  for (int i = 0; i < 60; ++i) {
+    const double m = a + (b - a) / 2;
+    if ((exact_value(p, Rational(m)) < level) == rising)
+      a = m;
+    else
+      b = m;
+  }
+  return {a, b};
+}
+
+/// Sederberg and Nishita's clip in exact rationals: the least and the largest abscissa where
+/// the convex hull of the points (i / k, p_i) meets the band lo <= y <= hi (its extreme points
+/// there lie on segments between two control points, or are control points in the band).
+std::pair<Rational, Rational> exact_hull_clip(const std::vector<double>& p, const Rational& lo,
+                                              const Rational& hi) {
+  const Rational k(static_cast<int>(p.size()) - 1);
+  std::vector<Rational> xs;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Rational xi = Rational(static_cast<int>(i)) / k, ci(p[i]);
+    if (lo <= ci && ci <= hi) xs.push_back(xi);
+    for (std::size_t j = i + 1; j < p.size(); ++j) {
+      const Rational xj = Rational(static_cast<int>(j)) / k, cj(p[j]);
+      for (const Rational& level : {lo, hi}) {
+        if ((ci < level && level < cj) || (cj < level && level < ci))
+          xs.push_back(xi + (xj - xi) * (level - ci) / (cj - ci));
+      }
     }
-    return std::pair{a, b};
-  };
-  const auto [r1_lo, r1_hi] = root(0.0, 0.21);
-  const auto [r2_lo, r2_hi] = root(0.22, 0.5);
-  const auto kept = kept_interval(p, 0.2, 5.0);
+  }
+  Rational least = xs.at(0), largest = xs.at(0);
+  for (const Rational& x : xs) {
+    if (x < least) least = x;
+    if (largest < x) largest = x;
+  }
+  return {least, largest};
+}
+
+TEST(ClipComponents, KeptIntervalOfAMonotoneCubicIsTight) {
+  // p with Bernstein coefficients 0, 0.9, 2.1, 3 rises monotonically from 0 to 3, bending
+  // slightly, as the distance function of a small piece does. {1 <= p <= 2} is [r1, r2]
+  // with r1, r2 the roots of p = 1 and p = 2, bracketed in exact rationals; the kept
+  // interval must hold it and be within 1e-8 of it (the clip's pad is 2^-32): near a root
+  // the distance function is monotone, and this tightness is what gives the fat curve its
+  // order of convergence.
+  const std::vector<double> p = {0.0, 0.9, 2.1, 3.0};
+  const auto [r1_lo, r1_hi] = exact_root(p, Rational(1), 0.0, 1.0);
+  const auto [r2_lo, r2_hi] = exact_root(p, Rational(2), 0.0, 1.0);
+  const auto kept = kept_interval(p, 1.0, 2.0);
   ASSERT_TRUE(kept.has_value());
   EXPECT_LE(kept->lo, r1_lo);
   EXPECT_GE(kept->hi, r2_hi);
   EXPECT_GT(kept->lo, r1_hi - 1e-8);
   EXPECT_LT(kept->hi, r2_lo + 1e-8);
+}
+
+TEST(ClipComponents, KeptIntervalOfANonMonotoneCubicIsWithinItsConvexHullClip) {
+  // p(t) = 6t(1 - t)(1 - 2t) (Bernstein 0, 2, -2, 0) rises to a maximum near t = 0.21 and
+  // falls to a minimum near 0.79. {p >= 1/5} is [r1, r2] with r1, r2 the roots of p = 1/5
+  // left of t = 1/2. A non-monotone cubic is clipped by repeated convex hulls: the kept
+  // interval must hold [r1, r2] and lie within the first hull clip, [1/30, 14/15] (computed
+  // here in rationals), up to the 8 u pad of the clip, the 4 u of its map to [0, 1] and the
+  // rounding of the crossing itself.
+  const std::vector<double> p = {0.0, 2.0, -2.0, 0.0};
+  const Rational level(Rational(1) / Rational(5));
+  const auto [r1_lo, r1_hi] = exact_root(p, level, 0.0, 0.21);
+  const auto [r2_lo, r2_hi] = exact_root(p, level, 0.22, 0.5);
+  const auto [hull_lo, hull_hi] = exact_hull_clip(p, level, Rational(5));
+  EXPECT_EQ(hull_lo, Rational(1) / Rational(30));
+  EXPECT_EQ(hull_hi, Rational(14) / Rational(15));
+  const auto kept = kept_interval(p, 0.2, 5.0);
+  ASSERT_TRUE(kept.has_value());
+  EXPECT_LE(kept->lo, r1_lo);
+  EXPECT_GE(kept->hi, r2_hi);
+  const Rational pad(16 * bernstein::kU);
+  EXPECT_GE(Rational(kept->lo), hull_lo - pad);
+  EXPECT_LE(Rational(kept->hi), hull_hi + pad);
   // A band holding every value of p: the whole domain.
   EXPECT_EQ(*kept_interval(p, -5.0, 5.0), (ParamInterval{0.0, 1.0}));
+}
+
+TEST(ClipComponents, KeptIntervalIsWithinTheConvexHullClip) {
+  // Random polynomials of degree 1-3: whatever the path (monotone roots, closed form, hull
+  // iteration), the kept interval is never looser than Sederberg and Nishita's clip, up to
+  // the pads (2^-32 around a computed root; 16 u around a hull clip).
+  test::Mulberry32 rng(11);
+  int compared = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const int k = 1 + trial % 3;
+    std::vector<double> p(static_cast<std::size_t>(k) + 1);
+    for (double& v : p) v = rng.uniform(-1, 1);
+    const double lo = rng.uniform(-1, 1), hi = lo + rng.next() * 0.5;
+    const auto kept = kept_interval(p, lo, hi);
+    if (!kept) continue;
+    bool all_below = true, all_above = true;
+    for (const double v : p) {
+      all_below = all_below && v < lo;
+      all_above = all_above && v > hi;
+    }
+    ASSERT_FALSE(all_below || all_above) << "trial " << trial;  // the hull would be empty
+    const auto [hull_lo, hull_hi] = exact_hull_clip(p, Rational(lo), Rational(hi));
+    const Rational pad(0x1p-32 + 16 * bernstein::kU);
+    EXPECT_GE(Rational(kept->lo), hull_lo - pad) << "trial " << trial;
+    EXPECT_LE(Rational(kept->hi), hull_hi + pad) << "trial " << trial;
+    ++compared;
+  }
+  EXPECT_GT(compared, 200);
 }
 
 TEST(ClipComponents, HullClipIsTheConvexHullOnTheBand) {
