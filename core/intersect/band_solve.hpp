@@ -23,12 +23,9 @@ namespace bezier::core {
 ///    Bernstein coefficients (a de Casteljau portion, with its rounding bound) must all lie
 ///    strictly below lo or all strictly above hi, which by the convex hull property proves p
 ///    avoids the band there.
-///  - otherwise, degree 3: p is split at its critical points (roots of the quadratic p',
-///    closed form) into stretches where it is monotone; where it first enters the band and
-///    where it last leaves it come from the first and last stretches that cross a level
-///    (Newton's method inside the stretch), widened by 2^-32 and certified on each
-///    stretch of the excluded ends separately (the Bernstein hull of one long end
-///    overshoots where the cubic bends; over a monotone stretch it hugs the curve).
+///  - otherwise, degree 3: repeated convex-hull clips of p (below). The exact set from the
+///    cubic's monotone stretches was tighter there but cost more than it saved: such
+///    cubics come from large pieces, far from convergence.
 ///  - whenever a certificate fails: repeated convex-hull clips of p (bernstein::hull_clip),
 ///    conservative by construction.
 /// real_roots_up_to_cubic (Viète / Cardano for cubics) is kept for callers that want the
