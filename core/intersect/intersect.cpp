@@ -207,6 +207,7 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   const KindTolerances kind_tol;
   const std::vector<Contact> contacts = merge_candidates(found.candidates, exact, in.width);
   const PairScales scales = contacts.empty() ? PairScales{frame} : pair_scales(wf, wg, frame);
+  result.intersections.reserve(contacts.size());
   for (Contact c : contacts) {
     if (in.t_free) c.t = {0.0, 1.0};
     if (in.s_free) c.s = {0.0, 1.0};
