@@ -41,8 +41,9 @@ PairScales pair_scales(const WorkingCurve& f, const WorkingCurve& g, WorkingFram
   return {frame, hodograph_scale(f), hodograph_scale(g)};
 }
 
-/// The answer for one (t, s), with its kind judged from the derivatives there.
-Intersection make_intersection(const WorkingCurve& f, const WorkingCurve& g,
+/// The answer for one (t, s), with its kind judged from the derivatives there (pf, pg: f
+/// and g at t and s with their tangents).
+Intersection make_intersection(const PointAndTangent& pf, const PointAndTangent& pg,
                                const PairScales& scales, double t, double s, ParamInterval ti,
                                ParamInterval si) {
   Intersection x;
@@ -50,11 +51,17 @@ Intersection make_intersection(const WorkingCurve& f, const WorkingCurve& g,
   x.s = s;
   x.t_interval = ti;
   x.s_interval = si;
-  const PointAndTangent pf = evaluate_with_tangent(f, t), pg = evaluate_with_tangent(g, s);
   x.point = from_working({pf.point.x / 2 + pg.point.x / 2, pf.point.y / 2 + pg.point.y / 2},
                          scales.frame);
   x.kind = classify_intersection(pf.tangent, pg.tangent, scales.f_hodograph, scales.g_hodograph);
   return x;
+}
+
+Intersection make_intersection(const WorkingCurve& f, const WorkingCurve& g,
+                               const PairScales& scales, double t, double s, ParamInterval ti,
+                               ParamInterval si) {
+  return make_intersection(evaluate_with_tangent(f, t), evaluate_with_tangent(g, s), scales, t, s,
+                           ti, si);
 }
 
 void sort_result(IntersectionResult& r) {
@@ -218,7 +225,10 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
       result.status = IntersectStatus::work_cap_reached;  // many contacts: stop refining
       break;
     }
-    Intersection x = make_intersection(wf, wg, scales, r.t, r.s, c.t, c.s);
+    Intersection x =
+        r.f_at_t && r.g_at_s
+            ? make_intersection(*r.f_at_t, *r.g_at_s, scales, r.t, r.s, c.t, c.s)
+            : make_intersection(wf, wg, scales, r.t, r.s, c.t, c.s);
     if (in.t_free || in.s_free) x.kind = IntersectionKind::degenerate;
     // A curve handled as a point keeps the whole (or half) parameter interval: it is not
     // resolved then, whatever the other curve's box (Intersection's contract; finding F2).

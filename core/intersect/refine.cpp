@@ -32,7 +32,15 @@ struct Newton {
   /// f' and g' at the last iterate Newton's method started a step from (within the last
   /// step, at most 2^-40 when converged, of (t, s)).
   Point2 df{}, dg{};
+  /// f(t) and g(s) at the final (t, s), by the tangents from that iterate's points.
+  Point2 f_point{}, g_point{};
 };
+
+/// p + v h rounded once, p in double-double: the point a step h along the tangent v.
+Point2 moved(const CompensatedPoint& p, Point2 v, double h) noexcept {
+  return {dd::to_double(dd::add(p.x, dd::Real{v.x * h, 0.0})),
+          dd::to_double(dd::add(p.y, dd::Real{v.y * h, 0.0}))};
+}
 
 /// Newton on f(t) - g(s) = 0 (or Gauss-Newton on one free parameter).
 Newton transversal(const WorkingCurve& f, const WorkingCurve& g, const Contact& c, bool t_free,
@@ -67,8 +75,11 @@ Newton transversal(const WorkingCurve& f, const WorkingCurve& g, const Contact& 
       ds = cross(df, r) / det;
     }
     if (!(std::isfinite(dt) && std::isfinite(ds))) break;
+    const double t_before = n.t, s_before = n.s;
     n.t = clamp_to(c.t, n.t + dt);
     n.s = clamp_to(c.s, n.s + ds);
+    n.f_point = moved(a, df, n.t - t_before);
+    n.g_point = moved(b, dg, n.s - s_before);
     const double step = bernstein::max2(std::fabs(dt), std::fabs(ds));
     // At a well-conditioned root Newton's error after a step of size h is O(h^2): below
     // 2^-40 the new iterate is already exact to the last bit, and one more residual would
@@ -118,13 +129,25 @@ Newton tangency(const WorkingCurve& f, const WorkingCurve& g, const Contact& c, 
 
 Refinement refine_contact(const WorkingCurve& f, const WorkingCurve& g, const Contact& contact,
                           bool t_free, bool s_free, double tangent_sine) {
-  if (contact.exact) return {contact.exact_root.t, contact.exact_root.s, 0, false};
+  if (contact.exact) {
+    Refinement exact;
+    exact.t = contact.exact_root.t;
+    exact.s = contact.exact_root.s;
+    return exact;
+  }
   const Newton n = transversal(f, g, contact, t_free, s_free);
-  Refinement out{n.t, n.s, n.iterations, false};
+  Refinement out;
+  out.t = n.t;
+  out.s = n.s;
+  out.iterations = n.iterations;
   if (t_free || s_free) return out;
   // Converged: the last step moved (t, s) by at most 2^-40, which changes the angle by far
   // less than the threshold's precision.
-  if (n.converged && sine_between(n.df, n.dg) > tangent_sine) return out;
+  if (n.converged && sine_between(n.df, n.dg) > tangent_sine) {
+    out.f_at_t = PointAndTangent{n.f_point, n.df};
+    out.g_at_s = PointAndTangent{n.g_point, n.dg};
+    return out;
+  }
   const Newton tn = tangency(f, g, contact, n.t, n.s);
   out.iterations += tn.iterations;
   if (tn.converged) {

@@ -137,6 +137,30 @@ TEST(IntersectProperties, ReportedPointsAreOnBothCurves) {
   }
 }
 
+TEST(IntersectProperties, ReportedPointsAreWhereTheCurvesMeet) {
+  // The point is f(t) and g(s) (averaged), each within a few ulps of the scale: the exact
+  // curves are evaluated at the double estimates in rationals. (For a transversal root it
+  // comes from Newton's last compensated evaluation moved along the tangents by the last
+  // step, which has to be the step actually taken.)
+  for (const Pair& p : pairs()) {
+    SCOPED_TRACE(p.name);
+    double scale = 0.0;
+    for (const Curve* c : {&p.f, &p.g}) {
+      for (const Point2 q : c->points()) scale = std::fmax(scale, max_abs_coordinate(q));
+    }
+    for (const Intersection& x : intersect(p.f, p.g).intersections) {
+      if (x.kind != IntersectionKind::transversal) continue;
+      const test::RPoint2 a = test::exact_evaluate(test::exact_points(p.f), test::Rational(x.t));
+      const test::RPoint2 b = test::exact_evaluate(test::exact_points(p.g), test::Rational(x.s));
+      for (const test::RPoint2& on : {a, b}) {
+        const test::Rational dx = abs(on.x - test::Rational(x.point.x));
+        const test::Rational dy = abs(on.y - test::Rational(x.point.y));
+        EXPECT_LE((dx < dy ? dy : dx).to_double(), 8 * 0x1p-52 * scale) << x.t << " " << x.s;
+      }
+    }
+  }
+}
+
 TEST(IntersectProperties, TheThreeMethodsAgree) {
   for (const Pair& p : pairs()) {
     SCOPED_TRACE(p.name);
