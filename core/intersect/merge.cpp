@@ -66,6 +66,20 @@ void merge_unresolved(std::vector<Contact>& contacts) {
   }
 }
 
+/// A few resolved boxes, no two within `gap` of each other in both t and s: the sweep below
+/// would leave each one a contact of its own.
+bool all_resolved_and_apart(std::span<const SearchCandidate> candidates, double gap) noexcept {
+  if (candidates.size() > 8) return false;  // the sweep's sort beats the pairwise test
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (!candidates[i].resolved) return false;
+    for (std::size_t j = i + 1; j < candidates.size(); ++j) {
+      if (near(candidates[i].t, candidates[j].t, gap) && near(candidates[i].s, candidates[j].s, gap))
+        return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 std::vector<Contact> merge_candidates(std::span<const SearchCandidate> candidates,
@@ -74,6 +88,15 @@ std::vector<Contact> merge_candidates(std::span<const SearchCandidate> candidate
   if (candidates.empty() && exact_roots.empty()) return {};
   if (candidates.size() == 1 && exact_roots.empty()) {
     return {Contact{candidates[0].t, candidates[0].s, candidates[0].resolved, 1, false, {}}};
+  }
+  if (exact_roots.empty() && all_resolved_and_apart(candidates, gap)) {
+    // Two or three separate crossings, the usual case: each box is a contact.
+    std::vector<Contact> contacts;
+    contacts.reserve(candidates.size());
+    for (const SearchCandidate& c : candidates) contacts.push_back({c.t, c.s, true, 1, false, {}});
+    std::sort(contacts.begin(), contacts.end(),
+              [](const Contact& a, const Contact& b) { return a.t.lo < b.t.lo; });
+    return contacts;
   }
   std::vector<Item> items;
   items.reserve(candidates.size() + exact_roots.size());

@@ -98,37 +98,53 @@ WorkingFrame working_frame(const Curve& f, const Curve& g) {
   return frame;
 }
 
-WorkingCurve to_working(const Curve& curve, WorkingFrame frame) {
-  const std::size_t count = curve.points().size();
-  // Default-initialised, then sized with the entries unset (every one is written below):
-  // brace-initialising the aggregate made GCC zero all of its inline storage first, about
-  // 900 bytes per curve.
-  WorkingCurve w;
-  w.degree = curve.degree();
-  for (Coeffs* c : {&w.x, &w.y, &w.x_lo, &w.y_lo}) c->resize(count, Coeffs::Uninitialized{});
+namespace {
+
+/// The body of to_working for E control points (with_fixed_extent: unrolled for the low
+/// degrees), into w's arrays, already sized.
+template <std::size_t E>
+void fill_working(std::span<const Point2, E> points, WorkingFrame frame, WorkingCurve& w) noexcept {
   const PowerOfTwo scale(frame.exponent);
   double* const x_hi = w.x.data();
   double* const y_hi = w.y.data();
   double* const x_lo = w.x_lo.data();
   double* const y_lo = w.y_lo.data();
-  const Point2* const points = curve.points().data();
-  for (std::size_t i = 0; i < count; ++i) {
+  double magnitude = 0.0, frame_error = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
     const TwoTerm<double> x = two_sum(points[i].x, -frame.origin.x);
     const TwoTerm<double> y = two_sum(points[i].y, -frame.origin.y);
     x_hi[i] = scale.times(x.hi);
     y_hi[i] = scale.times(y.hi);
     x_lo[i] = scale.times(x.lo);
     y_lo[i] = scale.times(y.lo);
-    w.magnitude =
-        bernstein::max2(w.magnitude, bernstein::max2(std::fabs(x_hi[i]), std::fabs(y_hi[i])));
-    w.frame_error =
-        bernstein::max2(w.frame_error, bernstein::max2(std::fabs(x_lo[i]), std::fabs(y_lo[i])));
+    magnitude = bernstein::max2(magnitude, bernstein::max2(std::fabs(x_hi[i]), std::fabs(y_hi[i])));
+    frame_error =
+        bernstein::max2(frame_error, bernstein::max2(std::fabs(x_lo[i]), std::fabs(y_lo[i])));
   }
-  w.is_point = true;
-  for (std::size_t i = 1; i < count; ++i) {
-    w.is_point = w.is_point && x_hi[i] == x_hi[0] && y_hi[i] == y_hi[0] && x_lo[i] == x_lo[0] &&
-                 y_lo[i] == y_lo[0];
+  bool is_point = true;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    is_point = is_point && x_hi[i] == x_hi[0] && y_hi[i] == y_hi[0] && x_lo[i] == x_lo[0] &&
+               y_lo[i] == y_lo[0];
   }
+  w.magnitude = magnitude;
+  w.frame_error = frame_error;
+  w.is_point = is_point;
+}
+
+}  // namespace
+
+WorkingCurve to_working(const Curve& curve, WorkingFrame frame) {
+  const std::span<const Point2> points = curve.points();
+  const std::size_t count = points.size();
+  // Default-initialised, then sized with the entries unset (every one is written below):
+  // brace-initialising the aggregate made GCC zero all of its inline storage first, about
+  // 900 bytes per curve.
+  WorkingCurve w;
+  w.degree = curve.degree();
+  for (Coeffs* c : {&w.x, &w.y, &w.x_lo, &w.y_lo}) c->resize(count, Coeffs::Uninitialized{});
+  with_fixed_extent(count, [&](auto e) {
+    fill_working(std::span<const Point2, decltype(e)::value>(points.data(), count), frame, w);
+  });
   return w;
 }
 
