@@ -29,12 +29,13 @@ struct KrawczykResult {
 ///  - rho = ||B||_inf < 1 makes every matrix of J(X) regular, so F is injective on the convex
 ///    X (F(a) - F(b) is the mean of J along the segment, a matrix of J(X), times a - b):
 ///    at most one root in X;
-///  - a root in X lies in K(X, centre) (the mean value theorem), so K(X, centre) disjoint
-///    from X proves there is none;
+///  - a root in X lies in K(X, y0) for any y0 in X (the mean value theorem), so K(X, y0)
+///    disjoint from X proves there is none;
 ///  - K(Y, y) inside Y proves a root in Y (Brouwer's fixed point theorem on the continuous
 ///    map z -> z - C F(z), which sends Y into K(Y, y)).
-/// The tight box Y = y +- radius is centred on a Newton iterate y (from the centre of X, in
-/// doubles; y is rounded to a multiple of 2^-52 so that y +- radius is exact). F(y) is
+/// The tight box Y = y +- radius is centred on a Newton iterate y (in doubles, from y0: where
+/// the chords of the pieces cross, or the centre of X; y is rounded to a multiple of 2^-52 so
+/// that y +- radius is exact). F(y) is
 /// evaluated by de Casteljau in doubles on the whole working curves, with the bound
 /// frame_error + 3.02 n u magnitude per curve. Verdict one_root needs rho <= 1/2 and Y
 /// inside X; a root within `radius` of X's boundary, a tangency (J(X) nearly singular) or a
