@@ -51,7 +51,7 @@ struct SearchOutput {
 ///
 ///  - hybrid: clip the pieces in turn against each other's fat line with fat curves;
 ///    when a clip keeps more than half of its interval, halve both intervals (seed 003).
-///    Boxes narrower than 2^-5 first try the Krawczyk test (krawczyk.hpp), which proves a
+///    Boxes narrower than 2^-4 first try the Krawczyk test (krawczyk.hpp), which proves a
 ///    transversal crossing unique and returns it in a box of half the search width, or
 ///    proves the box empty, in one step.
 ///  - bezier-clipping: the same with the convex hull of the distance function; when a clip
