@@ -8,6 +8,7 @@
 #include "core/degree.hpp"
 #include "core/intersect/bernstein1d.hpp"
 #include "core/intersect/common_arc.hpp"
+#include "core/intersect/fixed_extent.hpp"
 #include "core/intersect/gauss_newton.hpp"
 #include "core/intersect/monomial.hpp"
 
@@ -168,9 +169,70 @@ double locate_on_curve(const WorkingCurve& f, PointDD p, double start, double co
   });
 }
 
+namespace {
+
+/// The top monomial coefficient a_n = Δ^n P_0 of one coordinate, by the same differences in
+/// the same order as monomial() (so bit for bit its a_n: C(n, n) = 1 there exactly), on the
+/// stack for the low degrees.
+template <std::size_t E>
+double top_forward_difference(std::span<double, E> d) noexcept {
+  for (std::size_t k = 1; k < d.size(); ++k) {
+    for (std::size_t i = 0; i + k < d.size(); ++i) d[i] = d[i + 1] - d[i];
+  }
+  return d[0];
+}
+
+double top_monomial_coefficient(const Coeffs& c) {
+  return with_fixed_extent(c.size(), [&](auto e) {
+    constexpr std::size_t E = decltype(e)::value;
+    if constexpr (E == std::dynamic_extent) {
+      return monomial(c)[c.size() - 1];
+    } else {
+      std::array<double, E> d;
+      std::copy(c.begin(), c.end(), d.begin());
+      return top_forward_difference(std::span<double, E>(d));
+    }
+  });
+}
+
+/// The necessary condition on the top coefficients of degree d (a_d of f, b_d of g, both
+/// coordinates): g's are beta^d times f's, to within what overlap_tolerance allows of the
+/// control points plus the conversion's rounding (coefficient_error), every quotient's error
+/// carried through. So (b_d)_other = r (a_d)_other with r = (b_d)_main / (a_d)_main, main
+/// the coordinate where f's is larger.
+bool top_coefficients_agree(const WorkingCurve& f, const WorkingCurve& g, Point2 a_d, Point2 b_d,
+                            int d) {
+  const int top_degree = std::max(f.degree, g.degree);
+  const double f_error = coefficient_error(f, d, top_degree);
+  const double g_error = coefficient_error(g, d, top_degree);
+  const bool use_x = std::fabs(a_d.x) >= std::fabs(a_d.y);
+  const double a = use_x ? a_d.x : a_d.y, a_other = use_x ? a_d.y : a_d.x;
+  const double b = use_x ? b_d.x : b_d.y, b_other = use_x ? b_d.y : b_d.x;
+  const double r = b / a;
+  const double r_rel_error = g_error / std::fabs(b) + f_error / std::fabs(a);
+  const double top_tol = 4 * (g_error + std::fabs(r) * (f_error + std::fabs(a_other) * r_rel_error));
+  return std::fabs(b_other - r * a_other) <= top_tol;
+}
+
+}  // namespace
+
 std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCurve& g) {
   std::vector<OverlapFinding> out;
   if (f.is_point || g.is_point) return out;
+  // The top coefficients' condition below, first, when both curves have their full degree
+  // n (true_degree's test at k = n): a few differences instead of the hull regions and the
+  // conversions, and for two random curves it fails.
+  if (f.degree == g.degree && f.degree >= 1) {
+    const int n = f.degree;
+    const Point2 a_n = {top_monomial_coefficient(f.x), top_monomial_coefficient(f.y)};
+    const Point2 b_n = {top_monomial_coefficient(g.x), top_monomial_coefficient(g.y)};
+    const auto full_degree = [n](Point2 top, const WorkingCurve& c) {
+      return bernstein::max2(std::fabs(top.x), std::fabs(top.y)) >
+             64 * binomial(n, n) * std::ldexp(1.0, n) * kU * c.magnitude;
+    };
+    if (full_degree(a_n, f) && full_degree(b_n, g) && !top_coefficients_agree(f, g, a_n, b_n, n))
+      return out;
+  }
   if (!ends_may_overlap(f, g)) return out;
   const Coeffs fx = monomial(f.x), fy = monomial(f.y);
   const Coeffs gx = monomial(g.x), gy = monomial(g.y);
@@ -191,14 +253,12 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
   // verification below looks at the overlapping pieces only, which cannot tell a short
   // piece of a coincident curve from a curve that leaves at a small angle (finding F19:
   // segments 2.4e-7 rad apart, which a tolerance of 2^-20 on these tests let through).
+  if (!top_coefficients_agree(f, g, {at(fx, d), at(fy, d)}, {at(gx, d), at(gy, d)}, d)) return out;
+  const double r = at(b, d) / at(a, d);
   const int top_degree = std::max(f.degree, g.degree);
   const auto f_error = [&](int k) { return coefficient_error(f, k, top_degree); };
   const auto g_error = [&](int k) { return coefficient_error(g, k, top_degree); };
-  const double r = at(b, d) / at(a, d);
   const double r_rel_error = g_error(d) / std::fabs(at(b, d)) + f_error(d) / std::fabs(at(a, d));
-  const double top_tol =
-      4 * (g_error(d) + std::fabs(r) * (f_error(d) + std::fabs(at(a_other, d)) * r_rel_error));
-  if (!(std::fabs(at(b_other, d) - r * at(a_other, d)) <= top_tol)) return out;
   std::vector<double> betas;
   if (d == 3) {
     betas.push_back(std::cbrt(r));
