@@ -9,6 +9,7 @@
 #include "core/intersect/bernstein1d.hpp"
 #include "core/intersect/coeffs.hpp"
 #include "core/intersect/fixed_extent.hpp"
+#include "core/power_of_two.hpp"
 
 namespace bezier::core {
 
@@ -54,7 +55,7 @@ Coeffs monomial_from(std::span<double, E> d) {
 [[nodiscard]] inline int true_degree(const Coeffs& ax, const Coeffs& ay, double magnitude) {
   const int n = static_cast<int>(ax.size()) - 1;
   for (int k = n; k >= 1; --k) {
-    const double tol = 64 * binomial(n, k) * std::ldexp(1.0, k) * bernstein::kU * magnitude;
+    const double tol = 64 * binomial(n, k) * power_of_two(k) * bernstein::kU * magnitude;
     const double v = bernstein::max2(std::fabs(ax[static_cast<std::size_t>(k)]),
                                      std::fabs(ay[static_cast<std::size_t>(k)]));
     if (v > tol) return k;

@@ -11,6 +11,7 @@
 #include "core/intersect/fixed_extent.hpp"
 #include "core/intersect/gauss_newton.hpp"
 #include "core/intersect/monomial.hpp"
+#include "core/power_of_two.hpp"
 
 namespace bezier::core {
 
@@ -26,7 +27,7 @@ constexpr double kShortestOverlap = 0x1p-30;
 /// conversion and of the working frame (as in true_degree).
 double coefficient_error(const WorkingCurve& c, int k, int degree) {
   const double points = overlap_tolerance(degree) + 64 * kU * c.magnitude + c.frame_error;
-  return binomial(c.degree, k) * std::ldexp(1.0, k) * points;
+  return binomial(c.degree, k) * power_of_two(k) * points;
 }
 
 struct Residual {
@@ -228,7 +229,7 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
     const Point2 b_n = {top_monomial_coefficient(g.x), top_monomial_coefficient(g.y)};
     const auto full_degree = [n](Point2 top, const WorkingCurve& c) {
       return bernstein::max2(std::fabs(top.x), std::fabs(top.y)) >
-             64 * binomial(n, n) * std::ldexp(1.0, n) * kU * c.magnitude;
+             64 * binomial(n, n) * power_of_two(n) * kU * c.magnitude;
     };
     if (full_degree(a_n, f) && full_degree(b_n, g) && !top_coefficients_agree(f, g, a_n, b_n, n))
       return out;

@@ -9,6 +9,7 @@
 #include "core/intersect/bernstein1d.hpp"
 #include "core/intersect/fixed_extent.hpp"
 #include "core/multiversion.hpp"
+#include "core/power_of_two.hpp"
 
 namespace bezier::core {
 
@@ -23,14 +24,6 @@ constexpr int kSmallestExponent = -1074;
 double grid_point(double x, double grid) noexcept {
   const double nearest = std::nearbyint(x / grid) * grid;
   return std::isfinite(nearest) ? nearest : std::trunc(x / grid) * grid;
-}
-
-/// 2^e, bit for bit std::ldexp(1.0, e), without the library call for normal results (every
-/// pair pays three of these before any test, and the library's ldexp costs tens of
-/// instructions).
-double power_of_two(int e) noexcept {
-  if (e < -1022 || e > 1023) return std::ldexp(1.0, e);
-  return std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52);
 }
 
 /// std::ilogb(x) for finite nonzero x, without the library call for normal x.
