@@ -123,6 +123,10 @@ TEST(IntersectProperties, AnAffineMapOfBothCurvesKeepsTheParameters) {
 }
 
 TEST(IntersectProperties, ReportedPointsAreOnBothCurves) {
+  // Exactly, in rationals, at the double estimates: |f(t) - g(s)| within a few ulps of the
+  // scale, and the point within as much of f(t) and of g(s). (For a transversal root the
+  // point comes from Newton's last compensated evaluation moved along the tangents by the
+  // last step, which has to be the step actually taken.)
   for (const Pair& p : pairs()) {
     SCOPED_TRACE(p.name);
     double scale = 0.0;
@@ -131,25 +135,7 @@ TEST(IntersectProperties, ReportedPointsAreOnBothCurves) {
     }
     for (const Intersection& x : intersect(p.f, p.g).intersections) {
       if (x.kind != IntersectionKind::transversal) continue;  // tangencies: see hard cases
-      // |f(t) - g(s)| exactly, for the double estimates: a few ulps of the scale.
       EXPECT_LE(test::exact_gap(p.f, p.g, x.t, x.s), 8 * 0x1p-52 * scale) << x.t << " " << x.s;
-    }
-  }
-}
-
-TEST(IntersectProperties, ReportedPointsAreWhereTheCurvesMeet) {
-  // The point is f(t) and g(s) (averaged), each within a few ulps of the scale: the exact
-  // curves are evaluated at the double estimates in rationals. (For a transversal root it
-  // comes from Newton's last compensated evaluation moved along the tangents by the last
-  // step, which has to be the step actually taken.)
-  for (const Pair& p : pairs()) {
-    SCOPED_TRACE(p.name);
-    double scale = 0.0;
-    for (const Curve* c : {&p.f, &p.g}) {
-      for (const Point2 q : c->points()) scale = std::fmax(scale, max_abs_coordinate(q));
-    }
-    for (const Intersection& x : intersect(p.f, p.g).intersections) {
-      if (x.kind != IntersectionKind::transversal) continue;
       const test::RPoint2 a = test::exact_evaluate(test::exact_points(p.f), test::Rational(x.t));
       const test::RPoint2 b = test::exact_evaluate(test::exact_points(p.g), test::Rational(x.s));
       for (const test::RPoint2& on : {a, b}) {
