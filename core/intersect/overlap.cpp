@@ -322,8 +322,10 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
       gap =
           bernstein::max2(gap, bernstein::max2(std::fabs(px[i] - qx[i]), std::fabs(py[i] - qy[i])));
     }
-    if (!(gap <= coincidence_tolerance(f, g))) continue;
+    const double tol = coincidence_tolerance(f, g);
+    if (!(gap <= tol)) continue;
     OverlapFinding found;
+    found.map_holds_beyond = extent(px, py) > tol || extent(qx, qy) > tol;
     found.map.beta = (ends_t[1] - ends_t[0]) / (ends_s[1] - ends_s[0]);
     found.map.alpha = ends_t[0] - found.map.beta * ends_s[0];
     found.overlap.t_interval = {bernstein::min2(ends_t[0], ends_t[1]),
@@ -372,9 +374,15 @@ bool injective_on(std::span<const double> x, std::span<const double> y, double m
   return false;
 }
 
-bool covered_by_overlap(const WorkingCurve& f, const CoincidenceMap& map, ParamInterval t,
+bool covered_by_overlap(const WorkingCurve& f, const OverlapFinding& o, ParamInterval t,
                         ParamInterval s) {
   constexpr double kSlack = 0x1p-40;
+  const auto inside = [](ParamInterval box, ParamInterval of) {
+    return of.lo - kSlack <= box.lo && box.hi <= of.hi + kSlack;
+  };
+  if (!o.map_holds_beyond && !(inside(t, o.overlap.t_interval) && inside(s, o.overlap.s_interval)))
+    return false;
+  const CoincidenceMap& map = o.map;
   const double p0 = map.alpha + map.beta * s.lo, p1 = map.alpha + map.beta * s.hi;
   const double lo = bernstein::min2(p0, p1), hi = bernstein::max2(p0, p1);
   if (hi < t.lo - kSlack || lo > t.hi + kSlack) return false;

@@ -25,6 +25,10 @@ struct OverlapFinding {
   Overlap overlap;
   CoincidenceMap map;
   std::shared_ptr<const CommonArc> arc;
+  /// False when both overlapping pieces lie within the coincidence tolerance of a point
+  /// (a tiny curve against a huge one): the map was verified on nothing more than that
+  /// point, so it says nothing about the rest of the square (finding F28).
+  bool map_holds_beyond = true;
 };
 
 /// A necessary condition for two curves to overlap, far cheaper than any overlap test:
@@ -79,12 +83,14 @@ struct OverlapFinding {
                                 double magnitude, double lo, double hi);
 
 /// True when every intersection inside the box t x s lies on the overlap's diagonal
-/// t = alpha + beta s, so the box holds nothing but overlap points and can be dropped: the
-/// box meets the diagonal, and f is injective on the hull U of t and alpha + beta s (its
-/// hodograph's control vectors on U lie in an open half-plane, so f is strictly monotone
-/// along a direction). Then f(t) = g(s) = f(alpha + beta s) forces t = alpha + beta s.
-/// Near a cusp of f the test fails and the box is kept (the search subdivides it further).
-[[nodiscard]] bool covered_by_overlap(const WorkingCurve& f, const CoincidenceMap& map,
+/// t = alpha + beta s (o.map), so the box holds nothing but overlap points and can be
+/// dropped: the box meets the diagonal, and f is injective on the hull U of t and
+/// alpha + beta s (its hodograph's control vectors on U lie in an open half-plane, so f is
+/// strictly monotone along a direction). Then f(t) = g(s) = f(alpha + beta s) forces
+/// t = alpha + beta s. Near a cusp of f the test fails and the box is kept (the search
+/// subdivides it further). An overlap whose map does not hold beyond it covers only boxes
+/// inside its own intervals.
+[[nodiscard]] bool covered_by_overlap(const WorkingCurve& f, const OverlapFinding& o,
                                       ParamInterval t, ParamInterval s);
 
 /// True when (t, s) lies on the overlap's diagonal to within 2^-30 in t.

@@ -214,7 +214,7 @@ class Searcher {
         if (o.arc.get() == tested) continue;
         tested = o.arc.get();
         if (covered_by_arc(*o.arc, b.t, b.s)) return true;
-      } else if (covered_by_overlap(*in_.f, o.map, b.t, b.s)) {
+      } else if (covered_by_overlap(*in_.f, o, b.t, b.s)) {
         return true;
       }
     }
