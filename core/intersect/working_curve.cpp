@@ -22,6 +22,10 @@ constexpr int kSmallestExponent = -1074;
 /// The multiple of `grid` nearest to x, or the one next to it towards zero when the nearest
 /// is beyond the largest double (x within half a grid step of it, finding F13).
 double grid_point(double x, double grid) noexcept {
+  // From 2^53 grid steps on, x's ulp is a multiple of the grid, and so is x; x / grid may
+  // then even overflow (a curve 2^-1030 tall at x = -7: the origin came out infinite, and the
+  // frame's exponent overflowed an int, finding F29).
+  if (!(std::fabs(x) < grid * 0x1p53)) return x;
   const double nearest = std::nearbyint(x / grid) * grid;
   return std::isfinite(nearest) ? nearest : std::trunc(x / grid) * grid;
 }

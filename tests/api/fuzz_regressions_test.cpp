@@ -536,6 +536,33 @@ TEST(FuzzRegressions, F28_AnOverlapWithinRoundingOfAPointHidesNoCrossing) {
   }
 }
 
+TEST(FuzzRegressions, F29_ATinyCurveFarFromTheOriginHasAFiniteFrame) {
+  // Two vertical segments at x = -7, about 2^-1030 long near y = 2^-1007: the working frame's
+  // grid (a sixteenth of the extent) is so fine that -7 / grid overflowed, the origin came
+  // out infinite and the frame's exponent overflowed an int (UBSan; F29). They lie on one
+  // line and overlap where their y ranges do: f from t = 0 to where it reaches g's end, g
+  // from where it reaches f's start to s = 1 (the fractions computed here in rationals).
+  using bezier::test::Rational;
+  const double y1 = 0x1.9010901270001p-1007, y2 = 0x1.9010c01012701p-1007;
+  const double y3 = 0x1.901090126fffep-1007, y4 = 0x1.9010c0101004p-1007;
+  const Curve f({{-7.0, y1}, {-7.0, y2}});
+  const Curve g({{-7.0, y3}, {-7.0, y4}});
+  const double t_hi = ((Rational(y4) - Rational(y1)) / (Rational(y2) - Rational(y1))).to_double();
+  const double s_lo = ((Rational(y1) - Rational(y3)) / (Rational(y4) - Rational(y3))).to_double();
+  for (const bool swapped : {false, true}) {
+    const IntersectionResult r = swapped ? intersect(g, f) : intersect(f, g);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    EXPECT_TRUE(r.intersections.empty());
+    ASSERT_EQ(r.overlaps.size(), 1u);
+    const ParamInterval t = swapped ? r.overlaps[0].s_interval : r.overlaps[0].t_interval;
+    const ParamInterval s = swapped ? r.overlaps[0].t_interval : r.overlaps[0].s_interval;
+    EXPECT_EQ(t.lo, 0.0);
+    EXPECT_NEAR(t.hi, t_hi, 1e-15);
+    EXPECT_NEAR(s.lo, s_lo, 1e-15);
+    EXPECT_EQ(s.hi, 1.0);
+  }
+}
+
 // F21, found by classify_fuzzer: a loop whose double point sits within two ulps of t = 1
 // on a cubic with coordinates 2^250 apart. The exact signs say 0 < t1 < t2 < 1; t1 rounded to
 // 1 and t2 was clamped below 1, so the pair came out reversed (t1 = 1 > t2). The type is the
