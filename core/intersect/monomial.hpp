@@ -49,16 +49,21 @@ Coeffs monomial_from(std::span<double, E> d) {
   });
 }
 
-/// The largest k whose monomial coefficient (of either coordinate) is above the rounding of
-/// the conversion (C(n,k) 2^k u magnitude, with a safety factor of 64): a degree-elevated
-/// curve, rounded to doubles, has nothing else above its true degree.
+/// Whether monomial coefficient k = (ax_k, ay_k) of a degree-n curve is above the rounding
+/// of the conversion (C(n,k) 2^k u magnitude, with a safety factor of 64).
+[[nodiscard]] inline bool significant_coefficient(int n, int k, double ax_k, double ay_k,
+                                                  double magnitude) {
+  const double tol = 64 * binomial(n, k) * power_of_two(k) * bernstein::kU * magnitude;
+  return bernstein::max2(std::fabs(ax_k), std::fabs(ay_k)) > tol;
+}
+
+/// The largest k whose monomial coefficient is significant: a degree-elevated curve, rounded
+/// to doubles, has nothing else above its true degree.
 [[nodiscard]] inline int true_degree(const Coeffs& ax, const Coeffs& ay, double magnitude) {
   const int n = static_cast<int>(ax.size()) - 1;
   for (int k = n; k >= 1; --k) {
-    const double tol = 64 * binomial(n, k) * power_of_two(k) * bernstein::kU * magnitude;
-    const double v = bernstein::max2(std::fabs(ax[static_cast<std::size_t>(k)]),
-                                     std::fabs(ay[static_cast<std::size_t>(k)]));
-    if (v > tol) return k;
+    const auto i = static_cast<std::size_t>(k);
+    if (significant_coefficient(n, k, ax[i], ay[i], magnitude)) return k;
   }
   return 0;
 }

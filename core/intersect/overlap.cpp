@@ -227,11 +227,9 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
     const int n = f.degree;
     const Point2 a_n = {top_monomial_coefficient(f.x), top_monomial_coefficient(f.y)};
     const Point2 b_n = {top_monomial_coefficient(g.x), top_monomial_coefficient(g.y)};
-    const auto full_degree = [n](Point2 top, const WorkingCurve& c) {
-      return bernstein::max2(std::fabs(top.x), std::fabs(top.y)) >
-             64 * binomial(n, n) * power_of_two(n) * kU * c.magnitude;
-    };
-    if (full_degree(a_n, f) && full_degree(b_n, g) && !top_coefficients_agree(f, g, a_n, b_n, n))
+    if (significant_coefficient(n, n, a_n.x, a_n.y, f.magnitude) &&
+        significant_coefficient(n, n, b_n.x, b_n.y, g.magnitude) &&
+        !top_coefficients_agree(f, g, a_n, b_n, n))
       return out;
   }
   if (!ends_may_overlap(f, g)) return out;
