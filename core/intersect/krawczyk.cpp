@@ -115,20 +115,19 @@ double snap(double t) noexcept {
 /// 3.64), or the centre when they do not cross in the box.
 void newton_start(const Piece& f_piece, const Piece& g_piece, ParamInterval t, ParamInterval s,
                   double y[2]) noexcept {
-  y[0] = snap(t.lo + (t.hi - t.lo) / 2);
-  y[1] = snap(s.lo + (s.hi - s.lo) / 2);
   const double fx = f_piece.x.back() - f_piece.x[0], fy = f_piece.y.back() - f_piece.y[0];
   const double gx = g_piece.x.back() - g_piece.x[0], gy = g_piece.y.back() - g_piece.y[0];
   const double rx = g_piece.x[0] - f_piece.x[0], ry = g_piece.y[0] - f_piece.y[0];
   // f0 + u F = g0 + v G by Cramer's rule.
   const double det = fx * gy - fy * gx;
   const double u = (rx * gy - ry * gx) / det, v = (rx * fy - ry * fx) / det;
-  if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) return;  // NaN too
-  const double yt = snap(t.lo + (t.hi - t.lo) * u), ys = snap(s.lo + (s.hi - s.lo) * v);
-  if (t.lo <= yt && yt <= t.hi && s.lo <= ys && ys <= s.hi) {
-    y[0] = yt;
-    y[1] = ys;
+  if (u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0) {  // false for NaN too
+    y[0] = snap(t.lo + (t.hi - t.lo) * u);
+    y[1] = snap(s.lo + (s.hi - s.lo) * v);
+    if (t.lo <= y[0] && y[0] <= t.hi && s.lo <= y[1] && y[1] <= s.hi) return;
   }
+  y[0] = snap(t.lo + (t.hi - t.lo) / 2);
+  y[1] = snap(s.lo + (s.hi - s.lo) / 2);
 }
 
 }  // namespace

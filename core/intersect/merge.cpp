@@ -66,9 +66,10 @@ void merge_unresolved(std::vector<Contact>& contacts) {
   }
 }
 
-/// A few resolved boxes, no two within `gap` of each other in both t and s: the sweep below
-/// would leave each one a contact of its own.
-bool all_resolved_and_apart(std::span<const SearchCandidate> candidates, double gap) noexcept {
+/// One box, or a few resolved ones no two within `gap` of each other in both t and s: the
+/// sweep below would leave each one a contact of its own.
+bool each_its_own_contact(std::span<const SearchCandidate> candidates, double gap) noexcept {
+  if (candidates.size() == 1) return true;
   if (candidates.size() > 8) return false;  // the sweep's sort beats the pairwise test
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (!candidates[i].resolved) return false;
@@ -86,14 +87,12 @@ std::vector<Contact> merge_candidates(std::span<const SearchCandidate> candidate
                                       std::span<const ExactRoot> exact_roots, double gap) {
   // The common cases, without the sweep's bookkeeping.
   if (candidates.empty() && exact_roots.empty()) return {};
-  if (candidates.size() == 1 && exact_roots.empty()) {
-    return {Contact{candidates[0].t, candidates[0].s, candidates[0].resolved, 1, false, {}}};
-  }
-  if (exact_roots.empty() && all_resolved_and_apart(candidates, gap)) {
-    // Two or three separate crossings, the usual case: each box is a contact.
+  if (exact_roots.empty() && each_its_own_contact(candidates, gap)) {
+    // One crossing, or two or three separate ones: the usual cases.
     std::vector<Contact> contacts;
     contacts.reserve(candidates.size());
-    for (const SearchCandidate& c : candidates) contacts.push_back({c.t, c.s, true, 1, false, {}});
+    for (const SearchCandidate& c : candidates)
+      contacts.push_back({c.t, c.s, c.resolved, 1, false, {}});
     std::sort(contacts.begin(), contacts.end(),
               [](const Contact& a, const Contact& b) { return a.t.lo < b.t.lo; });
     return contacts;

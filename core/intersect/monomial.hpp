@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -45,6 +46,35 @@ Coeffs monomial_from(std::span<double, E> d) {
       std::array<double, E> d;
       std::copy(c.begin(), c.end(), d.begin());
       return monomial_detail::monomial_from(std::span<double, E>(d));
+    }
+  });
+}
+
+namespace monomial_detail {
+
+/// Δ^n of d, in place (the loop of monomial_from without the coefficients below n).
+template <std::size_t E>
+double top_forward_difference(std::span<double, E> d) noexcept {
+  for (std::size_t k = 1; k < d.size(); ++k) {
+    for (std::size_t i = 0; i + k < d.size(); ++i) d[i] = d[i + 1] - d[i];
+  }
+  return d[0];
+}
+
+}  // namespace monomial_detail
+
+/// The top monomial coefficient a_n = Δ^n P_0 of one coordinate, by the same differences in
+/// the same order as monomial() (so bit for bit its a_n: C(n, n) = 1 there exactly), on the
+/// stack for the low degrees.
+[[nodiscard]] inline double top_monomial_coefficient(const Coeffs& c) {
+  return with_fixed_extent(c.size(), [&](auto e) {
+    constexpr std::size_t E = decltype(e)::value;
+    if constexpr (E == std::dynamic_extent) {
+      return monomial(c)[c.size() - 1];
+    } else {
+      std::array<double, E> d;
+      std::copy(c.begin(), c.end(), d.begin());
+      return monomial_detail::top_forward_difference(std::span<double, E>(d));
     }
   });
 }

@@ -8,7 +8,6 @@
 #include "core/degree.hpp"
 #include "core/intersect/bernstein1d.hpp"
 #include "core/intersect/common_arc.hpp"
-#include "core/intersect/fixed_extent.hpp"
 #include "core/intersect/gauss_newton.hpp"
 #include "core/intersect/monomial.hpp"
 #include "core/power_of_two.hpp"
@@ -171,30 +170,6 @@ double locate_on_curve(const WorkingCurve& f, PointDD p, double start, double co
 }
 
 namespace {
-
-/// The top monomial coefficient a_n = Δ^n P_0 of one coordinate, by the same differences in
-/// the same order as monomial() (so bit for bit its a_n: C(n, n) = 1 there exactly), on the
-/// stack for the low degrees.
-template <std::size_t E>
-double top_forward_difference(std::span<double, E> d) noexcept {
-  for (std::size_t k = 1; k < d.size(); ++k) {
-    for (std::size_t i = 0; i + k < d.size(); ++i) d[i] = d[i + 1] - d[i];
-  }
-  return d[0];
-}
-
-double top_monomial_coefficient(const Coeffs& c) {
-  return with_fixed_extent(c.size(), [&](auto e) {
-    constexpr std::size_t E = decltype(e)::value;
-    if constexpr (E == std::dynamic_extent) {
-      return monomial(c)[c.size() - 1];
-    } else {
-      std::array<double, E> d;
-      std::copy(c.begin(), c.end(), d.begin());
-      return top_forward_difference(std::span<double, E>(d));
-    }
-  });
-}
 
 /// The necessary condition on the top coefficients of degree d (a_d of f, b_d of g, both
 /// coordinates): g's are beta^d times f's, to within what overlap_tolerance allows of the
