@@ -13,7 +13,7 @@ namespace bezier::core {
 ///
 /// Method: the boundary of the set is among the real roots of p(t) = lo and p(t) = hi.
 ///  - p monotone (monotone Bernstein coefficients, the usual case once pieces are small):
-///    one root per level, by Newton's method from where the control polygon crosses it,
+///    one root per level, by Halley's method from where the control polygon crosses it,
 ///    widened by 2^-32 and certified by one value of p beyond each end (a monotone p
 ///    that is outside the band there stays outside up to the end of [0, 1]).
 ///  - otherwise, degree <= 2: the roots in closed form (linear; the cancellation-free

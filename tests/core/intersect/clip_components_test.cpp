@@ -199,6 +199,27 @@ TEST(ClipComponents, KeptIntervalOfAMonotoneCubicIsTight) {
   EXPECT_LT(kept->hi, r2_lo + 1e-8);
 }
 
+TEST(ClipComponents, KeptIntervalOfAMonotoneCubicFlatAtOneEndIsTight) {
+  // p(t) = 3 t^3 (Bernstein 0, 0, 0, 3) is monotone but flat at 0: its control polygon
+  // crosses the level 1 at t = 7/9 and the level 2 at 8/9, while the roots are (1/3)^(1/3)
+  // = 0.693 and (2/3)^(1/3) = 0.874 (bracketed here in rationals), 0.085 and 0.015 away.
+  // The root finder must still reach the 2^-32 pad from there and certify it, or the
+  // answer falls back to the looser hull iteration: within 1e-8 of [r1, r2] either way.
+  const std::vector<double> p = {0.0, 0.0, 0.0, 3.0};
+  const auto [r1_lo, r1_hi] = exact_root(p, Rational(1), 0.0, 1.0);
+  const auto [r2_lo, r2_hi] = exact_root(p, Rational(2), 0.0, 1.0);
+  for (const double sign : {1.0, -1.0}) {
+    // The mirror image -p with the band [-2, -1]: the decreasing case, the same interval.
+    const std::vector<double> q = {0.0, 0.0, 0.0, 3.0 * sign};
+    const auto kept = sign > 0 ? kept_interval(q, 1.0, 2.0) : kept_interval(q, -2.0, -1.0);
+    ASSERT_TRUE(kept.has_value());
+    EXPECT_LE(kept->lo, r1_lo);
+    EXPECT_GE(kept->hi, r2_hi);
+    EXPECT_GT(kept->lo, r1_hi - 1e-8) << "sign " << sign;
+    EXPECT_LT(kept->hi, r2_lo + 1e-8) << "sign " << sign;
+  }
+}
+
 TEST(ClipComponents, KeptIntervalOfANonMonotoneCubicIsWithinItsConvexHullClip) {
   // p(t) = 6t(1 - t)(1 - 2t) (Bernstein 0, 2, -2, 0) rises to a maximum near t = 0.21 and
   // falls to a minimum near 0.79. {p >= 1/5} is [r1, r2] with r1, r2 the roots of p = 1/5
