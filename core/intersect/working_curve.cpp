@@ -223,8 +223,8 @@ PointAndTangent evaluate_with_tangent(const WorkingCurve& f, double t) {
           return std::nullopt;
         } else {
           double xs[E], ys[E];
-          std::copy(f.x.begin(), f.x.end(), xs);
-          std::copy(f.y.begin(), f.y.end(), ys);
+          std::copy_n(f.x.begin(), E, xs);  // E, not f.x.size(): no memcpy call
+          std::copy_n(f.y.begin(), E, ys);
           return point_and_tangent_in(xs, ys, E - 1, t);
         }
       });
