@@ -35,10 +35,10 @@ struct PointAndDerivative {
   double x, y, dx, dy;
 };
 
-/// de Casteljau down to the last level in the buffers x, y (n + 1 entries each); called with a
-/// constant n by casteljau_fixed, where the loops unroll.
-inline PointAndDerivative casteljau_levels(const double* xs, const double* ys, std::size_t n,
-                                           double t, double* x, double* y) noexcept {
+/// de Casteljau down to the last level in the buffers x, y (n + 1 entries each), for the
+/// degrees above 3.
+PointAndDerivative casteljau_levels(const double* xs, const double* ys, std::size_t n, double t,
+                                    double* x, double* y) noexcept {
   for (std::size_t i = 0; i <= n; ++i) {
     x[i] = xs[i];
     y[i] = ys[i];
@@ -54,10 +54,14 @@ inline PointAndDerivative casteljau_levels(const double* xs, const double* ys, s
           dn * (y[1] - y[0])};
 }
 
+/// The same for N + 1 coefficients fixed at compile time (the same operations).
 template <std::size_t N>
 PointAndDerivative casteljau_fixed(const double* xs, const double* ys, double t) noexcept {
-  double x[N + 1], y[N + 1];
-  return casteljau_levels(xs, ys, N, t, x, y);
+  const auto x = bernstein::last_casteljau_level(std::span<const double, N + 1>(xs, N + 1), t);
+  const auto y = bernstein::last_casteljau_level(std::span<const double, N + 1>(ys, N + 1), t);
+  const double dn = static_cast<double>(N);
+  return {bernstein::lerp(x[0], x[1], t), bernstein::lerp(y[0], y[1], t), dn * (x[1] - x[0]),
+          dn * (y[1] - y[0])};
 }
 
 PointAndDerivative casteljau(const WorkingCurve& c, double t) noexcept {
