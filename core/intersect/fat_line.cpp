@@ -82,7 +82,8 @@ FatLine fat_line_of(std::span<const double, E> gx, std::span<const double, E> gy
     // The exact end distances are within e of 0 (the line passes through the computed end
     // points), which adds e; the interior ones are within e of d_j, scaled by c <= 1.
     const double d1 = distance(1), d2 = distance(2);
-    const bool opposite = (d1 - e > 0 && d2 + e < 0) || (d1 + e < 0 && d2 - e > 0);
+    // Bitwise, not short-circuit: a select instead of branches the data decides.
+    const bool opposite = ((d1 - e > 0) & (d2 + e < 0)) | ((d1 + e < 0) & (d2 - e > 0));
     const double c = opposite ? 4.0 / 9.0 : 0.75;
     lo = bernstein::min2(bernstein::min2(lo, c * (d1 - e)), c * (d2 - e));
     hi = bernstein::max2(bernstein::max2(hi, c * (d1 + e)), c * (d2 + e));
