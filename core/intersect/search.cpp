@@ -343,8 +343,9 @@ class Searcher {
       }
       ParamInterval& domain = clip_s ? box.s : box.t;
       const ParamInterval next = map_to_domain(domain, *clip.kept);
-      const double fraction = next.width() / domain.width();
-      if (fraction > threshold) {
+      // Kept more than the threshold's fraction of the domain? (A product, not the quotient:
+      // the division's latency held up this hard-to-predict branch.)
+      if (next.width() > threshold * domain.width()) {
         // Keep what the clip removed (it is sound), then decide how to go on.
         if (next.width() < domain.width()) {
           domain = next;
