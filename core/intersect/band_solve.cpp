@@ -212,13 +212,18 @@ Ends end_pieces(std::span<const double, E> p, double a, double b) noexcept {
 /// de Casteljau value of a degree-k <= 3 polynomial.
 template <std::size_t E>
 double value(std::span<const double, E> p, double t) noexcept {
-  const int k = static_cast<int>(p.size()) - 1;
-  double row[4] = {};  // (GCC cannot see that p is never empty for a dynamic E)
-  for (int i = 0; i <= k; ++i) row[i] = p[i];
-  for (int level = k; level > 0; --level) {
-    for (int i = 0; i < level; ++i) row[i] = bernstein::lerp(row[i], row[i + 1], t);
+  if constexpr (E != std::dynamic_extent && E >= 2) {
+    const std::array<double, 2> last = bernstein::last_casteljau_level(p, t);
+    return bernstein::lerp(last[0], last[1], t);
+  } else {
+    const int k = static_cast<int>(p.size()) - 1;
+    double row[4] = {};  // (GCC cannot see that p is never empty for a dynamic E)
+    for (int i = 0; i <= k; ++i) row[i] = p[i];
+    for (int level = k; level > 0; --level) {
+      for (int i = 0; i < level; ++i) row[i] = bernstein::lerp(row[i], row[i + 1], t);
+    }
+    return row[0];
   }
-  return row[0];
 }
 
 /// Where the monotone p (power coefficients c) crosses level[0] and level[1] in [0, 1], for
