@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -257,6 +258,41 @@ TEST(ClipComponents, HullClipIsTheConvexHullOnTheBand) {
   EXPECT_FALSE(bernstein::hull_clip(c, 1.5, 2.0).has_value());
   const double all_in[] = {0.1, 0.2};
   EXPECT_EQ(*bernstein::hull_clip(all_in, 0.0, 1.0), (ParamInterval{0.0, 1.0}));
+}
+
+TEST(ClipComponents, HullClipMatchesTheHullComputedInRationals) {
+  // hull_clip tests only the segments and the level each end of the polygon needs; the
+  // reference here takes every control point in the band and every segment's crossing of
+  // both levels, in exact rationals. Degrees 1-7; some coefficients put exactly on a level,
+  // and bands inside, below, above and across the coefficients. The clip must contain the
+  // exact hull and exceed it by at most its pad (8 u) plus the rounding of a crossing.
+  test::Mulberry32 rng(11);
+  const Rational slack(16 * bernstein::kU);
+  int empty = 0, clipped = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int k = 1 + trial % 7;
+    std::vector<double> p(static_cast<std::size_t>(k) + 1);
+    for (double& v : p) v = rng.uniform(-1, 1);
+    double lo = rng.uniform(-1.2, 1.2), hi = lo + rng.next() * 0.6;
+    if (trial % 5 == 0) p[rng.next() < 0.5 ? 0 : static_cast<std::size_t>(k)] = lo;
+    if (trial % 7 == 0) p[static_cast<std::size_t>(k) / 2] = hi;
+    const auto clip = bernstein::hull_clip(p, lo, hi);
+    const bool all_below = std::all_of(p.begin(), p.end(), [&](double v) { return v < lo; });
+    const bool all_above = std::all_of(p.begin(), p.end(), [&](double v) { return v > hi; });
+    ASSERT_EQ(clip.has_value(), !(all_below || all_above)) << "trial " << trial;
+    if (!clip) {
+      ++empty;
+      continue;
+    }
+    const auto [exact_lo, exact_hi] = exact_hull_clip(p, Rational(lo), Rational(hi));
+    EXPECT_LE(Rational(clip->lo), exact_lo) << "trial " << trial;
+    EXPECT_GE(Rational(clip->hi), exact_hi) << "trial " << trial;
+    EXPECT_GE(Rational(clip->lo), exact_lo - slack) << "trial " << trial;
+    EXPECT_LE(Rational(clip->hi), exact_hi + slack) << "trial " << trial;
+    clipped += clip->lo > 0.0 || clip->hi < 1.0;
+  }
+  EXPECT_GT(empty, 100);
+  EXPECT_GT(clipped, 1000);
 }
 
 TEST(ClipComponents, MapToDomainRoundsOutward) {
