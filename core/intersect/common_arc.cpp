@@ -349,10 +349,10 @@ double preimage(const Coeffs& c, ParamInterval piece, double u) {
 
 /// True when f on [t0, t1] lies on g: at 2 (m + n) + 1 points of it, f's point projected
 /// onto g (Gauss-Newton from the matching point q^-1(p(t)) of g's piece, within about 1e-9
-/// of it) is within coincidence_tolerance of g (which covers the rounding of evaluations
-/// in doubles, a few n u of the magnitude).
-bool piece_lies_on(const WorkingCurve& f, const WorkingCurve& g, const CommonArc& arc, double t0,
-                   double t1, ParamInterval s_piece) {
+/// of it; p and q: f's and g's factors) is within coincidence_tolerance of g (which covers
+/// the rounding of evaluations in doubles, a few n u of the magnitude).
+bool piece_lies_on(const WorkingCurve& f, const WorkingCurve& g, const Coeffs& p, const Coeffs& q,
+                   double t0, double t1, ParamInterval s_piece) {
   const double floor = coincidence_tolerance(f, g);
   const int samples = 2 * (f.degree + g.degree) + 1;
   for (int i = 0; i < samples; ++i) {
@@ -362,7 +362,7 @@ bool piece_lies_on(const WorkingCurve& f, const WorkingCurve& g, const CommonArc
       const PointAndTangent e = evaluate_with_tangent(g, s);
       return ResidualAndSlope{e.point - pt, e.tangent};
     };
-    const double s = gauss_newton(preimage(arc.q, s_piece, value(arc.p, t)), 8, 0x1p-50, on_g);
+    const double s = gauss_newton(preimage(q, s_piece, value(p, t)), 8, 0x1p-50, on_g);
     const Point2 r = on_g(s).r;
     if (!(std::fabs(r.x) <= floor && std::fabs(r.y) <= floor)) return false;
   }
@@ -372,7 +372,8 @@ bool piece_lies_on(const WorkingCurve& f, const WorkingCurve& g, const CommonArc
 /// The overlaps of the pieces of f (t) and g (s) on which p and q are monotone; false when
 /// a piece long enough to report fails its verification.
 bool arc_pieces(const WorkingCurve& f, const WorkingCurve& g, CommonArc& arc,
-                std::vector<Overlap>& out, bool later_pieces_only = false) {
+                std::vector<Overlap>& out, bool later_pieces_only = false,
+                ParamInterval t_window = {0.0, 1.0}, ParamInterval s_window = {0.0, 1.0}) {
   const std::vector<ParamInterval> t_pieces = monotone_pieces(arc.p);
   const std::vector<ParamInterval> s_pieces = monotone_pieces(arc.q);
   for (std::size_t i = 0; i < t_pieces.size(); ++i) {
@@ -414,13 +415,24 @@ bool arc_pieces(const WorkingCurve& f, const WorkingCurve& g, CommonArc& arc,
                                   bernstein::max2(ends_t[0], ends_t[1])};
       const ParamInterval s_range{bernstein::min2(ends_s[0], ends_s[1]),
                                   bernstein::max2(ends_s[0], ends_s[1])};
+      const auto meets = [](ParamInterval a, ParamInterval b, double pad) {
+        return a.lo - pad <= b.hi && b.lo <= a.hi + pad;
+      };
+      if (!meets(t_range, t_window, kShortestOverlap) || !meets(s_range, s_window, kShortestOverlap))
+        continue;
       if (!(u_hi - u_lo > kArcSlack) || !(t_range.width() > kShortestOverlap) ||
           !(s_range.width() > kShortestOverlap)) {
         arc.searched.push_back({{t_range.lo - kShortestOverlap, t_range.hi + kShortestOverlap},
                                 {s_range.lo - kShortestOverlap, s_range.hi + kShortestOverlap}});
         continue;
       }
-      if (!piece_lies_on(f, g, arc, t_range.lo, t_range.hi, J)) return false;
+      // Both ways: a factor that only nearly fits (a curve on a line, taken for a quadratic
+      // through a quadratic within the tolerance of the frame's magnitude) misplaces the
+      // ends, and only the other curve's points show it (finding F30: f's piece began at
+      // its end point, 8e-8 of the 0.4-long g away from g, in one order only).
+      if (!piece_lies_on(f, g, arc.p, arc.q, t_range.lo, t_range.hi, J) ||
+          !piece_lies_on(g, f, arc.q, arc.p, s_range.lo, s_range.hi, I))
+        return false;
       Overlap o;
       o.t_interval = t_range;
       o.s_interval = s_range;
@@ -476,7 +488,8 @@ bool same_coefficients(const WorkingCurve& f, const WorkingCurve& g) {
 
 }  // namespace
 
-std::vector<OverlapFinding> find_arc_overlaps(const WorkingCurve& f, const WorkingCurve& g) {
+std::vector<OverlapFinding> find_arc_overlaps(const WorkingCurve& f, const WorkingCurve& g,
+                                              ParamInterval t_window, ParamInterval s_window) {
   if (f.is_point || g.is_point || (f.degree < 4 && g.degree < 4)) return {};
   // A curve against itself (one-curve /intersections certifies its pairs so) is factored once.
   const std::optional<Factorisation> ff = factorise(f);
@@ -520,7 +533,7 @@ std::vector<OverlapFinding> find_arc_overlaps(const WorkingCurve& f, const Worki
     arc->q = b.p;
     for (double& v : arc->q.span()) v = alpha + beta * v;
     std::vector<Overlap> overlaps;
-    if (!arc_pieces(f, g, *arc, overlaps) || overlaps.empty()) continue;
+    if (!arc_pieces(f, g, *arc, overlaps, false, t_window, s_window) || overlaps.empty()) continue;
     return findings(std::move(arc), overlaps);
   }
   return {};

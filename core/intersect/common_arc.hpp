@@ -50,11 +50,16 @@ struct CommonArc {
 /// (OverlapFinding::arc set, shared by all). Every overlap's ends are pinned down by
 /// Newton's method on f and g (each end is where an end or turning point of one curve
 /// lies on the other), and every piece is verified on f and g themselves: points of f
-/// along it, projected onto g, lie within overlap_tolerance of g. Empty when both curves
-/// are proper (find_overlaps covers them: their parametrisations differ by an affine map),
-/// when they trace different arcs, or when a verification fails.
+/// along it, projected onto g, lie within overlap_tolerance of g, and the same with the
+/// curves' roles exchanged. Empty when both curves are proper (find_overlaps covers them:
+/// their parametrisations differ by an affine map), when they trace different arcs, or
+/// when a verification fails. Only the pieces whose boxes meet t_window x s_window are
+/// verified and reported (a search confined to that window needs no others: the one-curve
+/// certification searches small boxes around each self-intersection).
 [[nodiscard]] std::vector<OverlapFinding> find_arc_overlaps(const WorkingCurve& f,
-                                                            const WorkingCurve& g);
+                                                            const WorkingCurve& g,
+                                                            ParamInterval t_window = {0.0, 1.0},
+                                                            ParamInterval s_window = {0.0, 1.0});
 
 /// The pieces an improper curve c = h(p) retraces: one overlap (t before s) per pair of
 /// different pieces on which p is monotone whose ranges share more than a point, found and

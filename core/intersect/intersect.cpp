@@ -172,7 +172,7 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   }
   // An improper curve (one that traces its arc more than once) overlaps the other along
   // polynomial reparametrisations; two proper ones only along an affine map.
-  std::vector<OverlapFinding> overlaps = find_arc_overlaps(wf, wg);
+  std::vector<OverlapFinding> overlaps = find_arc_overlaps(wf, wg, t_range, s_range);
   if (overlaps.empty()) overlaps = find_overlaps(wf, wg);
   // A point curve's parameter is free: one exact root (at 0, its interval widened to [0, 1]
   // below) per end of the other curve that is the point. The search alone can miss a point

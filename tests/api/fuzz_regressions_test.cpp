@@ -563,6 +563,30 @@ TEST(FuzzRegressions, F29_ATinyCurveFarFromTheOriginHasAFiniteFrame) {
   }
 }
 
+TEST(FuzzRegressions, F30_ACurveBesideALineSegmentDoesNotOverlapIt) {
+  // f(t) = (2 c t (1 - t), 32768 t^2) with c = 0x1.90005010a01p-31 leaves the y axis for
+  // every t in (0, 1); g, a quartic on the y axis (x = 0), has y(s) = a (1 - s)^4 + b s^4
+  // with a = 0x1.6cp-23 and b = 0x1.858585858p-2, so 0 < y(s) <= b. A common point needs x = 0
+  // on f: t = 0 or 1, the points (0, 0) and (0, 32768), and neither is on g. So there is no
+  // intersection and no overlap, in either order. (intersect_fuzzer: g, read as a quadratic
+  // through a quadratic to within the frame's tolerance, gave an overlap in one order, its
+  // points all within 5e-12 of f but f's piece starting at (0, 0), 8e-8 below g.)
+  const Curve f({{0.0, 0.0}, {0x1.90005010a01p-31, 0.0}, {0.0, 0x1p+15}});
+  const Curve g({{0.0, 0x1.6cp-23}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0x1.858585858p-2}});
+  for (const auto method :
+       {IntersectMethod::hybrid, IntersectMethod::bezier_clipping, IntersectMethod::subdivision}) {
+    IntersectOptions options;
+    options.method = method;
+    options.fat_curve_degree = 2;
+    for (const bool swapped : {false, true}) {
+      const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
+      ASSERT_EQ(r.status, IntersectStatus::ok);
+      EXPECT_TRUE(r.intersections.empty()) << "swapped " << swapped;
+      EXPECT_TRUE(r.overlaps.empty()) << "swapped " << swapped;
+    }
+  }
+}
+
 // F21, found by classify_fuzzer: a loop whose double point sits within two ulps of t = 1
 // on a cubic with coordinates 2^250 apart. The exact signs say 0 < t1 < t2 < 1; t1 rounded to
 // 1 and t2 was clamped below 1, so the pair came out reversed (t1 = 1 > t2). The type is the

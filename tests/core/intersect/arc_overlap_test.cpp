@@ -132,6 +132,20 @@ TEST(ArcOverlap, ImproperCurveAgainstItself) {
                      {0.5, 1, 0.5, 1, false}});
 }
 
+TEST(ArcOverlap, ASearchWindowKeepsTheOverlapsThatMeetIt) {
+  // The same curve against itself, searched only in t in [0.1, 0.2], s in [0.8, 0.9] (as the
+  // one-curve certification searches a small box): of the four overlaps only the mirror
+  // t = 1 - s on t in [0, 1/2], s in [1/2, 1] meets the window, and the points there are all
+  // on it.
+  const Curve f = compose(s_cubic(), kOutAndBack);
+  for (const IntersectMethod m : kMethods) {
+    SCOPED_TRACE(std::string(to_string(m)));
+    IntersectOptions options;
+    options.method = m;
+    expect_overlaps(intersect_in(f, f, {0.1, 0.2}, {0.8, 0.9}, options), {{0, 0.5, 0.5, 1, true}});
+  }
+}
+
 TEST(ArcOverlap, SpeedsUpBeyondTheOtherCurve) {
   // q(s) = (3 s^2 - 1/2) / 2 runs over [-1/4, 5/4]: the overlap is where q is in [0, 1],
   // s in [sqrt(1/6), sqrt(5/6)].
