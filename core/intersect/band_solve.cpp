@@ -234,9 +234,8 @@ double value(std::span<const double, E> p, double t) noexcept {
 /// certificate and took the hull iteration; now 0.02 %). The two lanes are independent
 /// chains and every step's outcome is a select, not a branch: they overlap in the pipeline.
 template <std::size_t E>
-std::array<double, 2> monotone_roots(std::span<const double, E> p, const double* c,
-                                     bool increasing, const double level[2],
-                                     const bool wanted[2]) noexcept {
+std::array<double, 2> monotone_roots(std::span<const double, E> p, const double* c, bool increasing,
+                                     const double level[2], const bool wanted[2]) noexcept {
   const int k = static_cast<int>(p.size()) - 1;
   std::array<double, 2> t{};
   bool active[2];

@@ -169,7 +169,8 @@ template <std::size_t E>
   // Bitwise operators: selects, not branches the data decides.
   bool any_below = false, any_above = false, any_inside = false;
   for (const double v : c) {
-    const bool below = v < lo, above = v > hi;
+    const bool below = v < lo;
+    const bool above = v > hi;
     any_below |= below;
     any_above |= above;
     any_inside |= !(below | above);

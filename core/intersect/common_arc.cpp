@@ -418,7 +418,8 @@ bool arc_pieces(const WorkingCurve& f, const WorkingCurve& g, CommonArc& arc,
       const auto meets = [](ParamInterval a, ParamInterval b, double pad) {
         return a.lo - pad <= b.hi && b.lo <= a.hi + pad;
       };
-      if (!meets(t_range, t_window, kShortestOverlap) || !meets(s_range, s_window, kShortestOverlap))
+      if (!meets(t_range, t_window, kShortestOverlap) ||
+          !meets(s_range, s_window, kShortestOverlap))
         continue;
       if (!(u_hi - u_lo > kArcSlack) || !(t_range.width() > kShortestOverlap) ||
           !(s_range.width() > kShortestOverlap)) {

@@ -25,10 +25,6 @@ struct OverlapFinding {
   Overlap overlap;
   CoincidenceMap map;
   std::shared_ptr<const CommonArc> arc;
-  /// False when both overlapping pieces lie within the coincidence tolerance of a point
-  /// (a tiny curve against a huge one): the map was verified on nothing more than that
-  /// point, so it says nothing about the rest of the square (finding F28).
-  bool map_holds_beyond = true;
 };
 
 /// A necessary condition for two curves to overlap, far cheaper than any overlap test:
@@ -88,8 +84,8 @@ struct OverlapFinding {
 /// alpha + beta s (its hodograph's control vectors on U lie in an open half-plane, so f is
 /// strictly monotone along a direction). Then f(t) = g(s) = f(alpha + beta s) forces
 /// t = alpha + beta s. Near a cusp of f the test fails and the box is kept (the search
-/// subdivides it further). An overlap whose map does not hold beyond it covers only boxes
-/// inside its own intervals.
+/// subdivides it further). (find_overlaps reports no overlap whose two pieces both lie
+/// within the tolerance of a point, whose map would be verified on nothing more: F28, F31.)
 [[nodiscard]] bool covered_by_overlap(const WorkingCurve& f, const OverlapFinding& o,
                                       ParamInterval t, ParamInterval s);
 

@@ -587,6 +587,45 @@ TEST(FuzzRegressions, F30_ACurveBesideALineSegmentDoesNotOverlapIt) {
   }
 }
 
+TEST(FuzzRegressions, F31_TwoEndsWithinRoundingOfEachOtherAreNoOverlap) {
+  // f, 5e7 tall, ends at (a, a), a = 0x1.d9d9d9d9d9dap-3; g, 0.03 long, ends 3e-9 from there.
+  // Next to f's scale both end pieces are within rounding of a point, and the order (f, g)
+  // reported them as an overlap, the order (g, f) not (F31). Two parabolas share at most four
+  // points unless they are the same conic, and g's ends are off f's (the sign of f's implicit
+  // equation, in rationals): there is no overlap. Both orders must say so and report the
+  // same crossings, mirrored.
+  using bezier::test::Rational;
+  const double a = 0x1.d9d9d9d9d9dap-3;
+  const Curve f({{0.0, -0x1.8p+25}, {0.0, 0x1.d9d5f639d9dap-3}, {a, a}});
+  const Curve g({{0x1.d9d9d9d999dap-3, 0x1.99d9d9d9d9dap-3},
+                 {0x1.d9d9d9d9d9dap-3, 0x1.d9d9d9d9d606p-3},
+                 {0x1.d9d9d14p-3, 0x1.d9d9d0104011p-3}});
+  ASSERT_NE(on_parabola(f, exact_point(g, 0.0)).sign(), 0);
+  ASSERT_NE(on_parabola(f, exact_point(g, 1.0)).sign(), 0);
+  for (const IntersectMethod method : {IntersectMethod::hybrid, IntersectMethod::bezier_clipping}) {
+    IntersectOptions options;
+    options.method = method;
+    options.fat_curve_degree = 2;
+    const IntersectionResult r = intersect(f, g, options), w = intersect(g, f, options);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
+    ASSERT_EQ(w.status, IntersectStatus::ok);
+    EXPECT_TRUE(r.overlaps.empty());
+    EXPECT_TRUE(w.overlaps.empty());
+    ASSERT_EQ(r.intersections.size(), w.intersections.size());
+    for (const Intersection& x : r.intersections) {
+      bool mirrored = false;
+      for (const Intersection& y : w.intersections) {
+        mirrored =
+            mirrored || (x.t_interval.lo <= y.s_interval.hi && y.s_interval.lo <= x.t_interval.hi &&
+                         x.s_interval.lo <= y.t_interval.hi && y.t_interval.lo <= x.s_interval.hi);
+      }
+      EXPECT_TRUE(mirrored) << "method " << static_cast<int>(method) << " t " << x.t;
+    }
+    expect_intersection_contract(r, options.tolerance);
+    expect_intersection_contract(w, options.tolerance);
+  }
+}
+
 // F21, found by classify_fuzzer: a loop whose double point sits within two ulps of t = 1
 // on a cubic with coordinates 2^250 apart. The exact signs say 0 < t1 < t2 < 1; t1 rounded to
 // 1 and t2 was clamped below 1, so the pair came out reversed (t1 = 1 > t2). The type is the
