@@ -376,6 +376,7 @@ bool arc_pieces(const WorkingCurve& f, const WorkingCurve& g, CommonArc& arc,
                 ParamInterval t_window = {0.0, 1.0}, ParamInterval s_window = {0.0, 1.0}) {
   const std::vector<ParamInterval> t_pieces = monotone_pieces(arc.p);
   const std::vector<ParamInterval> s_pieces = monotone_pieces(arc.q);
+  const double end_tol = coincidence_tolerance(f, g);
   for (std::size_t i = 0; i < t_pieces.size(); ++i) {
     const ParamInterval I = t_pieces[i];
     const double p0 = value(arc.p, I.lo), p1 = value(arc.p, I.hi);
@@ -386,30 +387,40 @@ bool arc_pieces(const WorkingCurve& f, const WorkingCurve& g, CommonArc& arc,
       const double q_lo = bernstein::min2(q0, q1), q_hi = bernstein::max2(q0, q1);
       const double u_lo = bernstein::max2(p_lo, q_lo), u_hi = bernstein::min2(p_hi, q_hi);
       if (u_hi < u_lo - kArcSlack) continue;  // the pieces trace different parts of h
+      // Each end of the shared range is an end of f's piece (an end of f or a turning point
+      // on f) whose point lies on g, or one of g's on f, or both ends at once when their
+      // bounds agree (Newton could not move from a turning point). p and q say which; they
+      // fit the curves only to the factor's accuracy, so the point pair must agree too, and
+      // when it does not, the other curve's end is tried (finding F32: f's end at the origin,
+      // on curves 1e9 long, was paired with g's nearest point 0.99 away).
+      const auto agree = [&](double t, double s) {
+        const Point2 d = point_of(f, t) - point_of(g, s);
+        return std::fabs(d.x) <= end_tol && std::fabs(d.y) <= end_tol;
+      };
       double ends_t[2], ends_s[2];
       for (int e = 0; e < 2; ++e) {
         const double u = e == 0 ? u_lo : u_hi;
-        // The end comes from f's piece (an end of f or a turning point on f) or from g's,
-        // or from both when their bounds agree (an end of each: Newton could not move
-        // from a turning point).
         const double p_end = e == 0 ? p_lo : p_hi, q_end = e == 0 ? q_lo : q_hi;
-        const bool both = std::fabs(p_end - q_end) <= kTurnNoise;
-        const bool from_f = both || (e == 0 ? p_lo >= q_lo : p_hi <= q_hi);
-        const bool from_g = both || !from_f;
-        if (from_f) {
-          double t = (e == 0) == (p0 <= p1) ? I.lo : I.hi;
-          if (t != 0.0 && t != 1.0) t = refine_turn(f, t);
-          ends_t[e] = t;
+        double t_end = (e == 0) == (p0 <= p1) ? I.lo : I.hi;
+        if (t_end != 0.0 && t_end != 1.0) t_end = refine_turn(f, t_end);
+        double s_end = (e == 0) == (q0 <= q1) ? J.lo : J.hi;
+        if (s_end != 0.0 && s_end != 1.0) s_end = refine_turn(g, s_end);
+        ends_t[e] = t_end;
+        ends_s[e] = s_end;
+        if (std::fabs(p_end - q_end) <= kTurnNoise && agree(t_end, s_end)) continue;
+        const bool f_first = e == 0 ? p_lo >= q_lo : p_hi <= q_hi;
+        bool found = false;
+        for (int attempt = 0; attempt < 2 && !found; ++attempt) {
+          if ((attempt == 0) == f_first) {
+            ends_t[e] = t_end;
+            ends_s[e] = locate_on_curve(g, evaluate_dd(f, t_end), preimage(arc.q, J, u));
+          } else {
+            ends_s[e] = s_end;
+            ends_t[e] = locate_on_curve(f, evaluate_dd(g, s_end), preimage(arc.p, I, u));
+          }
+          found = agree(ends_t[e], ends_s[e]);
         }
-        if (from_g) {
-          double s = (e == 0) == (q0 <= q1) ? J.lo : J.hi;
-          if (s != 0.0 && s != 1.0) s = refine_turn(g, s);
-          ends_s[e] = s;
-        }
-        if (!from_g)
-          ends_s[e] = locate_on_curve(g, evaluate_dd(f, ends_t[e]), preimage(arc.q, J, u));
-        if (!from_f)
-          ends_t[e] = locate_on_curve(f, evaluate_dd(g, ends_s[e]), preimage(arc.p, I, u));
+        if (!found) return false;  // neither end lies on the other curve: no common arc here
       }
       const ParamInterval t_range{bernstein::min2(ends_t[0], ends_t[1]),
                                   bernstein::max2(ends_t[0], ends_t[1])};

@@ -626,6 +626,30 @@ TEST(FuzzRegressions, F31_TwoEndsWithinRoundingOfEachOtherAreNoOverlap) {
   }
 }
 
+TEST(FuzzRegressions, F32_AnOverlapEndsWhereBothCurvesAre) {
+  // f = (0, 0), (c, h), (X, 0) with c = 0x1.9p-31, h = 0x1.018p-12, X = 0x1.fp+29 has
+  // y(t) = 2 h t (1 - t) > 0 inside (0, 1); g, a quartic on the x axis, has x(s) =
+  // A (1 - s)^4 + s^4 with A = 0x1.2p+27, so 0 < x(s) <= A < X. A common point needs y = 0
+  // on f, t = 0 or 1, and f(0) = (0, 0) has x below g's, f(1) = (X, 0) beyond them: none.
+  // f lies within 1.2e-4 of g's line along its 1.5e8 (8e-13 of g's length), and the
+  // common-arc search reported an overlap whose end paired f's start (0, 0) with g's point
+  // nearest to it, 0.99 away (F32). Every overlap's ends must be points of both curves;
+  // here there are none.
+  const Curve f({{0.0, 0.0}, {0x1.9p-31, 0x1.018p-12}, {0x1.fp+29, 0.0}});
+  const Curve g({{0x1.2p+27, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {1.0, 0.0}});
+  for (const IntersectMethod method :
+       {IntersectMethod::hybrid, IntersectMethod::bezier_clipping, IntersectMethod::subdivision}) {
+    IntersectOptions options;
+    options.method = method;
+    for (const bool swapped : {false, true}) {
+      const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
+      ASSERT_EQ(r.status, IntersectStatus::ok);
+      EXPECT_TRUE(r.intersections.empty()) << "method " << static_cast<int>(method);
+      EXPECT_TRUE(r.overlaps.empty()) << "method " << static_cast<int>(method);
+    }
+  }
+}
+
 // F21, found by classify_fuzzer: a loop whose double point sits within two ulps of t = 1
 // on a cubic with coordinates 2^250 apart. The exact signs say 0 < t1 < t2 < 1; t1 rounded to
 // 1 and t2 was clamped below 1, so the pair came out reversed (t1 = 1 > t2). The type is the
