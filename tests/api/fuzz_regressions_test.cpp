@@ -130,6 +130,37 @@ bool covered(const IntersectionResult& r, double t, double s) {
   return false;
 }
 
+/// Calls check(r, options, swapped) with r the answer for f and g (swapped: for g and f),
+/// for every method, both fat-curve degrees and both orders; options.tolerance as given.
+template <class Check>
+void for_every_option(const Curve& f, const Curve& g, double tolerance, Check check) {
+  for (const IntersectMethod method :
+       {IntersectMethod::hybrid, IntersectMethod::bezier_clipping, IntersectMethod::subdivision}) {
+    for (const int fat_curve_degree : {2, 3}) {
+      IntersectOptions options;
+      options.method = method;
+      options.fat_curve_degree = fat_curve_degree;
+      options.tolerance = tolerance;
+      for (const bool swapped : {false, true}) {
+        SCOPED_TRACE("method " + std::to_string(static_cast<int>(method)) + " fat curve " +
+                     std::to_string(fat_curve_degree) + " swapped " + std::to_string(swapped));
+        check(swapped ? intersect(g, f, options) : intersect(f, g, options), options, swapped);
+      }
+    }
+  }
+}
+
+/// Every method, in both orders, answers that f and g share no point: no intersection, no
+/// overlap, and a complete search.
+void expect_no_common_point(const Curve& f, const Curve& g) {
+  for_every_option(f, g, IntersectOptions{}.tolerance,
+                   [](const IntersectionResult& r, const IntersectOptions&, bool) {
+                     ASSERT_EQ(r.status, IntersectStatus::ok);
+                     EXPECT_TRUE(r.intersections.empty());
+                     EXPECT_TRUE(r.overlaps.empty());
+                   });
+}
+
 // The contract of Intersection (result.hpp): intervals narrower than the tolerance whenever
 // `resolved`, the estimate inside them, the point finite.
 void expect_intersection_contract(const IntersectionResult& r, double tolerance) {
@@ -508,32 +539,23 @@ TEST(FuzzRegressions, F28_AnOverlapWithinRoundingOfAPointHidesNoCrossing) {
     ASSERT_LT(p[0], Rational(32));
     ASSERT_LT(p[1], Rational(g[0].y));
   }
-  for (const IntersectMethod method :
-       {IntersectMethod::hybrid, IntersectMethod::bezier_clipping, IntersectMethod::subdivision}) {
-    for (const int fat_curve_degree : {2, 3}) {
-      IntersectOptions options;
-      options.method = method;
-      options.fat_curve_degree = fat_curve_degree;
-      options.tolerance = 0x1.19799812dea11p-40;
-      for (const bool swapped : {false, true}) {
-        const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
-        // A capped search (subdivision) may say nothing; an answer must hold the crossing.
-        if (method == IntersectMethod::subdivision &&
-            r.status == IntersectStatus::work_cap_reached) {
-          continue;
-        }
-        ASSERT_EQ(r.status, IntersectStatus::ok);
-        bool crossing = false;
-        for (const Intersection& x : r.intersections) {
-          const ParamInterval t = swapped ? x.s_interval : x.t_interval;
-          crossing = crossing || (t.lo <= t_hi && t_lo <= t.hi);
-        }
-        EXPECT_TRUE(crossing) << "method " << static_cast<int>(method) << " fat curve "
-                              << fat_curve_degree << " swapped " << swapped;
-        expect_intersection_contract(r, options.tolerance);
-      }
-    }
-  }
+  for_every_option(f, g, 0x1.19799812dea11p-40,
+                   [&](const IntersectionResult& r, const IntersectOptions& options, bool swapped) {
+                     // A capped search (subdivision) may say nothing; an answer must hold the
+                     // crossing.
+                     if (options.method == IntersectMethod::subdivision &&
+                         r.status == IntersectStatus::work_cap_reached) {
+                       return;
+                     }
+                     ASSERT_EQ(r.status, IntersectStatus::ok);
+                     bool crossing = false;
+                     for (const Intersection& x : r.intersections) {
+                       const ParamInterval t = swapped ? x.s_interval : x.t_interval;
+                       crossing = crossing || (t.lo <= t_hi && t_lo <= t.hi);
+                     }
+                     EXPECT_TRUE(crossing);
+                     expect_intersection_contract(r, options.tolerance);
+                   });
 }
 
 TEST(FuzzRegressions, F29_ATinyCurveFarFromTheOriginHasAFiniteFrame) {
@@ -573,18 +595,7 @@ TEST(FuzzRegressions, F30_ACurveBesideALineSegmentDoesNotOverlapIt) {
   // points all within 5e-12 of f but f's piece starting at (0, 0), 8e-8 below g.)
   const Curve f({{0.0, 0.0}, {0x1.90005010a01p-31, 0.0}, {0.0, 0x1p+15}});
   const Curve g({{0.0, 0x1.6cp-23}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0x1.858585858p-2}});
-  for (const auto method :
-       {IntersectMethod::hybrid, IntersectMethod::bezier_clipping, IntersectMethod::subdivision}) {
-    IntersectOptions options;
-    options.method = method;
-    options.fat_curve_degree = 2;
-    for (const bool swapped : {false, true}) {
-      const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
-      ASSERT_EQ(r.status, IntersectStatus::ok);
-      EXPECT_TRUE(r.intersections.empty()) << "swapped " << swapped;
-      EXPECT_TRUE(r.overlaps.empty()) << "swapped " << swapped;
-    }
-  }
+  expect_no_common_point(f, g);
 }
 
 TEST(FuzzRegressions, F31_TwoEndsWithinRoundingOfEachOtherAreNoOverlap) {
@@ -637,17 +648,7 @@ TEST(FuzzRegressions, F32_AnOverlapEndsWhereBothCurvesAre) {
   // here there are none.
   const Curve f({{0.0, 0.0}, {0x1.9p-31, 0x1.018p-12}, {0x1.fp+29, 0.0}});
   const Curve g({{0x1.2p+27, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {1.0, 0.0}});
-  for (const IntersectMethod method :
-       {IntersectMethod::hybrid, IntersectMethod::bezier_clipping, IntersectMethod::subdivision}) {
-    IntersectOptions options;
-    options.method = method;
-    for (const bool swapped : {false, true}) {
-      const IntersectionResult r = swapped ? intersect(g, f, options) : intersect(f, g, options);
-      ASSERT_EQ(r.status, IntersectStatus::ok);
-      EXPECT_TRUE(r.intersections.empty()) << "method " << static_cast<int>(method);
-      EXPECT_TRUE(r.overlaps.empty()) << "method " << static_cast<int>(method);
-    }
-  }
+  expect_no_common_point(f, g);
 }
 
 // F21, found by classify_fuzzer: a loop whose double point sits within two ulps of t = 1
