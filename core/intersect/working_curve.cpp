@@ -222,10 +222,12 @@ PointAndTangent evaluate_with_tangent(const WorkingCurve& f, double t) {
         if constexpr (E == std::dynamic_extent) {
           return std::nullopt;
         } else {
-          double xs[E], ys[E];
-          std::copy_n(f.x.begin(), E, xs);  // E, not f.x.size(): no memcpy call
-          std::copy_n(f.y.begin(), E, ys);
-          return point_and_tangent_in(xs, ys, E - 1, t);
+          // The shared level-by-level de Casteljau (no in-place buffer: see its comment).
+          const auto x = bernstein::last_casteljau_level(fixed_span<E>(f.x.data(), E), t);
+          const auto y = bernstein::last_casteljau_level(fixed_span<E>(f.y.data(), E), t);
+          const double dn = static_cast<double>(E - 1);
+          return PointAndTangent{{bernstein::lerp(x[0], x[1], t), bernstein::lerp(y[0], y[1], t)},
+                                 {dn * (x[1] - x[0]), dn * (y[1] - y[0])}};
         }
       });
   if (fixed) return *fixed;
