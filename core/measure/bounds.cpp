@@ -1,0 +1,73 @@
+#include "core/measure/bounds.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+#include "core/derivative.hpp"
+#include "core/evaluate.hpp"
+#include "core/intersect/bernstein1d.hpp"
+#include "core/measure/interval_roots.hpp"
+
+namespace bezier::core {
+
+namespace {
+
+constexpr double kU = bernstein::kU;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double& axis(Point2& p, std::size_t k) noexcept { return k == 0 ? p.x : p.y; }
+double& axis(Point3& p, std::size_t k) noexcept { return k == 0 ? p.x : (k == 1 ? p.y : p.z); }
+double axis(const Point2& p, std::size_t k) noexcept { return k == 0 ? p.x : p.y; }
+double axis(const Point3& p, std::size_t k) noexcept {
+  return k == 0 ? p.x : (k == 1 ? p.y : p.z);
+}
+
+template <class P>
+std::vector<double> coordinate(std::span<const P> points, std::size_t k) {
+  std::vector<double> c;
+  c.reserve(points.size());
+  for (const P& p : points) c.push_back(axis(p, k));
+  return c;
+}
+
+template <class P>
+Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
+  assert(0.0 <= a && a <= b && b <= 1.0);
+  constexpr std::size_t kAxes = Bounds<P>::kAxes;
+  Bounds<P> out;
+  const P start = evaluate(curve, a), end = evaluate(curve, b);
+  const BasicCurve<P> hodograph = derivative(curve);
+  const double n = curve.degree();
+  for (std::size_t k = 0; k < kAxes; ++k) {
+    // The compensated evaluation's second-order term, with room for its constant.
+    const double evaluation_error =
+        2 * (n + 1) * (n + 1) * kU * kU * bernstein::max_abs(coordinate(curve.points(), k));
+    // A coordinate at t = 0 or 1 is a control point's, exact; elsewhere it is moved outward
+    // by the evaluation's bound and one more rounding.
+    double lo = kInfinity, hi = -kInfinity;
+    const auto include = [&](double t, double v) {
+      const bool exact = t == 0.0 || t == 1.0;
+      lo = std::min(lo, exact ? v : std::nextafter(v - evaluation_error, -kInfinity));
+      hi = std::max(hi, exact ? v : std::nextafter(v + evaluation_error, kInfinity));
+    };
+    include(a, axis(start, k));
+    include(b, axis(end, k));
+    if (a < b) {
+      const std::vector<double> slope = coordinate(hodograph.points(), k);
+      out.critical[k] = interval_roots(slope, a, b, IntervalEnds::open).roots;
+      for (const double t : out.critical[k]) include(t, axis(evaluate(curve, t), k));
+    }
+    axis(out.min, k) = lo;
+    axis(out.max, k) = hi;
+  }
+  return out;
+}
+
+}  // namespace
+
+Bounds<Point2> bounds(const Curve& curve, double a, double b) { return box(curve, a, b); }
+Bounds<Point3> bounds(const Curve3& curve, double a, double b) { return box(curve, a, b); }
+
+}  // namespace bezier::core

@@ -1,0 +1,62 @@
+#include "core/measure/frame.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "core/derivative.hpp"
+#include "core/intersect/bernstein1d.hpp"
+
+namespace bezier::core {
+
+namespace {
+
+constexpr double kU = bernstein::kU;
+
+/// Largest |P^(k)_i| over the control points of the k-th hodograph: a bound on |B^(k)(t)|
+/// on [0, 1] by the convex hull property (per coordinate; the length adds at most a factor
+/// sqrt(3), absorbed in the threshold's constant).
+template <class P>
+double hodograph_bound(const BasicCurve<P>& curve, int k) {
+  return scale(derivative(curve, k));
+}
+
+/// |B'| below which B'(t) is numerically zero (see frame.hpp).
+template <class P>
+double stationary_threshold(const BasicCurve<P>& curve) {
+  return 16 * kU * (hodograph_bound(curve, 1) + hodograph_bound(curve, 2));
+}
+
+}  // namespace
+
+std::optional<Frame<Point2>> frame(const Curve& curve, double t) {
+  const std::vector<Point2> d = derivatives_at(curve, t, 2);
+  const double speed = length(d[0]);
+  if (!(speed > stationary_threshold(curve))) return std::nullopt;
+  const Point2 tangent = d[0] / speed;
+  Frame<Point2> f;
+  f.tangent = tangent;
+  f.normal = Point2{-tangent.y, tangent.x};
+  f.curvature = cross(d[0], d[1]) / (speed * speed * speed);
+  return f;
+}
+
+std::optional<Frame<Point3>> frame(const Curve3& curve, double t) {
+  const std::vector<Point3> d = derivatives_at(curve, t, 2);
+  const double speed = length(d[0]);
+  if (!(speed > stationary_threshold(curve))) return std::nullopt;
+  Frame<Point3> f;
+  f.tangent = d[0] / speed;
+  const Point3 binormal_direction = cross(d[0], d[1]);
+  const double bend = length(binormal_direction);
+  f.curvature = bend / (speed * speed * speed);
+  // Each component of B' × B'' rounds with an error up to about 2 u |B'| |B''|: below a few
+  // times that the osculating plane is rounding noise.
+  if (bend > 8 * kU * speed * length(d[1])) {
+    const Point3 normal_direction = cross(binormal_direction, d[0]);  // (B' × B'') × B'
+    const double size = length(normal_direction);
+    if (size > 0.0) f.normal = normal_direction / size;
+  }
+  return f;
+}
+
+}  // namespace bezier::core

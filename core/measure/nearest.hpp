@@ -1,0 +1,55 @@
+#pragma once
+
+#include <vector>
+
+#include "core/curve.hpp"
+
+namespace bezier::core {
+
+/// The point of a curve piece nearest to a target.
+template <class P>
+struct NearestPoint {
+  /// The smallest t in [a, b] attaining the minimum distance.
+  double t = 0.0;
+  /// B(t).
+  P point;
+  /// The least |B(t) - target| over the candidates: when t ties with a closer candidate,
+  /// |B(t) - target| may exceed it by the tie tolerance, and this is the more accurate value
+  /// of the minimum.
+  double distance = 0.0;
+  /// The other t attaining the minimum (to the tie tolerance, see nearest()), increasing;
+  /// each a distinct local minimum.
+  std::vector<double> ties;
+};
+
+/// The global minimum of |B(t) - q| over t in [a, b], ends included.
+///
+/// Candidates: a, b and every root in [a, b] of f(t) = (B(t) - q) · B'(t) = D'(t) / 2, where
+/// D = |B - q|^2 (a minimum of D inside (a, b) is a root of f). f has degree 2n - 1; its
+/// Bernstein coefficients are products of the points P_i - q and of the hodograph's
+/// (bernstein_product.hpp). Its roots come from the certified Bernstein root finder
+/// (interval_roots): an interval is discarded only when f's coefficients there have one
+/// strict sign beyond their rounding bound, so no root is lost except where |f| stays at
+/// that bound, where D varies by no more than the bound times the width: such a loss moves
+/// the answer by a rounding-level amount, never to another local minimum. Each root is then
+/// polished by Newton's method on f with f' = |B'|^2 + (B - q) · B'' from the compensated
+/// evaluations (kept only while it lowers the distance and stays in [a, b]), and the
+/// candidates are compared by their distance, hypot(B(t) - q) from the compensated B(t).
+///
+/// Ties (DESIGN §6): the candidates within max(1e-12 d_min, 8 u s) of the least distance
+/// d_min, s the largest coordinate of the control points and the target (below 8 ulps of
+/// the coordinates the distances are rounding, so a target on a self-intersection ties its
+/// two parameters). Tied candidates with the distance at their midpoint also within the
+/// tolerance are one flat minimum, reported once (its smallest t).
+///
+/// A curve that is one point (all control points equal): every t attains the distance;
+/// t = a is reported and ties is empty.
+///
+/// Accuracy: the distance within a few ulps of |B(t) - q| at the reported t plus the
+/// coordinates' rounding (about u s), so within 1e-13 relative of the true minimum or
+/// 8 ulps of s; t within 1e-10 at a well-conditioned (simple) minimum, about u^(1/m) at a
+/// minimum of multiplicity m. Precondition: 0 <= a <= b <= 1, finite coordinates.
+[[nodiscard]] NearestPoint<Point2> nearest(const Curve& curve, Point2 target, double a, double b);
+[[nodiscard]] NearestPoint<Point3> nearest(const Curve3& curve, Point3 target, double a, double b);
+
+}  // namespace bezier::core
