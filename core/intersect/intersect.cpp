@@ -212,19 +212,25 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   if (found.capped) result.status = IntersectStatus::work_cap_reached;
 
   const KindTolerances kind_tol;
-  const std::vector<Contact> contacts = merge_candidates(found.candidates, exact, in.width);
+  const MergedContacts merged =
+      merge_candidates(found.candidates, exact, in.width, options.max_work - result.stats.work);
+  result.stats.work += merged.work;
+  if (merged.capped) result.status = IntersectStatus::work_cap_reached;
+  const std::vector<Contact>& contacts = merged.contacts;
   const PairScales scales = contacts.empty() ? PairScales{frame} : pair_scales(wf, wg, frame);
   result.intersections.reserve(contacts.size());
   for (Contact c : contacts) {
+    // A refinement starts only when the budget covers its most iterations.
+    if (max_contact_cost(wf.degree, wg.degree) > options.max_work - result.stats.work) {
+      result.status = IntersectStatus::work_cap_reached;
+      break;
+    }
     if (in.t_free) c.t = {0.0, 1.0};
     if (in.s_free) c.s = {0.0, 1.0};
     const Refinement r = refine_contact(wf, wg, c, in.t_free, in.s_free, kind_tol.tangent_sine);
     result.stats.newton_iterations += r.iterations;
-    result.stats.work += r.iterations * newton_cost(wf.degree, wg.degree);
-    if (result.stats.work > options.max_work) {
-      result.status = IntersectStatus::work_cap_reached;  // many contacts: stop refining
-      break;
-    }
+    result.stats.work += contact_cost(wf.degree, wg.degree) +
+                         r.iterations * newton_cost(wf.degree, wg.degree);
     Intersection x =
         r.f_at_t && r.g_at_s
             ? make_intersection(*r.f_at_t, *r.g_at_s, scales, r.t, r.s, c.t, c.s)

@@ -1,11 +1,16 @@
 #include "core/intersect/merge.hpp"
 
 #include <algorithm>
-#include <numeric>
+#include <limits>
+
+#include "core/intersect/box_components.hpp"
+#include "core/intersect/work_cost.hpp"
 
 namespace bezier::core {
 
 namespace {
+
+constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
 struct Item {
   ParamInterval t, s;
@@ -16,14 +21,6 @@ struct Item {
 
 bool near(ParamInterval a, ParamInterval b, double gap) noexcept {
   return b.lo <= a.hi + gap && a.lo <= b.hi + gap;
-}
-
-std::size_t find(std::vector<std::size_t>& parent, std::size_t i) {
-  while (parent[i] != i) {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
 }
 
 double extent(const Contact& c) noexcept {
@@ -41,28 +38,58 @@ void absorb(Contact& into, const Contact& c) {
   }
 }
 
+/// A contact's hull grown by its extent on every side.
+ClosedBox grown(const Contact& c) noexcept {
+  const double e = extent(c);
+  return {{c.t.lo - e, c.t.hi + e}, {c.s.lo - e, c.s.hi + e}};
+}
+
 /// Boxes left at the precision floor (unresolved) trace a contact of order >= 3 as a tube
 /// along the stretch where the curves agree to within rounding, and the search's decisions
 /// there, at the floor, can leave holes in the tube several boxes long (finding F11: a
 /// third-order contact at an end came as two contacts 7e-6 apart, placed differently in the
-/// two orders). Two unresolved contacts are one when the gap between them is at most the
-/// larger one's extent; repeated until nothing changes, as merged contacts grow.
-void merge_unresolved(std::vector<Contact>& contacts) {
-  for (bool changed = true; changed;) {
-    changed = false;
+/// two orders). Two unresolved contacts are one when the gap between them, in t and in s,
+/// is at most the sum of their extents (their hulls grown by their extents meet); repeated
+/// until nothing changes, as joined contacts grow. Each round is one box_components over
+/// the unresolved contacts (O(u log u)), charged before it runs; the contacts joined keep
+/// the place of the first of them.
+void merge_unresolved(MergedContacts& merged, std::int64_t budget) {
+  std::vector<Contact>& contacts = merged.contacts;
+  for (;;) {
+    std::vector<std::size_t> unresolved;
     for (std::size_t i = 0; i < contacts.size(); ++i) {
-      if (contacts[i].resolved) continue;
-      for (std::size_t j = i + 1; j < contacts.size(); ++j) {
-        if (contacts[j].resolved) continue;
-        const double gap = std::max(extent(contacts[i]), extent(contacts[j]));
-        if (near(contacts[i].t, contacts[j].t, gap) && near(contacts[i].s, contacts[j].s, gap)) {
-          absorb(contacts[i], contacts[j]);
-          contacts.erase(contacts.begin() + static_cast<std::ptrdiff_t>(j));
-          changed = true;
-          --j;
-        }
-      }
+      if (!contacts[i].resolved) unresolved.push_back(i);
     }
+    if (unresolved.size() < 2) return;
+    const std::int64_t cost = merge_cost(static_cast<std::int64_t>(unresolved.size()));
+    if (cost > budget - merged.work) {
+      merged.capped = true;
+      return;
+    }
+    merged.work += cost;
+    std::vector<ClosedBox> boxes;
+    boxes.reserve(unresolved.size());
+    for (const std::size_t i : unresolved) boxes.push_back(grown(contacts[i]));
+    const std::vector<std::size_t> label = box_components(boxes);
+    std::vector<std::size_t> first_of(unresolved.size(), kNone);  // by label
+    std::vector<bool> absorbed(contacts.size(), false);
+    bool joined = false;
+    for (std::size_t j = 0; j < unresolved.size(); ++j) {
+      std::size_t& first = first_of[label[j]];
+      if (first == kNone) {
+        first = unresolved[j];
+        continue;
+      }
+      absorb(contacts[first], contacts[unresolved[j]]);
+      absorbed[unresolved[j]] = true;
+      joined = true;
+    }
+    if (!joined) return;
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+      if (!absorbed[i]) contacts[kept++] = contacts[i];
+    }
+    contacts.resize(kept);
   }
 }
 
@@ -83,19 +110,28 @@ bool each_its_own_contact(std::span<const SearchCandidate> candidates, double ga
 
 }  // namespace
 
-std::vector<Contact> merge_candidates(std::span<const SearchCandidate> candidates,
-                                      std::span<const ExactRoot> exact_roots, double gap) {
+MergedContacts merge_candidates(std::span<const SearchCandidate> candidates,
+                                std::span<const ExactRoot> exact_roots, double gap,
+                                std::int64_t budget) {
+  MergedContacts merged;
+  if (candidates.empty() && exact_roots.empty()) return merged;
+  const std::int64_t cost =
+      merge_cost(static_cast<std::int64_t>(candidates.size() + exact_roots.size()));
+  if (cost > budget) {
+    merged.capped = true;
+    return merged;
+  }
+  merged.work = cost;
+  std::vector<Contact>& contacts = merged.contacts;
   // The common cases, without the sweep's bookkeeping.
-  if (candidates.empty() && exact_roots.empty()) return {};
   if (exact_roots.empty() && each_its_own_contact(candidates, gap)) {
     // One crossing, or two or three separate ones: the usual cases.
-    std::vector<Contact> contacts;
     contacts.reserve(candidates.size());
     for (const SearchCandidate& c : candidates)
       contacts.push_back({c.t, c.s, c.resolved, 1, false, {}});
     std::sort(contacts.begin(), contacts.end(),
               [](const Contact& a, const Contact& b) { return a.t.lo < b.t.lo; });
-    return contacts;
+    return merged;
   }
   std::vector<Item> items;
   items.reserve(candidates.size() + exact_roots.size());
@@ -103,28 +139,28 @@ std::vector<Contact> merge_candidates(std::span<const SearchCandidate> candidate
   for (const ExactRoot& r : exact_roots) items.push_back({{r.t, r.t}, {r.s, r.s}, true, true, r});
   std::sort(items.begin(), items.end(),
             [](const Item& a, const Item& b) { return a.t.lo < b.t.lo; });
-  std::vector<std::size_t> parent(items.size());
-  std::iota(parent.begin(), parent.end(), std::size_t{0});
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    for (std::size_t j = i + 1; j < items.size() && items[j].t.lo <= items[i].t.hi + gap; ++j) {
-      if (near(items[i].s, items[j].s, gap)) parent[find(parent, i)] = find(parent, j);
-    }
+  // Two boxes are within `gap` of each other in t and in s exactly when their intervals
+  // extended by `gap` upwards meet.
+  std::vector<ClosedBox> boxes;
+  boxes.reserve(items.size());
+  for (const Item& item : items) {
+    boxes.push_back({{item.t.lo, item.t.hi + gap}, {item.s.lo, item.s.hi + gap}});
   }
-  std::vector<Contact> contacts;
-  std::vector<std::size_t> index_of(items.size(), items.size());
+  const std::vector<std::size_t> label = box_components(boxes);
+  std::vector<std::size_t> index_of(items.size(), kNone);  // by label
   for (std::size_t i = 0; i < items.size(); ++i) {
-    const std::size_t root = find(parent, i);
-    if (index_of[root] == items.size()) {
-      index_of[root] = contacts.size();
+    std::size_t& index = index_of[label[i]];
+    if (index == kNone) {
+      index = contacts.size();
       contacts.push_back({items[i].t, items[i].s, true, 0, false, {}});
     }
-    absorb(contacts[index_of[root]],
+    absorb(contacts[index],
            {items[i].t, items[i].s, items[i].resolved, 1, items[i].exact, items[i].root});
   }
-  merge_unresolved(contacts);
+  merge_unresolved(merged, budget);
   std::sort(contacts.begin(), contacts.end(),
             [](const Contact& a, const Contact& b) { return a.t.lo < b.t.lo; });
-  return contacts;
+  return merged;
 }
 
 }  // namespace bezier::core

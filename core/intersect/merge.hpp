@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -24,14 +25,25 @@ struct Contact {
   ExactRoot exact_root;
 };
 
+/// The contacts, sorted by t.lo, and what grouping them cost.
+struct MergedContacts {
+  std::vector<Contact> contacts;
+  std::int64_t work = 0;  ///< work units charged (merge_cost, work_cost.hpp)
+  /// The budget ran out: `contacts` is empty when it did not cover the first grouping, and
+  /// otherwise not every unresolved contact that should be one has been joined.
+  bool capped = false;
+};
+
 /// Groups candidate boxes into contacts, so that a root found from several boxes (a root
 /// on a split line, a tangency seen by a chain of small boxes, an exact end-point root and
 /// the boxes that converged onto it) is reported once. Two boxes belong to the same contact
 /// when their t intervals and their s intervals both overlap or lie within `gap` of each
-/// other; the relation is closed transitively (union-find over a sweep in t, O(k log k)
-/// plus the touching pairs). Contacts come out sorted by t.lo.
-[[nodiscard]] std::vector<Contact> merge_candidates(std::span<const SearchCandidate> candidates,
-                                                    std::span<const ExactRoot> exact_roots,
-                                                    double gap);
+/// other; the relation is closed transitively (box_components.hpp: O(k log k) whatever the
+/// number of touching pairs). Unresolved contacts are then joined as merge.cpp describes.
+/// Each grouping is charged before it runs, and none runs that `budget` (work units)
+/// does not cover.
+[[nodiscard]] MergedContacts merge_candidates(std::span<const SearchCandidate> candidates,
+                                              std::span<const ExactRoot> exact_roots, double gap,
+                                              std::int64_t budget);
 
 }  // namespace bezier::core

@@ -365,8 +365,8 @@ bool covered_by_overlap(const WorkingCurve& f, const OverlapFinding& o, ParamInt
   return injective_on(f.x, f.y, f.magnitude, u_lo, u_hi);
 }
 
-bool coincide_at_precision(const WorkingCurve& f, const WorkingCurve& g, ParamInterval t,
-                           ParamInterval s, Point2 center) {
+CoincidenceTest coincide_at_precision(const WorkingCurve& f, const WorkingCurve& g,
+                                      ParamInterval t, ParamInterval s, Point2 center) {
   // The local scale: the piece of f in the box's frame, and its rounding.
   const Piece fp = compensated_piece(f, t.lo, t.hi, center);
   double size = 0.0;
@@ -377,16 +377,24 @@ bool coincide_at_precision(const WorkingCurve& f, const WorkingCurve& g, ParamIn
   const Point2 gchord = evaluate_with_tangent(g, s.hi).point - evaluate_with_tangent(g, s.lo).point;
   const bool forward = dot(fchord, gchord) >= 0;
   constexpr int kSamples = 5;
+  CoincidenceTest test;
   for (int k = 0; k < kSamples; ++k) {
     const double tau = static_cast<double>(k) / (kSamples - 1);
     const double tk = t.lo + (t.hi - t.lo) * tau;
     const double guess = forward ? s.lo + (s.hi - s.lo) * tau : s.hi - (s.hi - s.lo) * tau;
     const PointDD p = evaluate_dd(f, tk);
-    const double sk = locate_on_curve(g, p, guess);
+    // locate_on_curve, counting its evaluations.
+    const double sk = gauss_newton(guess, 30, 0x1p-60, [&](double u) {
+      ++test.evaluations;
+      const Residual r = residual(g, u, p);
+      return ResidualAndSlope{{r.x, r.y}, evaluate_with_tangent(g, u).tangent};
+    });
     const Residual r = residual(g, sk, p);
-    if (!(bernstein::max2(std::fabs(r.x), std::fabs(r.y)) <= floor)) return false;
+    test.evaluations += 2;  // p, and the residual at sk
+    if (!(bernstein::max2(std::fabs(r.x), std::fabs(r.y)) <= floor)) return test;
   }
-  return true;
+  test.coincide = true;
+  return test;
 }
 
 bool on_overlap(const OverlapFinding& o, double t, double s) {

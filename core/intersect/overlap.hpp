@@ -100,8 +100,13 @@ struct OverlapFinding {
 /// contact of order >= 3, where they stay within c d^3 of each other), and the search stops
 /// refining the box: it is reported, unresolved. Sampling is enough for that decision,
 /// because it never drops a box.
-[[nodiscard]] bool coincide_at_precision(const WorkingCurve& f, const WorkingCurve& g,
-                                         ParamInterval t, ParamInterval s, Point2 center);
+struct CoincidenceTest {
+  bool coincide = false;
+  int evaluations = 0;  ///< compensated evaluations of either curve (the test's cost)
+};
+[[nodiscard]] CoincidenceTest coincide_at_precision(const WorkingCurve& f, const WorkingCurve& g,
+                                                    ParamInterval t, ParamInterval s,
+                                                    Point2 center);
 
 /// Solves f(t) = p for t near `start` (Gauss-Newton on |f(t) - p|^2 with double-double
 /// residuals, gauss_newton.hpp): the parameter of a point known to lie on f, refined from a

@@ -221,6 +221,14 @@ class Searcher {
     return false;
   }
 
+  /// coincide_at_precision on the box, charged by the evaluations it made.
+  bool coincides(const Box& b) {
+    const CoincidenceTest test = coincide_at_precision(
+        *in_.f, *in_.g, b.t, b.s, evaluate_with_tangent(*in_.f, b.t.lo).point);
+    out_.stats.work += coincidence_test_cost(in_.f->degree, in_.g->degree, test.evaluations);
+    return test.coincide;
+  }
+
   void process(Box box) {
     f_ok_ = g_ok_ = false;
     bool tried_alternative = false;
@@ -303,9 +311,7 @@ class Searcher {
         }
         const bool at_floor = box.compensated && !td && !sd && box.t.width() <= kFloorWidth &&
                               box.s.width() <= kFloorWidth;
-        if (at_floor) out_.stats.work += coincidence_test_cost(in_.f->degree, in_.g->degree);
-        if (at_floor && coincide_at_precision(*in_.f, *in_.g, box.t, box.s,
-                                              evaluate_with_tangent(*in_.f, box.t.lo).point)) {
+        if (at_floor && coincides(box)) {
           emit(box, false);
           return;
         }
@@ -364,9 +370,7 @@ class Searcher {
         }
         const bool at_floor = box.compensated && !td && !sd && box.t.width() <= kFloorWidth &&
                               box.s.width() <= kFloorWidth;
-        if (at_floor) out_.stats.work += coincidence_test_cost(in_.f->degree, in_.g->degree);
-        if (at_floor && coincide_at_precision(*in_.f, *in_.g, box.t, box.s,
-                                              evaluate_with_tangent(*in_.f, box.t.lo).point)) {
+        if (at_floor && coincides(box)) {
           emit(box, false);  // the curves agree to within rounding here: a high-order contact
           return;
         }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <bit>
 #include <cstdint>
 
 namespace bezier::core {
@@ -41,12 +42,19 @@ inline constexpr std::int64_t kStepOverhead = 8;
   return 6 * (a * a + b * b);
 }
 
+/// Newton iterations cost this many times a plain piece's updates per curve: a residual
+/// evaluated in double-double on each curve (half a compensated piece each), and the
+/// tangents in doubles from the same pass.
+inline constexpr std::int64_t kNewtonFactor = 4;
+
 /// The test whether the curves coincide to within rounding on a compensated box at the
-/// precision floor (five samples, each projected onto the other curve by compensated
-/// evaluations): measured as one compensated step.
-[[nodiscard]] constexpr std::int64_t coincidence_test_cost(int m, int n) noexcept {
-  const std::int64_t a = m + 1, b = n + 1;
-  return kCompensatedFactor * (a * a + b * b);
+/// precision floor (overlap.hpp: f's compensated piece, then five points of f projected
+/// onto g by Gauss-Newton steps with compensated residuals): the piece as one compensated
+/// step, and each compensated evaluation of either curve as a Newton iteration's share
+/// for one curve (below).
+[[nodiscard]] constexpr std::int64_t coincidence_test_cost(int m, int n, int evaluations) noexcept {
+  const std::int64_t a = m + 1, b = n + 1, c = (a > b ? a : b);
+  return kCompensatedFactor * (a * a + b * b) + evaluations * kNewtonFactor * c * c;
 }
 
 /// One implicit ("fat parabola") clip of a piece of degree n: the squares and products of
@@ -57,15 +65,33 @@ inline constexpr std::int64_t kStepOverhead = 8;
   return 24 * a * a;
 }
 
-/// Newton iterations cost this many times a plain piece's updates per curve: a residual
-/// evaluated in double-double on each curve (half a compensated piece each), and the
-/// tangents in doubles from the same pass.
-inline constexpr std::int64_t kNewtonFactor = 4;
-
 /// One Newton iteration of the final refinement on curves of degrees m and n.
 [[nodiscard]] constexpr std::int64_t newton_cost(int m, int n) noexcept {
   const std::int64_t a = m + 1, b = n + 1;
   return kStepOverhead + kNewtonFactor * (a * a + b * b);
+}
+
+/// Grouping k boxes into contacts (merge.hpp): the sort and the sweep through a segment
+/// tree (box_components.hpp), about k log2 k visits of a few comparisons each.
+inline constexpr std::int64_t kMergeVisitCost = 16;
+
+[[nodiscard]] constexpr std::int64_t merge_cost(std::int64_t k) noexcept {
+  return kMergeVisitCost * k * std::bit_width(static_cast<std::uint64_t>(k));
+}
+
+/// The most Newton iterations one contact's refinement takes (refine.hpp: the transversal
+/// system, then the tangency system).
+inline constexpr std::int64_t kMaxRefineIterations = 60;
+
+/// What a contact costs besides its Newton iterations: both curves evaluated with their
+/// tangents where it lies, for its point and its kind, measured as one Newton iteration.
+[[nodiscard]] constexpr std::int64_t contact_cost(int m, int n) noexcept {
+  return newton_cost(m, n);
+}
+
+/// The most a contact can cost: the refinement is only started when the budget covers it.
+[[nodiscard]] constexpr std::int64_t max_contact_cost(int m, int n) noexcept {
+  return contact_cost(m, n) + kMaxRefineIterations * newton_cost(m, n);
 }
 
 }  // namespace bezier::core

@@ -23,7 +23,7 @@ TEST(WorkCost, HigherDegreeCostsMoreInEveryCharge) {
       }
       EXPECT_LT(newton_cost(m, n), newton_cost(m, n + 1));
       EXPECT_LT(subdivision_test_cost(m, n), subdivision_test_cost(m, n + 1));
-      EXPECT_LT(coincidence_test_cost(m, n), coincidence_test_cost(m, n + 1));
+      EXPECT_LT(coincidence_test_cost(m, n, 5), coincidence_test_cost(m, n + 1, 5));
     }
     EXPECT_LT(implicit_clip_cost(m), implicit_clip_cost(m + 1));
     EXPECT_LT(self_intersection_box_cost(m), self_intersection_box_cost(m + 1));
@@ -70,7 +70,7 @@ TEST(WorkCost, SymmetricInTheTwoCurves) {
       EXPECT_EQ(step_cost(m, n, true), step_cost(n, m, true));
       EXPECT_EQ(newton_cost(m, n), newton_cost(n, m));
       EXPECT_EQ(subdivision_test_cost(m, n), subdivision_test_cost(n, m));
-      EXPECT_EQ(coincidence_test_cost(m, n), coincidence_test_cost(n, m));
+      EXPECT_EQ(coincidence_test_cost(m, n, 5), coincidence_test_cost(n, m, 5));
     }
   }
 }
