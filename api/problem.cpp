@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "api/dump_json.hpp"
+#include "api/write_json.hpp"
 
 namespace bezier::api {
 

@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "api/json_writer.hpp"
+#include "api/write_json.hpp"
 
 namespace bezier::api {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "api/dump_json.hpp"
+#include "api/write_json.hpp"
 #include "api/handler.hpp"
 #include "core/classify.hpp"
 

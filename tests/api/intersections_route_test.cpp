@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "api/dump_json.hpp"
+#include "api/write_json.hpp"
 #include "api/handler.hpp"
 #include "core/intersect/intersect.hpp"
 #include "tests/core/intersect/python_bezier_fixtures.hpp"

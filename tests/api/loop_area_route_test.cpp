@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "api/dump_json.hpp"
+#include "api/write_json.hpp"
 #include "api/handler.hpp"
 #include "core/loop_area.hpp"
 #include "core/self_intersection_work_cost.hpp"

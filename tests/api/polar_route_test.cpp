@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "api/dump_json.hpp"
+#include "api/write_json.hpp"
 #include "api/handler.hpp"
 
 namespace bezier::api {
