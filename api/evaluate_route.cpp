@@ -3,6 +3,7 @@
 #include "api/write_json.hpp"
 #include "core/derivative.hpp"
 #include "core/evaluate.hpp"
+#include "core/measure/frame.hpp"
 #include "core/subdivide.hpp"
 
 namespace bezier::api {
@@ -12,11 +13,14 @@ namespace {
 struct EvaluateRequest {
   std::vector<double> ts;
   int derivatives = 0;
+  bool frame = false;
   std::optional<double> split;
 };
 
-// {"degree", "results": [{"derivatives"?, "point", "t"}], "split"?: {"left", "right", "t"}},
-// members in key order (the text a document of the answer would dump to).
+// {"degree", "results": [{"curvature"?, "derivatives"?, "normal"?, "point", "t", "tangent"?}],
+//  "split"?: {"left", "right", "t"}}, members in key order (the text a document of the answer
+// would dump to). The frame's three members are null where B'(t) = 0 (and the normal alone
+// in 3-D where B' x B'' = 0: the principal normal is undefined there).
 template <class P>
 Reply evaluate_answer(const core::BasicCurve<P>& curve, const EvaluateRequest& request) {
   JsonWriter w;
@@ -25,6 +29,11 @@ Reply evaluate_answer(const core::BasicCurve<P>& curve, const EvaluateRequest& r
   w.key("results").begin_array();
   for (const double t : request.ts) {
     w.begin_object();
+    std::optional<core::Frame<P>> frame;
+    if (request.frame) {
+      frame = core::frame(curve, t);
+      frame ? w.key("curvature").value(frame->curvature) : w.key("curvature").null();
+    }
     if (request.derivatives > 0) {
       // derivatives_at keeps the hodographs unrounded: within one rounding of the exact
       // value, where evaluating rounded hodograph points is not.
@@ -32,8 +41,16 @@ Reply evaluate_answer(const core::BasicCurve<P>& curve, const EvaluateRequest& r
       for (const auto& d : core::derivatives_at(curve, t, request.derivatives)) write_point(w, d);
       w.end_array();
     }
+    if (request.frame) {
+      w.key("normal");
+      frame && frame->normal ? write_point(w, *frame->normal) : w.null();
+    }
     write_point(w.key("point"), core::evaluate(curve, t));
     w.key("t").value(t);
+    if (request.frame) {
+      w.key("tangent");
+      frame ? write_point(w, frame->tangent) : w.null();
+    }
     w.end_object();
   }
   w.end_array();
@@ -53,7 +70,7 @@ Reply evaluate_answer(const core::BasicCurve<P>& curve, const EvaluateRequest& r
 
 Reply evaluate_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
-  reader.reject_unknown_fields(request, {"points", "t", "samples", "derivatives", "split"}, "");
+  reader.reject_unknown_fields(request, {"points", "t", "samples", "derivatives", "frame", "split"}, "");
   std::optional<std::variant<core::Curve, core::Curve3>> curve;
   if (const auto* points = reader.required(request, "points", "")) {
     curve = reader.curve(*points, "/points");
@@ -72,6 +89,13 @@ Reply evaluate_route(const nlohmann::json& request, const Limits& limits) {
     reader.fail_limit("/derivatives", "t values x (derivatives + 1) = " + std::to_string(answer_points) +
                                           " points is above the limit of " +
                                           std::to_string(limits.max_t_values));
+  }
+  if (const auto* f = RequestReader::optional(request, "frame")) {
+    if (f->is_boolean()) {
+      parsed.frame = f->get<bool>();
+    } else {
+      reader.fail("/frame", "expected a boolean");
+    }
   }
   if (const auto* s = RequestReader::optional(request, "split")) {
     parsed.split = reader.number(*s, "/split");

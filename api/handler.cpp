@@ -24,6 +24,9 @@ constexpr std::array kRoutes = {
     Route{"/classify", &classify_route},
     Route{"/loop-area", &loop_area_route},
     Route{"/intersections", &intersections_route},
+    Route{"/length", &length_route},
+    Route{"/bounds", &bounds_route},
+    Route{"/nearest", &nearest_route},
 };
 
 constexpr std::array<std::string_view, kRoutes.size()> kPaths = [] {

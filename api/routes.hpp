@@ -16,5 +16,8 @@ namespace bezier::api {
 [[nodiscard]] Reply classify_route(const nlohmann::json& request, const Limits& limits);
 [[nodiscard]] Reply loop_area_route(const nlohmann::json& request, const Limits& limits);
 [[nodiscard]] Reply intersections_route(const nlohmann::json& request, const Limits& limits);
+[[nodiscard]] Reply length_route(const nlohmann::json& request, const Limits& limits);
+[[nodiscard]] Reply bounds_route(const nlohmann::json& request, const Limits& limits);
+[[nodiscard]] Reply nearest_route(const nlohmann::json& request, const Limits& limits);
 
 }  // namespace bezier::api

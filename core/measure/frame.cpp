@@ -35,7 +35,8 @@ std::optional<Frame<Point2>> frame(const Curve& curve, double t) {
   const Point2 tangent = d[0] / speed;
   Frame<Point2> f;
   f.tangent = tangent;
-  f.normal = Point2{-tangent.y, tangent.x};
+  // 0 - y, not -y: a horizontal tangent's normal is (0, ±1), not (-0, 1).
+  f.normal = Point2{0.0 - tangent.y, tangent.x};
   f.curvature = cross(d[0], d[1]) / (speed * speed * speed);
   return f;
 }

@@ -1,4 +1,6 @@
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "api/write_json.hpp"
@@ -225,6 +227,56 @@ TEST(EvaluateRoute, ErrorListIsBounded) {
   const json r = call(body, 422);
   EXPECT_LE(r["errors"].size(), 32u);
   EXPECT_EQ(r["errors"][0]["pointer"], "/points/0/0");
+}
+
+TEST(EvaluateRoute, FrameOfAParabola) {
+  // B(t) = (t, t^2): at t = 0 tangent (1, 0), normal (0, 1), curvature 2; at t = 1/2 the
+  // tangent (1, 1)/sqrt(2) and curvature 2 / 2^(3/2) = 1/sqrt(2).
+  const json r = call(R"({"points":[[0,0],[0.5,0],[1,1]],"t":[0,0.5],"frame":true})", 200);
+  const json& vertex = r["results"][0];
+  EXPECT_EQ(vertex["tangent"], json::parse("[1.0, 0.0]"));
+  EXPECT_EQ(dump_json(vertex["normal"]), "[0.0,1.0]");
+  EXPECT_NEAR(vertex["curvature"].get<double>(), 2.0, 1e-15);
+  const json& middle = r["results"][1];
+  EXPECT_NEAR(middle["tangent"][0].get<double>(), std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(middle["tangent"][1].get<double>(), std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(middle["normal"][0].get<double>(), -std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(middle["curvature"].get<double>(), std::sqrt(0.5), 1e-15);
+  // Clockwise: the reversed parabola's curvature is negative.
+  const json back = call(R"({"points":[[1,1],[0.5,0],[0,0]],"t":1,"frame":true})", 200);
+  EXPECT_NEAR(back["results"][0]["curvature"].get<double>(), -2.0, 1e-15);
+  // Without frame (or frame false) the members are absent.
+  const json plain = call(R"({"points":[[0,0],[0.5,0],[1,1]],"t":0,"frame":false})", 200);
+  EXPECT_FALSE(plain["results"][0].contains("tangent"));
+  EXPECT_FALSE(plain["results"][0].contains("curvature"));
+}
+
+TEST(EvaluateRoute, FrameIsNullAtACusp) {
+  const json r = call(R"({"points":[[0,0],[1,1],[0,1],[1,0]],"t":[0.5,0.25],"frame":true})", 200);
+  EXPECT_TRUE(r["results"][0]["tangent"].is_null());
+  EXPECT_TRUE(r["results"][0]["normal"].is_null());
+  EXPECT_TRUE(r["results"][0]["curvature"].is_null());
+  EXPECT_TRUE(r["results"][1]["tangent"].is_array());
+}
+
+TEST(EvaluateRoute, FrameInSpace) {
+  // (5t, 3t^2, 4t^2): the parabola of curvature 2/5 at its vertex, normal (0, 3/5, 4/5); a
+  // straight space line has no principal normal.
+  const json r = call(R"({"points":[[0,0,0],[2.5,0,0],[5,3,4]],"t":0,"frame":true,"derivatives":1})", 200);
+  const json& f = r["results"][0];
+  EXPECT_EQ(f["tangent"], json::parse("[1.0, 0.0, 0.0]"));
+  EXPECT_NEAR(f["normal"][1].get<double>(), 0.6, 1e-15);
+  EXPECT_NEAR(f["normal"][2].get<double>(), 0.8, 1e-15);
+  EXPECT_NEAR(f["curvature"].get<double>(), 0.4, 1e-15);
+  EXPECT_EQ(f["derivatives"][0], json::parse("[5.0, 0.0, 0.0]"));
+  const json line = call(R"({"points":[[0,0,0],[1,2,2]],"t":0.5,"frame":true})", 200);
+  EXPECT_TRUE(line["results"][0]["normal"].is_null());
+  EXPECT_EQ(line["results"][0]["curvature"], 0.0);
+}
+
+TEST(EvaluateRoute, FrameMustBeABoolean) {
+  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":0,"frame":1})", 422)),
+            std::vector<std::string>{"/frame"});
 }
 
 }  // namespace

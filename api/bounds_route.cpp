@@ -1,0 +1,59 @@
+// POST /bounds (DESIGN §6): the tight axis-aligned box of a planar or space curve of any
+// degree on a parameter interval, and the parameters where its coordinates turn.
+//
+// Request:  {"points": [[x, y], ...] or [[x, y, z], ...], "interval": [a, b]}
+//   interval  optional, 0 <= a <= b <= 1, default [0, 1].
+// Answer:   {"critical": [[t, ...] per axis], "degree", "interval": [a, b], "max", "min"}
+//   min, max   the box of the curve itself (not of its control points), each face the
+//              exact extreme rounded outward (core/measure/bounds.hpp).
+//   critical   per axis, increasing: the t in (a, b) where that coordinate's derivative
+//              vanishes, a double root once.
+// Errors: 422 validation problems with JSON Pointers.
+
+#include "api/parameter_interval.hpp"
+#include "api/read_json.hpp"
+#include "api/routes.hpp"
+#include "api/write_json.hpp"
+#include "core/measure/bounds.hpp"
+
+namespace bezier::api {
+
+namespace {
+
+// {"critical", "degree", "interval", "max", "min"}, members in key order (the text a
+// document of the answer would dump to).
+template <class P>
+Reply bounds_answer(const core::BasicCurve<P>& curve, ParameterInterval interval) {
+  const core::Bounds<P> box = core::bounds(curve, interval.a, interval.b);
+  JsonWriter w;
+  w.begin_object();
+  w.key("critical").begin_array();
+  for (const std::vector<double>& ts : box.critical) {
+    w.begin_array();
+    for (const double t : ts) w.value(t);
+    w.end_array();
+  }
+  w.end_array();
+  w.key("degree").value(curve.degree());
+  w.key("interval").pair(interval.a, interval.b);
+  write_point(w.key("max"), box.max);
+  write_point(w.key("min"), box.min);
+  w.end_object();
+  return json_reply(std::move(w));
+}
+
+}  // namespace
+
+Reply bounds_route(const nlohmann::json& request, const Limits& limits) {
+  RequestReader reader(limits);
+  reader.reject_unknown_fields(request, {"points", "interval"}, "");
+  std::optional<std::variant<core::Curve, core::Curve3>> curve;
+  if (const auto* points = reader.required(request, "points", "")) {
+    curve = reader.curve(*points, "/points");
+  }
+  const auto interval = read_parameter_interval(reader, request);
+  if (!reader.ok()) return reader.refusal();
+  return std::visit([&](const auto& c) { return bounds_answer(c, *interval); }, *curve);
+}
+
+}  // namespace bezier::api

@@ -1,0 +1,105 @@
+// POST /length (DESIGN §6): the arc length of a planar or space curve of any degree on a
+// parameter interval, and the parameters at given lengths.
+//
+// Request:  {"points": [[x, y], ...] or [[x, y, z], ...], "interval": [a, b],
+//            "at_lengths": [l, ...]}   (interval and at_lengths optional)
+//   interval    0 <= a <= b <= 1, default [0, 1].
+//   at_lengths  1 to max_t_values numbers, each in [0, length] (a value above the length by
+//               more than its error bound is refused at its pointer).
+// Answer:   {"degree", "error_bound", "interval": [a, b], "length",
+//            "parameters": [{"length", "point", "t"}] (with at_lengths, in their order)}
+//   length       ∫_a^b |B'(t)| dt within 1e-12 relative; error_bound the bound it met
+//                (core/measure/arc_length.hpp).
+//   parameters   the t in [a, b] with length(a, t) = l, and B(t).
+// Errors: 422 validation problems with JSON Pointers; 422 work-cap problem when the
+// quadrature needs more pieces than its cap.
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "api/parameter_interval.hpp"
+#include "api/read_json.hpp"
+#include "api/routes.hpp"
+#include "api/write_json.hpp"
+#include "core/evaluate.hpp"
+#include "core/measure/arc_length.hpp"
+
+namespace bezier::api {
+
+namespace {
+
+std::string format_number(double v) {
+  std::string out;
+  append_json_number(v, out);
+  return out;
+}
+
+template <class P>
+Reply length_answer(RequestReader& reader, const core::BasicCurve<P>& curve,
+                    ParameterInterval interval, const std::optional<std::vector<double>>& at_lengths) {
+  const core::ArcLength measured = core::arc_length(curve, interval.a, interval.b);
+  if (measured.status == core::ArcLengthStatus::work_cap_reached) {
+    const core::ArcLengthOptions options;
+    return problem_reply(ProblemKind::work_cap,
+                         "the arc length did not reach its 1e-12 relative accuracy within " +
+                             std::to_string(options.max_pieces) +
+                             " quadrature pieces (error bound " + format_number(measured.error_bound) +
+                             " for length " + format_number(measured.length) + ")");
+  }
+  if (at_lengths) {
+    // Lengths up to the total plus its error bound are the end: a client may send back the
+    // length it was given.
+    const double most = measured.length + measured.error_bound;
+    for (std::size_t i = 0; i < at_lengths->size(); ++i) {
+      if ((*at_lengths)[i] > most) {
+        reader.fail(pointer_to("/at_lengths", i),
+                    "beyond the length of the curve on the interval (" + format_number(measured.length) + ")");
+      }
+    }
+    if (!reader.ok()) return reader.refusal();
+  }
+  // {"degree", "error_bound", "interval", "length", "parameters"?: [{"length", "point", "t"}]},
+  // members in key order (the text a document of the answer would dump to).
+  JsonWriter w;
+  w.begin_object();
+  w.key("degree").value(curve.degree());
+  w.key("error_bound").value(measured.error_bound);
+  w.key("interval").pair(interval.a, interval.b);
+  w.key("length").value(measured.length);
+  if (at_lengths) {
+    w.key("parameters").begin_array();
+    for (const double l : *at_lengths) {
+      const double t = core::parameter_at_length(curve, measured, l);
+      w.begin_object();
+      w.key("length").value(l);
+      write_point(w.key("point"), core::evaluate(curve, t));
+      w.key("t").value(t);
+      w.end_object();
+    }
+    w.end_array();
+  }
+  w.end_object();
+  return json_reply(std::move(w));
+}
+
+}  // namespace
+
+Reply length_route(const nlohmann::json& request, const Limits& limits) {
+  RequestReader reader(limits);
+  reader.reject_unknown_fields(request, {"points", "interval", "at_lengths"}, "");
+  std::optional<std::variant<core::Curve, core::Curve3>> curve;
+  if (const auto* points = reader.required(request, "points", "")) {
+    curve = reader.curve(*points, "/points");
+  }
+  const auto interval = read_parameter_interval(reader, request);
+  std::optional<std::vector<double>> at_lengths;
+  if (const auto* value = RequestReader::optional(request, "at_lengths")) {
+    at_lengths = reader.numbers(*value, "/at_lengths", 0.0, std::numeric_limits<double>::max());
+  }
+  if (!reader.ok()) return reader.refusal();
+  return std::visit([&](const auto& c) { return length_answer(reader, c, *interval, at_lengths); },
+                    *curve);
+}
+
+}  // namespace bezier::api

@@ -1,0 +1,150 @@
+// POST /nearest (DESIGN §6): for each target, the point of a planar or space curve of any
+// degree nearest to it on a parameter interval (the global minimum of the distance).
+//
+// Request:  {"points": [[x, y], ...] or [[x, y, z], ...], "targets": [[x, y], ...],
+//            "interval": [a, b]}
+//   targets   1 to max_t_values points of the curve's dimension, finite.
+//   interval  optional, 0 <= a <= b <= 1, default [0, 1].
+// Answer:   {"degree", "interval": [a, b],
+//            "results": [{"distance", "point", "t", "target", "ties": [t, ...]}]}
+//   one result per target, in order: t the smallest parameter attaining the least distance
+//   over [a, b] (ends included), B(t), the distance, and the other parameters that tie with
+//   it to 1e-12 relative (core/measure/nearest.hpp).
+// Errors: 422 validation problems with JSON Pointers; 422 work-cap problem when targets
+// times the cost of one target's search exceeds limits.max_work.
+
+#include <cstdint>
+#include <string>
+
+#include "api/parameter_interval.hpp"
+#include "api/read_json.hpp"
+#include "api/routes.hpp"
+#include "api/write_json.hpp"
+#include "core/measure/nearest.hpp"
+
+namespace bezier::api {
+
+namespace {
+
+constexpr std::size_t dimension_of(core::Point2) { return 2; }
+constexpr std::size_t dimension_of(core::Point3) { return 3; }
+
+/// `targets`: 1 to max_t_values points of P's dimension.
+template <class P>
+std::optional<std::vector<P>> read_targets(RequestReader& reader, const Json& value) {
+  constexpr std::size_t kDimension = dimension_of(P{});
+  if (!value.is_array()) {
+    reader.fail("/targets", "expected an array of points");
+    return std::nullopt;
+  }
+  if (value.empty()) {
+    reader.fail("/targets", "must not be empty");
+    return std::nullopt;
+  }
+  const auto limit = static_cast<std::size_t>(reader.limits().max_t_values);
+  if (value.size() > limit) {
+    reader.fail_limit("/targets", "at most " + std::to_string(limit) + " targets allowed, got " +
+                                      std::to_string(value.size()));
+    return std::nullopt;
+  }
+  std::vector<P> targets;
+  bool all_ok = true;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const Json& p = value[i];
+    const std::string pointer = pointer_to("/targets", i);
+    if (!p.is_array() || p.size() != kDimension) {
+      reader.fail(pointer, "expected a point of " + std::to_string(kDimension) +
+                               " numbers, the curve's dimension");
+      all_ok = false;
+      continue;
+    }
+    P target;
+    double* coordinates = &target.x;
+    for (std::size_t k = 0; k < kDimension; ++k) {
+      const auto c = reader.number(p[k], pointer_to(pointer, k));
+      all_ok = all_ok && c.has_value();
+      coordinates[k] = c.value_or(0.0);
+    }
+    targets.push_back(target);
+  }
+  if (!all_ok) return std::nullopt;
+  return targets;
+}
+
+/// Work units of one target (the units of Limits::max_work, about 3-6 ns each): isolating
+/// and bisecting the roots of a degree 2n - 1 polynomial, each piece and each bisection step
+/// O(n^2), and polishing each root; 250 (2n)^2 is an upper estimate of what random curves of
+/// degrees 3 to 20 take.
+std::int64_t work_per_target(int degree) {
+  const std::int64_t m = 2 * static_cast<std::int64_t>(degree);
+  return 250 * m * m;
+}
+
+// {"degree", "interval", "results": [{"distance", "point", "t", "target", "ties"}]}, members
+// in key order (the text a document of the answer would dump to).
+template <class P>
+Reply nearest_answer(const core::BasicCurve<P>& curve, const std::vector<P>& targets,
+                     ParameterInterval interval) {
+  JsonWriter w;
+  w.begin_object();
+  w.key("degree").value(curve.degree());
+  w.key("interval").pair(interval.a, interval.b);
+  w.key("results").begin_array();
+  for (const P& target : targets) {
+    const core::NearestPoint<P> found = core::nearest(curve, target, interval.a, interval.b);
+    w.begin_object();
+    w.key("distance").value(found.distance);
+    write_point(w.key("point"), found.point);
+    w.key("t").value(found.t);
+    write_point(w.key("target"), target);
+    w.key("ties").begin_array();
+    for (const double t : found.ties) w.value(t);
+    w.end_array();
+    w.end_object();
+  }
+  w.end_array();
+  w.end_object();
+  return json_reply(std::move(w));
+}
+
+template <class P>
+Reply read_and_answer(RequestReader& reader, const core::BasicCurve<P>& curve,
+                      const Json& request, const std::optional<ParameterInterval>& interval) {
+  std::optional<std::vector<P>> targets;
+  if (const auto* value = reader.required(request, "targets", "")) {
+    targets = read_targets<P>(reader, *value);
+  }
+  if (!reader.ok()) return reader.refusal();
+  const std::int64_t work = static_cast<std::int64_t>(targets->size()) * work_per_target(curve.degree());
+  if (work > reader.limits().max_work) {
+    return problem_reply(ProblemKind::work_cap,
+                         std::to_string(targets->size()) + " targets on a curve of degree " +
+                             std::to_string(curve.degree()) + " need about " + std::to_string(work) +
+                             " work units, above the cap of " + std::to_string(reader.limits().max_work) +
+                             ": send fewer targets per request");
+  }
+  return nearest_answer(curve, *targets, *interval);
+}
+
+}  // namespace
+
+Reply nearest_route(const nlohmann::json& request, const Limits& limits) {
+  RequestReader reader(limits);
+  reader.reject_unknown_fields(request, {"points", "targets", "interval"}, "");
+  std::optional<std::variant<core::Curve, core::Curve3>> curve;
+  if (const auto* points = reader.required(request, "points", "")) {
+    curve = reader.curve(*points, "/points");
+  }
+  const auto interval = read_parameter_interval(reader, request);
+  if (!curve) {
+    // The targets' dimension is the curve's: without a curve, only their presence is checked.
+    if (RequestReader::optional(request, "targets") == nullptr) {
+      reader.fail("/targets", "required field is missing");
+    }
+    return reader.refusal();
+  }
+  return std::visit([&](const auto& c) { return read_and_answer(reader, c, request, interval); },
+                    *curve);
+}
+
+}  // namespace bezier::api
