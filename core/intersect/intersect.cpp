@@ -153,6 +153,13 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
     }
     return result;
   }
+  // What comes before the search (the collinear case, the overlaps) is bounded by the
+  // degrees: charged at once, and not started when the budget does not cover it.
+  result.stats.work = overlap_search_cost(wf.degree, wg.degree);
+  if (result.stats.work > options.max_work) {
+    result.status = IntersectStatus::work_cap_reached;
+    return result;
+  }
   // Two curves on one line: a one-dimensional problem.
   if (!wf.is_point && !wg.is_point) {
     if (const auto line = collinear_intersections(wf, wg, exact_end_roots(f, g, {}))) {
@@ -190,7 +197,6 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   in.g = &wg;
   in.method = options.method;
   in.width = search_width(options.tolerance);
-  in.max_work = options.max_work;
   in.overlaps = overlaps;
   in.t_free = wf.is_point;
   in.s_free = wg.is_point;
@@ -207,7 +213,9 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
     in.op_f = &op_f;
     in.op_g = &op_g;
   }
+  in.max_work = options.max_work - result.stats.work;
   SearchOutput found = search(in);
+  found.stats.work += result.stats.work;
   result.stats = found.stats;
   if (found.capped) result.status = IntersectStatus::work_cap_reached;
 
@@ -229,8 +237,9 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
     if (in.s_free) c.s = {0.0, 1.0};
     const Refinement r = refine_contact(wf, wg, c, in.t_free, in.s_free, kind_tol.tangent_sine);
     result.stats.newton_iterations += r.iterations;
-    result.stats.work += contact_cost(wf.degree, wg.degree) +
-                         r.iterations * newton_cost(wf.degree, wg.degree);
+    // The point and the kind (two evaluations with tangents) cost less than one of the
+    // iterations' charges, which every contact but an exact root's takes.
+    result.stats.work += r.iterations * newton_cost(wf.degree, wg.degree);
     Intersection x =
         r.f_at_t && r.g_at_s
             ? make_intersection(*r.f_at_t, *r.g_at_s, scales, r.t, r.s, c.t, c.s)

@@ -160,6 +160,7 @@ class Searcher {
   }
 
   void emit(const Box& b, bool resolved) {
+    out_.stats.work += kCandidateCost;
     out_.candidates.push_back({b.t, b.s, resolved && t_done(b) && s_done(b)});
     ++out_.stats.candidate_boxes;
   }

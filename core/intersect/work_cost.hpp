@@ -83,15 +83,25 @@ inline constexpr std::int64_t kMergeVisitCost = 16;
 /// system, then the tangency system).
 inline constexpr std::int64_t kMaxRefineIterations = 60;
 
-/// What a contact costs besides its Newton iterations: both curves evaluated with their
-/// tangents where it lies, for its point and its kind, measured as one Newton iteration.
-[[nodiscard]] constexpr std::int64_t contact_cost(int m, int n) noexcept {
-  return newton_cost(m, n);
+/// The most a contact's refinement can cost: it is only started when the budget covers it.
+[[nodiscard]] constexpr std::int64_t max_contact_cost(int m, int n) noexcept {
+  return kMaxRefineIterations * newton_cost(m, n);
 }
 
-/// The most a contact can cost: the refinement is only started when the budget covers it.
-[[nodiscard]] constexpr std::int64_t max_contact_cost(int m, int n) noexcept {
-  return contact_cost(m, n) + kMaxRefineIterations * newton_cost(m, n);
+/// Storing a box the search reports (candidate_boxes), with the final separation test
+/// that precedes it: a search that reports many (a column of boxes along a crossing that
+/// doubles cannot decide) spends its time there and in the memory they take.
+inline constexpr std::int64_t kCandidateCost = 32;
+
+/// What intersect() does before the search, bounded by the degrees: the collinear test
+/// (and the one-dimensional problem of two curves on one line), and the overlaps along an
+/// affine map or a common arc. For proper curves the factorisation attempts stop at their
+/// first filter and this covers them; an improper curve (or a degenerate one, most of its
+/// control points equal) takes every candidate factor of its degree through division and
+/// interpolation and costs a few times more (BENCHMARKS.md §4b), still bounded by the degree.
+[[nodiscard]] constexpr std::int64_t overlap_search_cost(int m, int n) noexcept {
+  const std::int64_t a = m + 1, b = n + 1;
+  return 4 * (a * a * a + b * b * b);
 }
 
 }  // namespace bezier::core
