@@ -42,6 +42,23 @@ void append_header(std::string& out, std::string_view name, std::string_view val
   out += "\r\n";
 }
 
+// Every answer: browsers must take the declared Content-Type as it is, never sniff a
+// JSON or text answer into something they would run or render.
+constexpr std::string_view kNoSniff = "X-Content-Type-Options: nosniff\r\n";
+
+// HTML answers (the playground's pages): scripts, styles, images, connections and
+// everything else from the service's own origin only, no inline code (the page loads
+// its scripts and styles as files), and no framing by any page (clickjacking).
+constexpr std::string_view kPageSecurityPolicy =
+    "Content-Security-Policy: default-src 'self'; base-uri 'self'; form-action 'self'; "
+    "frame-ancestors 'none'\r\n";
+
+bool is_html(std::string_view content_type) noexcept {
+  constexpr std::string_view kHtml = "text/html";
+  return content_type.substr(0, kHtml.size()) == kHtml &&
+         (content_type.size() == kHtml.size() || content_type[kHtml.size()] == ';');
+}
+
 }  // namespace
 
 void append_response(std::string& out, const Response& response, const WireOptions& options) {
@@ -55,6 +72,8 @@ void append_response(std::string& out, const Response& response, const WireOptio
   out += "Content-Length: ";
   append_number(out, response.body.size());
   out += "\r\n";
+  out += kNoSniff;
+  if (is_html(response.content_type)) out += kPageSecurityPolicy;
   for (const auto& [name, value] : response.headers) append_header(out, name, value);
   if (!options.request_id.empty()) append_header(out, "X-Request-Id", options.request_id);
   if (!options.keep_alive) {

@@ -48,6 +48,11 @@ let context;
 let userDataDir;
 let page;
 const pageErrors = [];
+// What the page's Content-Security-Policy blocked (Chromium reports each on the console).
+const policyViolations = [];
+const recordPolicyViolations = (p) => p.on('console', (message) => {
+  if (/Content Security Policy/i.test(message.text())) policyViolations.push(message.text());
+});
 
 function startService() {
   return new Promise((resolve, reject) => {
@@ -143,6 +148,7 @@ before(async () => {
   context.setDefaultTimeout(kTimeout);
   page = context.pages()[0] ?? await context.newPage();
   page.on('pageerror', (e) => pageErrors.push(e.message));
+  recordPolicyViolations(page);
 });
 
 after(async () => {
@@ -162,7 +168,14 @@ test('GET / serves the page and its files with their content types', async () =>
     const response = await fetch(baseUrl + path);
     assert.equal(response.status, 200, path);
     assert.match(response.headers.get('content-type'), new RegExp(`^${type}`), path);
+    assert.equal(response.headers.get('x-content-type-options'), 'nosniff', path);
   }
+  // The page runs under a policy that admits nothing but its own origin: no inline
+  // script or style, no other host. Every test below runs under it, and a violation
+  // (recorded from the console) fails the last one.
+  const policy = (await fetch(baseUrl + '/')).headers.get('content-security-policy') ?? '';
+  assert.match(policy, /(^|;\s*)default-src 'self'(;|$)/);
+  assert.match(policy, /(^|;\s*)frame-ancestors 'none'(;|$)/);
   await page.goto(baseUrl + '/');
   await settle();
   assert.equal(await page.title(), 'Bézier playground · bezier-service');
@@ -401,6 +414,7 @@ test('overlapping curves: the overlap is listed and highlighted', async () => {
 test('phone width: no sideways scrolling, and a tap adds a point', async () => {
   const phone = await context.newPage();
   phone.on('pageerror', (e) => pageErrors.push(e.message));
+  recordPolicyViolations(phone);
   await phone.setViewportSize({width: 390, height: 844});
   await phone.goto(baseUrl + '/');
   await settle(phone);
@@ -421,6 +435,7 @@ test('phone width: no sideways scrolling, and a tap adds a point', async () => {
   await phone.close();
 });
 
-test('no script errors on the page', () => {
+test('no script errors on the page, and nothing blocked by its security policy', () => {
   assert.deepEqual(pageErrors, []);
+  assert.deepEqual(policyViolations, []);
 });
