@@ -180,3 +180,58 @@ classify_seed("line", [(0, 0), (1, 1), (3, 3), (2, 2)])
 classify_seed("point", [(5, 5)] * 4)
 classify_seed("closed", [(0, 0), (2, 2), (-1, 2), (0, 0)])
 classify_seed("collinear_start", [(0, 0), (1, 0), (2, 0), (1, 3)])
+
+
+# work_bound_fuzzer: budget index (22e6 / 10^i), route (0 two curves, 1 one curve,
+# 2 loop area), method (0 hybrid, 1 hybrid with fat curves of degree 2, 2 Bézier clipping,
+# 3 subdivision), then per curve a degree byte (1 + b % 4 below 192, 1 + b % 20 from 192 on)
+# and its coordinates, each a HostileNumbers selector and its payload.
+def hostile_number(seed, x):
+    """0 (selector 0), a small integer (1), m 10^e (2, from a string "me"), k / 2^j (4)."""
+    if isinstance(x, str):
+        m, e = x.split("e")
+        seed.byte(2).int16(int(m))
+        k = int(e) + 300  # ConsumeIntegralInRange(-300, 300): two bytes, high first
+        return seed.byte(k >> 8).byte(k & 0xFF)
+    x = Fraction(x)
+    if x == 0:
+        return seed.byte(0)
+    if x.denominator == 1 and -8 <= x <= 8:
+        return seed.byte(1).int_in_range(int(x), -8, 8)
+    j = 0
+    while (x * 2**j).denominator != 1:
+        j += 1
+    return seed.byte(4).int16(int(x * 2**j)).int_in_range(j, 0, 20)
+
+
+def work_bound_degree_byte(n):
+    return n - 1 if n <= 4 else next(b for b in range(192, 256) if 1 + b % 20 == n)
+
+
+def work_bound_seed(name, curves, route=0, method=0, budget_index=0):
+    seed = Seed().int_in_range(budget_index, 0, 3).int_in_range(route, 0, 2)
+    seed.int_in_range(method, 0, 3)
+    for pts in curves:
+        seed.byte(work_bound_degree_byte(len(pts) - 1))
+        for x, y in pts:
+            hostile_number(seed, x)
+            hostile_number(seed, y)
+    write("work_bound_fuzzer", name, seed)
+
+
+# Two requests that once ran for seconds at the default budget, by every method.
+STEEP_PARABOLA = [(2, -2), (-1, "1e14"), (-1, -1)]
+STEEP_LINE = [(Fraction(-1, 2), 0), (-2, "1e6")]
+WIDE_CUBIC = [(0, 1), ("1e9", 1), (0, "-1e9"), (0, -2)]
+DIAGONAL = [(0, 0), (1, 1)]
+for method, label in [(0, "hybrid"), (1, "hybrid2"), (2, "clipping"), (3, "subdivision")]:
+    work_bound_seed("steep_parabola_" + label, [STEEP_PARABOLA, STEEP_LINE], method=method)
+    work_bound_seed("wide_cubic_" + label, [WIDE_CUBIC, DIAGONAL], method=method)
+work_bound_seed("wide_quartic_self", [[(1, Fraction(1, 2)), (Fraction(1, 2), "-69e13"),
+                                       ("69e13", "-69e13"), (Fraction(-19615, 2), "-61e-2"),
+                                       ("-74e-17", "-61e-2")]], route=1, method=3)
+work_bound_seed("wide_quartic_loop_area", [[(1, Fraction(1, 2)), (Fraction(1, 2), "-69e13"),
+                                            ("69e13", "-69e13"), (Fraction(-19615, 2), "-61e-2"),
+                                            ("-74e-17", "-61e-2")]], route=2, budget_index=1)
+work_bound_seed("tiny_and_huge", [[("1e-300", "1e300"), ("-1e300", "1e-300"), (1, 1)],
+                                  [("1e300", "1e300"), ("-1e-300", "-1e300")]], budget_index=2)
