@@ -6,6 +6,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "core/binomial.hpp"
 #include "core/derivative.hpp"
 #include "core/intersect/bernstein1d.hpp"
 #include "core/measure/bernstein_product.hpp"
@@ -16,6 +17,9 @@ namespace bezier::core {
 namespace {
 
 constexpr double kU = bernstein::kU;
+
+double norm1(Point2 p) noexcept { return std::fabs(p.x) + std::fabs(p.y); }
+double norm1(Point3 p) noexcept { return std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z); }
 
 // The 7-point Gauss / 15-point Kronrod pair on [-1, 1] (QUADPACK qk15, Piessens et al. 1983):
 // abscissae x_k > 0 (the rule is symmetric) and the centre, with their weights. The Gauss
@@ -99,6 +103,30 @@ class CompensatedSum {
   double correction_ = 0.0;
 };
 
+/// ∫_a^b Σ_i ||h_i||_1 b_{i,m}(t) dt for the hodograph's points h_0..h_m: the integral of
+/// the de Casteljau condition scale of |B'|, which bounds its evaluation's rounding at each
+/// t (componentwise, Higham §5; the 1-norm bounds the Euclidean length's error) and so its
+/// integral's. With ∫_0^x b_{i,m} = 1/(m+1) Σ_{j>i} b_{j,m+1}(x) (Farin §5.1), it is
+/// W(b) - W(a), W(x) = 1/(m+1) Σ_{j=1..m+1} b_{j,m+1}(x) Σ_{i<j} ||h_i||_1. Unlike max ||h_i||,
+/// it stays proportional to the length where the speed is concentrated (one large
+/// hodograph point), and is at least the length itself. Its own rounding is a few u of it,
+/// negligible once multiplied by the rounding constant.
+template <class P>
+double integrated_condition(const BasicCurve<P>& hodograph, double a, double b) {
+  const auto h = hodograph.points();
+  const int m = static_cast<int>(h.size()) - 1;
+  const auto antiderivative = [&](double x) {
+    double sum = 0.0, prefix = 0.0;
+    for (int j = 1; j <= m + 1; ++j) {
+      const P p = h[static_cast<std::size_t>(j - 1)];
+      prefix += norm1(p);
+      sum += binomial(m + 1, j) * std::pow(x, j) * std::pow(1 - x, m + 1 - j) * prefix;
+    }
+    return sum / (m + 1);
+  };
+  return std::fabs(antiderivative(b) - antiderivative(a));
+}
+
 struct Piece {
   double a, b;
   RulePair rule;
@@ -156,9 +184,9 @@ ArcLength measure(const BasicCurve<P>& curve, double a, double b, const ArcLengt
   out.b = b;
   if (!(a < b)) return out;
   const Speed<P> speed(curve);
-  const double hodograph_scale = scale(speed.hodograph());
   const double n = curve.degree();
-  const double integrand_rounding = 2 * (3.01 * n + 1) * kU * hodograph_scale * (b - a);
+  const double integrand_rounding =
+      2 * (3.01 * n + 1) * kU * integrated_condition(speed.hodograph(), a, b);
 
   std::vector<Piece> heap;  // a max-heap on the error estimate
   const auto by_error = [](const Piece& x, const Piece& y) {

@@ -64,10 +64,11 @@ struct ArcLength {
 /// returned is far more accurate than the bound claims. This is the standard a posteriori
 /// estimate, not an interval-arithmetic proof; the adaptive halving keeps it in its
 /// asymptotic regime, and the tests check it against closed forms and exact quadrature.
-/// The rounding term: |B'(t)| is evaluated by de Casteljau on the hodograph (within
-/// 3.01 (n - 1) u M_1 per coordinate, M_1 the largest hodograph coordinate) and hypot, so
-/// the integral carries at most 2 (3.01 n + 1) u M_1 (b - a), plus 20 u of the length for
-/// the rules' weighted sums and the compensated total.
+/// The rounding term: |B'(t)| is evaluated by de Casteljau on the hodograph h_0..h_{n-1}
+/// (within 3.01 n u Σ_i ||h_i||_1 b_i(t) per coordinate, Higham §5.1) and hypot, so the
+/// integral carries at most 2 (3.01 n + 1) u ∫_a^b Σ_i ||h_i||_1 b_i(t) dt (computed in
+/// closed form), plus 20 u of the length for the rules' weighted sums and the compensated
+/// total.
 ///
 /// Compared with kurbo's arclen (a fixed 8- or 16-point Legendre rule whose error is
 /// estimated from the control polygon, recursing on halves, with an absolute accuracy) and
