@@ -200,6 +200,16 @@ TEST(ArcLength, SpaceCurves) {
                 5 * (2 * std::sqrt(2.0L) - 1));
 }
 
+TEST(ArcLength, SpeedConcentratedAtOneEnd) {
+  // P_0 = 0 and P_1 = ... = P_20 = (1, 2, 2): B' = 20 (1-t)^19 (1, 2, 2), so length(a, b) =
+  // 3 ((1-a)^20 - (1-b)^20). The hodograph's largest point is 10^4 times the length on
+  // [1/4, 3/4]: the rounding bound must follow the speed, not that point.
+  std::vector<Point3> pts(21, Point3{1, 2, 2});
+  pts[0] = Point3{0, 0, 0};
+  const long double exact = 3 * (std::pow(0.75L, 20) - std::pow(0.25L, 20));
+  expect_length(arc_length(Curve3(pts), 0.25, 0.75), exact);
+}
+
 TEST(ArcLength, EmptyIntervalIsZero) {
   const ArcLength got = arc_length(Curve({{0, 0}, {1, 1}, {0, 1}, {1, 0}}), 0.3, 0.3);
   EXPECT_EQ(got.length, 0.0);
