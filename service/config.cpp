@@ -5,29 +5,38 @@
 
 #include <CLI/CLI.hpp>
 
+#include "service/version.hpp"
+
 namespace bezier::service {
 
 ParsedConfig parse_config(int argc, char** argv) {
   Config config;
   CLI::App app{"bezier-service: a Bézier-curve geometry kernel behind a JSON/HTTP API"};
-  app.set_version_flag("--version", "bezier-service 0.1.0");
+  app.set_version_flag("--version", "bezier-service " + std::string(kServiceVersion));
   app.add_option("--host", config.host, "Address to bind")->envname("BEZIER_HOST")->capture_default_str();
   app.add_option("--port", config.port, "Port to listen on (0 picks a free port)")
       ->envname("BEZIER_PORT")->check(CLI::Range(0, 65535))->capture_default_str();
+  // One engine is left; the flag stays so that deployments that name it keep starting,
+  // and any other value stops start-up with a message that says why.
   std::string engine = "epoll";
-  app.add_option("--http-engine", engine,
-                 "HTTP front end: httplib (a thread per connection) or epoll (event loops + compute pool)")
-      ->envname("BEZIER_HTTP_ENGINE")->check(CLI::IsMember({"httplib", "epoll"}))->capture_default_str();
-  app.add_option("--threads", config.threads,
-                 "Worker threads (httplib: kept running; epoll: the compute pool)")
+  app.add_option("--http-engine", engine, "HTTP front end: epoll (event loops + compute pool), the only one")
+      ->envname("BEZIER_HTTP_ENGINE")
+      ->check(CLI::Validator(
+          [](const std::string& value) -> std::string {
+            if (value == "epoll") return {};
+            return "unknown HTTP engine '" + value + "': the only engine is epoll";
+          },
+          "epoll"))
+      ->capture_default_str();
+  app.add_option("--threads", config.threads, "Compute pool threads (the requests too expensive for an event loop)")
       ->envname("BEZIER_THREADS")->check(CLI::Range(1, 1024))->capture_default_str();
-  app.add_option("--io-threads", config.io_threads, "epoll engine: event loops, 0 = one per core")
+  app.add_option("--io-threads", config.io_threads, "Event loops (I/O threads), 0 = one per CPU the process may use (affinity mask, cgroup cpu.max)")
       ->envname("BEZIER_IO_THREADS")->check(CLI::Range(0, 256))->capture_default_str();
   app.add_option("--max-queued-requests", config.max_queued_requests,
-                 "epoll engine: requests waiting for a compute thread (503 beyond)")
+                 "Requests waiting for a compute thread (503 beyond)")
       ->envname("BEZIER_MAX_QUEUED_REQUESTS")->check(CLI::Range(1, 1000000))->capture_default_str();
   app.add_option("--max-connections", config.max_connections,
-                 "Most connections served at once (httplib: a thread each, beyond it they queue; epoll: beyond it 503)")
+                 "Most connections served at once (beyond it 503)")
       ->envname("BEZIER_MAX_CONNECTIONS")->check(CLI::Range(1, 65536))->capture_default_str();
   app.add_option("--keep-alive-timeout", config.keep_alive_timeout_s, "Seconds an idle keep-alive connection stays open")
       ->envname("BEZIER_KEEP_ALIVE_TIMEOUT")->check(CLI::Range(0, 3600))->capture_default_str();
@@ -57,8 +66,13 @@ ParsedConfig parse_config(int argc, char** argv) {
   std::string format = "text";
   app.add_option("--log-format", format, "text or json (one JSON object per line)")
       ->envname("BEZIER_LOG_FORMAT")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
-  // The token is read from the environment only: a flag would show in `ps`.
+  // The token is read from the environment only: a flag would show in `ps`. --help lists
+  // it after the flags, so that every setting is there.
   if (const char* token = std::getenv("BEZIER_AUTH_TOKEN")) config.auth_token = token;
+  app.footer(
+      "Environment only:\n"
+      "  (Env:BEZIER_AUTH_TOKEN)     When set, POST routes need \"Authorization: Bearer <token>\"; unset,\n"
+      "                              no authentication. Not a flag (a flag would show in ps); never logged");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -67,7 +81,6 @@ ParsedConfig parse_config(int argc, char** argv) {
     return {std::nullopt, code, out.str()};
   }
   config.log_format = format == "json" ? LogFormat::json : LogFormat::text;
-  config.http_engine = engine == "httplib" ? HttpEngineKind::httplib : HttpEngineKind::epoll;
   return {config, 0, {}};
 }
 

@@ -10,24 +10,17 @@ namespace bezier::service {
 
 enum class LogFormat { text, json };
 
-/// The HTTP/1.1 transport: cpp-httplib's thread per connection, or our epoll loops
-/// (service/epoll_engine.hpp). Both answer through the same Router.
-enum class HttpEngineKind { httplib, epoll };
-
 /// Everything the executable is told at start, parsed once from flags and environment
 /// variables (a flag wins over its variable), then immutable.
 struct Config {
   std::string host = "127.0.0.1";
   int port = 8080;
-  HttpEngineKind http_engine = HttpEngineKind::epoll;
-  /// Worker threads. httplib engine: always kept, and more are started when every worker
-  /// holds a connection (cpp-httplib serves a keep-alive connection on one thread until
-  /// it closes), up to max_connections; see service/elastic_task_queue.hpp. epoll
-  /// engine: the compute pool that runs the requests too expensive for an I/O thread.
+  /// The compute pool's threads: they run the requests too expensive for an I/O thread.
   int threads = 8;
-  /// epoll engine: event loops (I/O threads); 0 means one per core.
+  /// Event loops (I/O threads); 0 means one per CPU the process may use (its affinity
+  /// mask and cgroup CPU quota, service/cpu_budget.hpp).
   int io_threads = 0;
-  /// epoll engine: requests waiting for a compute thread; beyond it 503 + Retry-After.
+  /// Requests waiting for a compute thread; beyond it 503 + Retry-After.
   int max_queued_requests = 1024;
   int max_connections = 1024;
   /// Seconds an idle keep-alive connection is kept, and requests served per connection.

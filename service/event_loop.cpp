@@ -85,9 +85,12 @@ EventLoop::EventLoop(Shared shared, int listen_fd)
   epoll_fd_ = epoll_create1(EPOLL_CLOEXEC);
   wake_fd_ = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
   epoll_event ev{};
-  ev.events = EPOLLIN;
+  // EPOLLEXCLUSIVE: every loop waits on the same listening socket (EpollEngine::bind),
+  // and a new connection wakes one waiting loop, not all of them.
+  ev.events = EPOLLIN | EPOLLEXCLUSIVE;
   ev.data.u64 = kListenerId;
   epoll_ctl(epoll_fd_, EPOLL_CTL_ADD, listen_fd_, &ev);
+  ev.events = EPOLLIN;
   ev.data.u64 = kWakeId;
   epoll_ctl(epoll_fd_, EPOLL_CTL_ADD, wake_fd_, &ev);
 }
@@ -439,7 +442,7 @@ void EventLoop::sweep(Clock::time_point now) {
   for (const auto id : to_close) close(id);
   if (listener_paused_ && !stopping_) {
     epoll_event ev{};
-    ev.events = EPOLLIN;
+    ev.events = EPOLLIN | EPOLLEXCLUSIVE;
     ev.data.u64 = kListenerId;
     epoll_ctl(epoll_fd_, EPOLL_CTL_ADD, listen_fd_, &ev);
     listener_paused_ = false;

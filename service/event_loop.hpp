@@ -16,8 +16,8 @@
 
 namespace bezier::service {
 
-/// One I/O thread of the epoll engine: it accepts from its own listening socket
-/// (SO_REUSEPORT: the kernel spreads connections over the loops), reads, parses and
+/// One I/O thread of the epoll engine: it accepts from the listening socket the loops
+/// share (EPOLLEXCLUSIVE: a connection wakes one waiting loop), reads, parses and
 /// answers every connection it accepted, non-blocking and level-triggered. Cheap
 /// requests are answered on the loop; the others go to the ComputePool and their
 /// answers come back through an eventfd, so one slow request never holds up the

@@ -1,6 +1,5 @@
 // bezier-service: wires configuration, logging, the HTTP server and signals.
 #include <csignal>
-#include <cstdio>
 #include <condition_variable>
 #include <mutex>
 #include <thread>
@@ -11,6 +10,7 @@
 #include "service/config.hpp"
 #include "service/log.hpp"
 #include "service/server.hpp"
+#include "service/version.hpp"
 
 int main(int argc, char** argv) {
   using namespace bezier::service;
@@ -34,9 +34,10 @@ int main(int argc, char** argv) {
 
   Log log(make_logger(config), config.log_format);
   Server server(config, log);
-  const int port = server.bind();
-  if (port < 0) {
-    log.critical("cannot bind {}:{}", config.host, config.port);
+  const BindResult bound = server.bind();
+  if (bound.fd < 0) {
+    log.always(spdlog::level::critical, bound.error, {});
+    spdlog::shutdown();  // drains the asynchronous log queue
     return 1;
   }
 
@@ -61,12 +62,11 @@ int main(int argc, char** argv) {
     }
   });
 
-  // Printed once the socket accepts connections (it is bound and listening already:
+  // Written once the socket accepts connections (it is bound and listening already:
   // connections made now wait in the backlog until serve() takes them).
-  std::printf("listening on http://%s:%d\n", config.host.c_str(), port);
-  std::fflush(stdout);
-  log.info("http_engine={} threads={} max_connections={} max_degree={} max_body_bytes={}",
-           config.http_engine == HttpEngineKind::epoll ? "epoll" : "httplib", config.threads,
+  log.always(spdlog::level::info, fmt::format("listening on http://{}:{}", config.host, bound.port),
+             {LogField::text("version", kServiceVersion), LogField::flag("auth_token_required", !config.auth_token.empty())});
+  log.info("threads={} max_connections={} max_degree={} max_body_bytes={}", config.threads,
            config.max_connections, config.limits.max_degree, config.limits.max_body_bytes);
   const bool served = server.serve();
   {

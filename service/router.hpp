@@ -45,8 +45,8 @@ struct Exchange {
   std::string id;
 };
 
-/// Everything about a request that does not depend on the transport, so both HTTP
-/// engines (cpp-httplib's thread per connection and the epoll loops) answer alike:
+/// Everything about a request that does not depend on the transport (the event loops
+/// of service/epoll_engine.hpp parse and write; this decides):
 /// GET routes (health, readiness, metrics, the spec, the playground), 404 and 405 with
 /// Allow, bearer authentication, the JSON media type check, request ids, metrics and
 /// the access log. POST routes are computed by api::handle; the router only decides

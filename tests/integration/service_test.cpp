@@ -4,12 +4,14 @@
 
 #include <httplib.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/child_process.hpp"
 #include "tests/support/service_process.hpp"
 
 namespace bezier::test {
@@ -276,6 +278,53 @@ TEST(ServiceLogs, JsonFormatWritesOneJsonObjectPerLine) {
   }
   EXPECT_GE(lines_read, 4);  // start, two access lines, the signal, stopped
   EXPECT_EQ(access_lines, 2);
+}
+
+}  // namespace
+}  // namespace bezier::test
+
+namespace bezier::test {
+namespace {
+
+TEST(ServiceStartup, AnHttpEngineOtherThanEpollStopsStartUpWithAReason) {
+  const ProgramRun by_flag =
+      run_program({BEZIER_SERVICE_BINARY, "--port", "0", "--http-engine", "httplib"});
+  ASSERT_TRUE(by_flag.exit_code.has_value()) << by_flag.output;
+  EXPECT_NE(*by_flag.exit_code, 0);
+  EXPECT_NE(by_flag.output.find("unknown HTTP engine 'httplib': the only engine is epoll"), std::string::npos)
+      << by_flag.output;
+  EXPECT_EQ(by_flag.output.find("listening on"), std::string::npos) << by_flag.output;
+
+  const ProgramRun by_environment =
+      run_program({BEZIER_SERVICE_BINARY, "--port", "0"}, {"BEZIER_HTTP_ENGINE=httplib"});
+  ASSERT_TRUE(by_environment.exit_code.has_value()) << by_environment.output;
+  EXPECT_NE(*by_environment.exit_code, 0);
+  EXPECT_NE(by_environment.output.find("the only engine is epoll"), std::string::npos) << by_environment.output;
+}
+
+// Every BEZIER_* variable of README's configuration table, in the order of the table.
+std::vector<std::string> readme_environment_variables() {
+  std::ifstream readme(std::string(BEZIER_SOURCE_DIR) + "/README.md");
+  std::vector<std::string> names;
+  for (std::string line; std::getline(readme, line);) {
+    if (line.rfind("| ", 0) != 0) continue;
+    const auto start = line.find("`BEZIER_");
+    if (start == std::string::npos) continue;
+    const auto end = line.find('`', start + 1);
+    names.push_back(line.substr(start + 1, end - start - 1));
+  }
+  return names;
+}
+
+TEST(ServiceStartup, HelpNamesEveryEnvironmentVariableOfTheReadme) {
+  const ProgramRun help = run_program({BEZIER_SERVICE_BINARY, "--help"});
+  ASSERT_EQ(help.exit_code, std::optional<int>(0)) << help.output;
+  const std::vector<std::string> names = readme_environment_variables();
+  EXPECT_GE(names.size(), 20u);  // the table was found
+  EXPECT_NE(std::find(names.begin(), names.end(), "BEZIER_AUTH_TOKEN"), names.end());
+  for (const std::string& name : names) {
+    EXPECT_NE(help.output.find("(Env:" + name + ")"), std::string::npos) << name << " missing from --help";
+  }
 }
 
 }  // namespace

@@ -115,11 +115,20 @@ class ServiceProcess {
         line += c;
         continue;
       }
-      const std::string prefix = "listening on http://";
-      if (line.rfind(prefix, 0) == 0) return std::stoi(line.substr(line.rfind(':') + 1));
+      if (const auto port = port_in_listening_line(line)) return *port;
       line.clear();
     }
     throw std::runtime_error("service did not print its listening line");
+  }
+
+  // The port of "listening on http://HOST:PORT" anywhere in `line` (a text log line, or
+  // a JSON one whose message holds it), or nullopt.
+  static std::optional<int> port_in_listening_line(const std::string& line) {
+    const std::string prefix = "listening on http://";
+    const auto start = line.find(prefix);
+    if (start == std::string::npos) return std::nullopt;
+    const std::string url = line.substr(start, line.find_first_of(" \"", start + prefix.size()) - start);
+    return std::stoi(url.substr(url.rfind(':') + 1));
   }
 
   pid_t pid_ = -1;
