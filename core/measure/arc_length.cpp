@@ -11,6 +11,7 @@
 #include "core/intersect/bernstein1d.hpp"
 #include "core/measure/bernstein_product.hpp"
 #include "core/measure/interval_roots.hpp"
+#include "core/measure/normalised.hpp"
 
 namespace bezier::core {
 
@@ -281,20 +282,40 @@ double invert(const BasicCurve<P>& curve, const ArcLength& measured, double targ
   return t;
 }
 
+/// The length of the normalised curve, scaled back (exactly: powers of two).
+template <class P>
+ArcLength scaled_measure(const BasicCurve<P>& curve, double a, double b,
+                         const ArcLengthOptions& options) {
+  const Normalised<P> unit = normalised(curve);
+  ArcLength out = measure(unit.curve, a, b, options);
+  out.length /= unit.factor;
+  out.error_bound /= unit.factor;
+  for (LengthPiece& piece : out.pieces) piece.length /= unit.factor;
+  return out;
+}
+
+template <class P>
+double scaled_invert(const BasicCurve<P>& curve, const ArcLength& measured, double length) {
+  const Normalised<P> unit = normalised(curve);
+  ArcLength unit_measured = measured;
+  for (LengthPiece& piece : unit_measured.pieces) piece.length *= unit.factor;
+  return invert(unit.curve, unit_measured, length * unit.factor);
+}
+
 }  // namespace
 
 ArcLength arc_length(const Curve& curve, double a, double b, const ArcLengthOptions& options) {
-  return measure(curve, a, b, options);
+  return scaled_measure(curve, a, b, options);
 }
 ArcLength arc_length(const Curve3& curve, double a, double b, const ArcLengthOptions& options) {
-  return measure(curve, a, b, options);
+  return scaled_measure(curve, a, b, options);
 }
 
 double parameter_at_length(const Curve& curve, const ArcLength& measured, double length) {
-  return invert(curve, measured, length);
+  return scaled_invert(curve, measured, length);
 }
 double parameter_at_length(const Curve3& curve, const ArcLength& measured, double length) {
-  return invert(curve, measured, length);
+  return scaled_invert(curve, measured, length);
 }
 
 }  // namespace bezier::core

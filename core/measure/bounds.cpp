@@ -9,6 +9,7 @@
 #include "core/evaluate.hpp"
 #include "core/intersect/bernstein1d.hpp"
 #include "core/measure/interval_roots.hpp"
+#include "core/measure/normalised.hpp"
 
 namespace bezier::core {
 
@@ -65,9 +66,19 @@ Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
   return out;
 }
 
+/// The box of the normalised curve, scaled back (exactly: powers of two).
+template <class P>
+Bounds<P> scaled_box(const BasicCurve<P>& curve, double a, double b) {
+  const Normalised<P> unit = normalised(curve);
+  Bounds<P> out = box(unit.curve, a, b);
+  out.min = out.min / unit.factor;
+  out.max = out.max / unit.factor;
+  return out;
+}
+
 }  // namespace
 
-Bounds<Point2> bounds(const Curve& curve, double a, double b) { return box(curve, a, b); }
-Bounds<Point3> bounds(const Curve3& curve, double a, double b) { return box(curve, a, b); }
+Bounds<Point2> bounds(const Curve& curve, double a, double b) { return scaled_box(curve, a, b); }
+Bounds<Point3> bounds(const Curve3& curve, double a, double b) { return scaled_box(curve, a, b); }
 
 }  // namespace bezier::core

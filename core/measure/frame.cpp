@@ -5,6 +5,7 @@
 
 #include "core/derivative.hpp"
 #include "core/intersect/bernstein1d.hpp"
+#include "core/measure/normalised.hpp"
 
 namespace bezier::core {
 
@@ -26,9 +27,7 @@ double stationary_threshold(const BasicCurve<P>& curve) {
   return 16 * kU * (hodograph_bound(curve, 1) + hodograph_bound(curve, 2));
 }
 
-}  // namespace
-
-std::optional<Frame<Point2>> frame(const Curve& curve, double t) {
+std::optional<Frame<Point2>> unit_frame(const Curve& curve, double t) {
   const std::vector<Point2> d = derivatives_at(curve, t, 2);
   const double speed = length(d[0]);
   if (!(speed > stationary_threshold(curve))) return std::nullopt;
@@ -41,7 +40,7 @@ std::optional<Frame<Point2>> frame(const Curve& curve, double t) {
   return f;
 }
 
-std::optional<Frame<Point3>> frame(const Curve3& curve, double t) {
+std::optional<Frame<Point3>> unit_frame(const Curve3& curve, double t) {
   const std::vector<Point3> d = derivatives_at(curve, t, 2);
   const double speed = length(d[0]);
   if (!(speed > stationary_threshold(curve))) return std::nullopt;
@@ -59,5 +58,20 @@ std::optional<Frame<Point3>> frame(const Curve3& curve, double t) {
   }
   return f;
 }
+
+/// The frame of the normalised curve (tangent and normal are scale-free; the curvature of
+/// factor * B is the curvature of B over factor).
+template <class P>
+std::optional<Frame<P>> scaled_frame(const BasicCurve<P>& curve, double t) {
+  const Normalised<P> unit = normalised(curve);
+  auto f = unit_frame(unit.curve, t);
+  if (f) f->curvature *= unit.factor;
+  return f;
+}
+
+}  // namespace
+
+std::optional<Frame<Point2>> frame(const Curve& curve, double t) { return scaled_frame(curve, t); }
+std::optional<Frame<Point3>> frame(const Curve3& curve, double t) { return scaled_frame(curve, t); }
 
 }  // namespace bezier::core

@@ -9,6 +9,7 @@
 #include "core/intersect/bernstein1d.hpp"
 #include "core/measure/bernstein_product.hpp"
 #include "core/measure/interval_roots.hpp"
+#include "core/measure/normalised.hpp"
 
 namespace bezier::core {
 
@@ -86,13 +87,24 @@ NearestPoint<P> closest(const BasicCurve<P>& curve, P target, double a, double b
   return out;
 }
 
+/// The answer for the curve and target scaled together by a power of two (exact), the
+/// point and distance scaled back.
+template <class P>
+NearestPoint<P> scaled_closest(const BasicCurve<P>& curve, P target, double a, double b) {
+  const Normalised<P> unit = normalised(curve, max_abs_coordinate(target));
+  NearestPoint<P> out = closest(unit.curve, unit.factor * target, a, b);
+  out.point = out.point / unit.factor;
+  out.distance /= unit.factor;
+  return out;
+}
+
 }  // namespace
 
 NearestPoint<Point2> nearest(const Curve& curve, Point2 target, double a, double b) {
-  return closest(curve, target, a, b);
+  return scaled_closest(curve, target, a, b);
 }
 NearestPoint<Point3> nearest(const Curve3& curve, Point3 target, double a, double b) {
-  return closest(curve, target, a, b);
+  return scaled_closest(curve, target, a, b);
 }
 
 }  // namespace bezier::core

@@ -210,6 +210,18 @@ TEST(ArcLength, SpeedConcentratedAtOneEnd) {
   expect_length(arc_length(Curve3(pts), 0.25, 0.75), exact);
 }
 
+TEST(ArcLength, CoordinatesNearTheDoubleRange) {
+  // The cusp cubic scaled by 2^1000 and by 2^-1000: its hodograph's squared length would
+  // overflow or underflow; the length scales exactly.
+  for (const int e : {1000, -1000}) {
+    const double s = std::ldexp(1.0, e);
+    const Curve big({{0, 0}, {s, s}, {0, s}, {s, 0}});
+    expect_length(arc_length(big, 0, 1), (2 * std::sqrt(2.0L) - 1) * static_cast<long double>(s));
+    const ArcLength whole = arc_length(big, 0, 1);
+    EXPECT_NEAR(parameter_at_length(big, whole, whole.length / 2), 0.5, 1e-7);
+  }
+}
+
 TEST(ArcLength, EmptyIntervalIsZero) {
   const ArcLength got = arc_length(Curve({{0, 0}, {1, 1}, {0, 1}, {1, 0}}), 0.3, 0.3);
   EXPECT_EQ(got.length, 0.0);

@@ -153,6 +153,16 @@ void check_random(int dimension) {
 TEST(Bounds, RandomCurvesContainSamplesAndAttainFaces2D) { check_random<Point2>(2); }
 TEST(Bounds, RandomCurvesContainSamplesAndAttainFaces3D) { check_random<Point3>(3); }
 
+TEST(Bounds, CoordinatesNearTheDoubleRange) {
+  // x = 1e308 (2t - 3t^2), y = -x: extremes ±1e308/3 at t = 1/3, although the hodograph's
+  // points (2e308, ...) overflow doubles.
+  const auto box = bounds(Curve({{0, 0}, {1e308, -1e308}, {-1e308, 1e308}}), 0, 1);
+  expect_upper_face(box.max.x, 1e308L / 3);
+  expect_lower_face(box.min.y, -1e308L / 3, 2 * 9 * 0x1p-106 * 1e308);
+  ASSERT_EQ(box.critical[0].size(), 1u);
+  EXPECT_NEAR(box.critical[0][0], 1.0 / 3, 1e-15);
+}
+
 TEST(Bounds, InvariantUnderReversal) {
   const Curve cubic({{0, 0}, {3, 5}, {-2, 4}, {1, -1}});
   const auto forward = bounds(cubic, 0, 1), backward = bounds(reversed(cubic), 0, 1);

@@ -71,6 +71,16 @@ TEST(Frame, NoFrameWhereTheDerivativeVanishes) {
   EXPECT_FALSE(frame(Curve3({{0, 0, 0}, {1, 1, 1}, {0, 1, 1}, {1, 0, 0}}), 0.5).has_value());
 }
 
+TEST(Frame, CoordinatesNearTheDoubleRange) {
+  // The parabola scaled by 2^1020: curvature 2 / 2^1020 at the vertex, though |B'|^3
+  // overflows doubles.
+  const double s = 0x1p1020;
+  const auto f = frame(Curve({{0, 0}, {0.5 * s, 0}, {s, s}}), 0.0);
+  ASSERT_TRUE(f.has_value());
+  EXPECT_EQ(f->tangent, (Point2{1, 0}));
+  EXPECT_NEAR(f->curvature * s, 2.0, 2 * kUlps);
+}
+
 TEST(Frame, TwistedCubic) {
   // B = (3t, 3t^2, 3t^3): control points by the power-to-Bernstein map.
   const Curve3 twisted({{0, 0, 0}, {1, 0, 0}, {2, 1, 0}, {3, 3, 3}});

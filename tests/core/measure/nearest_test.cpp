@@ -142,6 +142,17 @@ TEST(Nearest, InvariantUnderReversalTranslationAndScale) {
   EXPECT_NEAR(far.distance, 0x1p12 * got.distance, 1e-13 * 0x1p12 * got.distance);
 }
 
+TEST(Nearest, CoordinatesNearTheDoubleRange) {
+  // The parabola scaled by 2^1020 (its products (B - q) . B' overflow doubles): the tie
+  // and the distance scale exactly.
+  const double s = 0x1p1020;
+  const Curve parabola({{-s, s}, {0, -s}, {s, s}});
+  const auto got = nearest(parabola, Point2{0, s}, 0, 1);
+  EXPECT_NEAR(got.distance / s, std::sqrt(0.75), 4 * kU);
+  EXPECT_NEAR(got.t, (1 - std::sqrt(0.5)) / 2, 1e-10);
+  ASSERT_EQ(got.ties.size(), 1u);
+}
+
 TEST(Nearest, PointCurve) {
   const auto got = nearest(Curve({{1, 1}, {1, 1}, {1, 1}}), Point2{4, 5}, 0.25, 0.75);
   EXPECT_EQ(got.t, 0.25);
