@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include <arpa/inet.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <sys/epoll.h>
@@ -37,6 +38,17 @@ bool has_unread_input(int fd) {
   return ioctl(fd, FIONREAD, &bytes) == 0 && bytes > 0;
 }
 
+// The peer's address as text ("192.0.2.7", "2001:db8::1"), "-" if it is not IP.
+std::string address_text(const sockaddr_storage& address) {
+  char text[INET6_ADDRSTRLEN] = "-";
+  if (address.ss_family == AF_INET) {
+    inet_ntop(AF_INET, &reinterpret_cast<const sockaddr_in&>(address).sin_addr, text, sizeof text);
+  } else if (address.ss_family == AF_INET6) {
+    inet_ntop(AF_INET6, &reinterpret_cast<const sockaddr_in6&>(address).sin6_addr, text, sizeof text);
+  }
+  return text;
+}
+
 }  // namespace
 
 struct EventLoop::Pending {
@@ -58,6 +70,7 @@ struct EventLoop::Connection {
 
   int fd;
   std::uint64_t id;
+  std::string client;  ///< the peer's address, for the access log
   HttpRequestParser parser;
   std::string in;  ///< received, not yet given to the parser (pipelined, or while busy)
   std::size_t in_pos = 0;
@@ -147,7 +160,9 @@ void EventLoop::on_event(std::uint64_t id, std::uint32_t events) {
 
 void EventLoop::accept_all() {
   while (!stopping_) {
-    const int fd = accept4(listen_fd_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+    sockaddr_storage peer{};
+    socklen_t peer_length = sizeof peer;
+    const int fd = accept4(listen_fd_, reinterpret_cast<sockaddr*>(&peer), &peer_length, SOCK_NONBLOCK | SOCK_CLOEXEC);
     if (fd < 0) {
       if (errno == EMFILE || errno == ENFILE || errno == ENOBUFS || errno == ENOMEM) {
         // Out of descriptors: the listener stays readable, and level-triggered epoll
@@ -171,12 +186,13 @@ void EventLoop::accept_all() {
       append_response(out, busy, WireOptions{1, false, false, 0, {}});
       [[maybe_unused]] const auto n = ::send(fd, out.data(), out.size(), MSG_NOSIGNAL);
       ::close(fd);
-      shared_.router.finish_unrouted("-", "-", 503);
+      shared_.router.finish_unrouted("-", "-", 503, address_text(peer), out.size());
       continue;
     }
     const std::uint64_t id = next_id_++;
     auto c = std::make_unique<Connection>(fd, id, parser_limits_, Clock::now());
     Connection& ref = *c;
+    ref.client = address_text(peer);
     connections_.emplace(id, std::move(c));
     epoll_event ev{};
     ev.events = EPOLLIN;
@@ -248,7 +264,8 @@ void EventLoop::process(Connection& c) {
 void EventLoop::dispatch(Connection& c) {
   HttpRequest& request = c.parser.request();
   const RequestView view{request.method, request.path,
-                         [&request](std::string_view name) { return request.header(name); }, request.body};
+                         [&request](std::string_view name) { return request.header(name); }, request.body,
+                         c.client};
   Router& router = shared_.router;
   Exchange exchange = router.begin(view);
   ++c.served;
@@ -261,8 +278,8 @@ void EventLoop::dispatch(Connection& c) {
 
   const auto finish_here = [&](const Response& response) {
     wire.request_id = exchange.id;
-    respond(c, response, wire);
-    router.finish(exchange, request.method, request.path, response.status);
+    const std::size_t bytes = respond(c, response, wire);
+    router.finish(exchange, request.method, request.path, response.status, bytes);
     c.parser.reset();
     c.continue_sent = false;
   };
@@ -292,8 +309,8 @@ void EventLoop::dispatch(Connection& c) {
     Response full = http_problem(503, "the compute queue is full");
     full.headers.emplace_back("Retry-After", "1");
     pending->wire.request_id = pending->exchange.id;
-    respond(c, full, pending->wire);
-    router.finish(pending->exchange, pending->method, pending->path, full.status);
+    const std::size_t bytes = respond(c, full, pending->wire);
+    router.finish(pending->exchange, pending->method, pending->path, full.status, bytes);
     c.parser.reset();
     c.continue_sent = false;
     return;
@@ -311,22 +328,27 @@ void EventLoop::take_completions() {
   }
   for (Completion& completion : done) {
     Pending& p = *completion.pending;
-    shared_.router.finish(p.exchange, p.method, p.path, completion.response.status);
     const auto found = connections_.find(completion.connection);
-    if (found == connections_.end()) continue;  // the client went away meanwhile
+    if (found == connections_.end()) {  // the client went away meanwhile: nothing sent
+      shared_.router.finish(p.exchange, p.method, p.path, completion.response.status, 0);
+      continue;
+    }
     Connection& c = *found->second;
     c.busy = false;
     // Stopping may have begun while it computed: the answer then closes the connection.
     p.wire.keep_alive = p.wire.keep_alive && !stopping_;
     p.wire.request_id = p.exchange.id;
-    respond(c, completion.response, p.wire);
+    const std::size_t bytes = respond(c, completion.response, p.wire);
+    shared_.router.finish(p.exchange, p.method, p.path, completion.response.status, bytes);
     process(c);  // the pipelined requests that waited, then flush
   }
 }
 
-void EventLoop::respond(Connection& c, const Response& response, const WireOptions& wire) {
+std::size_t EventLoop::respond(Connection& c, const Response& response, const WireOptions& wire) {
+  const std::size_t before = c.out.size();
   append_response(c.out, response, wire);
   if (!wire.keep_alive) c.close_after_write = true;
+  return c.out.size() - before;
 }
 
 void EventLoop::refuse(Connection& c, int status, std::string detail) {
@@ -335,12 +357,12 @@ void EventLoop::refuse(Connection& c, int status, std::string detail) {
   // gives the log line its method and path and the answer the client's X-Request-Id.
   const HttpRequest& request = c.parser.request();
   const RequestView view{request.method, request.path,
-                         [&request](std::string_view name) { return request.header(name); }, {}};
+                         [&request](std::string_view name) { return request.header(name); }, {}, c.client};
   const Exchange exchange = shared_.router.begin(view);
   const Response response = http_problem(status, std::move(detail));
-  respond(c, response, WireOptions{1, false, false, 0, exchange.id});
+  const std::size_t bytes = respond(c, response, WireOptions{1, false, false, 0, exchange.id});
   shared_.router.finish(exchange, request.method.empty() ? "-" : request.method,
-                        request.path.empty() ? "-" : request.path, status);
+                        request.path.empty() ? "-" : request.path, status, bytes);
   c.parser.reset();
 }
 

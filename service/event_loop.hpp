@@ -58,7 +58,8 @@ class EventLoop {
   void read(Connection& c);
   void process(Connection& c);
   void dispatch(Connection& c);
-  void respond(Connection& c, const Response& response, const WireOptions& wire);
+  /// Queues the answer; the bytes it takes on the wire.
+  std::size_t respond(Connection& c, const Response& response, const WireOptions& wire);
   void refuse(Connection& c, int status, std::string detail);
   void flush(Connection& c);
   void begin_lingering(Connection& c);

@@ -73,7 +73,8 @@ Router::Router(const Config& config, Log log) : config_(config), log_(std::move(
 
 Exchange Router::begin(const RequestView& request) {
   metrics_.request_started();
-  return {Clock::now(), request_id_for(request.header("X-Request-Id"))};
+  return {Clock::now(), request_id_for(request.header("X-Request-Id")),
+          request.client.empty() ? std::string("-") : std::string(request.client)};
 }
 
 std::optional<Response> Router::answer(const RequestView& request) const {
@@ -164,27 +165,33 @@ bool Router::authorized(const RequestView& request) const {
   return diff == 0;
 }
 
-void Router::finish(const Exchange& exchange, std::string_view method, std::string_view path, int status) {
+void Router::finish(const Exchange& exchange, std::string_view method, std::string_view path, int status,
+                    std::size_t bytes_sent) {
   const double seconds = std::chrono::duration<double>(Clock::now() - exchange.start).count();
   metrics_.request_finished(path, status, seconds);
-  log_access(method, path, status, seconds, exchange.id);
+  log_access(method, path, status, seconds, exchange.id, exchange.client, bytes_sent);
 }
 
-void Router::finish_unrouted(std::string_view method, std::string_view path, int status) {
+void Router::finish_unrouted(std::string_view method, std::string_view path, int status, std::string_view client,
+                             std::size_t bytes_sent) {
   metrics_.request_started();
   metrics_.request_finished(path, status, 0.0);
-  log_access(method, path, status, 0.0, "-");
+  log_access(method, path, status, 0.0, "-", client, bytes_sent);
 }
 
 void Router::log_access(std::string_view method, std::string_view path, int status, double seconds,
-                        std::string_view id) {
+                        std::string_view id, std::string_view client, std::size_t bytes_sent) {
   auto& logger = log_.logger();
   if (!logger.should_log(spdlog::level::info)) return;
+  // The method and path are the client's bytes: json_escape keeps the line valid UTF-8
+  // JSON whatever they are.
   if (config_.log_format == LogFormat::json) {
-    logger.info(R"("msg":"access","method":"{}","path":"{}","status":{},"duration_ms":{:.3f},"request_id":"{}")",
-                json_escape(method), json_escape(path), status, seconds * 1e3, id);
+    logger.info(R"("msg":"access","method":"{}","path":"{}","status":{},"duration_ms":{:.3f},"request_id":"{}",)"
+                R"("client":"{}","bytes_sent":{})",
+                json_escape(method), json_escape(path), status, seconds * 1e3, id, json_escape(client), bytes_sent);
   } else {
-    logger.info("{} {} {} {:.3f}ms id={}", method, path, status, seconds * 1e3, id);
+    logger.info("{} {} {} {:.3f}ms id={} client={} bytes={}", method, path, status, seconds * 1e3, id, client,
+                bytes_sent);
   }
 }
 

@@ -25,6 +25,7 @@ struct RequestView {
   /// The value of a header (name compared case-insensitively), empty when absent.
   std::function<std::string_view(std::string_view name)> header;
   std::string_view body;
+  std::string_view client;  ///< the peer's address, for the access log
 };
 
 /// An answer in HTTP terms, for an engine to write. `headers` are the ones beyond
@@ -39,10 +40,11 @@ struct Response {
   bool limit_reached = false;
 };
 
-/// The request's start time and id, from Router::begin to Router::finish.
+/// The request's start time, id and client, from Router::begin to Router::finish.
 struct Exchange {
   std::chrono::steady_clock::time_point start;
   std::string id;
+  std::string client;
 };
 
 /// Everything about a request that does not depend on the transport (the event loops
@@ -70,12 +72,15 @@ class Router {
   [[nodiscard]] Response compute(std::string_view path, std::string_view body,
                                  const api::Limits& limits);
 
-  /// Ends a request begun with begin(): metrics and the access line.
-  void finish(const Exchange& exchange, std::string_view method, std::string_view path, int status);
+  /// Ends a request begun with begin(): metrics and the access line, which gives the
+  /// bytes of its answer on the wire (status line, headers and body).
+  void finish(const Exchange& exchange, std::string_view method, std::string_view path, int status,
+              std::size_t bytes_sent);
 
   /// Counts and logs an answer the engine gave before routing (a malformed request,
   /// 413 before the body, a timeout), which has no Exchange.
-  void finish_unrouted(std::string_view method, std::string_view path, int status);
+  void finish_unrouted(std::string_view method, std::string_view path, int status, std::string_view client,
+                       std::size_t bytes_sent);
 
   /// From now on /readyz answers 503 (load balancers stop sending); still serving.
   void begin_draining() noexcept { draining_.store(true); }
@@ -89,7 +94,7 @@ class Router {
   [[nodiscard]] Response answer_other_method(const RequestView& request) const;
   [[nodiscard]] bool authorized(const RequestView& request) const;
   void log_access(std::string_view method, std::string_view path, int status, double seconds,
-                  std::string_view id);
+                  std::string_view id, std::string_view client, std::size_t bytes_sent);
 
   const Config config_;
   Log log_;
