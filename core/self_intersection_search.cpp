@@ -261,6 +261,9 @@ class Search {
     const PairRefinement root = refine_double_point(points_, u0, v0, region, settings_.rounding);
     ++out_.stats.newton_runs;
     out_.stats.newton_iterations += root.iterations;
+    // An iteration evaluates the curve with its first two derivatives at both parameters,
+    // about what halving the box's two pieces costs: charged as one box each.
+    out_.stats.work += root.iterations;
     constexpr double kSlack = 0x1p-50;
     if (!root.converged || root.u < box.a - kSlack || root.u > box.b + kSlack ||
         root.v < box.c - kSlack || root.v > box.d + kSlack) {

@@ -12,11 +12,13 @@ namespace bezier::core {
 
 /// Work units per parameter box of a degree-n curve: a fixed part (the stack, the arena
 /// copies, classifying the box) and the halving of two pieces, (n + 1)^2 point updates in
-/// all; measured (BENCHMARKS.md §4) with the Newton runs and contact refinements that
-/// come with the boxes of a curve with many double points.
+/// all, with the Newton runs that come with the boxes (each iteration is charged as one
+/// more box); measured (BENCHMARKS.md §4b) on the costliest curves known per box: a
+/// degenerate degree-12 curve whose last nine control points coincide (a Newton run in
+/// most boxes next to the diagonal) and curves with many double points.
 [[nodiscard]] constexpr std::int64_t self_intersection_box_cost(int n) noexcept {
   const std::int64_t a = n + 1;
-  return 16 + a * a / 3;
+  return 24 + a * a / 2;
 }
 
 /// The parameter boxes a budget of `units` work units buys for a degree-n curve.

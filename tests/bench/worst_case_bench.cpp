@@ -1,4 +1,4 @@
-// The costliest requests at the default limits (issue 6, item 1), timed through
+// The costliest requests at the default limits (api/limits.hpp), timed through
 // api::handle: JSON parsing, validation, the kernel and the JSON answer, no sockets. The
 // requests and the curves they use are described in worst_case_inputs.hpp.
 //

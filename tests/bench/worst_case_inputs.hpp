@@ -1,6 +1,6 @@
 #pragma once
 
-// The costliest requests we know at the default limits (issue 6, item 1: max_degree 20,
+// The costliest requests we know at the default limits (api/limits.hpp: max_degree 20,
 // max_t_values 10000, max_work 22000000 units): request bodies for api::handle, built from
 // closed forms and seeded random curves, timed by tests/bench/worst_case_bench.cpp.
 //
@@ -139,11 +139,35 @@ struct Curves {
 };
 
 inline std::string two_curves(const Curve& a, const Curve& b, const std::string& method,
-                              double tolerance = 1e-12) {
+                              double tolerance = 1e-12, int fat_curve_degree = 3) {
   nlohmann::json body = {{"curves", {{{"points", points_json(a)}}, {{"points", points_json(b)}}}},
                          {"method", method}};
   if (tolerance != 1e-12) body["tolerance"] = tolerance;
+  if (fat_curve_degree != 3) body["fat_curve_degree"] = fat_curve_degree;
   return body.dump();
+}
+
+/// Every method the API offers, with the hybrid method's two fat-curve degrees: (name in
+/// the benchmark, method, fat-curve degree).
+struct MethodVariant {
+  const char* name;
+  const char* method;
+  int fat_curve_degree;
+};
+inline constexpr MethodVariant kMethodVariants[] = {{"hybrid", "hybrid", 3},
+                                                    {"hybrid_fat2", "hybrid", 2},
+                                                    {"bezier-clipping", "bezier-clipping", 3},
+                                                    {"subdivision", "subdivision", 3}};
+
+/// Requests whose magnitudes span many orders within one pair (found as requests that ran
+/// for seconds; docs/FUZZING.md lists what the fuzz target work_bound_fuzzer found):
+///  * steep_parabola: a parabola 1e14 tall against a line rising 1e6 across it, which it
+///    crosses where both run nearly parallel (subdivision keeps a column of 135 000
+///    undecided boxes along the crossing);
+///  * wide_cubic: a cubic reaching 1e9 against the diagonal of the unit square.
+inline std::vector<std::pair<std::string, std::pair<Curve, Curve>>> hostile_magnitude_pairs() {
+  return {{"steep_parabola", {Curve({{2, -2}, {-1, 1e14}, {-1, -1}}), Curve({{-0.5, 0}, {-2, 1e6}})}},
+          {"wide_cubic", {Curve({{0, 1}, {1e9, 1}, {0, -1e9}, {0, -2}}), Curve({{0, 0}, {1, 1}})}}};
 }
 
 inline std::string one_curve(const Curve& a) {
@@ -233,6 +257,22 @@ inline std::vector<Request> requests() {
   }
   r.push_back({"intersections/hybrid/wave_grid_400_tol_min", "/intersections",
                two_curves(c.wave, c.wave_t, "hybrid", 0x1p-46)});
+  {
+    // A degree-12 curve whose last nine control points coincide (work_bound_fuzzer's F34):
+    // most boxes next to the diagonal start a Newton run.
+    std::vector<Point2> pts = {{-1e-323, -5e-324}, {-1e-323, 6.0}, {-8.0, -4.0}, {-181.74, 0.0}};
+    pts.resize(13, Point2{0.0, 0.0});
+    const Curve degenerate(std::move(pts));
+    r.push_back({"self/f34_degenerate_deg12", "/intersections", one_curve(degenerate)});
+    r.push_back({"loop_area/f34_degenerate_deg12", "/loop-area",
+                 nlohmann::json{{"points", points_json(degenerate)}}.dump()});
+  }
+  for (const auto& [name, curves] : hostile_magnitude_pairs()) {
+    for (const MethodVariant& m : kMethodVariants) {
+      r.push_back({"intersections/" + std::string(m.name) + "/" + name, "/intersections",
+                   two_curves(curves.first, curves.second, m.method, 1e-12, m.fat_curve_degree)});
+    }
+  }
 
   // Fuzz finding F7 (docs/FUZZING.md): a degree-20 curve with one control point apart against
   // a point, and a quartic spanning 1e15 whose pairs the certification searches.
