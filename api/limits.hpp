@@ -14,14 +14,18 @@ struct Limits {
   int max_t_values = 10000;
   /// Largest request body in bytes (the service answers 413 above it).
   std::size_t max_body_bytes = 1 << 20;
-  /// Per-request work cap for iterative kernels, in work units: each clipping or
-  /// subdivision step, Newton iteration and parameter box is charged by its degrees and
-  /// arithmetic (core/intersect/work_cost.hpp, core/self_intersection_work_cost.hpp), so
-  /// that units are proportional to time; one unit is about 3-6 ns on the reference
-  /// machine. The default is what the heaviest legitimate request we know needs with a
-  /// margin (two degree-20 curves crossing 400 times, the most possible: 20.4 M units by
-  /// the default method), which bounds a request's kernel time near 80-110 ms
-  /// (BENCHMARKS.md §4b). Hitting it answers 422, never a hang.
+  /// Per-request work cap for iterative kernels, in work units. Every phase of a request
+  /// that can take more than a fixed time is charged to it before or as it runs (the
+  /// intersection search's steps, the grouping of its boxes into contacts, the Newton
+  /// refinements, the overlap and collinear tests, the self-intersection search's boxes and
+  /// Newton runs, and the certification of each self-intersection, which gets what the
+  /// search left), each by its degrees and arithmetic (core/intersect/work_cost.hpp,
+  /// core/self_intersection_work_cost.hpp), so that units are proportional to time and the
+  /// cap bounds a request's CPU time whatever its method. The default is what the heaviest
+  /// legitimate request we know needs with a margin (two degree-20 curves crossing 400
+  /// times, the most possible, by the default method). BENCHMARKS.md §4e has the worst
+  /// request of every method at this cap and the command that measures it; hitting it
+  /// answers 422, never a hang.
   std::int64_t max_work = 22000000;
 };
 
