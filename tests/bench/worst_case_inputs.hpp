@@ -267,6 +267,11 @@ inline std::vector<Request> requests() {
     r.push_back({"loop_area/f34_degenerate_deg12", "/loop-area",
                  nlohmann::json{{"points", points_json(degenerate)}}.dump()});
   }
+  // The default method's heaviest requests again with fat curves of degree 2.
+  r.push_back({"intersections/hybrid_fat2/wave_grid_400", "/intersections",
+               two_curves(c.wave, c.wave_t, "hybrid", 1e-12, 2)});
+  r.push_back({"intersections/hybrid_fat2/contact_order20", "/intersections",
+               two_curves(c.contact20, c.axis20, "hybrid", 1e-12, 2)});
   for (const auto& [name, curves] : hostile_magnitude_pairs()) {
     for (const MethodVariant& m : kMethodVariants) {
       r.push_back({"intersections/" + std::string(m.name) + "/" + name, "/intersections",
