@@ -1,6 +1,7 @@
 #include "service/http_request_parser.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace bezier::service {
 
@@ -45,6 +46,37 @@ void for_each_element(std::string_view list, Each each) {
     if (comma == std::string_view::npos) break;
     list.remove_prefix(comma + 1);
   }
+}
+
+// RFC 9112 §3.2.2: the path and query of an absolute-form target
+// ("http://host:port/path?query"; an empty path is "/"), or nullopt when the target is not
+// an http or https URI with a non-empty authority. Userinfo ("user@host") is refused, as
+// RFC 9110 §4.2.4 advises for a URI from an untrusted source.
+std::optional<std::string_view> origin_of_absolute_form(std::string_view target) noexcept {
+  const std::size_t colon = target.find(':');
+  if (colon == std::string_view::npos) return std::nullopt;
+  const std::string_view scheme = target.substr(0, colon);
+  if (!iequals(scheme, "http") && !iequals(scheme, "https")) return std::nullopt;
+  std::string_view rest = target.substr(colon + 1);
+  if (rest.substr(0, 2) != "//") return std::nullopt;
+  rest.remove_prefix(2);
+  const std::size_t authority_end = std::min(rest.find('/'), rest.find('?'));
+  const std::string_view authority = rest.substr(0, authority_end);
+  if (authority.empty() || authority.find('@') != std::string_view::npos) return std::nullopt;
+  if (authority_end == std::string_view::npos) return std::string_view("/");
+  rest.remove_prefix(authority_end);
+  return rest.front() == '?' ? std::string_view("/") : rest;
+}
+
+// RFC 9110 §7.2: Host = uri-host [ ":" port ], where uri-host is an IP literal in
+// brackets, an IPv4 address or a reg-name (unreserved, pct-encoded, sub-delims); empty
+// when the target URI has no authority.
+bool is_host_value(std::string_view value) noexcept {
+  constexpr std::string_view kAllowed = "-._~%!$&'()*+,;=:[]";
+  return std::all_of(value.begin(), value.end(), [&](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+           kAllowed.find(c) != std::string_view::npos;
+  });
 }
 
 }  // namespace
@@ -180,7 +212,35 @@ bool HttpRequestParser::parse_head() {
     }
     request_.headers.push_back({line.substr(0, colon), value});
   }
-  return parse_framing();
+  return check_single_fields() && parse_framing();
+}
+
+bool HttpRequestParser::check_single_fields() {
+  int hosts = 0;
+  int codings = 0;
+  for (const HttpRequest::Header& h : request_.headers) {
+    if (iequals(h.name, "host")) {
+      ++hosts;
+      if (!is_host_value(h.value)) {
+        fail(400, "the Host header is not host[:port]", 0);
+        return false;
+      }
+    } else if (iequals(h.name, "content-encoding")) {
+      ++codings;
+    }
+  }
+  // RFC 9112 §3.2: a server must answer 400 to an HTTP/1.1 request without Host, and to
+  // any request with more than one.
+  if (hosts > 1 || (hosts == 0 && request_.minor_version == 1)) {
+    fail(400, hosts == 0 ? "an HTTP/1.1 request must have a Host header" : "more than one Host header", 0);
+    return false;
+  }
+  // Which codings apply would depend on whether a reader joins the lines or takes one.
+  if (codings > 1) {
+    fail(400, "more than one Content-Encoding header", 0);
+    return false;
+  }
+  return true;
 }
 
 bool HttpRequestParser::parse_request_line(std::string_view line) {
@@ -197,18 +257,25 @@ bool HttpRequestParser::parse_request_line(std::string_view line) {
     fail(400, "malformed method", 0);
     return false;
   }
-  const bool asterisk = request_.target == "*" && request_.method == "OPTIONS";
-  if (request_.target.empty() || (request_.target.front() != '/' && !asterisk)) {
-    fail(400, "the request target must be a path starting with '/'", 0);
-    return false;
-  }
   for (const char c : request_.target) {
     if (static_cast<unsigned char>(c) <= 0x20 || c == 0x7f) {
       fail(400, "control character in the request target", 0);
       return false;
     }
   }
-  request_.path = request_.target.substr(0, request_.target.find('?'));
+  // RFC 9112 §3.2: origin-form ("/path?query"), absolute-form (a URI), or "*" for OPTIONS.
+  const bool asterisk = request_.target == "*" && request_.method == "OPTIONS";
+  std::optional<std::string_view> origin = request_.target;
+  if (request_.target.empty()) {
+    origin = std::nullopt;
+  } else if (request_.target.front() != '/' && !asterisk) {
+    origin = origin_of_absolute_form(request_.target);
+  }
+  if (!origin) {
+    fail(400, "the request target must be a path starting with '/' or an absolute http URI", 0);
+    return false;
+  }
+  request_.path = origin->substr(0, origin->find('?'));
   if (version.size() != 8 || version.substr(0, 5) != "HTTP/" || version[6] != '.' ||
       !(version[5] >= '0' && version[5] <= '9') || !(version[7] >= '0' && version[7] <= '9')) {
     fail(400, "malformed HTTP version", 0);

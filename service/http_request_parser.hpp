@@ -13,8 +13,8 @@ namespace bezier::service {
 struct HttpRequest {
   std::string head;
   std::string_view method;
-  std::string_view target;  ///< as sent: "/evaluate?x=1"
-  std::string_view path;    ///< the target up to '?'
+  std::string_view target;  ///< as sent: "/evaluate?x=1", or "http://host/evaluate?x=1"
+  std::string_view path;    ///< the target's path, without scheme, authority or query
   int minor_version = 1;    ///< HTTP/1.0 or HTTP/1.1
   struct Header {
     std::string_view name;
@@ -53,7 +53,9 @@ struct ParseError {
 /// feeding the bytes after a completed request into the next one (feed() reports how
 /// many it used). Content-Length bodies and chunked transfer coding are accepted, both
 /// within ParserLimits; anything ambiguous (both, or two different lengths: request
-/// smuggling) is an error. Not thread-safe: one parser per connection.
+/// smuggling; two Host or Content-Encoding headers) is an error, and so is an HTTP/1.1
+/// request without Host. The target may be in origin form ("/path?query") or absolute
+/// form ("http://host/path?query"). Not thread-safe: one parser per connection.
 class HttpRequestParser {
  public:
   enum class State {
@@ -93,6 +95,8 @@ class HttpRequestParser {
   /// Parses request_.head once its blank line has arrived; false on error.
   bool parse_head();
   bool parse_request_line(std::string_view line);
+  /// Host (exactly one on HTTP/1.1, at most one on 1.0) and Content-Encoding (at most one).
+  bool check_single_fields();
   bool parse_framing();
   /// One line of a chunked body (size line or trailer) from line_; false on error.
   bool chunk_line_done();
