@@ -25,7 +25,7 @@ ProblemInfo info_of(ProblemKind kind) noexcept {
     case ProblemKind::payload_too_large:
       return {413, "payload-too-large", "Request body is larger than the limit"};
     case ProblemKind::unsupported_media_type:
-      return {415, "unsupported-media-type", "Content-Type must be application/json"};
+      return {415, "unsupported-media-type", "The body must be application/json, without a content coding"};
     case ProblemKind::not_found:
       return {404, "not-found", "No such route"};
     case ProblemKind::method_not_allowed:

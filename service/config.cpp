@@ -35,6 +35,9 @@ ParsedConfig parse_config(int argc, char** argv) {
   app.add_option("--max-queued-requests", config.max_queued_requests,
                  "Requests waiting for a compute thread (503 beyond)")
       ->envname("BEZIER_MAX_QUEUED_REQUESTS")->check(CLI::Range(1, 1000000))->capture_default_str();
+  app.add_option("--queue-deadline", config.queue_deadline_s,
+                 "Seconds a request may wait for a compute thread (503 beyond, instead of computing it)")
+      ->envname("BEZIER_QUEUE_DEADLINE")->check(CLI::Range(0.001, 3600.0))->capture_default_str();
   app.add_option("--max-connections", config.max_connections,
                  "Most connections served at once (beyond it 503)")
       ->envname("BEZIER_MAX_CONNECTIONS")->check(CLI::Range(1, 65536))->capture_default_str();

@@ -22,6 +22,9 @@ struct Config {
   int io_threads = 0;
   /// Requests waiting for a compute thread; beyond it 503 + Retry-After.
   int max_queued_requests = 1024;
+  /// Seconds a request may wait for a compute thread: past it, it is answered 503 +
+  /// Retry-After instead of computed (its client has likely given up already).
+  double queue_deadline_s = 2.0;
   int max_connections = 1024;
   /// Seconds an idle keep-alive connection is kept, and requests served per connection.
   int keep_alive_timeout_s = 5;

@@ -21,9 +21,14 @@ namespace {
 
 constexpr std::uint64_t kListenerId = 0;
 constexpr std::uint64_t kWakeId = 1;
-// Reading stops while this much output waits for a slow reader (backpressure against a
-// client that pipelines requests and never reads the answers).
+// While this much output waits for a slow reader, the connection's requests are neither
+// read nor parsed nor answered (backpressure against a client that pipelines requests and
+// never reads the answers): what a connection holds is bounded by this plus one answer.
 constexpr std::size_t kMaxBufferedOutput = 1 << 20;
+// The sent part of the output buffer is cut off once it is this long and at least as long
+// as the unsent rest (so the move costs less than the sending did): a reader that keeps
+// up slowly, never emptying the buffer, does not make it grow.
+constexpr std::size_t kCompactSentOutput = 64 * 1024;
 
 constexpr std::string_view kContinue = "HTTP/1.1 100 Continue\r\n\r\n";
 
@@ -56,6 +61,10 @@ struct EventLoop::Pending {
   std::string method;
   std::string path;
   WireOptions wire;
+  Clock::time_point queued_at;
+  /// Set by the loop when it closes the connection (a reset, a failed send): nothing
+  /// could be delivered any more, so the pool does not compute the request.
+  std::atomic<bool> connection_gone{false};
 };
 
 struct EventLoop::Completion {
@@ -78,6 +87,7 @@ struct EventLoop::Connection {
   std::size_t out_pos = 0;
   std::uint32_t interest = 0;   ///< the epoll events registered
   bool busy = false;            ///< a request of this connection is on the compute pool
+  std::shared_ptr<Pending> on_pool;  ///< that request, while busy
   bool close_after_write = false;
   bool peer_closed = false;     ///< the client shut down its side: answer, then close
   bool continue_sent = false;
@@ -94,6 +104,7 @@ EventLoop::EventLoop(Shared shared, int listen_fd)
       config_(shared.router.config()),
       parser_limits_{ParserLimits{}.max_head_bytes, config_.limits.max_body_bytes},
       inline_limits_(InlinePolicy::limits(config_.limits)),
+      queue_deadline_(config_.queue_deadline_s),
       listen_fd_(listen_fd) {
   epoll_fd_ = epoll_create1(EPOLL_CLOEXEC);
   wake_fd_ = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
@@ -155,7 +166,11 @@ void EventLoop::on_event(std::uint64_t id, std::uint32_t events) {
   // so it must close here or the loop would spin on it.
   if (events & (EPOLLERR | EPOLLHUP)) return close(id);
   if (events & EPOLLIN) read(c);
-  if (connections_.count(id) != 0 && (events & EPOLLOUT)) flush(c);
+  if (connections_.count(id) == 0 || !(events & EPOLLOUT)) return;
+  flush(c);
+  // The client read enough for the output to drop below the limit: the requests that
+  // waited in `in` meanwhile are taken up again.
+  if (connections_.count(id) != 0 && may_take_request(c) && c.in_pos < c.in.size()) process(c);
 }
 
 void EventLoop::accept_all() {
@@ -178,6 +193,7 @@ void EventLoop::accept_all() {
     setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
     if (shared_.open_connections.fetch_add(1) >= config_.max_connections) {
       shared_.open_connections.fetch_sub(1);
+      shared_.router.metrics().overloaded(Overload::connections);
       // Over the limit: a best-effort 503 on the fresh socket (its buffer is empty, so
       // a short answer fits), then close.
       std::string out;
@@ -225,19 +241,32 @@ void EventLoop::read(Connection& c) {
   process(c);
 }
 
+std::size_t EventLoop::unsent(const Connection& c) noexcept { return c.out.size() - c.out_pos; }
+
+bool EventLoop::may_take_request(const Connection& c) noexcept {
+  return !c.busy && !c.close_after_write && !c.lingering && unsent(c) < kMaxBufferedOutput;
+}
+
 void EventLoop::process(Connection& c) {
   const std::uint64_t id = c.id;
-  while (!c.busy && !c.close_after_write && c.in_pos < c.in.size()) {
+  // Sending may take the output below the limit again with requests still buffered (the
+  // kernel took it all): they are answered now, as no event would come for them.
+  do {
+    answer_buffered_requests(c);
+    flush(c);
+    if (connections_.count(id) == 0) return;
+  } while (may_take_request(c) && c.in_pos < c.in.size());
+  update_interest(c);
+}
+
+void EventLoop::answer_buffered_requests(Connection& c) {
+  while (may_take_request(c) && c.in_pos < c.in.size()) {
     if (!c.parser.started()) c.request_start = Clock::now();
     const auto progress = c.parser.feed(std::string_view(c.in).substr(c.in_pos));
     c.in_pos += progress.used;
     if (progress.state == HttpRequestParser::State::need_more) {
       const HttpRequest& r = c.parser.request();
-      if (c.parser.awaiting_body() && r.expect_continue && !c.continue_sent) {
-        // curl waits up to a second for this before sending a body over 1 KiB.
-        c.out += kContinue;
-        c.continue_sent = true;
-      }
+      if (c.parser.awaiting_body() && r.expect_continue && !c.continue_sent) answer_expect_continue(c);
       break;
     }
     if (progress.state == HttpRequestParser::State::error) {
@@ -257,8 +286,28 @@ void EventLoop::process(Connection& c) {
     // The stream ended in the middle of a request: nothing more will come.
     refuse(c, 400, "the connection ended in the middle of a request");
   }
-  flush(c);
-  if (connections_.count(id) != 0) update_interest(c);
+}
+
+void EventLoop::answer_expect_continue(Connection& c) {
+  // "100 Continue" invites the body (curl waits up to a second for it before sending one
+  // over 1 KiB). It goes only to a request the router would take, its route, method,
+  // authentication and media type checked on the head alone: a refused client gets its
+  // final answer instead, without being asked to upload the body first, and the
+  // connection closes (RFC 9110 §10.1.1; what the client still sends is discarded by
+  // begin_lingering).
+  const HttpRequest& request = c.parser.request();
+  const RequestView view{request.method, request.path,
+                         [&request](std::string_view name) { return request.header(name); }, {}, c.client};
+  const std::optional<Response> refusal = shared_.router.answer(view);
+  if (!refusal || refusal->status < 400) {
+    c.out += kContinue;
+    c.continue_sent = true;
+    return;
+  }
+  const Exchange exchange = shared_.router.begin(view);
+  const std::size_t bytes = respond(c, *refusal, WireOptions{request.minor_version, false, false, 0, exchange.id});
+  shared_.router.finish(exchange, request.method, request.path, refusal->status, bytes);
+  c.parser.reset();
 }
 
 void EventLoop::dispatch(Connection& c) {
@@ -292,20 +341,20 @@ void EventLoop::dispatch(Connection& c) {
 
   // To the compute pool: the task owns copies of what it needs, the connection waits
   // (reading stops) and its next pipelined request stays in `in` until the answer.
-  auto pending = std::make_shared<Pending>(
-      Pending{std::move(exchange), std::string(request.method), std::string(request.path), wire});
+  auto pending = std::make_shared<Pending>();
+  pending->exchange = std::move(exchange);
+  pending->method = std::string(request.method);
+  pending->path = std::string(request.path);
+  pending->wire = wire;
+  pending->queued_at = Clock::now();
   auto body = std::make_shared<std::string>(std::move(request.body));
   const std::uint64_t id = c.id;
-  const bool queued = shared_.pool.submit([this, id, pending, body] {
-    Response response = shared_.router.compute(pending->path, *body, config_.limits);
-    {
-      const std::lock_guard lock(completions_mutex_);
-      completions_.push_back({id, pending, std::move(response)});
-    }
-    const std::uint64_t one = 1;
-    [[maybe_unused]] const auto n = ::write(wake_fd_, &one, sizeof one);
-  });
+  // Counted before it is queued, so that the task's decrement never comes first.
+  router.metrics().compute_queued();
+  const bool queued = shared_.pool.submit([this, id, pending, body] { run_on_pool(id, pending, *body); });
   if (!queued) {
+    router.metrics().compute_dequeued();
+    router.metrics().overloaded(Overload::queue_full);
     Response full = http_problem(503, "the compute queue is full");
     full.headers.emplace_back("Retry-After", "1");
     pending->wire.request_id = pending->exchange.id;
@@ -316,8 +365,34 @@ void EventLoop::dispatch(Connection& c) {
     return;
   }
   c.busy = true;
+  c.on_pool = std::move(pending);
   c.parser.reset();
   c.continue_sent = false;
+}
+
+void EventLoop::run_on_pool(std::uint64_t connection, const std::shared_ptr<Pending>& pending,
+                            std::string_view body) {
+  Router& router = shared_.router;
+  router.metrics().compute_dequeued();
+  if (pending->connection_gone.load()) return router.abandon(pending->exchange, pending->method, pending->path);
+  Response response;
+  if (Clock::now() - pending->queued_at > queue_deadline_) {
+    // Its client has likely given up, and the queue behind it is long: computing it
+    // would only make every later request wait longer.
+    router.metrics().overloaded(Overload::queue_deadline);
+    response = http_problem(503, "the request waited longer than " + std::to_string(config_.queue_deadline_s) +
+                                     " s for a compute thread");
+    response.headers.emplace_back("Retry-After", "1");
+  } else {
+    response = router.compute(pending->path, body, config_.limits);
+    if (work_cap_reached(response)) router.metrics().work_cap_hit();
+  }
+  {
+    const std::lock_guard lock(completions_mutex_);
+    completions_.push_back({connection, pending, std::move(response)});
+  }
+  const std::uint64_t one = 1;
+  [[maybe_unused]] const auto n = ::write(wake_fd_, &one, sizeof one);
 }
 
 void EventLoop::take_completions() {
@@ -335,6 +410,7 @@ void EventLoop::take_completions() {
     }
     Connection& c = *found->second;
     c.busy = false;
+    c.on_pool.reset();
     // Stopping may have begun while it computed: the answer then closes the connection.
     p.wire.keep_alive = p.wire.keep_alive && !stopping_;
     p.wire.request_id = p.exchange.id;
@@ -377,6 +453,10 @@ void EventLoop::flush(Connection& c) {
     c.out_pos += static_cast<std::size_t>(n);
     c.write_since = Clock::now();  // progress: the write timeout starts again
   }
+  if (c.out_pos >= kCompactSentOutput && c.out_pos >= unsent(c)) {
+    c.out.erase(0, c.out_pos);
+    c.out_pos = 0;
+  }
   if (c.out_pos == c.out.size()) {
     c.out.clear();
     c.out_pos = 0;
@@ -415,9 +495,7 @@ void EventLoop::update_interest(Connection& c) {
   if (c.lingering) return;
   std::uint32_t want = 0;
   const bool output_waiting = c.out_pos < c.out.size();
-  if (!c.busy && !c.peer_closed && !c.close_after_write && c.out.size() - c.out_pos < kMaxBufferedOutput) {
-    want |= EPOLLIN;
-  }
+  if (may_take_request(c) && !c.peer_closed) want |= EPOLLIN;
   if (output_waiting) want |= EPOLLOUT;
   if (!output_waiting) c.write_since = {};
   if (want == c.interest) return;
@@ -431,6 +509,7 @@ void EventLoop::update_interest(Connection& c) {
 void EventLoop::close(std::uint64_t id) {
   const auto found = connections_.find(id);
   if (found == connections_.end()) return;
+  if (found->second->on_pool) found->second->on_pool->connection_gone.store(true);
   epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, found->second->fd, nullptr);
   ::close(found->second->fd);
   connections_.erase(found);

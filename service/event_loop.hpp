@@ -21,8 +21,11 @@ namespace bezier::service {
 /// answers every connection it accepted, non-blocking and level-triggered. Cheap
 /// requests are answered on the loop; the others go to the ComputePool and their
 /// answers come back through an eventfd, so one slow request never holds up the
-/// loop's other connections. Timeouts (read, keep-alive idle, write) are checked by a
-/// sweep every kSweepInterval.
+/// loop's other connections. A request that waited in the compute queue longer than
+/// --queue-deadline is answered 503 instead of computed, and one whose connection closed
+/// meanwhile is dropped. While a connection's unsent answers exceed a limit, its requests
+/// wait unread until the client reads. Timeouts (read, keep-alive idle, write) are
+/// checked by a sweep every kSweepInterval.
 class EventLoop {
  public:
   /// Shared by the loops of one engine.
@@ -56,8 +59,15 @@ class EventLoop {
   void accept_all();
   void on_event(std::uint64_t id, std::uint32_t events);
   void read(Connection& c);
+  /// Answers what the connection has buffered, as far as it may, sends, and sets the
+  /// events it waits for.
   void process(Connection& c);
+  /// Parses and answers (or hands to the pool) the buffered requests while it may.
+  void answer_buffered_requests(Connection& c);
+  void answer_expect_continue(Connection& c);
   void dispatch(Connection& c);
+  /// On a compute thread: the answer to a queued request, posted back to the loop.
+  void run_on_pool(std::uint64_t connection, const std::shared_ptr<Pending>& pending, std::string_view body);
   /// Queues the answer; the bytes it takes on the wire.
   std::size_t respond(Connection& c, const Response& response, const WireOptions& wire);
   void refuse(Connection& c, int status, std::string detail);
@@ -69,11 +79,15 @@ class EventLoop {
   void sweep(Clock::time_point now);
   void begin_stopping();
   [[nodiscard]] bool idle(const Connection& c) const noexcept;
+  [[nodiscard]] static std::size_t unsent(const Connection& c) noexcept;
+  /// Whether the connection's next request may be read, parsed and answered now.
+  [[nodiscard]] static bool may_take_request(const Connection& c) noexcept;
 
   Shared shared_;
   const Config& config_;
   const ParserLimits parser_limits_;
   const api::Limits inline_limits_;
+  const std::chrono::duration<double> queue_deadline_;
   int listen_fd_;
   int epoll_fd_ = -1;
   int wake_fd_ = -1;  ///< eventfd: completions and stop()

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "service/process_metrics.hpp"
+
 namespace bezier::service {
 
 std::size_t Metrics::route_index(std::string_view route) noexcept {
@@ -80,6 +82,30 @@ std::string Metrics::render() const {
   out += "# HELP bezier_requests_in_flight Requests being processed now.\n";
   out += "# TYPE bezier_requests_in_flight gauge\n";
   out += "bezier_requests_in_flight " + std::to_string(in_flight_.load(std::memory_order_relaxed)) + "\n";
+  out += "# HELP bezier_compute_queue_depth Requests waiting for a compute thread.\n";
+  out += "# TYPE bezier_compute_queue_depth gauge\n";
+  out += "bezier_compute_queue_depth " +
+         std::to_string(compute_queue_depth_.load(std::memory_order_relaxed)) + "\n";
+  out += "# HELP bezier_work_cap_hits_total Answers the per-request work cap decided (422 work-cap, or an "
+         "answer it cut short).\n";
+  out += "# TYPE bezier_work_cap_hits_total counter\n";
+  out += "bezier_work_cap_hits_total " + std::to_string(work_cap_hits_.load(std::memory_order_relaxed)) + "\n";
+  out += "# HELP bezier_overload_responses_total 503 answers for want of capacity, by reason.\n";
+  out += "# TYPE bezier_overload_responses_total counter\n";
+  constexpr std::array<std::string_view, 3> kReasons = {"connections", "queue_full", "queue_deadline"};
+  for (std::size_t i = 0; i < kReasons.size(); ++i) {
+    out += "bezier_overload_responses_total{reason=\"";
+    out += kReasons[i];
+    out += "\"} " + std::to_string(overloaded_[i].load(std::memory_order_relaxed)) + "\n";
+  }
+  out += "# HELP bezier_requests_dropped_total Requests not answered because their connection closed while "
+         "they waited for a compute thread.\n";
+  out += "# TYPE bezier_requests_dropped_total counter\n";
+  out += "bezier_requests_dropped_total " + std::to_string(dropped_.load(std::memory_order_relaxed)) + "\n";
+  out += "# HELP bezier_build_info The service's version; the value is always 1.\n";
+  out += "# TYPE bezier_build_info gauge\n";
+  out += "bezier_build_info{version=\"" BEZIER_VERSION "\"} 1\n";
+  out += render_process_metrics();
   return out;
 }
 

@@ -25,6 +25,29 @@ bool is_json_media_type(std::string_view content_type) {
           lower.rfind("application/", 0) == 0);
 }
 
+bool iequals(std::string_view a, std::string_view b) noexcept {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i]))) return false;
+  }
+  return true;
+}
+
+// RFC 9110 §8.4: Content-Encoding lists the codings applied to the body, in order; the
+// service reads bodies as sent, so only "identity" (no coding) or no header will do.
+bool only_identity_coding(std::string_view codings) noexcept {
+  while (!codings.empty()) {
+    const std::size_t comma = codings.find(',');
+    std::string_view coding = codings.substr(0, comma);
+    while (!coding.empty() && (coding.front() == ' ' || coding.front() == '\t')) coding.remove_prefix(1);
+    while (!coding.empty() && (coding.back() == ' ' || coding.back() == '\t')) coding.remove_suffix(1);
+    if (!coding.empty() && !iequals(coding, "identity")) return false;
+    if (comma == std::string_view::npos) break;
+    codings.remove_prefix(comma + 1);
+  }
+  return true;
+}
+
 // A client's X-Request-Id is kept when it is short and plain; otherwise one is made.
 std::string request_id_for(std::string_view given) {
   bool plain = !given.empty() && given.size() <= 64;
@@ -67,6 +90,14 @@ Response to_response(api::Reply reply) {
 
 Response problem_response(api::ProblemKind kind, std::string detail) {
   return to_response(api::problem_reply(kind, std::move(detail)));
+}
+
+bool work_cap_reached(const Response& response) noexcept {
+  if (!response.limit_reached) return false;
+  if (response.status == 200) return true;
+  // A limit_reached 422 is the work cap's, or another limit's refusal (a degree, a count).
+  return response.status == 422 &&
+         response.body.find("\"urn:bezier-service:problem:work-cap\"") != std::string::npos;
 }
 
 Router::Router(const Config& config, Log log) : config_(config), log_(std::move(log)) {}
@@ -121,6 +152,14 @@ std::optional<Response> Router::check_post(const RequestView& request) const {
     return problem_response(api::ProblemKind::unsupported_media_type,
                             "Content-Type must be application/json, got '" + std::string(type) + "'");
   }
+  const std::string_view coding = request.header("Content-Encoding");
+  if (!only_identity_coding(coding)) {
+    Response response = problem_response(api::ProblemKind::unsupported_media_type,
+                                         "Content-Encoding must be identity (no coding), got '" +
+                                             std::string(coding) + "'");
+    response.headers.emplace_back("Accept-Encoding", "identity");  // RFC 9110 §15.5.16
+    return response;
+  }
   return std::nullopt;
 }
 
@@ -154,13 +193,22 @@ Response Router::compute(std::string_view path, std::string_view body, const api
 
 bool Router::authorized(const RequestView& request) const {
   if (config_.auth_token.empty()) return true;
-  const std::string_view header = request.header("Authorization");
-  const std::string expected = "Bearer " + config_.auth_token;
+  // RFC 9110 §11.4: credentials = auth-scheme 1*SP token68, the scheme name
+  // case-insensitive (§11.1): "Bearer", "bearer" and "BEARER" are one scheme.
+  constexpr std::string_view kScheme = "Bearer";
+  std::string_view credentials = request.header("Authorization");
+  if (credentials.size() <= kScheme.size() || !iequals(credentials.substr(0, kScheme.size()), kScheme) ||
+      credentials[kScheme.size()] != ' ') {
+    return false;
+  }
+  credentials.remove_prefix(kScheme.size());
+  while (!credentials.empty() && credentials.front() == ' ') credentials.remove_prefix(1);
+  const std::string& expected = config_.auth_token;
   // Constant-time comparison: the time taken must not reveal how much of a guess matched.
-  if (header.size() != expected.size()) return false;
+  if (credentials.size() != expected.size()) return false;
   unsigned char diff = 0;
-  for (std::size_t i = 0; i < header.size(); ++i) {
-    diff |= static_cast<unsigned char>(header[i] ^ expected[i]);
+  for (std::size_t i = 0; i < credentials.size(); ++i) {
+    diff |= static_cast<unsigned char>(credentials[i] ^ expected[i]);
   }
   return diff == 0;
 }
@@ -177,6 +225,12 @@ void Router::finish_unrouted(std::string_view method, std::string_view path, int
   metrics_.request_started();
   metrics_.request_finished(path, status, 0.0);
   log_access(method, path, status, 0.0, "-", client, bytes_sent);
+}
+
+void Router::abandon(const Exchange& exchange, std::string_view method, std::string_view path) {
+  metrics_.request_dropped();
+  const double seconds = std::chrono::duration<double>(Clock::now() - exchange.start).count();
+  log_access(method, path, 499, seconds, exchange.id, exchange.client, 0);
 }
 
 void Router::log_access(std::string_view method, std::string_view path, int status, double seconds,

@@ -82,6 +82,14 @@ class Router {
   void finish_unrouted(std::string_view method, std::string_view path, int status, std::string_view client,
                        std::size_t bytes_sent);
 
+  /// Ends a request begun with begin() that is not answered, because its connection
+  /// closed while it waited for a compute thread: counted as dropped, and logged with
+  /// status 499 (the code nginx logs for a client that closed before its answer).
+  void abandon(const Exchange& exchange, std::string_view method, std::string_view path);
+
+  /// The counters the engine updates itself (queue depth, overload, work cap).
+  [[nodiscard]] Metrics& metrics() noexcept { return metrics_; }
+
   /// From now on /readyz answers 503 (load balancers stop sending); still serving.
   void begin_draining() noexcept { draining_.store(true); }
 
@@ -107,5 +115,9 @@ class Router {
 
 /// A problem+json Response of the API's kinds (DESIGN §3).
 [[nodiscard]] Response problem_response(api::ProblemKind kind, std::string detail);
+
+/// Whether the work cap decided a computed answer: a 422 work-cap problem, or a 200 the
+/// cap cut short (api::Reply::limit_reached on a success).
+[[nodiscard]] bool work_cap_reached(const Response& response) noexcept;
 
 }  // namespace bezier::service

@@ -2,12 +2,6 @@
 // library would hide. Pipelining, chunked bodies, 100-continue, HEAD, HTTP/1.0, 413
 // before the body is sent, malformed requests, the read and keep-alive timeouts,
 // keep_alive_max_requests, max_connections, and shutdown with a request on the pool.
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <poll.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/integration/raw_http.hpp"
 #include "tests/support/service_process.hpp"
 
 namespace bezier::test {
@@ -23,103 +18,7 @@ namespace {
 constexpr std::string_view kEvaluate = R"({"points":[[0,0],[1,2],[3,3]],"t":0.5})";
 
 std::string post(std::string_view path, std::string_view body, std::string_view extra_headers = "") {
-  return "POST " + std::string(path) + " HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n" +
-         std::string(extra_headers) + "Content-Length: " + std::to_string(body.size()) + "\r\n\r\n" +
-         std::string(body);
-}
-
-/// A blocking TCP connection to the service with a receive deadline.
-class Connection {
- public:
-  explicit Connection(int port) : fd_(socket(AF_INET, SOCK_STREAM, 0)) {
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<std::uint16_t>(port));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    connected_ = connect(fd_, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0;
-  }
-  ~Connection() { close(fd_); }
-  Connection(const Connection&) = delete;
-  Connection& operator=(const Connection&) = delete;
-
-  [[nodiscard]] bool connected() const { return connected_; }
-
-  bool send_all(std::string_view data) {
-    while (!data.empty()) {
-      const ssize_t n = ::send(fd_, data.data(), data.size(), MSG_NOSIGNAL);
-      if (n <= 0) return false;
-      data.remove_prefix(static_cast<std::size_t>(n));
-    }
-    return true;
-  }
-
-  /// Reads until `until` returns true on what was read, the peer closes, or the
-  /// deadline passes; returns everything read (also kept for later calls).
-  template <class Until>
-  std::string read_until(Until until, int timeout_ms = 10000) {
-    char buffer[65536];
-    while (!until(received_)) {
-      pollfd p{fd_, POLLIN, 0};
-      if (poll(&p, 1, timeout_ms) <= 0) break;
-      const ssize_t n = ::recv(fd_, buffer, sizeof buffer, 0);
-      if (n <= 0) {
-        closed_ = true;
-        break;
-      }
-      received_.append(buffer, static_cast<std::size_t>(n));
-    }
-    return received_;
-  }
-
-  /// Reads `count` complete responses (each head + Content-Length body).
-  std::vector<std::string> responses(std::size_t count) {
-    read_until([count](const std::string& s) { return split(s).size() >= count; });
-    return split(received_);
-  }
-
-  /// Whether the service closed the connection (reads EOF within the deadline).
-  bool closed_by_peer(int timeout_ms = 10000) {
-    read_until([](const std::string&) { return false; }, timeout_ms);
-    return closed_;
-  }
-
-  static std::vector<std::string> split(const std::string& stream) {
-    std::vector<std::string> out;
-    std::size_t at = 0;
-    for (;;) {
-      const std::size_t end = stream.find("\r\n\r\n", at);
-      if (end == std::string::npos) return out;
-      const std::string head = stream.substr(at, end + 4 - at);
-      std::size_t length = 0;
-      const std::size_t cl = head.find("Content-Length: ");
-      if (cl != std::string::npos) length = std::stoul(head.substr(cl + 16));
-      if (head.rfind("HTTP/1.1 100 ", 0) == 0) length = 0;
-      if (stream.size() < end + 4 + length) return out;
-      out.push_back(stream.substr(at, end + 4 + length - at));
-      at = end + 4 + length;
-    }
-  }
-
- private:
-  int fd_;
-  bool connected_ = false;
-  bool closed_ = false;
-  std::string received_;
-};
-
-int status_of(const std::string& response) { return std::stoi(response.substr(9, 3)); }
-std::string body_of(const std::string& response) { return response.substr(response.find("\r\n\r\n") + 4); }
-bool has_header(const std::string& response, std::string_view line) {
-  return response.substr(0, response.find("\r\n\r\n") + 2).find("\r\n" + std::string(line) + "\r\n") !=
-         std::string::npos;
-}
-void expect_problem(const std::string& response, int status) {
-  EXPECT_EQ(status_of(response), status) << response;
-  EXPECT_TRUE(has_header(response, "Content-Type: application/problem+json")) << response;
-  const auto body = nlohmann::json::parse(body_of(response), nullptr, false);
-  ASSERT_TRUE(body.is_object()) << response;
-  EXPECT_EQ(body["status"], status);
-  EXPECT_TRUE(body["type"].is_string() && body["title"].is_string() && body["detail"].is_string());
+  return post_request(path, body, extra_headers);
 }
 
 class EpollEngine : public ::testing::Test {
@@ -275,6 +174,118 @@ TEST_F(EpollEngine, TheLastRequestOfAConnectionSaysClose) {
   EXPECT_FALSE(has_header(answers[3], "Connection: close"));
   EXPECT_TRUE(has_header(answers[4], "Connection: close"));  // --keep-alive-max-requests 5
   EXPECT_TRUE(c.closed_by_peer());
+}
+
+TEST_F(EpollEngine, AbsoluteFormTargetIsServed) {
+  // RFC 9112 §3.2.2: a server must accept the absolute form (what a client sends to a
+  // proxy); the path routes, and the Host header still must be there on HTTP/1.1.
+  Connection c(port());
+  ASSERT_TRUE(c.send_all("GET http://localhost:8080/healthz HTTP/1.1\r\nHost: localhost:8080\r\n\r\n"
+                         "POST HTTP://localhost/evaluate?x=1 HTTP/1.1\r\nHost: localhost\r\n"
+                         "Content-Type: application/json\r\nContent-Length: " +
+                         std::to_string(kEvaluate.size()) + "\r\n\r\n" + std::string(kEvaluate)));
+  const auto answers = c.responses(2);
+  ASSERT_EQ(answers.size(), 2u);
+  EXPECT_EQ(status_of(answers[0]), 200) << answers[0];
+  EXPECT_EQ(body_of(answers[0]), R"({"status":"ok"})");
+  ASSERT_EQ(status_of(answers[1]), 200) << answers[1];
+  EXPECT_EQ(nlohmann::json::parse(body_of(answers[1]))["results"][0]["point"], nlohmann::json::parse("[1.25,1.75]"));
+}
+
+TEST_F(EpollEngine, Http11RequestWithoutOrWithTwoHostsIs400) {
+  // RFC 9112 §3.2: exactly one Host on HTTP/1.1 (HTTP/1.0 may leave it out).
+  for (const std::string_view bad : {"GET /healthz HTTP/1.1\r\n\r\n",
+                                     "GET /healthz HTTP/1.1\r\nHost: a\r\nHost: b\r\n\r\n"}) {
+    Connection c(port());
+    ASSERT_TRUE(c.send_all(bad));
+    const auto answers = c.responses(1);
+    ASSERT_EQ(answers.size(), 1u) << bad;
+    expect_problem(answers[0], 400);
+    EXPECT_TRUE(c.closed_by_peer()) << bad;
+  }
+  Connection c(port());
+  ASSERT_TRUE(c.send_all("GET /healthz HTTP/1.0\r\n\r\n"));
+  const auto answers = c.responses(1);
+  ASSERT_EQ(answers.size(), 1u);
+  EXPECT_EQ(status_of(answers[0]), 200);
+}
+
+TEST_F(EpollEngine, ContentEncodingOtherThanIdentityIs415) {
+  // The body is read as sent: a coded one is refused (RFC 9110 §15.5.16, with the codings
+  // that would do in Accept-Encoding), never parsed as if it were JSON.
+  for (const std::string_view coding : {"gzip", "identity, gzip", "br"}) {
+    const auto answer =
+        round_trip(port(), post("/evaluate", kEvaluate, "Content-Encoding: " + std::string(coding) + "\r\n"));
+    expect_problem(answer, 415);
+    EXPECT_TRUE(has_header(answer, "Accept-Encoding: identity")) << answer;
+    EXPECT_EQ(nlohmann::json::parse(body_of(answer))["type"], "urn:bezier-service:problem:unsupported-media-type");
+  }
+  for (const std::string_view coding : {"identity", "Identity"}) {
+    const auto answer =
+        round_trip(port(), post("/evaluate", kEvaluate, "Content-Encoding: " + std::string(coding) + "\r\n"));
+    EXPECT_EQ(status_of(answer), 200) << answer;
+  }
+}
+
+TEST_F(EpollEngine, ExpectContinueIsNotSentToARequestThatWillBeRefused) {
+  // Each is refused on its head alone (route, method, media type): the final answer comes
+  // instead of "100 Continue", and the connection closes without the body being asked for.
+  const std::string expect = "Expect: 100-continue\r\nContent-Length: 60000\r\n\r\n";
+  const std::pair<std::string, int> refused[] = {
+      {"POST /nowhere HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n" + expect, 404},
+      {"PUT /evaluate HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n" + expect, 405},
+      {"POST /healthz HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n" + expect, 405},
+      {"POST /evaluate HTTP/1.1\r\nHost: x\r\nContent-Type: text/plain\r\n" + expect, 415},
+      {"POST /evaluate HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\nContent-Encoding: gzip\r\n" +
+           expect, 415},
+  };
+  for (const auto& [head, status] : refused) {
+    Connection c(port());
+    ASSERT_TRUE(c.send_all(head));
+    const auto answers = c.responses(1);
+    ASSERT_EQ(answers.size(), 1u) << head;
+    expect_problem(answers[0], status);
+    EXPECT_TRUE(has_header(answers[0], "Connection: close")) << answers[0];
+    EXPECT_TRUE(c.closed_by_peer()) << head;
+  }
+}
+
+TEST(EpollEngineAuth, ExpectContinueIsNotSentWithoutTheToken) {
+  // An unauthenticated client must not be invited to upload its body.
+  ServiceProcess service({}, {"BEZIER_AUTH_TOKEN=s3cret-token-value"});
+  Connection c(service.port());
+  ASSERT_TRUE(c.send_all("POST /evaluate HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+                         "Expect: 100-continue\r\nContent-Length: 1048576\r\n\r\n"));
+  const auto answers = c.responses(1);
+  ASSERT_EQ(answers.size(), 1u);
+  expect_problem(answers[0], 401);
+  EXPECT_TRUE(has_header(answers[0], "WWW-Authenticate: Bearer"));
+  EXPECT_TRUE(c.closed_by_peer());
+  // With the token, the same head is invited.
+  Connection invited(service.port());
+  const std::string request =
+      post("/evaluate", kEvaluate, "Authorization: Bearer s3cret-token-value\r\nExpect: 100-continue\r\n");
+  ASSERT_TRUE(invited.send_all(request.substr(0, request.find("\r\n\r\n") + 4)));
+  const std::string interim =
+      invited.read_until([](const std::string& s) { return s.find("\r\n\r\n") != std::string::npos; });
+  EXPECT_EQ(interim, "HTTP/1.1 100 Continue\r\n\r\n");
+}
+
+TEST(EpollEngineAuth, BearerSchemeNameIsCaseInsensitive) {
+  // RFC 9110 §11.1: the authentication scheme is a case-insensitive token; one or more
+  // spaces separate it from the credentials (§11.4).
+  ServiceProcess service({}, {"BEZIER_AUTH_TOKEN=s3cret-token-value"});
+  for (const std::string_view scheme : {"Bearer ", "bearer ", "BEARER ", "bEaReR ", "Bearer   "}) {
+    const std::string authorization = "Authorization: " + std::string(scheme) + "s3cret-token-value\r\n";
+    const auto answer = round_trip(service.port(), post("/evaluate", kEvaluate, authorization));
+    EXPECT_EQ(status_of(answer), 200) << scheme << answer;
+  }
+  for (const std::string_view credentials : {"Basic s3cret-token-value", "Bearers3cret-token-value",
+                                             "Bearer s3cret-token-valuE", "Bearer", "s3cret-token-value"}) {
+    const std::string authorization = "Authorization: " + std::string(credentials) + "\r\n";
+    const auto answer = round_trip(service.port(), post("/evaluate", kEvaluate, authorization));
+    expect_problem(answer, 401);
+  }
 }
 
 TEST(EpollEngineLimits, ConnectionsBeyondTheLimitGet503) {
