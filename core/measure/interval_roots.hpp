@@ -12,16 +12,23 @@ enum class IntervalEnds { open, closed };
 /// The roots of a scalar polynomial in Bernstein form on [0, 1], c_0..c_n, that lie in
 /// [a, b] (or (a, b)), ascending, each root once.
 ///
-/// The roots come from bernstein_roots (core/bernstein_roots.hpp): an interval is discarded
-/// only when its Bernstein coefficients, each computed within its rounding bound
-/// e = 3.02 n u max|c_i|, have one strict sign (then p has no root there: the convex hull
-/// property of Lane & Riesenfeld 1981), so no root of the polynomial with the given
-/// coefficients is lost except where |p| <= e throughout; a simple root is bisected to full
-/// precision. Where p stays within e of zero (a multiple root, a cluster), the finder may
-/// report several points a little apart: consecutive roots with |p| <= e at their midpoint
-/// are one root here, represented by the one with the smallest |p|. `isolated` is false when
-/// the finder met such a flat stretch (a double root is then within about sqrt(e / |p''|) of
-/// the reported t, a root of multiplicity m within about (e / |p^(m)|)^(1/m)).
+/// Isolation as in bernstein_roots (core/bernstein_roots.hpp), by subdivision of [a, b] with
+/// Descartes' rule of signs on the Bernstein coefficients of each piece (Lane & Riesenfeld,
+/// BIT 21, 1981): a piece is discarded only when its coefficients, each computed within its
+/// rounding bound e = 3.02 n u max|c_i|, have one strict sign (then p has no root there, by
+/// the convex hull property), so no root of the polynomial with the given coefficients is
+/// lost except where |p| <= e throughout. A piece with exactly one sign change and p of
+/// opposite signs at its ends holds exactly one root, which is refined by Newton's method
+/// kept inside the sign bracket (a step out of it is a bisection) to one ulp: the same
+/// sign tests as bisection, a few instead of 55 per root. An exact zero of p at a split
+/// point is a root, and the pieces on either side leave that end out of their count.
+/// A cluster still unresolved at width 2^-40 (a multiple root, a root where p rounds to
+/// a tiny nonzero value at a split point) is reported at the middle of its piece.
+/// Where p stays within e of zero the search may report several points a little apart:
+/// consecutive roots with |p| <= e at their midpoint are one root here, represented by
+/// the one with the smallest |p|. `isolated` is false when such a flat stretch was met (a
+/// double root is then within about sqrt(e / |p''|) of the reported t, a root of
+/// multiplicity m within about (e / |p^(m)|)^(1/m)).
 struct IntervalRoots {
   std::vector<double> roots;
   bool isolated = true;
