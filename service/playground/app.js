@@ -11,6 +11,7 @@ import {computeRound, usedCurves} from './compute.js';
 import {drawScene, kColors, kPointNames, formatNumber} from './draw.js';
 import {kExamples} from './examples.js';
 import {markAt, pointAt} from './hit.js';
+import {NearestTracker} from './nearest.js';
 import {renderErrors, renderIntersections, renderLoops, renderTypes, renderValues} from './panels.js';
 import {View} from './view.js';
 
@@ -24,7 +25,7 @@ const state = {
   mode: 'add',
   show: {
     polygon: true, curve: true, points: true, labels: true, polar: true, polarPoints: true,
-    loops: true, classify: true, intersections: true,
+    loops: true, classify: true, intersections: true, box: true, frame: true, nearest: true,
   },
 };
 
@@ -39,6 +40,22 @@ let drag = null;  // {curve, index, pointerId}
 
 const canvas = $('scene');
 const view = new View(canvas);
+const nearest = new NearestTracker(() => {
+  renderScene();
+  renderValues($('values'), state, answers, currentNearest());
+});
+
+/** The nearest-point answer for the edited curve as it is now, or null. */
+function currentNearest() {
+  return state.show.nearest ? nearest.current(state.curves[state.active].points) : null;
+}
+
+/** Asks for the edited curve's point nearest to canvas position (sx, sy). */
+function askNearest(sx, sy) {
+  const points = state.curves[state.active].points;
+  if (!state.show.nearest || points.length < 2) return;
+  nearest.request(points, view.toWorld(sx, sy));
+}
 
 /** What the requests depend on: nothing else triggers a round. */
 function requestKey() {
@@ -90,7 +107,7 @@ function changed() {
 
 function renderScene() {
   $('hint').hidden = state.curves[0].points.length > 0 || state.curves[1].points.length > 0;
-  drawScene(view, state, answers, hover, hoverMark);
+  drawScene(view, state, answers, hover, hoverMark, currentNearest());
   const curveIndex = hover ? hover.curve : state.active;
   const n = state.curves[curveIndex].points.length - 1;
   $('bernstein-caption').textContent = n >= 1 ? `degree ${n}, curve ${state.curves[curveIndex].name}` : '';
@@ -99,7 +116,7 @@ function renderScene() {
 }
 
 function renderPanels() {
-  renderValues($('values'), state, answers);
+  renderValues($('values'), state, answers, currentNearest());
   renderTypes($('types'), state, answers);
   renderIntersections($('intersections'), state, answers);
   renderLoops($('loops'), state, answers);
@@ -178,6 +195,7 @@ canvas.addEventListener('pointermove', (event) => {
     return;
   }
   updateHover(event);
+  askNearest(...localPosition(event));
   renderScene();
 });
 
@@ -220,7 +238,7 @@ canvas.addEventListener('pointerleave', () => {
   hoverMark = -1;
   $('tooltip').hidden = true;
   markListItems();
-  renderScene();
+  nearest.clear();
 });
 
 // --- controls --------------------------------------------------------------------
@@ -274,7 +292,8 @@ $('t0-number').addEventListener('change', (event) => setT0(event.target.value));
 const checks = {
   'show-polygon': 'polygon', 'show-curve': 'curve', 'show-points': 'points', 'show-labels': 'labels',
   'show-polar': 'polar', 'show-polar-points': 'polarPoints', 'show-loops': 'loops',
-  'show-classify': 'classify', 'show-intersections': 'intersections',
+  'show-classify': 'classify', 'show-intersections': 'intersections', 'show-box': 'box',
+  'show-frame': 'frame', 'show-nearest': 'nearest',
 };
 for (const [id, key] of Object.entries(checks)) {
   $(id).addEventListener('change', (event) => {
@@ -356,6 +375,12 @@ window.playground = Object.freeze({
   hover: () => (hover ? {...hover} : null),
   state: () => structuredClone(state),
   answers: () => structuredClone(answers),
+  /** The last nearest-point answer drawn ({target, answer}) or null, and the requests sent. */
+  nearest: () => {
+    const n = currentNearest();
+    return {result: n ? structuredClone({target: n.target, answer: n.answer}) : null, sent: nearest.sent,
+            inFlight: nearest.inFlight};
+  },
   errors: () => errors.map(({what, error}) => ({what, route: error.route, status: error.status, problem: error.problem})),
   /** Client (page) coordinates of world point p, for pointing at it. */
   clientPoint: (p) => {

@@ -1,9 +1,11 @@
 // One round of requests for a snapshot of the page's state. Everything the page draws
 // comes from these answers: the sampled curves (/evaluate), the first polar (/polar),
 // the loops and their areas (/loop-area), the intersections and overlaps
-// (/intersections), the cubic's type and canonical point (/classify), and the points
-// on loops, overlaps, inflections and cusps (/evaluate at the parameters those answers
-// gave). Each request fails on its own: its problem is collected and the rest is drawn.
+// (/intersections), the cubic's type and canonical point (/classify), the edited
+// curve's frame at t0 (/evaluate with frame), tight box (/bounds) and lengths (/length
+// of the curve and of [0, t0]), and the points on loops, overlaps, inflections, cusps
+// and the box's extremes (/evaluate at the parameters those answers gave). Each request
+// fails on its own: its problem is collected and the rest is drawn.
 
 import {post} from './api.js';
 
@@ -28,6 +30,9 @@ function piece(interval) {
  * Sends the requests for `state` and resolves to {answers, errors}; never rejects.
  * answers.curves[i]: {evaluate, loopArea, classify, loopPaths, overlapPaths, features}
  * answers.polar: the /polar answer for the active curve (with .curve = its index);
+ * answers.measure: for the active curve, {curve, frame (the /evaluate result at t0 with
+ * frame), bounds (the /bounds answer), extremes ([{axis, t, point}] at its critical
+ * parameters), length, lengthToT0 (the /length answers on [0, 1] and [0, t0])};
  * answers.intersections: the /intersections answer for A and B.
  * errors: [{what, error}] with error an ApiError.
  */
@@ -45,7 +50,7 @@ export async function computeRound(state) {
   const curves = state.curves.map(() => ({
     evaluate: null, loopArea: null, classify: null, loopPaths: [], overlapPaths: [], features: [],
   }));
-  const answers = {curves, polar: null, intersections: null};
+  const answers = {curves, polar: null, measure: null, intersections: null};
   const jobs = [];
   for (const i of used) {
     const {name, points} = state.curves[i];
@@ -67,6 +72,7 @@ export async function computeRound(state) {
     jobs.push(attempt(`polar of ${state.curves[active].name}`, '/polar',
                       {points: activePoints, t0: state.t0, samples: kPolarSamples})
         .then((a) => { if (a) answers.polar = {...a, curve: active}; }));
+    jobs.push(measure(state, active, answers, attempt));
   }
   if (state.second && state.curves[0].points.length >= 2 && state.curves[1].points.length >= 2) {
     jobs.push(attempt('intersections of A and B', '/intersections',
@@ -76,6 +82,28 @@ export async function computeRound(state) {
   await Promise.all(jobs);
   await Promise.all(used.map((i) => pointsOnCurve(state, answers, i, attempt)));
   return {answers, errors};
+}
+
+/** The measuring answers for the active curve: frame at t0, box, lengths. */
+async function measure(state, active, answers, attempt) {
+  const {name, points} = state.curves[active];
+  const m = {curve: active, frame: null, bounds: null, extremes: [], length: null, lengthToT0: null};
+  answers.measure = m;
+  await Promise.all([
+    attempt(`frame of ${name} at t0`, '/evaluate', {points, t: state.t0, frame: true})
+        .then((a) => { m.frame = a?.results[0] ?? null; }),
+    attempt(`length of ${name}`, '/length', {points})
+        .then((a) => { m.length = a; }),
+    attempt(`length of ${name} on [0, t0]`, '/length', {points, interval: [0, state.t0]})
+        .then((a) => { m.lengthToT0 = a; }),
+    attempt(`box of ${name}`, '/bounds', {points}).then(async (a) => {
+      m.bounds = a;
+      const wanted = (a?.critical ?? []).flatMap((ts, axis) => ts.map((t) => ({axis, t})));
+      if (wanted.length === 0) return;
+      const at = await attempt(`extremes of ${name}`, '/evaluate', {points, t: wanted.map((w) => w.t)});
+      if (at) m.extremes = wanted.map((w, k) => ({...w, point: at.results[k].point}));
+    }),
+  ]);
 }
 
 /** Second stage: the points of curve i at the parameters the first answers named. */

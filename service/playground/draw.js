@@ -1,7 +1,10 @@
 // Draws the main canvas: control polygons and points (the page's state), and everything
 // the service answered (sampled curves, the first polar, loops with their areas,
-// overlaps, intersections, inflections and cusps). Nothing here computes geometry: the
-// only arithmetic is the view's mapping to pixels.
+// overlaps, intersections, inflections and cusps, the edited curve's box with its
+// extremes, its tangent, normal and osculating circle at t0, and the point nearest to
+// the pointer). Nothing here computes geometry beyond the view's mapping to pixels and
+// placing the osculating circle from the frame the service gave: centre
+// B(t0) + N / kappa, radius 1 / |kappa| (N the unit normal, kappa the signed curvature).
 
 export const kColors = Object.freeze({
   curves: ['#1f6fd1', '#d35400'],
@@ -9,6 +12,11 @@ export const kColors = Object.freeze({
   remove: '#c0392b',
   kinds: {transversal: '#c0392b', tangent: '#117a65', degenerate: '#5d6d7e'},
   overlap: 'rgba(241, 196, 15, 0.55)',
+  box: '#546e7a',
+  tangent: '#00838f',
+  normal: '#8d6e63',
+  osculating: '#00838f',
+  nearest: '#d81b60',
 });
 
 export const kPointNames = ['P', 'Q'];
@@ -119,11 +127,114 @@ function drawLoops(ctx, view, state, answers, i) {
   }
 }
 
+/** The osculating circle at a frame answer, or null where the curvature is 0 or undefined. */
+export function osculatingCircle(frame) {
+  if (!frame || typeof frame.curvature !== 'number' || frame.curvature === 0 || !frame.normal) return null;
+  const k = frame.curvature;
+  return {centre: [frame.point[0] + frame.normal[0] / k, frame.point[1] + frame.normal[1] / k], radius: 1 / Math.abs(k)};
+}
+
+function arrow(ctx, view, from, direction, length, color) {
+  const [x, y] = view.toScreen(from);
+  const dx = direction[0] * length;
+  const dy = -direction[1] * length;  // the world's y points up
+  ctx.save();
+  ctx.strokeStyle = color;
+  ctx.fillStyle = color;
+  ctx.lineWidth = 2;
+  ctx.beginPath();
+  ctx.moveTo(x, y);
+  ctx.lineTo(x + dx, y + dy);
+  ctx.stroke();
+  const angle = Math.atan2(dy, dx);
+  ctx.beginPath();
+  ctx.moveTo(x + dx, y + dy);
+  ctx.lineTo(x + dx - 9 * Math.cos(angle - 0.4), y + dy - 9 * Math.sin(angle - 0.4));
+  ctx.lineTo(x + dx - 9 * Math.cos(angle + 0.4), y + dy - 9 * Math.sin(angle + 0.4));
+  ctx.closePath();
+  ctx.fill();
+  ctx.restore();
+}
+
+/** The box of the edited curve (/bounds) and the curve's points at its critical parameters. */
+function drawBox(ctx, view, state, measure) {
+  const box = measure.bounds;
+  const [x0, y0] = view.toScreen(box.min);
+  const [x1, y1] = view.toScreen(box.max);
+  ctx.save();
+  ctx.strokeStyle = kColors.box;
+  ctx.lineWidth = 1;
+  ctx.setLineDash([6, 3]);
+  ctx.strokeRect(x0, y1, x1 - x0, y0 - y1);
+  ctx.setLineDash([]);
+  for (const e of measure.extremes) {
+    const [x, y] = view.toScreen(e.point);
+    ctx.beginPath();
+    ctx.moveTo(x, y - 5);
+    ctx.lineTo(x + 5, y);
+    ctx.lineTo(x, y + 5);
+    ctx.lineTo(x - 5, y);
+    ctx.closePath();
+    ctx.fillStyle = '#ffffff';
+    ctx.fill();
+    ctx.lineWidth = 1.5;
+    ctx.stroke();
+  }
+  ctx.restore();
+}
+
+/** Tangent and normal arrows at B(t0) and the osculating circle there. */
+function drawFrame(ctx, view, frame) {
+  if (!frame.tangent) return;  // a cusp: no direction
+  const circle = osculatingCircle(frame);
+  if (circle) {
+    const [cx, cy] = view.toScreen(circle.centre);
+    const r = circle.radius * view.scale;
+    if (r < 1e5) {
+      ctx.save();
+      ctx.strokeStyle = kColors.osculating;
+      ctx.globalAlpha = 0.8;
+      ctx.lineWidth = 1.25;
+      ctx.beginPath();
+      ctx.arc(cx, cy, r, 0, 2 * Math.PI);
+      ctx.stroke();
+      ctx.beginPath();
+      ctx.arc(cx, cy, 2.5, 0, 2 * Math.PI);
+      ctx.fillStyle = kColors.osculating;
+      ctx.fill();
+      ctx.restore();
+    }
+  }
+  arrow(ctx, view, frame.point, frame.tangent, 56, kColors.tangent);
+  arrow(ctx, view, frame.point, frame.normal, 36, kColors.normal);
+}
+
+/** The segment from the pointer to the nearest point of the edited curve, with the distance. */
+function drawNearest(ctx, view, state, nearest) {
+  const {target, answer} = nearest;
+  const [tx, ty] = view.toScreen(target);
+  const [px, py] = view.toScreen(answer.point);
+  ctx.save();
+  ctx.strokeStyle = kColors.nearest;
+  ctx.lineWidth = 1.5;
+  ctx.setLineDash([4, 3]);
+  ctx.beginPath();
+  ctx.moveTo(tx, ty);
+  ctx.lineTo(px, py);
+  ctx.stroke();
+  ctx.restore();
+  dot(ctx, view, answer.point, 4.5, kColors.nearest, '#ffffff');
+  if (state.show.labels) {
+    label(ctx, view, [(target[0] + answer.point[0]) / 2, (target[1] + answer.point[1]) / 2],
+          `d = ${formatNumber(answer.distance)}`, kColors.nearest);
+  }
+}
+
 /**
  * Draws everything. hover: {curve, index} of the control point under the cursor or
  * null; hoverMark: the index of the intersection under the cursor or -1.
  */
-export function drawScene(view, state, answers, hover, hoverMark) {
+export function drawScene(view, state, answers, hover, hoverMark, nearest = null) {
   const ctx = view.context();
   const used = state.second ? [0, 1] : [0];
   ctx.lineJoin = 'round';
@@ -195,6 +306,12 @@ export function drawScene(view, state, answers, hover, hoverMark) {
     }
   }
 
+  const measure = answers?.measure;
+  if (measure && used.includes(measure.curve)) {
+    if (state.show.box && measure.bounds) drawBox(ctx, view, state, measure);
+    if (state.show.frame && measure.frame) drawFrame(ctx, view, measure.frame);
+  }
+
   if (state.show.classify && answers) {
     for (const i of used) {
       for (const f of answers.curves[i].features) {
@@ -262,4 +379,5 @@ export function drawScene(view, state, answers, hover, hoverMark) {
       drawKindMarker(ctx, x, y, hit.kind, 7, k === hoverMark);
     });
   }
+  if (state.show.nearest && nearest) drawNearest(ctx, view, state, nearest);
 }

@@ -3,7 +3,7 @@
 // answers of the last round; numbers shown rounded, the full answers are on
 // window.playground for whoever needs every digit.
 
-import {kColors, kPointNames, formatNumber} from './draw.js';
+import {kColors, kPointNames, formatNumber, osculatingCircle} from './draw.js';
 
 const fmt = formatNumber;
 const pt = (p) => `(${fmt(p[0])}, ${fmt(p[1])})`;
@@ -23,7 +23,7 @@ function replace(container, nodes) {
   container.replaceChildren(...nodes);
 }
 
-export function renderValues(container, state, answers) {
+export function renderValues(container, state, answers, nearest) {
   const rows = [];
   const add = (term, value, id) => {
     rows.push(el('dt', {}, term));
@@ -41,6 +41,19 @@ export function renderValues(container, state, answers) {
       'value-polar-points');
   add('Control points', curve.points.length ? curve.points.map((p, k) => `${name}${k} ${pt(p)}`).join(', ') : '—',
       'value-control-points');
+  const m = answers?.measure && answers.measure.curve === active ? answers.measure : null;
+  add('Length', m?.length ? fmt(m.length.length) : '—', 'value-length');
+  add('Length of [0, t0]', m?.lengthToT0 ? fmt(m.lengthToT0.length) : '—', 'value-length-t0');
+  add('Box', m?.bounds ? `${pt(m.bounds.min)} to ${pt(m.bounds.max)}` : '—', 'value-box');
+  const f = m?.frame;
+  add('Tangent at t0', f ? (f.tangent ? pt(f.tangent) : 'none (B′(t0) = 0: a cusp)') : '—', 'value-tangent');
+  add('Normal at t0', f?.normal ? pt(f.normal) : '—', 'value-normal');
+  add('Curvature at t0', f ? (typeof f.curvature === 'number' ? fmt(f.curvature) : 'undefined') : '—', 'value-curvature');
+  const circle = osculatingCircle(f);
+  add('Osculating circle', circle ? `radius ${fmt(circle.radius)}, centre ${pt(circle.centre)}`
+                                  : (f?.curvature === 0 ? 'none (curvature 0: radius ∞)' : '—'), 'value-osculating');
+  add('Nearest to pointer', nearest ? `${pt(nearest.answer.point)} at t = ${fmt(nearest.answer.t)}, distance ${fmt(nearest.answer.distance)}`
+                                    : 'point at the drawing', 'value-nearest');
   replace(container, rows);
 }
 

@@ -257,6 +257,137 @@ test('t0: slider and a two-decimal field clamped to [0, 1]; the page shows the A
   assert.equal(await page.locator('#value-t0').textContent(), '0.37');
 });
 
+/** B(t) and B'(t) by de Casteljau on the hodograph, computed here, independently of the page. */
+function casteljau(points, t) {
+  let level = points.map((p) => [...p]);
+  while (level.length > 1) level = level.slice(1).map((p, i) => p.map((v, k) => (1 - t) * level[i][k] + t * v));
+  return level[0];
+}
+
+const hodograph = (points) => points.slice(1).map((p, i) => p.map((v, k) => (points.length - 1) * (v - points[i][k])));
+
+test('the edited curve measured: box and extremes, lengths, tangent, normal and osculating circle at t0', async () => {
+  const state = await pageState();
+  const points = state.curves[0].points;
+  const t0 = state.t0;
+  const m = (await pageAnswers()).measure;
+  assert.equal(m.curve, 0);
+  assert.deepEqual(m.bounds, await api('/bounds', {points}));
+  assert.deepEqual(m.length, await api('/length', {points}));
+  assert.deepEqual(m.lengthToT0, await api('/length', {points, interval: [0, t0]}));
+  assert.deepEqual(m.frame, (await api('/evaluate', {points, t: t0, frame: true})).results[0]);
+
+  // The lengths add up over [0, t0] and [t0, 1]; the page shows both.
+  const rest = await api('/length', {points, interval: [t0, 1]});
+  assert.ok(Math.abs(m.lengthToT0.length + rest.length - m.length.length) <= 1e-9 * m.length.length);
+  assertClose(numbersIn(await page.locator('#value-length').textContent())[0], m.length.length, 'length');
+  assertClose(numbersIn(await page.locator('#value-length-t0').textContent())[0], m.lengthToT0.length, 'length of [0, t0]');
+
+  // The box holds every sample of the curve, and each face is reached by an end or by
+  // the curve's point at a critical parameter the page drew.
+  const scale = 800;
+  for (let k = 0; k <= 400; ++k) {
+    const p = casteljau(points, k / 400);
+    for (const axis of [0, 1]) {
+      assert.ok(p[axis] >= m.bounds.min[axis] - 1e-9 * scale && p[axis] <= m.bounds.max[axis] + 1e-9 * scale);
+    }
+  }
+  const candidates = [points[0], points[points.length - 1], ...m.extremes.map((e) => e.point)];
+  for (const axis of [0, 1]) {
+    for (const face of [m.bounds.min[axis], m.bounds.max[axis]]) {
+      assert.ok(candidates.some((p) => Math.abs(p[axis] - face) <= 1e-9 * scale), `face ${face} of axis ${axis} is reached`);
+    }
+  }
+  for (const e of m.extremes) {
+    casteljau(points, e.t).forEach((v, k) => assert.ok(Math.abs(v - e.point[k]) <= 1e-9 * scale));
+    assert.ok(m.bounds.critical[e.axis].includes(e.t));
+  }
+  assert.ok(m.extremes.length >= 1, 'this curve turns inside its box');
+  const box = numbersIn(await page.locator('#value-box').textContent());
+  [...m.bounds.min, ...m.bounds.max].forEach((v, k) => assertClose(box[k], v, `box ${k}`));
+
+  // The frame from the derivatives computed here: T = B'/|B'|, N = T turned +90°,
+  // kappa = (x'y'' - y'x'') / |B'|^3, centre B + N / kappa, radius 1 / |kappa|.
+  const d1 = casteljau(hodograph(points), t0);
+  const d2 = casteljau(hodograph(hodograph(points)), t0);
+  const speed = Math.hypot(d1[0], d1[1]);
+  const tangent = [d1[0] / speed, d1[1] / speed];
+  const normal = [-tangent[1], tangent[0]];
+  const kappa = (d1[0] * d2[1] - d1[1] * d2[0]) / speed ** 3;
+  const point = casteljau(points, t0);
+  const centre = [point[0] + normal[0] / kappa, point[1] + normal[1] / kappa];
+  numbersIn(await page.locator('#value-tangent').textContent()).forEach((v, k) => assertClose(v, tangent[k], 'tangent'));
+  numbersIn(await page.locator('#value-normal').textContent()).forEach((v, k) => assertClose(v, normal[k], 'normal'));
+  assertClose(numbersIn(await page.locator('#value-curvature').textContent())[0], kappa, 'curvature');
+  const [radius, cx, cy] = numbersIn(await page.locator('#value-osculating').textContent());
+  assertClose(radius, 1 / Math.abs(kappa), 'radius');
+  assertClose(cx, centre[0], 'centre x');
+  assertClose(cy, centre[1], 'centre y');
+
+  // Drawn: the circle's pixels, and the box's dashed frame, go with their check boxes.
+  const onCircle = [];
+  for (let k = 0; k < 24; ++k) {
+    const a = 2 * Math.PI * k / 24;
+    const w = [centre[0] + Math.cos(a) / Math.abs(kappa), centre[1] + Math.sin(a) / Math.abs(kappa)];
+    if (w[0] > 10 && w[0] < 790 && w[1] > 10 && w[1] < 590) onCircle.push(w);
+  }
+  assert.ok(onCircle.length >= 6, 'the osculating circle is in view');
+  const alphas = async (ws) => Promise.all(ws.map(async (w) => (await pixelAt(w))[3]));
+  const withFrame = await alphas(onCircle);
+  await page.locator('#show-frame').uncheck();
+  const withoutFrame = await alphas(onCircle);
+  await page.locator('#show-frame').check();
+  const changedPixels = withFrame.filter((a, k) => a > withoutFrame[k]).length;
+  assert.ok(changedPixels >= onCircle.length / 2, `the circle is drawn at ${changedPixels} of ${onCircle.length} points`);
+  const boxEdge = [...Array(9).keys()].map((k) => [m.bounds.min[0] + (m.bounds.max[0] - m.bounds.min[0]) * (k + 0.5) / 9, m.bounds.min[1]]);
+  const withBox = await alphas(boxEdge);
+  await page.locator('#show-box').uncheck();
+  const withoutBox = await alphas(boxEdge);
+  await page.locator('#show-box').check();
+  assert.ok(withBox.filter((a, k) => a > withoutBox[k]).length >= 3, 'the box\'s lower edge is drawn');
+});
+
+test('the nearest point under the pointer: the API\'s answer, one request at a time', async () => {
+  const points = (await pageState()).curves[0].points;
+  let open = 0;
+  let mostOpen = 0;
+  const isNearest = (request) => request.url().endsWith('/nearest');
+  const opened = (request) => { if (isNearest(request)) mostOpen = Math.max(mostOpen, ++open); };
+  const closed = (request) => { if (isNearest(request)) --open; };
+  page.on('request', opened);
+  page.on('requestfinished', closed);
+  page.on('requestfailed', closed);
+  const sentBefore = (await page.evaluate(() => window.playground.nearest())).sent;
+  const [x0, y0] = await client([120, 560]);
+  const q = [640, 420];
+  const [x1, y1] = await client(q);
+  await page.mouse.move(x0, y0);
+  await page.mouse.move(x1, y1, {steps: 40});
+  const result = await page.waitForFunction(([qx, qy]) => {
+    const n = window.playground.nearest();
+    return !n.inFlight && n.result && Math.abs(n.result.target[0] - qx) < 1 && Math.abs(n.result.target[1] - qy) < 1 && n;
+  }, q, {timeout: kTimeout}).then((h) => h.jsonValue());
+  page.off('request', opened);
+  page.off('requestfinished', closed);
+  page.off('requestfailed', closed);
+  assert.ok(mostOpen === 1, `${mostOpen} /nearest requests were out at once`);
+  assert.ok(result.sent > sentBefore, 'the pointer asked');
+  const exact = (await api('/nearest', {points, targets: [result.result.target]})).results[0];
+  assert.deepEqual(result.result.answer, exact);
+  // No sampled point of the curve is nearer.
+  const [tx, ty] = result.result.target;
+  for (let k = 0; k <= 2000; ++k) {
+    const p = casteljau(points, k / 2000);
+    assert.ok(Math.hypot(p[0] - tx, p[1] - ty) >= exact.distance - 1e-9 * 800);
+  }
+  const shown = numbersIn(await page.locator('#value-nearest').textContent());
+  assertClose(shown[shown.length - 1], exact.distance, 'distance shown');
+  // The segment to the nearest point is drawn at its middle.
+  const middle = [(tx + exact.point[0]) / 2, (ty + exact.point[1]) / 2];
+  assert.ok((await pixelAt(middle))[3] > 0 || (await pixelAt(middle, 1))[3] > 0, 'the segment to the nearest point is drawn');
+  await page.mouse.move(5, 5);
+});
+
 test('Remove mode removes the point under the cursor', async () => {
   await setMode('remove');
   const [x, y] = await client(kFour[2]);
