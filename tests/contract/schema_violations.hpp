@@ -13,6 +13,7 @@
 
 #include "tests/support/openapi_validator.hpp"  // first: see there
 
+#include <algorithm>
 #include <set>
 #include <string>
 #include <vector>
@@ -106,7 +107,11 @@ class ViolationGenerator {
     if (type == "array") {
       nlohmann::json a = nlohmann::json::array();
       const long long n = node.value("minItems", 0LL);
-      for (long long i = 0; i < n; ++i) a.push_back(synthesize(loc + "/items"));
+      const std::size_t positions = member_or_empty(node, "prefixItems").size();
+      for (long long i = 0; i < n; ++i) {
+        const auto at = static_cast<std::size_t>(i);
+        a.push_back(synthesize(at < positions ? loc + "/prefixItems/" + std::to_string(at) : loc + "/items"));
+      }
       return a;
     }
     if (type == "object") {
@@ -188,6 +193,9 @@ class ViolationGenerator {
       }
     }
     if (node.contains("items")) collect_sites(loc + "/items", pattern + "/*", out, depth + 1);
+    for (std::size_t i = 0; i < member_or_empty(node, "prefixItems").size(); ++i) {
+      collect_sites(loc + "/prefixItems/" + std::to_string(i), pattern + "/*", out, depth + 1);
+    }
     for (const char* k : {"oneOf", "anyOf", "allOf"}) {
       if (!node.contains(k)) continue;
       for (std::size_t i = 0; i < node.at(k).size(); ++i) {
@@ -276,11 +284,17 @@ class ViolationGenerator {
       }
       // The first and the last element: a bound such as "t1 <= 1" may only be reachable
       // at the end of an increasing pair.
-      if (node.contains("items") && !value.empty()) {
+      if (node.contains("items") && node.at("items").is_object() && !value.empty()) {
         generate(walk, loc + "/items", pointer + "/0", pattern + "/*", also, depth + 1);
         if (value.size() > 1) {
           generate(walk, loc + "/items", pointer + "/" + std::to_string(value.size() - 1), pattern + "/*", also, depth + 1);
         }
+      }
+      // A tuple (prefixItems): every position, each with its own schema.
+      const std::size_t positions = std::min(member_or_empty(node, "prefixItems").size(), value.size());
+      for (std::size_t i = 0; i < positions; ++i) {
+        generate(walk, loc + "/prefixItems/" + std::to_string(i), pointer + "/" + std::to_string(i), pattern + "/*",
+                 also, depth + 1);
       }
     }
     if (value.is_object()) {

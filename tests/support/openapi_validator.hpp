@@ -6,8 +6,9 @@
 // The YAML is turned into JSON by tests/contract/openapi_to_json.py (Debian's
 // python3-yaml, read as YAML 1.2), and schemas are checked with valijson (Debian's
 // libvalijson-dev, JSON Schema draft 7 with nlohmann-json). The spec therefore keeps to
-// the part of OpenAPI 3.1 / JSON Schema 2020-12 that draft 7 reads the same way: no
-// prefixItems, no constraints beside a $ref, `type: [x, 'null']` for nullable.
+// the part of OpenAPI 3.1 / JSON Schema 2020-12 that draft 7 reads the same way (no
+// constraints beside a $ref, `type: [x, 'null']` for nullable), and tuples in
+// 2020-12's `prefixItems`, which as_draft7() turns into draft 7's array form of `items`.
 //
 // Usage (any test that talks to the service); this header must be the FIRST include of
 // the test file (see below), and it brings <httplib.h> itself:
@@ -105,6 +106,25 @@ struct HttpExchange {
     return out;
   }
   return value;
+}
+
+/// The schema as draft 7 reads it: 2020-12's `prefixItems` (a tuple's positions) is
+/// draft 7's array form of `items`, and a 2020-12 `items` beside it (the items after
+/// them) is draft 7's `additionalItems`. Every object with a `prefixItems` array is
+/// rewritten; the spec has no member of that name outside schemas.
+[[nodiscard]] inline nlohmann::json as_draft7(nlohmann::json node) {
+  if (node.is_array()) {
+    for (auto& e : node) e = as_draft7(std::move(e));
+    return node;
+  }
+  if (!node.is_object()) return node;
+  for (auto& [key, member] : node.items()) member = as_draft7(std::move(member));
+  if (node.contains("prefixItems") && node.at("prefixItems").is_array()) {
+    if (node.contains("items")) node["additionalItems"] = std::move(node.at("items"));
+    node["items"] = std::move(node.at("prefixItems"));
+    node.erase("prefixItems");
+  }
+  return node;
 }
 
 /// The member `key` of `node` by reference, or null (which iterates as nothing) when it
@@ -338,7 +358,8 @@ class OpenApiContract {
   }
 
   /// The schema at `location`, parsed once. References inside it resolve against the
-  /// whole spec: the schema is compiled as {"$ref": "#/target", "target": ..., "components": ...}.
+  /// whole spec: the schema is compiled as {"$ref": "#/target", "target": ..., "components": ...},
+  /// read as draft 7 (as_draft7).
   [[nodiscard]] const valijson::Schema& compiled(const std::string& location) const {
     const std::lock_guard lock(mutex_);
     auto it = schemas_.find(location);
@@ -346,6 +367,7 @@ class OpenApiContract {
     auto entry = std::make_unique<CompiledSchema>();
     entry->document = {{"$ref", "#/target"}, {"target", at(location)}};
     if (spec_.contains("components")) entry->document["components"] = spec_.at("components");
+    entry->document = as_draft7(std::move(entry->document));
     valijson::SchemaParser parser(valijson::SchemaParser::kDraft7);
     const valijson::adapters::NlohmannJsonAdapter adapter(entry->document);
     entry->schema = std::make_unique<valijson::Schema>();
