@@ -1,19 +1,28 @@
-// The playground: control points edited with the mouse (or a finger), everything else
-// asked of the service. State changes schedule one round of requests at a time; when
-// the state changed again while a round was out, one more round follows with the
-// newest state, so dragging never floods the service and the last answer always
-// matches what is on screen.
+// The playground: control points edited with the mouse, a finger, the keyboard, the
+// table of coordinates or pasted text; everything else asked of the service. State
+// changes schedule one round of requests at a time; when the state changed again while
+// a round was out, one more round follows with the newest state, so dragging never
+// floods the service and the last answer always matches what is on screen. Every edit
+// goes through edit(): it is recorded for undo, written to the URL fragment (the
+// permalink), and refused with a message beside the control that made it when it
+// would go past the service's degree limit (learnt from the service's first refusal).
 
 import {ApiError, apiToken, setApiToken} from './api.js';
-import {drawBernstein} from './bernstein.js';
+import {drawBernstein, renderBernsteinLegend} from './bernstein.js';
 import {drawCanonicalMap} from './canonical.js';
 import {computeRound, usedCurves} from './compute.js';
 import {drawScene, kColors, kPointNames, formatNumber} from './draw.js';
 import {kExamples} from './examples.js';
+import {download, kExportScale, renderPng, renderSvg} from './export.js';
+import {EditHistory} from './history.js';
 import {markAt, pointAt} from './hit.js';
+import {legendEntries, renderLegend} from './legend.js';
 import {NearestTracker} from './nearest.js';
 import {renderErrors, renderIntersections, renderLoops, renderTypes, renderValues} from './panels.js';
-import {View} from './view.js';
+import {decodeFragment, encodeFragment} from './permalink.js';
+import {renderPointTable} from './pointtable.js';
+import {InputError, parseCurveText} from './svgpath.js';
+import {View, kWorld} from './view.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -23,12 +32,13 @@ const state = {
   active: 0,
   t0: 0.5,
   mode: 'add',
+  selected: null,  // {curve, index}: the point the arrow keys move
   show: {
     polygon: true, curve: true, points: true, labels: true, polar: true, polarPoints: true,
     loops: true, classify: true, intersections: true, box: true, frame: true, nearest: true,
+    casteljau: true,
   },
 };
-
 
 let answers = null;  // the last round's answers (for `answered` below)
 let errors = [];
@@ -36,10 +46,14 @@ let answeredKey = null;  // request key of the state those answers are for
 let inFlight = false;
 let hover = null;  // {curve, index} of the control point under the cursor
 let hoverMark = -1;  // index of the intersection under the cursor
-let drag = null;  // {curve, index, pointerId}
+let drag = null;  // {curve, index, pointerId, before}
+let degreeLimit = null;  // the service's highest degree, once it has refused one
+let labels = null;  // the last drawing's label layout
+let animation = null;  // {timer, direction, last} while t0 is animated
 
 const canvas = $('scene');
 const view = new View(canvas);
+const history = new EditHistory();
 const nearest = new NearestTracker(() => {
   renderScene();
   renderValues($('values'), state, answers, currentNearest());
@@ -59,7 +73,7 @@ function askNearest(sx, sy) {
 
 /** What the requests depend on: nothing else triggers a round. */
 function requestKey() {
-  return JSON.stringify([state.curves.map((c) => c.points), state.second, state.active, state.t0]);
+  return JSON.stringify([state.curves.map((c) => c.points), state.second, state.active, state.t0, state.show.casteljau]);
 }
 
 function isIdle() {
@@ -73,7 +87,124 @@ function updateStatus() {
   status.classList.toggle('busy', !idle);
   status.textContent = idle ? (errors.length ? `${errors.length} request${errors.length > 1 ? 's' : ''} failed` : 'Up to date')
                             : 'Asking the service…';
+  $('undo').disabled = !history.canUndo;
+  $('redo').disabled = !history.canRedo;
 }
+
+// --- messages beside the controls ----------------------------------------------------
+
+const kMessagePlaces = {canvas: 'canvas-message', keyboard: 'canvas-message', example: 'canvas-message',
+                        link: 'canvas-message', undo: 'canvas-message', table: 'points-message',
+                        paste: 'paste-message', share: 'share-message'};
+
+function showMessage(source, text, kind = 'error') {
+  const box = $(kMessagePlaces[source] ?? 'canvas-message');
+  box.textContent = text;
+  box.dataset.kind = kind;
+  box.hidden = false;
+}
+
+function clearMessages() {
+  for (const id of new Set(Object.values(kMessagePlaces))) $(id).hidden = true;
+}
+
+const limitText = (limit) => `The service draws curves of degree at most ${limit} (${limit + 1} control points)`;
+
+/** The degree limit named by a refusal of /points in `roundErrors`, or null. */
+function degreeLimitIn(roundErrors) {
+  for (const {error} of roundErrors) {
+    for (const e of error.problem?.errors ?? []) {
+      const match = /^\/(curves\/\d+\/)?points$/.test(e.pointer ?? '') && /above the limit of (\d+)/.exec(e.message ?? '');
+      if (match) return Number(match[1]);
+    }
+  }
+  return null;
+}
+
+/** The first curve `snapshot` shows with more points than the limit allows, or null. */
+function tooLong(snapshot) {
+  if (degreeLimit === null) return null;
+  const used = snapshot.second ? [0, 1] : [0];
+  const i = used.find((k) => snapshot.points[k].length - 1 > degreeLimit);
+  return i === undefined ? null : i;
+}
+
+// --- edits, undo, permalink -----------------------------------------------------------
+
+function snapshot() {
+  return structuredClone({points: state.curves.map((c) => c.points), second: state.second, active: state.active});
+}
+
+function applySnapshot(s) {
+  s.points.forEach((points, i) => { state.curves[i].points = structuredClone(points); });
+  setSecond(s.second);
+  setActive(s.active);
+  if (state.selected && !(state.selected.index < state.curves[state.selected.curve].points.length &&
+                          (state.selected.curve === 0 || state.second))) {
+    state.selected = null;
+  }
+}
+
+/**
+ * Applies `mutate` to a copy of the edited state; when it changes something and stays
+ * within the degree limit, records the old state for undo and shows the new one.
+ * Returns whether the edit was made.
+ */
+function edit(source, mutate, merge = null) {
+  const before = snapshot();
+  const next = structuredClone(before);
+  mutate(next);
+  if (JSON.stringify(next) === JSON.stringify(before)) return false;
+  const over = tooLong(next);
+  if (over !== null) {
+    showMessage(source, `${limitText(degreeLimit)}: curve ${state.curves[over].name} would have ` +
+                        `${next.points[over].length}, so this was not done.`);
+    return false;
+  }
+  clearMessages();
+  history.record(before, source, merge);
+  applySnapshot(next);
+  changed();
+  return true;
+}
+
+function undo() {
+  const s = history.undo(snapshot());
+  if (!s) return;
+  clearMessages();
+  applySnapshot(s);
+  changed();
+}
+
+function redo() {
+  const s = history.redo(snapshot());
+  if (!s) return;
+  clearMessages();
+  applySnapshot(s);
+  changed();
+}
+
+function writeFragment() {
+  const fragment = `#${encodeFragment(state)}`;
+  if (location.hash !== fragment) window.history.replaceState(null, '', fragment);
+}
+
+function readFragment(source, opening = false) {
+  let decoded;
+  try {
+    decoded = decodeFragment(location.hash);
+  } catch (e) {
+    showMessage(source, `This link's drawing could not be read: ${e.message}`);
+    return;
+  }
+  if (!decoded) return;
+  const next = {points: decoded.curves, second: decoded.second, active: decoded.active};
+  if (opening) applySnapshot(next);  // the page opens on the link's drawing: nothing to undo yet
+  else edit(source, (s) => Object.assign(s, next));
+  setT0(decoded.t0);
+}
+
+// --- the rounds of requests ---------------------------------------------------------
 
 async function schedule() {
   if (inFlight) return;
@@ -81,16 +212,34 @@ async function schedule() {
   updateStatus();
   while (answeredKey !== requestKey()) {
     const key = requestKey();
-    const snapshot = structuredClone({curves: state.curves, second: state.second, active: state.active, t0: state.t0});
+    const snap = structuredClone({curves: state.curves, second: state.second, active: state.active, t0: state.t0,
+                                  show: state.show});
+    let round;
     try {
-      const round = await computeRound(snapshot);
-      answers = round.answers;
-      errors = round.errors;
+      round = await computeRound(snap);
     } catch (e) {
       // An answer of an unexpected shape: say so instead of stalling.
-      answers = null;
-      errors = [{what: 'drawing the answers', error: new ApiError('(page)', 0, {title: 'Page error', detail: String(e)})}];
+      round = {answers: null, errors: [{what: 'drawing the answers', error: new ApiError('(page)', 0, {title: 'Page error', detail: String(e)})}]};
     }
+    const limit = degreeLimitIn(round.errors);
+    if (limit !== null && key === requestKey()) {
+      // Past the degree limit: take the edit back (the drawing stays as it was) and say why.
+      degreeLimit = limit;
+      let refused = null;
+      while (tooLong(snapshot()) !== null) {
+        const entry = history.drop();
+        if (!entry) break;
+        applySnapshot(entry.snapshot);
+        refused = entry.source;
+      }
+      if (refused !== null) {
+        showMessage(refused, `${limitText(limit)}: that edit was not made.`);
+        renderAll();
+        continue;
+      }
+    }
+    answers = round.answers;
+    errors = round.errors;
     answeredKey = key;
     renderPanels();
     renderScene();
@@ -100,27 +249,41 @@ async function schedule() {
 }
 
 function changed() {
+  writeFragment();
+  renderAll();
+  schedule();
+}
+
+function renderAll() {
   renderScene();
   renderPanels();
-  schedule();
 }
 
 function renderScene() {
   $('hint').hidden = state.curves[0].points.length > 0 || state.curves[1].points.length > 0;
-  drawScene(view, state, answers, hover, hoverMark, currentNearest());
-  const curveIndex = hover ? hover.curve : state.active;
-  const n = state.curves[curveIndex].points.length - 1;
-  $('bernstein-caption').textContent = n >= 1 ? `degree ${n}, curve ${state.curves[curveIndex].name}` : '';
-  drawBernstein($('bernstein'), n, hover ? hover.index : -1, kColors.curves[curveIndex], state.t0);
+  labels = drawScene(view, state, answers, hover, hoverMark, currentNearest());
+  const active = state.active;
+  const points = state.curves[active].points;
+  const n = points.length - 1;
+  $('bernstein-caption').textContent = n >= 1 ? `degree ${n}, curve ${state.curves[active].name}` : '';
+  const emphasis = hover && hover.curve === active ? hover.index
+                                                   : (state.selected?.curve === active ? state.selected.index : -1);
+  drawBernstein($('bernstein'), n, emphasis, state.t0);
   updateStatus();
 }
 
 function renderPanels() {
+  const active = state.active;
+  const points = state.curves[active].points;
   renderValues($('values'), state, answers, currentNearest());
   renderTypes($('types'), state, answers);
   renderIntersections($('intersections'), state, answers);
   renderLoops($('loops'), state, answers);
-  renderErrors($('errors'), errors);
+  renderErrors({points: $('points-errors'), general: $('errors')}, errors);
+  renderBernsteinLegend($('bernstein-legend'), points.length - 1, state.t0, points, kPointNames[active]);
+  renderLegend($('legend'), legendEntries(state, answers));
+  $('points-caption').textContent = `curve ${state.curves[active].name}`;
+  renderPointTable($('points-table').tBodies[0], active, points, state.selected, tableHandlers);
   const section = $('classify-section');
   section.hidden = !state.show.classify;
   if (state.show.classify) {
@@ -190,7 +353,9 @@ canvas.addEventListener('pointermove', (event) => {
     const old = points[drag.index];
     if (old[0] !== p[0] || old[1] !== p[1]) {
       points[drag.index] = p;
-      changed();
+      writeFragment();
+      renderAll();
+      schedule();
     }
     return;
   }
@@ -207,25 +372,37 @@ canvas.addEventListener('pointerdown', (event) => {
     // Near an existing point, the new one takes its exact coordinates, so a curve can
     // be closed (P_n = P_0) or made to pass through the other curve's point.
     const p = hover ? [...state.curves[hover.curve].points[hover.index]] : view.snappedWorld(sx, sy);
-    state.curves[state.active].points.push(p);
-    hover = {curve: state.active, index: state.curves[state.active].points.length - 1};
-    changed();
+    if (edit('canvas', (s) => s.points[s.active].push(p))) {
+      hover = {curve: state.active, index: state.curves[state.active].points.length - 1};
+      state.selected = {...hover};
+      renderAll();
+    }
   } else if (state.mode === 'move' && hover) {
-    drag = {...hover, pointerId: event.pointerId};
+    // The drag edits the state directly; its start is recorded for undo when it ends.
+    drag = {...hover, pointerId: event.pointerId, before: snapshot()};
+    state.selected = {curve: hover.curve, index: hover.index};
     canvas.setPointerCapture(event.pointerId);
     canvas.classList.add('dragging');
     event.preventDefault();
+    renderAll();
   } else if (state.mode === 'remove' && hover) {
-    state.curves[hover.curve].points.splice(hover.index, 1);
-    hover = null;
-    updateHover(event);
-    changed();
+    const {curve, index} = hover;
+    if (edit('canvas', (s) => s.points[curve].splice(index, 1))) {
+      hover = null;
+      updateHover(event);
+      renderScene();
+    }
   }
 });
 
 function endDrag(event) {
   if (!drag || event.pointerId !== drag.pointerId) return;
+  const {before} = drag;
   drag = null;
+  if (JSON.stringify(before) !== JSON.stringify(snapshot())) {
+    clearMessages();
+    history.record(before, 'canvas');
+  }
   canvas.classList.remove('dragging');
   updateHover(event);
   renderScene();
@@ -241,6 +418,56 @@ canvas.addEventListener('pointerleave', () => {
   nearest.clear();
 });
 
+// --- keyboard on the canvas -------------------------------------------------------------
+
+function select(curve, index) {
+  state.selected = index >= 0 && index < state.curves[curve].points.length ? {curve, index} : null;
+  const p = state.selected && state.curves[curve].points[index];
+  $('canvas-status').textContent = p ? `Selected ${kPointNames[curve]}${index} at (${p[0]}, ${p[1]})` : 'No point selected';
+  renderAll();
+}
+
+canvas.addEventListener('keydown', (event) => {
+  if (event.ctrlKey || event.metaKey || event.altKey) return;
+  const active = state.active;
+  const points = state.curves[active].points;
+  const selected = state.selected && state.selected.curve === active ? state.selected.index : -1;
+  const steps = {ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1]};
+  if (event.key in steps) {
+    if (selected < 0) return;
+    event.preventDefault();
+    const [dx, dy] = steps[event.key].map((v) => v * (event.shiftKey ? 10 : 1));
+    edit('keyboard', (s) => {
+      const p = s.points[active][selected];
+      s.points[active][selected] = [p[0] + dx, p[1] + dy];
+    }, `move ${active} ${selected}`);
+    select(active, selected);
+  } else if (event.key === ']' || event.key === '[') {
+    event.preventDefault();
+    if (points.length === 0) return;
+    const next = selected < 0 ? (event.key === ']' ? 0 : points.length - 1)
+                              : (selected + (event.key === ']' ? 1 : points.length - 1)) % points.length;
+    select(active, next);
+  } else if (event.key === 'Insert' || event.key === '+' || event.key === 'n') {
+    event.preventDefault();
+    // After the selected point (or the last): halfway to the next one, or 40 units on.
+    const at = selected >= 0 ? selected : points.length - 1;
+    let p;
+    if (at < 0) p = [kWorld.width / 2, kWorld.height / 2];
+    else if (at + 1 < points.length) p = points[at].map((v, k) => Math.round((v + points[at + 1][k]) / 2));
+    else p = [Math.min(kWorld.width, points[at][0] + 40), points[at][1]];
+    if (edit('keyboard', (s) => s.points[active].splice(at + 1, 0, p))) select(active, at + 1);
+  } else if (event.key === 'Delete' || event.key === 'Backspace') {
+    if (selected < 0) return;
+    event.preventDefault();
+    if (edit('keyboard', (s) => s.points[active].splice(selected, 1))) {
+      select(active, Math.min(selected, state.curves[active].points.length - 1));
+    }
+  } else if (event.key === 'Escape') {
+    select(active, -1);
+  }
+});
+
 // --- controls --------------------------------------------------------------------
 
 function setMode(mode) {
@@ -253,18 +480,31 @@ function setMode(mode) {
 for (const input of document.querySelectorAll('input[name=mode]')) {
   input.addEventListener('change', () => setMode(input.value));
 }
+const typing = (target) => target instanceof HTMLInputElement || target instanceof HTMLSelectElement ||
+                           target instanceof HTMLTextAreaElement;
 document.addEventListener('keydown', (event) => {
-  if (event.target instanceof HTMLInputElement || event.target instanceof HTMLSelectElement) return;
+  if (typing(event.target)) return;
+  if ((event.ctrlKey || event.metaKey) && !event.altKey) {
+    const key = event.key.toLowerCase();
+    if (key === 'z' && !event.shiftKey) undo();
+    else if ((key === 'z' && event.shiftKey) || key === 'y') redo();
+    else return;
+    event.preventDefault();
+    return;
+  }
   if (event.ctrlKey || event.metaKey || event.altKey) return;
   const mode = {a: 'add', m: 'move', r: 'remove'}[event.key];
   if (mode) setMode(mode);
 });
+$('undo').addEventListener('click', undo);
+$('redo').addEventListener('click', redo);
 
+function setActive(index) {
+  state.active = index;
+  for (const input of document.querySelectorAll('input[name=active]')) input.checked = Number(input.value) === index;
+}
 for (const input of document.querySelectorAll('input[name=active]')) {
-  input.addEventListener('change', () => {
-    state.active = Number(input.value);
-    changed();
-  });
+  input.addEventListener('change', () => edit('canvas', (s) => { s.active = Number(input.value); }));
 }
 
 /** t0 as the page uses it: a number rounded to two decimals and clamped to [0, 1]. */
@@ -286,21 +526,58 @@ function setT0(value) {
   $('t0-range').value = String(t0);
   changed();
 }
-$('t0-range').addEventListener('input', (event) => setT0(event.target.value));
-$('t0-number').addEventListener('change', (event) => setT0(event.target.value));
+$('t0-range').addEventListener('input', (event) => {
+  stopAnimation();
+  setT0(event.target.value);
+});
+$('t0-number').addEventListener('change', (event) => {
+  stopAnimation();
+  setT0(event.target.value);
+});
+
+// Animation of t0: one step of 0.01 at a time, back and forth, each step once the
+// previous one's answers are drawn (or after half a second), so every frame is whole.
+function stopAnimation() {
+  if (!animation) return;
+  clearInterval(animation.timer);
+  animation = null;
+  $('animate').textContent = '▶ Animate t0';
+  $('animate').setAttribute('aria-pressed', 'false');
+}
+$('animate').addEventListener('click', () => {
+  if (animation) {
+    stopAnimation();
+    return;
+  }
+  animation = {direction: state.t0 >= 1 ? -1 : 1, last: 0};
+  animation.timer = setInterval(() => {
+    const now = performance.now();
+    if (!isIdle() && now - animation.last < 500) return;
+    if (now - animation.last < 40) return;
+    animation.last = now;
+    let next = Math.round((state.t0 + 0.01 * animation.direction) * 100) / 100;
+    if (next > 1 || next < 0) {
+      animation.direction = -animation.direction;
+      next = Math.round((state.t0 + 0.01 * animation.direction) * 100) / 100;
+    }
+    setT0(next);
+  }, 20);
+  $('animate').textContent = '■ Stop';
+  $('animate').setAttribute('aria-pressed', 'true');
+});
 
 const checks = {
   'show-polygon': 'polygon', 'show-curve': 'curve', 'show-points': 'points', 'show-labels': 'labels',
   'show-polar': 'polar', 'show-polar-points': 'polarPoints', 'show-loops': 'loops',
   'show-classify': 'classify', 'show-intersections': 'intersections', 'show-box': 'box',
-  'show-frame': 'frame', 'show-nearest': 'nearest',
+  'show-frame': 'frame', 'show-nearest': 'nearest', 'show-casteljau': 'casteljau',
 };
 for (const [id, key] of Object.entries(checks)) {
   $(id).addEventListener('change', (event) => {
     state.show[key] = event.target.checked;
     if (!state.show.intersections) hoverMark = -1;
-    renderScene();
-    renderPanels();
+    renderAll();
+    schedule();
   });
 }
 
@@ -308,48 +585,101 @@ function setSecond(on) {
   state.second = on;
   $('show-second').checked = on;
   $('editing').hidden = !on;
-  if (!on && state.active === 1) state.active = 0;
-  if (on && state.curves[1].points.length === 0) state.active = 1;  // ready to add B's points
-  for (const input of document.querySelectorAll('input[name=active]')) input.checked = Number(input.value) === state.active;
+  if (!on && state.active === 1) setActive(0);
 }
 $('show-second').addEventListener('change', (event) => {
-  setSecond(event.target.checked);
-  changed();
+  const on = event.target.checked;
+  event.target.checked = state.second;  // edit() sets it
+  edit('canvas', (s) => {
+    s.second = on;
+    if (on && s.points[1].length === 0) s.active = 1;  // ready to add B's points
+    if (!on) s.active = 0;
+  });
 });
 
 $('clear').addEventListener('click', () => {
-  state.curves[state.active].points = [];
   hover = null;
   hoverMark = -1;
-  changed();
+  edit('canvas', (s) => { s.points[s.active] = []; });
 });
 
 $('examples').addEventListener('change', (event) => {
   const example = kExamples[event.target.value];
   event.target.value = '';
   if (!example) return;
-  state.curves[0].points = structuredClone(example.a);
-  state.curves[1].points = structuredClone(example.b ?? []);
-  setSecond(Boolean(example.b));
-  state.active = 0;
-  for (const input of document.querySelectorAll('input[name=active]')) input.checked = input.value === '0';
-  changed();
+  edit('example', (s) => {
+    s.points = [structuredClone(example.a), structuredClone(example.b ?? [])];
+    s.second = Boolean(example.b);
+    s.active = 0;
+  });
+});
+
+// --- the table of control points, and pasted text ----------------------------------------
+
+const tableHandlers = {
+  onEdit: (k, axis, value) => edit('table', (s) => { s.points[s.active][k][axis] = value; }),
+  onInvalid: (k, axis, text) => showMessage('table', `${kPointNames[state.active]}${k} ${axis ? 'y' : 'x'}: "${text}" is not a finite number`),
+  onRemove: (k) => edit('table', (s) => { s.points[s.active].splice(k, 1); }),
+  onSelect: (k) => {
+    state.selected = {curve: state.active, index: k};
+    renderScene();
+  },
+};
+$('add-point').addEventListener('click', () => {
+  const points = state.curves[state.active].points;
+  const last = points[points.length - 1];
+  const p = last ? [Math.min(kWorld.width, last[0] + 40), last[1]] : [kWorld.width / 2, kWorld.height / 2];
+  edit('table', (s) => s.points[s.active].push(p));
+});
+
+$('paste-form').addEventListener('submit', (event) => {
+  event.preventDefault();
+  let read;
+  try {
+    read = parseCurveText($('paste-text').value);
+  } catch (e) {
+    if (!(e instanceof InputError)) throw e;
+    showMessage('paste', e.message);
+    return;
+  }
+  const {curves, source} = read;
+  if (curves.length > 2) {
+    showMessage('paste', `The path has ${curves.length} segments: the playground takes one (the curve being edited) or two (A and B).`);
+    return;
+  }
+  const made = edit('paste', (s) => {
+    if (curves.length === 2) {
+      s.points = curves;
+      s.second = true;
+      s.active = 0;
+    } else {
+      s.points[s.active] = curves[0];
+    }
+  });
+  if (made) {
+    const what = source === 'path' ? `SVG path data (${curves.length} segment${curves.length > 1 ? 's' : ''}, y flipped)` : 'the point list';
+    showMessage('paste', `Read ${curves.map((c) => c.length).join(' + ')} control points from ${what}.`, 'info');
+  }
+});
+
+// --- sharing and pictures ------------------------------------------------------------
+
+$('copy-link').addEventListener('click', async () => {
+  writeFragment();
+  try {
+    await navigator.clipboard.writeText(location.href);
+    showMessage('share', 'Link copied: it opens this drawing.', 'info');
+  } catch {
+    showMessage('share', `Copy this link: ${location.href}`, 'info');
+  }
 });
 
 $('download').addEventListener('click', () => {
-  // The canvas is cleared to transparent and the grid is CSS: the PNG has no background.
-  renderScene();
-  canvas.toBlob((blob) => {
-    if (!blob) return;
-    const url = URL.createObjectURL(blob);
-    const a = document.createElement('a');
-    a.href = url;
-    a.download = 'bezier-playground.png';
-    document.body.append(a);
-    a.click();
-    a.remove();
-    setTimeout(() => URL.revokeObjectURL(url), 10000);
-  }, 'image/png');
+  const png = renderPng(state, answers, view.cssWidth, legendEntries(state, answers));
+  png.toBlob((blob) => { if (blob) download(blob, 'bezier-playground.png'); }, 'image/png');
+});
+$('download-svg').addEventListener('click', () => {
+  download(new Blob([renderSvg(state, answers)], {type: 'image/svg+xml'}), 'bezier-playground.svg');
 });
 
 $('token').value = apiToken();
@@ -360,13 +690,27 @@ $('token-form').addEventListener('submit', (event) => {
   schedule();
 });
 
+// The canvas keeps the drawing's aspect ratio and is as large as the column allows,
+// but no taller than what leaves the t0 row in the window, so the main controls fit
+// a laptop screen without scrolling.
+const kBelowCanvas = 56;  // CSS pixels for the t0 row under the canvas
 function resize() {
-  if (view.resize($('canvas-wrap').clientWidth, window.devicePixelRatio)) renderScene();
+  const wrap = $('canvas-wrap');
+  const available = $('stage').clientWidth - 2;
+  const top = wrap.getBoundingClientRect().top + window.scrollY;
+  const tallest = Math.max(240, window.innerHeight - top - kBelowCanvas - 2);
+  const width = Math.min(available, Math.floor(tallest * kWorld.width / kWorld.height));
+  wrap.style.width = `${width + 2}px`;
+  if (view.resize(width, window.devicePixelRatio)) renderScene();
 }
 new ResizeObserver(() => {
   resize();
   renderScene();
-}).observe($('canvas-wrap'));
+}).observe($('stage'));
+window.addEventListener('resize', resize);
+window.addEventListener('hashchange', () => {
+  if (location.hash !== `#${encodeFragment(state)}`) readFragment('link');
+});
 
 // For scripts and tests: the page's state and the service's answers it drew from.
 window.playground = Object.freeze({
@@ -382,6 +726,12 @@ window.playground = Object.freeze({
             inFlight: nearest.inFlight};
   },
   errors: () => errors.map(({what, error}) => ({what, route: error.route, status: error.status, problem: error.problem})),
+  /** The canvas labels as placed ({text, x, y, w, h} in CSS pixels) and those left out. */
+  labels: () => ({placed: labels.boxes(), dropped: [...labels.dropped]}),
+  /** Undo and redo depths, and the degree limit once the service has named it. */
+  history: () => ({undo: history.past.length, redo: history.future.length}),
+  degreeLimit: () => degreeLimit,
+  exportScale: kExportScale,
   /** Client (page) coordinates of world point p, for pointing at it. */
   clientPoint: (p) => {
     const rect = canvas.getBoundingClientRect();
@@ -398,4 +748,5 @@ window.playground = Object.freeze({
 setMode('add');
 $('t0-number').value = state.t0.toFixed(2);
 resize();
+readFragment('link', true);
 changed();

@@ -1,7 +1,11 @@
 // The Bernstein panel: the basis polynomials B_{i,n}(t) = C(n,i) t^i (1-t)^(n-i),
-// i = 0..n, on [0, 1], with the one of the control point under the cursor highlighted
-// and a mark at t0. These are the weights of the control points, not curve geometry,
-// so they are computed here from the formula (the API has no basis-value route).
+// i = 0..n, on [0, 1], each in the colour of its control point P_i, the one of the point
+// under the cursor (or selected) emphasised, a line at t0 with each B_{i,n}(t0) marked,
+// and a legend with those values: the weight of each control point in B(t0). These are
+// the weights of the control points, not curve geometry, so they are computed here from
+// the formula (the API has no basis-value route).
+
+import {pointColor} from './draw.js';
 
 /** Binomial coefficient C(n, k), exact for the degrees the service allows. */
 export function binomial(n, k) {
@@ -17,9 +21,9 @@ export function bernstein(n, i, t) {
 
 /**
  * Draws the basis of degree n into `canvas` (sized to its CSS box).
- * highlight: the index to emphasise or -1; color: the curve's color; t0: marked.
+ * highlight: the index to emphasise or -1; t0: marked.
  */
-export function drawBernstein(canvas, n, highlight, color, t0) {
+export function drawBernstein(canvas, n, highlight, t0) {
   const ratio = Math.max(1, window.devicePixelRatio || 1);
   const width = canvas.clientWidth || 300;
   const height = canvas.clientHeight || 150;
@@ -70,8 +74,9 @@ export function drawBernstein(canvas, n, highlight, color, t0) {
   if (highlight >= 0 && highlight <= n) order.push(highlight);  // drawn last, on top
   for (const i of order) {
     const on = i === highlight;
-    ctx.strokeStyle = on ? color : '#9aa3ae';
-    ctx.lineWidth = on ? 3 : 1.25;
+    ctx.strokeStyle = pointColor(i);
+    ctx.globalAlpha = highlight >= 0 && !on ? 0.45 : 1;
+    ctx.lineWidth = on ? 3.5 : 2;
     ctx.beginPath();
     for (let k = 0; k <= steps; ++k) {
       const t = k / steps;
@@ -81,14 +86,56 @@ export function drawBernstein(canvas, n, highlight, color, t0) {
       else ctx.lineTo(x, y);
     }
     ctx.stroke();
-    if (on) {
-      const peak = i / n;  // B_{i,n} is largest at t = i/n
-      ctx.fillStyle = color;
-      ctx.textAlign = 'center';
-      ctx.textBaseline = 'bottom';
-      ctx.font = 'bold 12px system-ui, sans-serif';
-      ctx.fillText(`B${i},${n}`, Math.min(Math.max(sx(peak), left + 16), left + w - 16),
-                   Math.max(sy(bernstein(n, i, peak)) - 2, top + 12));
-    }
+    ctx.globalAlpha = 1;
+    // B_{i,n}(t0) on the t0 line.
+    ctx.beginPath();
+    ctx.arc(sx(t0), sy(bernstein(n, i, t0)), on ? 5 : 4, 0, 2 * Math.PI);
+    ctx.fillStyle = pointColor(i);
+    ctx.fill();
+    ctx.lineWidth = 1.5;
+    ctx.strokeStyle = '#ffffff';
+    ctx.stroke();
   }
+  // Names at the peaks (B_{i,n} is largest at t = i/n), left out where they would crowd.
+  const spacing = w / n;
+  ctx.font = '11px system-ui, sans-serif';
+  ctx.textAlign = 'center';
+  ctx.textBaseline = 'bottom';
+  for (let i = 0; i <= n; ++i) {
+    if (spacing < 34 && i !== highlight && !(i === 0 || i === n)) continue;
+    const peak = i / n;
+    ctx.fillStyle = pointColor(i);
+    ctx.fillText(`B${i},${n}`, Math.min(Math.max(sx(peak), left + 16), left + w - 16),
+                 Math.max(sy(bernstein(n, i, peak)) - 2, top + 12));
+  }
+}
+
+/** The legend: per i its colour, B_{i,n}(t0), and P_i's weight in B(t0). */
+export function renderBernsteinLegend(container, n, t0, points, pointName) {
+  const items = [];
+  if (n >= 1) {
+    let sum = [0, 0];
+    for (let i = 0; i <= n; ++i) {
+      const b = bernstein(n, i, t0);
+      sum = sum.map((v, k) => v + b * points[i][k]);
+      const li = document.createElement('li');
+      li.dataset.index = String(i);
+      li.dataset.value = String(b);
+      const swatch = document.createElement('span');
+      swatch.className = 'swatch';
+      swatch.style.backgroundColor = pointColor(i);
+      const name = document.createElement('span');
+      name.textContent = `B${i},${n}(t0) = `;
+      const value = document.createElement('span');
+      value.className = 'value';
+      value.textContent = b.toFixed(4);
+      li.append(swatch, name, value, ` · weight of ${pointName}${i}`);
+      items.push(li);
+    }
+    const total = document.createElement('li');
+    total.className = 'muted';
+    total.textContent = `Σ B_i,n(t0) ${pointName}i = (${sum.map((v) => Number(v.toPrecision(6))).join(', ')}) = B(t0); the weights add up to 1`;
+    items.push(total);
+  }
+  container.replaceChildren(...items);
 }

@@ -3,9 +3,11 @@
 // the loops and their areas (/loop-area), the intersections and overlaps
 // (/intersections), the cubic's type and canonical point (/classify), the edited
 // curve's frame at t0 (/evaluate with frame), tight box (/bounds) and lengths (/length
-// of the curve and of [0, t0]), and the points on loops, overlaps, inflections, cusps
-// and the box's extremes (/evaluate at the parameters those answers gave). Each request
-// fails on its own: its problem is collected and the rest is drawn.
+// of the curve and of [0, t0]), de Casteljau's construction at t0 (/polar with t0
+// repeated r times: the r-th polar's control points are the construction's level r),
+// and the points on loops, overlaps, inflections, cusps and the box's extremes
+// (/evaluate at the parameters those answers gave). Each request fails on its own: its
+// problem is collected and the rest is drawn.
 
 import {post} from './api.js';
 
@@ -33,6 +35,8 @@ function piece(interval) {
  * answers.measure: for the active curve, {curve, frame (the /evaluate result at t0 with
  * frame), bounds (the /bounds answer), extremes ([{axis, t, point}] at its critical
  * parameters), length, lengthToT0 (the /length answers on [0, 1] and [0, t0])};
+ * answers.casteljau: with state.show.casteljau, {curve, t0, levels} where levels[r] is
+ * the list b_0^r .. b_{n-r}^r (levels[0] the control points, levels[n] [B(t0)]);
  * answers.intersections: the /intersections answer for A and B.
  * errors: [{what, error}] with error an ApiError.
  */
@@ -50,7 +54,7 @@ export async function computeRound(state) {
   const curves = state.curves.map(() => ({
     evaluate: null, loopArea: null, classify: null, loopPaths: [], overlapPaths: [], features: [],
   }));
-  const answers = {curves, polar: null, measure: null, intersections: null};
+  const answers = {curves, polar: null, measure: null, casteljau: null, intersections: null};
   const jobs = [];
   for (const i of used) {
     const {name, points} = state.curves[i];
@@ -69,9 +73,11 @@ export async function computeRound(state) {
   const active = used.includes(state.active) ? state.active : 0;
   const activePoints = state.curves[active].points;
   if (activePoints.length >= 2) {
-    jobs.push(attempt(`polar of ${state.curves[active].name}`, '/polar',
-                      {points: activePoints, t0: state.t0, samples: kPolarSamples})
-        .then((a) => { if (a) answers.polar = {...a, curve: active}; }));
+    const polar = attempt(`polar of ${state.curves[active].name}`, '/polar',
+                          {points: activePoints, t0: state.t0, samples: kPolarSamples})
+        .then((a) => { if (a) answers.polar = {...a, curve: active}; });
+    jobs.push(polar);
+    if (state.show.casteljau) jobs.push(construction(state, active, answers, attempt, polar));
     jobs.push(measure(state, active, answers, attempt));
   }
   if (state.second && state.curves[0].points.length >= 2 && state.curves[1].points.length >= 2) {
@@ -82,6 +88,25 @@ export async function computeRound(state) {
   await Promise.all(jobs);
   await Promise.all(used.map((i) => pointsOnCurve(state, answers, i, attempt)));
   return {answers, errors};
+}
+
+/** De Casteljau's levels at t0: level r from the r-th polar b(t0, ..., t0, t, ..., t). */
+async function construction(state, active, answers, attempt, polarDone) {
+  const {name, points} = state.curves[active];
+  const n = points.length - 1;
+  const levels = Array(n + 1).fill(null);
+  levels[0] = points;
+  const jobs = [];
+  for (let r = 2; r < n; ++r) {
+    jobs.push(attempt(`de Casteljau level ${r} of ${name}`, '/polar', {points, t0: Array(r).fill(state.t0)})
+        .then((a) => { levels[r] = a?.control_points ?? null; }));
+  }
+  await Promise.all([polarDone, ...jobs]);
+  const polar = answers.polar;
+  if (!polar) return;
+  levels[1] = polar.control_points;
+  levels[n] = [polar.curve_point];
+  if (levels.every((level) => level !== null)) answers.casteljau = {curve: active, t0: state.t0, levels};
 }
 
 /** The measuring answers for the active curve: frame at t0, box, lengths. */

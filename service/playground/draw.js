@@ -2,9 +2,15 @@
 // the service answered (sampled curves, the first polar, loops with their areas,
 // overlaps, intersections, inflections and cusps, the edited curve's box with its
 // extremes, its tangent, normal and osculating circle at t0, and the point nearest to
-// the pointer). Nothing here computes geometry beyond the view's mapping to pixels and
-// placing the osculating circle from the frame the service gave: centre
-// B(t0) + N / kappa, radius 1 / |kappa| (N the unit normal, kappa the signed curvature).
+// the pointer), and de Casteljau's construction at t0 from the service's polars: level r
+// holds b_i^r(t0), the control points of the r-th polar b(t0, ..., t0, t, ..., t), so
+// level 1 is the first polar's control points and level n is B(t0). Nothing here
+// computes geometry beyond the view's mapping to pixels and placing the osculating
+// circle from the frame the service gave: centre B(t0) + N / kappa, radius 1 / |kappa|
+// (N the unit normal, kappa the signed curvature). Labels go through a LabelLayout, so
+// none covers another.
+
+import {LabelLayout, subscript, superscript} from './labels.js';
 
 export const kColors = Object.freeze({
   curves: ['#1f6fd1', '#d35400'],
@@ -17,7 +23,20 @@ export const kColors = Object.freeze({
   normal: '#8d6e63',
   osculating: '#00838f',
   nearest: '#d81b60',
+  // One colour per control point P_i and its Bernstein polynomial B_{i,n}.
+  points: ['#e6194b', '#3cb44b', '#4363d8', '#f58231', '#911eb4', '#42a5b5', '#f032e6', '#9a6324',
+           '#469990', '#800000', '#808000', '#000075'],
+  // De Casteljau levels r = 1, 2, ...: level 1 in the polar's colour (it is the polar's polygon).
+  levels: ['#8a3fd1', '#1e88e5', '#00897b', '#c49000', '#e65100', '#c62828', '#6d4c41', '#37474f'],
 });
+
+/** The colour of control point i (and of B_{i,n}). */
+export const pointColor = (i) => kColors.points[i % kColors.points.length];
+/** The colour of de Casteljau level r >= 1. */
+export const levelColor = (r) => kColors.levels[(r - 1) % kColors.levels.length];
+
+/** Label ranks: lower is placed first and so never gives way to a higher one. */
+const kRank = Object.freeze({point: 0, nearest: 1, curvePoint: 2, feature: 3, level: 4, area: 20});
 
 export const kPointNames = ['P', 'Q'];
 
@@ -44,17 +63,13 @@ function dot(ctx, view, p, radius, fill, stroke) {
   }
 }
 
-function label(ctx, view, p, text, color) {
+function label(labels, view, p, text, color, rank) {
   const [x, y] = view.toScreen(p);
-  ctx.font = '12px system-ui, sans-serif';
-  ctx.textAlign = 'left';
-  ctx.textBaseline = 'bottom';
-  ctx.lineWidth = 3;
-  ctx.strokeStyle = 'rgba(255,255,255,0.85)';
-  ctx.strokeText(text, x + 7, y - 4);
-  ctx.fillStyle = color;
-  ctx.fillText(text, x + 7, y - 4);
+  labels.add(x, y, text, color, rank);
 }
+
+/** The name b_i^r of a de Casteljau point. */
+export const levelName = (i, r) => `b${subscript(i)}${superscript(r)}`;
 
 /** Marker shape per intersection kind, so kinds differ without color too. */
 export function drawKindMarker(ctx, x, y, kind, size, highlighted) {
@@ -98,7 +113,7 @@ export function formatNumber(v) {
   return String(Number(v.toPrecision(6)));
 }
 
-function drawLoops(ctx, view, state, answers, i) {
+function drawLoops(ctx, view, labels, state, answers, i) {
   const color = kColors.curves[i];
   const curve = answers.curves[i];
   ctx.save();
@@ -119,11 +134,11 @@ function drawLoops(ctx, view, state, answers, i) {
   for (const {loop, points} of curve.loopPaths) {
     ctx.lineWidth = 1.5;
     dot(ctx, view, loop.point, 3.5, '#ffffff', color);  // the double point B(t1) = B(t2)
-    label(ctx, view, centroid(points), areaText(loop.area), color);
+    label(labels, view, centroid(points), areaText(loop.area), color, kRank.area);
   }
   if (closed && typeof curve.loopArea.closed_area === 'number') {
     const c = centroid(curve.evaluate.results.map((r) => r.point));
-    label(ctx, view, c, `closed, signed ${areaText(curve.loopArea.closed_area)}`, color);
+    label(labels, view, c, `closed, signed ${areaText(curve.loopArea.closed_area)}`, color, kRank.area);
   }
 }
 
@@ -210,7 +225,7 @@ function drawFrame(ctx, view, frame) {
 }
 
 /** The segment from the pointer to the nearest point of the edited curve, with the distance. */
-function drawNearest(ctx, view, state, nearest) {
+function drawNearest(ctx, view, labels, state, nearest) {
   const {target, answer} = nearest;
   const [tx, ty] = view.toScreen(target);
   const [px, py] = view.toScreen(answer.point);
@@ -225,21 +240,56 @@ function drawNearest(ctx, view, state, nearest) {
   ctx.restore();
   dot(ctx, view, answer.point, 4.5, kColors.nearest, '#ffffff');
   if (state.show.labels) {
-    label(ctx, view, [(target[0] + answer.point[0]) / 2, (target[1] + answer.point[1]) / 2],
-          `d = ${formatNumber(answer.distance)}`, kColors.nearest);
+    label(labels, view, [(target[0] + answer.point[0]) / 2, (target[1] + answer.point[1]) / 2],
+          `d = ${formatNumber(answer.distance)}`, kColors.nearest, kRank.nearest);
   }
 }
 
+/** De Casteljau's levels 1..n at t0: each level's polygon and points, labelled b_i^r. */
+function drawConstruction(ctx, view, labels, state, levels) {
+  const n = levels.length - 1;
+  for (let r = 1; r < n; ++r) {
+    ctx.save();
+    ctx.strokeStyle = levelColor(r);
+    ctx.lineWidth = 1.5;
+    polyline(ctx, view, levels[r]);
+    ctx.stroke();
+    ctx.restore();
+  }
+  for (let r = 2; r < n; ++r) {
+    levels[r].forEach((p, i) => {
+      ctx.lineWidth = 1.25;
+      dot(ctx, view, p, 4, levelColor(r), '#ffffff');
+      if (state.show.labels) label(labels, view, p, levelName(i, r), levelColor(r), kRank.level + r);
+    });
+  }
+}
+
+/** Level-1 points: the first polar's control points b_i^1, drawn as squares. */
+function drawPolarPoints(ctx, view, labels, state, points) {
+  points.forEach((p, i) => {
+    const [x, y] = view.toScreen(p);
+    ctx.fillStyle = kColors.polar;
+    ctx.strokeStyle = '#ffffff';
+    ctx.lineWidth = 1;
+    ctx.fillRect(x - 4, y - 4, 8, 8);
+    ctx.strokeRect(x - 4, y - 4, 8, 8);
+    if (state.show.labels) label(labels, view, p, levelName(i, 1), kColors.polar, kRank.level + 1);
+  });
+}
+
 /**
- * Draws everything. hover: {curve, index} of the control point under the cursor or
- * null; hoverMark: the index of the intersection under the cursor or -1.
+ * Draws everything and returns the label layout (the labels' boxes, for tests).
+ * hover: {curve, index} of the control point under the cursor or null; hoverMark: the
+ * index of the intersection under the cursor or -1; nearest: {target, answer} or null.
  */
 export function drawScene(view, state, answers, hover, hoverMark, nearest = null) {
   const ctx = view.context();
+  const labels = new LabelLayout(view.cssWidth, view.cssHeight);
   const used = state.second ? [0, 1] : [0];
   ctx.lineJoin = 'round';
   ctx.lineCap = 'round';
-  if (state.show.loops && answers) for (const i of used) drawLoops(ctx, view, state, answers, i);
+  if (state.show.loops && answers) for (const i of used) drawLoops(ctx, view, labels, state, answers, i);
 
   if (state.show.intersections && answers) {
     ctx.save();
@@ -253,6 +303,10 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
     }
     ctx.restore();
   }
+
+  const measure = answers?.measure;
+  const measured = measure && used.includes(measure.curve);
+  if (measured && state.show.box && measure.bounds) drawBox(ctx, view, state, measure);
 
   for (const i of used) {
     const points = state.curves[i].points;
@@ -275,6 +329,8 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
   }
 
   const polar = answers?.polar;
+  const levels = answers?.casteljau;
+  if (state.show.casteljau && levels && used.includes(levels.curve)) drawConstruction(ctx, view, labels, state, levels.levels);
   if (polar && used.includes(polar.curve)) {
     if (state.show.polar) {
       ctx.save();
@@ -286,30 +342,21 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
       }
       ctx.setLineDash([3, 4]);
       ctx.lineWidth = 1;
-      if (polar.control_points.length >= 2) {
+      if (polar.control_points.length >= 2 && !state.show.casteljau) {
         polyline(ctx, view, polar.control_points);
         ctx.stroke();
       }
       ctx.restore();
-      dot(ctx, view, polar.curve_point, 5, '#ffffff', kColors.polar);
-      if (state.show.labels) label(ctx, view, polar.curve_point, `B(${state.t0.toFixed(2)})`, kColors.polar);
     }
-    if (state.show.polarPoints) {
-      polar.control_points.forEach((p, k) => {
-        ctx.save();
-        const [x, y] = view.toScreen(p);
-        ctx.fillStyle = kColors.polar;
-        ctx.fillRect(x - 3.5, y - 3.5, 7, 7);
-        ctx.restore();
-        if (state.show.labels) label(ctx, view, p, `b${k}`, kColors.polar);
-      });
+    if ((state.show.polarPoints || state.show.casteljau) && polar.control_points.length >= 2) {
+      drawPolarPoints(ctx, view, labels, state, polar.control_points);
     }
   }
-
-  const measure = answers?.measure;
-  if (measure && used.includes(measure.curve)) {
-    if (state.show.box && measure.bounds) drawBox(ctx, view, state, measure);
-    if (state.show.frame && measure.frame) drawFrame(ctx, view, measure.frame);
+  if (measured && state.show.frame && measure.frame) drawFrame(ctx, view, measure.frame);
+  if (polar && used.includes(polar.curve) && (state.show.polar || state.show.casteljau)) {
+    ctx.lineWidth = 2;
+    dot(ctx, view, polar.curve_point, 5, '#ffffff', kColors.polar);
+    if (state.show.labels) label(labels, view, polar.curve_point, `B(${state.t0.toFixed(2)})`, kColors.polar, kRank.curvePoint);
   }
 
   if (state.show.classify && answers) {
@@ -333,7 +380,7 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
         }
         ctx.stroke();
         ctx.restore();
-        if (state.show.labels) label(ctx, view, f.point, f.kind, '#1b1f24');
+        if (state.show.labels) label(labels, view, f.point, f.kind, '#1b1f24', kRank.feature);
       }
     }
   }
@@ -342,14 +389,22 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
     const points = state.curves[i].points;
     points.forEach((p, k) => {
       const hovered = hover && hover.curve === i && hover.index === k;
-      if (state.show.points || hovered) {
+      const selected = state.selected && state.selected.curve === i && state.selected.index === k;
+      if (state.show.points || hovered || selected) {
         ctx.lineWidth = 2;
-        dot(ctx, view, p, 5, i === state.active ? kColors.curves[i] : '#ffffff', kColors.curves[i]);
+        dot(ctx, view, p, 5.5, i === state.active ? pointColor(k) : '#ffffff', kColors.curves[i]);
+      }
+      if (selected) {
+        ctx.save();
+        ctx.setLineDash([3, 3]);
+        ctx.lineWidth = 1.5;
+        dot(ctx, view, p, 10, null, '#1b1f24');
+        ctx.restore();
       }
       if (hovered && (state.mode === 'move' || state.mode === 'remove')) {
         const color = state.mode === 'remove' ? kColors.remove : kColors.curves[i];
         ctx.lineWidth = 3;
-        dot(ctx, view, p, 11, null, color);
+        dot(ctx, view, p, 12, null, color);
         if (state.mode === 'remove') {
           const [x, y] = view.toScreen(p);
           ctx.beginPath();
@@ -369,7 +424,9 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
         const key = `${p[0]},${p[1]}`;
         names.set(key, [...(names.get(key) ?? []), `${kPointNames[i]}${k}`]);
       });
-      for (const [key, list] of names) label(ctx, view, key.split(',').map(Number), list.join(' = '), kColors.curves[i]);
+      for (const [key, list] of names) {
+        label(labels, view, key.split(',').map(Number), list.join(' = '), kColors.curves[i], kRank.point);
+      }
     }
   }
 
@@ -379,5 +436,7 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
       drawKindMarker(ctx, x, y, hit.kind, 7, k === hoverMark);
     });
   }
-  if (state.show.nearest && nearest) drawNearest(ctx, view, state, nearest);
+  if (state.show.nearest && nearest) drawNearest(ctx, view, labels, state, nearest);
+  labels.draw(ctx);
+  return labels;
 }

@@ -106,8 +106,11 @@ export function renderIntersections(container, state, answers) {
   }
   if (items.length === 0) items.push(el('li', {class: 'muted'}, 'none: the curves do not meet'));
   if (x.stats) {
+    // How the search went (method, iterations, boxes): for the curious, folded away.
     const s = Object.entries(x.stats).map(([k, v]) => `${k} ${typeof v === 'number' ? fmt(v) : v}`).join(', ');
-    items.push(el('li', {class: 'muted small'}, s));
+    const details = el('details', {class: 'stats'}, el('summary', {}, 'Search statistics'), el('div', {class: 'small'}, s));
+    details.open = Boolean(container.querySelector('details.stats')?.open);
+    items.push(el('li', {class: 'muted small'}, details));
   }
   replace(container, items);
 }
@@ -144,18 +147,38 @@ export function renderLoops(container, state, answers) {
   replace(container, items);
 }
 
-/** One entry per failed request, with the problem the service sent. */
-export function renderErrors(container, errors) {
-  const items = errors.map(({what, error}) => {
+/** Where an error belongs: beside the control-point table when the service pointed at points. */
+function placeOf(problem) {
+  const pointers = (problem?.errors ?? []).map((e) => e.pointer ?? '');
+  return pointers.some((p) => /^\/(points|curves)(\/|$)/.test(p)) ? 'points' : 'general';
+}
+
+/**
+ * The failed requests' problems, each once (requests refused for the same reason are
+ * listed together), beside the control that caused them: places.points for problems
+ * the service pointed into the control points, places.general for the rest.
+ */
+export function renderErrors(places, errors) {
+  const groups = new Map();  // key -> {error, whats, place}
+  for (const {what, error} of errors) {
+    const p = error.problem ?? {};
+    const key = `${error.status}|${p.title ?? ''}|${p.detail ?? ''}`;
+    if (!groups.has(key)) groups.set(key, {error, whats: [], place: placeOf(p)});
+    groups.get(key).whats.push(what);
+  }
+  const items = {points: [], general: []};
+  for (const {error, whats, place} of groups.values()) {
     const p = error.problem ?? {};
     const li = el('li', {'data-route': error.route, 'data-status': String(error.status)});
-    li.append(el('strong', {}, `${what}: POST ${error.route} → ${error.status || 'no answer'} ${p.title ?? ''}`));
+    li.append(el('strong', {}, `POST ${error.route} → ${error.status || 'no answer'} ${p.title ?? ''}`));
     if (p.detail) li.append(el('div', {}, p.detail));
     if (Array.isArray(p.errors) && p.errors.length) {
       li.append(el('ul', {}, ...p.errors.map((e) => el('li', {}, el('code', {}, e.pointer || '/'), ` ${e.message}`))));
     }
+    li.append(el('div', {class: 'small'}, `Asked for: ${whats.join(', ')}.`));
     if (error.status === 401) li.append(el('div', {class: 'small'}, 'Enter the token under "API token" in the panel.'));
-    return li;
-  });
-  replace(container, items);
+    items[place].push(li);
+  }
+  replace(places.points, items.points);
+  replace(places.general, items.general);
 }

@@ -404,24 +404,31 @@ test('Remove mode removes the point under the cursor', async () => {
   assert.deepEqual(await pageErrorsShown(), []);
 });
 
-test('errors from the API are shown to the user (degree above the limit)', async () => {
+test('past the degree limit: the point is refused with a message beside the canvas, the curve stays', async () => {
   await setMode('add');
-  for (const w of [[400, 60], [460, 60], [520, 60], [580, 60]]) await clickWorld(w);
+  for (const w of [[400, 60], [460, 60], [520, 60]]) await clickWorld(w);
   await settle();
-  assert.equal((await pageState()).curves[0].points.length, kMaxDegree + 2);
-  const shown = await pageErrorsShown();
-  const evaluate = shown.find((e) => e.route === '/evaluate');
-  assert.ok(evaluate, `an /evaluate error is listed: ${JSON.stringify(shown)}`);
-  assert.equal(evaluate.status, 422);
-  const item = page.locator('#errors li[data-route="/evaluate"][data-status="422"]');
-  await item.first().waitFor({state: 'visible'});
-  const text = await item.first().textContent();
-  assert.match(text, /422/);
-  assert.match(text, /\/points/);
-  assert.match(text, new RegExp(`limit of ${kMaxDegree}`));
+  const full = (await pageState()).curves[0].points;
+  assert.equal(full.length, kMaxDegree + 1);
+  assert.equal(await page.evaluate(() => window.playground.degreeLimit()), null, 'no refusal yet');
+  await clickWorld([580, 60]);
+  await settle();
+  // The service refused degree 6; the page took the point back and says why, once.
+  assert.deepEqual((await pageState()).curves[0].points, full);
+  assert.equal(await page.evaluate(() => window.playground.degreeLimit()), kMaxDegree);
+  const message = page.locator('#canvas-message');
+  await message.waitFor({state: 'visible'});
+  assert.match(await message.textContent(), new RegExp(`degree at most ${kMaxDegree} \\(${kMaxDegree + 1} control points\\)`));
+  assert.equal(await page.locator('#errors li, #points-errors li').count(), 0, 'no request error is left listed');
+  const drawn = (await pageAnswers()).curves[0].evaluate;
+  assert.deepEqual(drawn, await api('/evaluate', {points: full, samples: drawn.results.length}), 'the curve is still drawn');
+  // Known now: the next point is refused at once.
+  await clickWorld([640, 60]);
+  assert.equal((await pageState()).curves[0].points.length, kMaxDegree + 1);
+  assert.match(await message.textContent(), /would have 7/);
   await page.locator('#clear').click();
   await settle();
-  assert.equal(await page.locator('#errors li').count(), 0, 'the errors go when the input is fixed');
+  assert.ok(await message.isHidden(), 'the message goes with the next edit');
 });
 
 const kCrossing = [[620, 240], [20, 100], [20, 300], [560, 240]];
@@ -506,18 +513,36 @@ test('second curve: intersections marked, their kind shown on hover', async () =
   await page.mouse.move(5, 5);
 });
 
-test('the PNG download has the drawing and no background', async () => {
+test('the PNG download: twice the resolution, a white background, the legend under the drawing', async () => {
   const [download] = await Promise.all([page.waitForEvent('download'), page.locator('#download').click()]);
   assert.equal(download.suggestedFilename(), 'bezier-playground.png');
   const png = readPng(readFileSync(await download.path()));
   const box = await page.locator('#scene').boundingBox();
-  assert.equal(png.width, Math.round(box.width));
-  let opaque = 0;
-  for (let k = 3; k < png.pixels.length; k += 4) if (png.pixels[k] > 0) ++opaque;
-  assert.equal(png.pixels[3], 0, 'the corner is transparent');
-  assert.equal(png.pixels[png.pixels.length - 1], 0, 'the far corner is transparent');
-  assert.ok(opaque > 2000, `the curves are drawn (${opaque} pixels)`);
-  assert.ok(opaque < png.width * png.height / 2, 'most of the image is transparent');
+  assert.equal(png.width, 2 * Math.round(box.width));
+  const drawingHeight = 2 * Math.round(box.height);
+  assert.ok(png.height > drawingHeight + 100, `the legend adds rows below the drawing (${png.height} px)`);
+  const pixel = (x, y) => [...png.pixels.subarray(4 * (y * png.width + x), 4 * (y * png.width + x) + 4)];
+  assert.deepEqual(pixel(0, 0), [255, 255, 255, 255], 'white, opaque corner');
+  assert.deepEqual(pixel(png.width - 1, png.height - 1), [255, 255, 255, 255], 'white, opaque far corner');
+  let transparent = 0;
+  for (let k = 3; k < png.pixels.length; k += 4) if (png.pixels[k] !== 255) ++transparent;
+  assert.equal(transparent, 0, 'no transparent pixel');
+  // Curve A's colour at a sample of the curve (scaled by 2).
+  const state = await pageState();
+  const samples = (await pageAnswers()).curves[0].evaluate.results;
+  const blue = samples.filter((r, k) => k % 16 === 8).filter((r) => {
+    const x = Math.round(r.point[0] * png.width / kWorld.width);
+    const y = Math.round((kWorld.height - r.point[1]) * drawingHeight / kWorld.height);
+    const [red, green, b] = pixel(Math.min(png.width - 1, x), Math.min(drawingHeight - 1, y));
+    return b > 150 && red < 120 && green < 160;
+  });
+  assert.ok(blue.length >= 4, `curve ${state.curves[0].name} is drawn in its colour (${blue.length} samples)`);
+  // The legend's text: dark pixels in the band under the drawing.
+  let dark = 0;
+  for (let y = drawingHeight + 4; y < png.height; ++y) {
+    for (let x = 0; x < png.width; ++x) if (pixel(x, y)[0] < 80 && pixel(x, y)[1] < 80) ++dark;
+  }
+  assert.ok(dark > 2000, `the legend is written under the drawing (${dark} dark pixels)`);
 });
 
 test('overlapping curves: the overlap is listed and highlighted', async () => {
