@@ -95,16 +95,20 @@ async function client(w, p = page) {
   return [box.x + w[0] * box.width / kWorld.width, box.y + (kWorld.height - w[1]) * box.height / kWorld.height];
 }
 
-/** The canvas pixel [r, g, b, a] at world point w, shifted dy CSS pixels down. */
-async function pixelAt(w, dy = 0) {
-  const box = await page.locator('#scene').boundingBox();
-  const [x, y] = await client(w);
-  return page.evaluate(([cx, cy]) => {
+/** The canvas pixels [r, g, b, a] at world points ws, shifted dy CSS pixels down. */
+async function pixelsAt(ws, dy = 0, p = page) {
+  const box = await p.locator('#scene').boundingBox();
+  const offsets = ws.map((w) => [w[0] * box.width / kWorld.width, (kWorld.height - w[1]) * box.height / kWorld.height + dy]);
+  return p.evaluate((list) => {
     const canvas = document.getElementById('scene');
     const r = canvas.width / canvas.getBoundingClientRect().width;
-    return [...canvas.getContext('2d').getImageData(Math.round(cx * r), Math.round(cy * r), 1, 1).data];
-  }, [x - box.x, y - box.y + dy]);
+    const ctx = canvas.getContext('2d');
+    return list.map(([x, y]) => [...ctx.getImageData(Math.round(x * r), Math.round(y * r), 1, 1).data]);
+  }, offsets);
 }
+
+/** The canvas pixel [r, g, b, a] at world point w, shifted dy CSS pixels down. */
+const pixelAt = async (w, dy = 0) => (await pixelsAt([w], dy))[0];
 
 async function clickWorld(w) {
   const [x, y] = await client(w);
@@ -332,7 +336,7 @@ test('the edited curve measured: box and extremes, lengths, tangent, normal and 
     if (w[0] > 10 && w[0] < 790 && w[1] > 10 && w[1] < 590) onCircle.push(w);
   }
   assert.ok(onCircle.length >= 6, 'the osculating circle is in view');
-  const alphas = async (ws) => Promise.all(ws.map(async (w) => (await pixelAt(w))[3]));
+  const alphas = async (ws) => (await pixelsAt(ws)).map((px) => px[3]);
   const withFrame = await alphas(onCircle);
   await page.locator('#show-frame').uncheck();
   const withoutFrame = await alphas(onCircle);
@@ -466,6 +470,151 @@ test('loops shaded with their area; the cubic\'s type and canonical point', asyn
   assert.deepEqual(await pageErrorsShown(), []);
 });
 
+/** De Casteljau's levels at t, computed here: levels[r][i] = b_i^r. */
+function casteljauLevels(points, t) {
+  const levels = [points.map((p) => [...p])];
+  while (levels[levels.length - 1].length > 1) {
+    const last = levels[levels.length - 1];
+    levels.push(last.slice(1).map((p, i) => p.map((v, k) => (1 - t) * last[i][k] + t * v)));
+  }
+  return levels;
+}
+
+/** [r, g, b] of a CSS colour such as '#1e88e5' or 'rgb(30, 136, 229)'. */
+function rgbOf(color) {
+  if (color.startsWith('#')) return [1, 3, 5].map((k) => parseInt(color.slice(k, k + 2), 16));
+  return color.match(/\d+/g).slice(0, 3).map(Number);
+}
+const near = (pixel, rgb, tolerance = 40) => rgb.every((v, k) => Math.abs(pixel[k] - v) <= tolerance);
+
+test('de Casteljau\'s construction at t0: every level from the API, coloured and labelled b_i^r; t0 animates', async () => {
+  const state = await pageState();
+  const points = state.curves[0].points;
+  const t0 = state.t0;
+  const n = points.length - 1;
+  assert.equal(n, 3);
+  const answers = await pageAnswers();
+  const {levels, curve} = answers.casteljau;
+  assert.equal(curve, 0);
+  assert.equal(levels.length, n + 1);
+  const exact = casteljauLevels(points, t0);
+  levels.forEach((level, r) => {
+    assert.equal(level.length, n + 1 - r, `level ${r} has ${n + 1 - r} points`);
+    level.forEach((p, i) => p.forEach((v, k) => assert.ok(Math.abs(v - exact[r][i][k]) <= 1e-9 * 800, `b_${i}^${r}`)));
+  });
+  // Level 1 is the first polar's control points; level r the r-th polar's; level n is B(t0).
+  assert.deepEqual(levels[1], answers.polar.control_points);
+  for (let r = 2; r < n; ++r) {
+    assert.deepEqual(levels[r], (await api('/polar', {points, t0: Array(r).fill(t0)})).control_points);
+  }
+  assert.deepEqual(levels[n], [answers.polar.curve_point]);
+  const sub = '₀₁₂₃₄₅₆₇₈₉';
+  const sup = '⁰¹²³⁴⁵⁶⁷⁸⁹';
+  const {placed, dropped} = await page.evaluate(() => window.playground.labels());
+  const texts = new Set([...placed.map((b) => b.text), ...dropped]);
+  for (let r = 1; r < n; ++r) {
+    for (let i = 0; i <= n - r; ++i) assert.ok(texts.has(`b${sub[i]}${sup[r]}`), `b_${i}^${r} is labelled`);
+  }
+  // Level 2's points in level 2's colour, level 1's in the polar's (the legend shows both).
+  const level2 = rgbOf('#1e88e5');
+  const polar = rgbOf('#8a3fd1');
+  const colored = async (level, rgb) => (await pixelsAt(level)).filter((px) => near(px, rgb)).length;
+  assert.ok(await colored(levels[2], level2) >= 1, 'level 2 drawn in its colour');
+  assert.ok(await colored(levels[1], polar) >= 2, 'level 1 drawn in the polar\'s colour');
+  await page.locator('#show-casteljau').uncheck();
+  await settle();
+  assert.equal((await pageAnswers()).casteljau, null, 'no construction asked for when it is hidden');
+  assert.equal(await colored(levels[2], level2), 0, 'level 2 gone');
+  await page.locator('#show-casteljau').check();
+  await settle();
+
+  // Animation: t0 moves in steps of 0.01 and each step is answered; Stop keeps the last.
+  const animate = page.locator('#animate');
+  await animate.click();
+  assert.equal(await animate.getAttribute('aria-pressed'), 'true');
+  await page.waitForFunction((start) => Math.abs(window.playground.state().t0 - start) >= 0.05, t0, {timeout: kTimeout});
+  await animate.click();
+  assert.equal(await animate.getAttribute('aria-pressed'), 'false');
+  await settle();
+  const stopped = (await pageState()).t0;
+  assert.notEqual(stopped, t0);
+  assert.equal(Math.round(stopped * 100) / 100, stopped, 'two decimals');
+  assert.equal((await pageAnswers()).casteljau.t0, stopped, 'the construction drawn is the one at the t0 shown');
+  await page.waitForTimeout(150);
+  assert.equal((await pageState()).t0, stopped, 'stopped');
+  await page.locator('#t0-number').fill(String(t0));
+  await page.locator('#t0-number').press('Tab');
+  await settle();
+});
+
+const binomial = (n, k) => {
+  let c = 1;
+  for (let j = 1; j <= k; ++j) c = c * (n - k + j) / j;
+  return c;
+};
+
+test('Bernstein basis: a colour per B_{i,n} matching its control point, a legend with the values at t0', async () => {
+  const state = await pageState();
+  const points = state.curves[0].points;
+  const {t0} = state;
+  const n = points.length - 1;
+  const items = page.locator('#bernstein-legend li[data-index]');
+  assert.equal(await items.count(), n + 1);
+  let sum = 0;
+  const weighted = [0, 0];
+  for (let i = 0; i <= n; ++i) {
+    const item = items.nth(i);
+    const exact = binomial(n, i) * t0 ** i * (1 - t0) ** (n - i);
+    const value = Number(await item.getAttribute('data-value'));
+    assert.ok(Math.abs(value - exact) <= 1e-15, `B_${i},${n}(t0)`);
+    assert.ok(Math.abs(Number(await item.locator('.value').textContent()) - exact) <= 5e-5, 'shown to 4 decimals');
+    assert.match(await item.textContent(), new RegExp(`weight of P${i}`));
+    sum += exact;
+    weighted[0] += exact * points[i][0];
+    weighted[1] += exact * points[i][1];
+    // The swatch's colour is the colour the control point is filled with on the canvas.
+    const swatch = rgbOf(await item.locator('.swatch').evaluate((e) => getComputedStyle(e).backgroundColor));
+    const filled = await pixelAt(points[i]);
+    assert.ok(near(filled, swatch, 30), `P${i} is filled in B_${i},${n}'s colour: ${filled} against ${swatch}`);
+  }
+  assert.ok(Math.abs(sum - 1) < 1e-12);
+  // The weights give B(t0): the API's point.
+  const curvePoint = (await pageAnswers()).polar.curve_point;
+  weighted.forEach((v, k) => assert.ok(Math.abs(v - curvePoint[k]) <= 1e-9 * 800));
+  // In the plot, B_{i,n}(t0) is marked on the t0 line in the same colour.
+  const plot = await page.locator('#bernstein').boundingBox();
+  const i = 1;
+  const swatch = rgbOf(await items.nth(i).locator('.swatch').evaluate((e) => getComputedStyle(e).backgroundColor));
+  const value = binomial(n, i) * t0 ** i * (1 - t0) ** (n - i);
+  const mark = await page.evaluate(([t, v]) => {
+    const canvas = document.getElementById('bernstein');
+    const r = canvas.width / canvas.getBoundingClientRect().width;
+    const w = canvas.clientWidth - 26 - 8;
+    const h = canvas.clientHeight - 8 - 18;
+    return [...canvas.getContext('2d').getImageData(Math.round((26 + t * w) * r), Math.round((8 + (1 - v) * h) * r), 1, 1).data];
+  }, [t0, value]);
+  assert.ok(plot.width > 0);
+  assert.ok(near(mark, swatch, 40), `B_${i},${n}(t0) marked in its colour, got ${mark}`);
+});
+
+test('explanations: a legend entry for every mark shown, a line per panel, search statistics folded', async () => {
+  const marks = async () => page.locator('#legend li').evaluateAll((items) => items.map((li) => li.dataset.mark));
+  const shown = await marks();
+  for (const mark of ['points', 'polygon', 'curve-a', 'polar', 'polar-points', 'curve-point', 'tangent', 'osculating',
+                      'box', 'nearest', 'loop', 'inflection', 'cusp']) {
+    assert.ok(shown.includes(mark), `the legend explains ${mark}`);
+  }
+  await page.locator('#show-box').uncheck();
+  assert.ok(!(await marks()).includes('box'), 'a hidden mark leaves the legend');
+  await page.locator('#show-box').check();
+  for (const panel of ['#classify-section', '#intersections', '#loops', '#bernstein', '#values']) {
+    const text = await page.locator(panel).locator('xpath=ancestor-or-self::section[1]').locator('.explain').textContent();
+    assert.ok(text.trim().length > 30, `${panel} says what it shows`);
+  }
+  assert.match(await page.locator('#classify-section .explain').textContent(), /Loop–Blinn/);
+  assert.match(await page.locator('#classify-section .explain').textContent(), /Canonical form/);
+});
+
 test('second curve: intersections marked, their kind shown on hover', async () => {
   const a = (await pageState()).curves[0].points;
   await page.locator('#show-second').check();
@@ -484,6 +633,13 @@ test('second curve: intersections marked, their kind shown on hover', async () =
   for (let k = 0; k < exact.intersections.length; ++k) {
     assert.equal(await items.nth(k).getAttribute('data-kind'), exact.intersections[k].kind);
   }
+  const stats = page.locator('#intersections details.stats');
+  assert.equal(await stats.count(), 1);
+  assert.equal(await stats.evaluate((d) => d.open), false, 'search statistics are folded by default');
+  assert.ok(await stats.locator('div').isHidden());
+  await stats.locator('summary').click();
+  assert.match(await stats.locator('div').textContent(), /iterations/);
+  await stats.locator('summary').click();
   await setMode('move');
   const hit = exact.intersections[0];
   const [x, y] = await client(hit.point);
@@ -539,8 +695,8 @@ test('the PNG download: twice the resolution, a white background, the legend und
   assert.ok(blue.length >= 4, `curve ${state.curves[0].name} is drawn in its colour (${blue.length} samples)`);
   // The legend's text: dark pixels in the band under the drawing.
   let dark = 0;
-  for (let y = drawingHeight + 4; y < png.height; ++y) {
-    for (let x = 0; x < png.width; ++x) if (pixel(x, y)[0] < 80 && pixel(x, y)[1] < 80) ++dark;
+  for (let k = 4 * (drawingHeight + 4) * png.width; k < png.pixels.length; k += 4) {
+    if (png.pixels[k] < 80 && png.pixels[k + 1] < 80) ++dark;
   }
   assert.ok(dark > 2000, `the legend is written under the drawing (${dark} dark pixels)`);
 });
@@ -567,6 +723,168 @@ test('overlapping curves: the overlap is listed and highlighted', async () => {
   await page.locator('#show-intersections').check();
 });
 
+/** Puts `text` in the paste box and uses it; returns the message shown beside it. */
+async function paste(text) {
+  await page.locator('#paste-text').fill(text);
+  await page.locator('#paste-form button[type=submit]').click();
+  return page.locator('#paste-message').textContent();
+}
+
+test('exact input: the table, pasted points and SVG path data, undo and redo, the permalink', async () => {
+  await page.locator('#examples').selectOption('loop');
+  await settle();
+  const loop = (await pageState()).curves[0].points;
+  const rows = page.locator('#points-table tbody tr');
+  assert.equal(await rows.count(), 4);
+  const field = (row, axis) => rows.nth(row).locator(`input[data-axis="${axis}"]`);
+  assert.equal(await field(1, 0).inputValue(), String(loop[1][0]));
+  await field(1, 0).fill('333.25');
+  await field(1, 0).press('Enter');
+  await settle();
+  const typed = (await pageState()).curves[0].points;
+  assert.deepEqual(typed, [loop[0], [333.25, loop[1][1]], loop[2], loop[3]]);
+  const drawn = (await pageAnswers()).curves[0].evaluate;
+  assert.deepEqual(drawn, await api('/evaluate', {points: typed, samples: drawn.results.length}));
+  // Not a number: refused beside the table, once, and nothing changes.
+  await field(2, 1).fill('abc');
+  await field(2, 1).press('Tab');
+  const message = page.locator('#points-message');
+  await message.waitFor({state: 'visible'});
+  assert.match(await message.textContent(), /P2 y: "abc" is not a finite number/);
+  assert.equal(await page.locator('.message:visible').count(), 1, 'one message, beside the table');
+  assert.deepEqual((await pageState()).curves[0].points, typed);
+  await page.locator('#add-point').click();
+  assert.equal(await rows.count(), 5);
+  await rows.nth(4).locator('button.remove-point').click();
+  assert.equal(await rows.count(), 4);
+  assert.deepEqual((await pageState()).curves[0].points, typed);
+
+  assert.match(await paste('100,100 200,300; (300, 100)'), /Read 3 control points from the point list/);
+  assert.deepEqual((await pageState()).curves[0].points, [[100, 100], [200, 300], [300, 100]]);
+  assert.match(await paste('[[1.5, 2], [3, 4e2]]'), /Read 2/);
+  assert.deepEqual((await pageState()).curves[0].points, [[1.5, 2], [3, 400]]);
+  // Relative SVG path data, y down in the 800 x 600 drawing.
+  await paste('m 100 500 c 100 -300 300 -300 400 0');
+  assert.deepEqual((await pageState()).curves[0].points, [[100, 100], [200, 400], [400, 400], [500, 100]]);
+  // Two segments: curves A and B.
+  assert.match(await paste('M100,500Q300 100 500 500L700-100'), /2 segments/);
+  let state = await pageState();
+  assert.deepEqual(state.curves.map((c) => c.points), [[[100, 100], [300, 500], [500, 100]], [[500, 100], [700, 700]]]);
+  assert.equal(state.second, true);
+  const pasted = state.curves.map((c) => c.points);
+  for (const [text, pattern] of [['M 0 0 H 100', /the H command is not supported/], ['M 0 0 L 10 10 Z', /the Z command/],
+                                 ['M 0 0 C 1 2 3', /C needs/], ['L 5 5', /starts with M/], ['1 2 3', /3 numbers/]]) {
+    assert.match(await paste(text), pattern, text);
+    assert.deepEqual((await pageState()).curves.map((c) => c.points), pasted, `${text} changes nothing`);
+  }
+  await settle();
+
+  // SVG export: exact path commands for degrees up to 3, in the same units as the paste.
+  const [download] = await Promise.all([page.waitForEvent('download'), page.locator('#download-svg').click()]);
+  assert.equal(download.suggestedFilename(), 'bezier-playground.svg');
+  const svg = readFileSync(await download.path(), 'utf8');
+  assert.match(svg, /^<svg xmlns="http:\/\/www.w3.org\/2000\/svg" viewBox="0 0 800 600"/);
+  assert.match(svg, /<rect width="800" height="600" fill="#ffffff"\/>/);
+  assert.equal(svg.match(/<path id="curve-A" d="([^"]*)"/)[1], 'M 100 500 Q 300 100 500 500');
+  assert.equal(svg.match(/<path id="curve-B" d="([^"]*)"/)[1], 'M 500 500 L 700 -100');
+  assert.equal((svg.match(/<circle /g) ?? []).length, 5);
+
+  // Undo and redo, by button and by key.
+  await page.locator('#undo').click();
+  state = await pageState();
+  assert.deepEqual(state.curves[0].points, [[100, 100], [200, 400], [400, 400], [500, 100]]);
+  assert.equal(state.second, false);
+  await page.locator('#redo').click();
+  assert.deepEqual((await pageState()).curves.map((c) => c.points), pasted);
+  await page.locator('#scene').focus();
+  await page.keyboard.press('Control+z');
+  assert.equal((await pageState()).second, false);
+  await page.keyboard.press('Control+Shift+Z');
+  assert.deepEqual((await pageState()).curves.map((c) => c.points), pasted);
+  assert.equal(await page.locator('#redo').isDisabled(), true, 'nothing left to redo');
+  await settle();
+
+  // The permalink opens the same drawing.
+  const url = page.url();
+  assert.match(url, /#a=100,100;300,500;500,100&b=500,100;700,700&t0=0\.37$/);
+  const other = await context.newPage();
+  other.on('pageerror', (e) => pageErrors.push(e.message));
+  recordPolicyViolations(other);
+  await other.goto(url);
+  await settle(other);
+  const opened = await pageState(other);
+  assert.deepEqual(opened.curves.map((c) => c.points), pasted);
+  assert.equal(opened.t0, 0.37);
+  assert.equal(opened.second, true);
+  assertSameAnswer((await pageAnswers(other)).intersections,
+                   await api('/intersections', {curves: pasted.map((points) => ({points}))}), 'the link\'s intersections');
+  await other.close();
+});
+
+test('keyboard: the canvas takes focus, [ ] select, arrows move, + adds, Delete removes', async () => {
+  const canvas = page.locator('#scene');
+  await canvas.focus();
+  assert.equal(await page.evaluate(() => document.activeElement.id), 'scene');
+  const undoDepth = (await page.evaluate(() => window.playground.history())).undo;
+  await page.keyboard.press(']');
+  await page.keyboard.press(']');
+  assert.deepEqual((await pageState()).selected, {curve: 0, index: 1});
+  for (let k = 0; k < 3; ++k) await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('Shift+ArrowUp');
+  await page.keyboard.press('ArrowDown');
+  assert.deepEqual((await pageState()).curves[0].points, [[100, 100], [303, 509], [500, 100]]);
+  assert.match(await page.locator('#canvas-status').textContent(), /Selected P1 at \(303, 509\)/);
+  assert.equal((await page.evaluate(() => window.playground.history())).undo, undoDepth + 1, 'one undo step for the moves');
+  await page.keyboard.press('+');
+  let state = await pageState();
+  assert.deepEqual(state.curves[0].points, [[100, 100], [303, 509], [402, 305], [500, 100]], 'halfway to the next point');
+  assert.deepEqual(state.selected, {curve: 0, index: 2});
+  await page.keyboard.press('Delete');
+  state = await pageState();
+  assert.deepEqual(state.curves[0].points, [[100, 100], [303, 509], [500, 100]]);
+  await page.keyboard.press('Control+z');
+  assert.equal((await pageState()).curves[0].points.length, 4);
+  await page.keyboard.press('Control+z');
+  await page.keyboard.press('Control+z');
+  assert.deepEqual((await pageState()).curves[0].points, [[100, 100], [300, 500], [500, 100]]);
+  await settle();
+  // The table follows, its row of the selected point marked.
+  assert.equal(await page.locator('#points-table tbody tr').count(), 3);
+  const {selected} = await pageState();
+  assert.equal(await page.locator('#points-table tbody tr.selected').getAttribute('data-index'), String(selected.index));
+  const drawn = (await pageAnswers()).curves[0].evaluate;
+  assert.deepEqual(drawn, await api('/evaluate', {points: [[100, 100], [300, 500], [500, 100]], samples: drawn.results.length}));
+});
+
+test('a 1280 x 800 screen holds the main controls; a refused request is shown once, beside the control points', async () => {
+  const laptop = await context.newPage();
+  laptop.on('pageerror', (e) => pageErrors.push(e.message));
+  recordPolicyViolations(laptop);
+  await laptop.setViewportSize({width: 1280, height: 800});
+  // A link with a curve past the degree limit: every request for it fails alike.
+  const seven = [[100, 100], [200, 300], [300, 100], [400, 300], [500, 100], [600, 300], [700, 100]];
+  await laptop.goto(`${baseUrl}/#a=${seven.map((p) => p.join(',')).join(';')}&t0=0.5`);
+  await settle(laptop);
+  const failed = await pageErrorsShown(laptop);
+  assert.ok(failed.length >= 3, `several requests failed (${failed.length})`);
+  const listed = laptop.locator('#points-errors li[data-status="422"]');
+  assert.equal(await listed.count(), 1, 'one entry for one cause');
+  assert.match(await listed.textContent(), new RegExp(`limit of ${kMaxDegree}`));
+  assert.match(await listed.textContent(), /Asked for: .*, .*/);
+  assert.equal(await laptop.locator('#errors li').count(), 0, 'nothing in the general list');
+
+  await laptop.goto(`${baseUrl}/#a=${kFour.map((p) => p.join(',')).join(';')}&t0=0.5`);
+  await settle(laptop);
+  assert.equal(await laptop.locator('#points-errors li').count(), 0);
+  for (const selector of ['.toolbar', '#scene', '#t0-range', '#t0-number', '#animate', '.checks', '#points-table', '#add-point']) {
+    const box = await laptop.locator(selector).boundingBox();
+    assert.ok(box.y >= 0 && box.y + box.height <= 800 && box.x + box.width <= 1280, `${selector} fits: ${JSON.stringify(box)}`);
+  }
+  const widths = await laptop.evaluate(() => ({page: document.documentElement.scrollWidth, view: window.innerWidth}));
+  assert.ok(widths.page <= widths.view);
+  await laptop.close();
+});
+
 test('phone width: no sideways scrolling, and a tap adds a point', async () => {
   const phone = await context.newPage();
   phone.on('pageerror', (e) => pageErrors.push(e.message));
@@ -588,6 +906,29 @@ test('phone width: no sideways scrolling, and a tap adds a point', async () => {
   // A CSS pixel is about two world units here, so a tap lands within a unit or two.
   points.forEach((p, k) => assert.ok(Math.abs(p[0] - [100, 400, 700][k]) <= 2 && Math.abs(p[1] - [100, 500, 100][k]) <= 2));
   assert.ok((await pageAnswers(phone)).curves[0].evaluate, 'the curve is drawn');
+
+  // No two labels overlap, on the canvas (the crowded construction of a loop crossed by
+  // a second curve) or on the page.
+  await phone.goto(`${baseUrl}/#a=250,100;750,560;50,560;550,100&b=${kCrossing.map((p) => p.join(',')).join(';')}&t0=0.37`);
+  await settle(phone);
+  const {placed} = await phone.evaluate(() => window.playground.labels());
+  const canvasBox = await phone.locator('#scene').boundingBox();
+  assert.ok(placed.length >= 12, `${placed.length} labels placed`);
+  const overlapping = (a, b) => a.x < b.x + b.w - 0.5 && b.x < a.x + a.w - 0.5 && a.y < b.y + b.h - 0.5 && b.y < a.y + a.h - 0.5;
+  for (const [k, a] of placed.entries()) {
+    assert.ok(a.x >= 0 && a.y >= 0 && a.x + a.w <= canvasBox.width && a.y + a.h <= canvasBox.height, `${a.text} inside`);
+    for (const b of placed.slice(k + 1)) assert.ok(!overlapping(a, b), `canvas labels ${a.text} and ${b.text} overlap`);
+  }
+  const boxes = await phone.locator('h1, .lede, .segmented legend, .segmented span, .actions > button, select, .status, ' +
+                                    '.t0-row > *, .checks label, summary, h2, #points-table th, #points-table input')
+      .evaluateAll((nodes) => nodes.map((n) => {
+        const r = n.getBoundingClientRect();
+        return {what: `${n.tagName} ${n.id || n.className} ${n.textContent.trim().slice(0, 20)}`, x: r.x, y: r.y, w: r.width, h: r.height};
+      }).filter((b) => b.w > 0 && b.h > 0));
+  assert.ok(boxes.length > 40);
+  for (const [k, a] of boxes.entries()) {
+    for (const b of boxes.slice(k + 1)) assert.ok(!overlapping(a, b), `${a.what} and ${b.what} overlap`);
+  }
   await phone.close();
 });
 
