@@ -184,7 +184,22 @@ function redo() {
   changed();
 }
 
+// The fragment is rewritten at most every kFragmentInterval ms (the last state is
+// always written): browsers refuse bursts of history.replaceState, and a drag or the
+// t0 animation changes the state many times a second.
+const kFragmentInterval = 250;
+let fragmentWritten = 0;
+let fragmentTimer = null;
 function writeFragment() {
+  const wait = fragmentWritten + kFragmentInterval - performance.now();
+  if (wait > 0) {
+    fragmentTimer ??= setTimeout(() => {
+      fragmentTimer = null;
+      writeFragment();
+    }, wait);
+    return;
+  }
+  fragmentWritten = performance.now();
   const fragment = `#${encodeFragment(state)}`;
   if (location.hash !== fragment) window.history.replaceState(null, '', fragment);
 }
@@ -366,6 +381,7 @@ canvas.addEventListener('pointermove', (event) => {
 
 canvas.addEventListener('pointerdown', (event) => {
   if (event.button !== 0) return;
+  canvas.focus({preventScroll: true});  // for the keys, also when the default action is prevented below
   updateHover(event);
   const [sx, sy] = localPosition(event);
   if (state.mode === 'add') {

@@ -19,7 +19,7 @@ export function renderPng(state, answers, cssWidth, entries) {
   const legend = legendHeight(measure, entries, view.cssWidth);
   const drawing = view.cssHeight;
   canvas.height = Math.round((drawing + legend) * kExportScale);
-  drawScene(view, state, answers, null, -1, null);
+  drawScene(view, {...state, selected: null}, answers, null, -1, null);  // no hover, selection or pointer marks
   const ctx = canvas.getContext('2d');
   ctx.setTransform(kExportScale, 0, 0, kExportScale, 0, 0);
   ctx.strokeStyle = '#d5dae1';

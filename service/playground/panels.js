@@ -3,7 +3,7 @@
 // answers of the last round; numbers shown rounded, the full answers are on
 // window.playground for whoever needs every digit.
 
-import {kColors, kPointNames, formatNumber, osculatingCircle} from './draw.js';
+import {kColors, kPointNames, formatNumber, levelName, osculatingCircle} from './draw.js';
 
 const fmt = formatNumber;
 const pt = (p) => `(${fmt(p[0])}, ${fmt(p[1])})`;
@@ -37,7 +37,7 @@ export function renderValues(container, state, answers, nearest) {
   add('t0', state.t0.toFixed(2), 'value-t0');
   const polar = answers?.polar && answers.polar.curve === active ? answers.polar : null;
   add(`B(t0)`, polar ? pt(polar.curve_point) : '—', 'value-curve-point');
-  add('Polar points', polar ? polar.control_points.map((p, k) => `b${k} ${pt(p)}`).join(', ') : '—',
+  add('Polar points', polar ? polar.control_points.map((p, k) => `${levelName(k, 1)} ${pt(p)}`).join(', ') : '—',
       'value-polar-points');
   add('Control points', curve.points.length ? curve.points.map((p, k) => `${name}${k} ${pt(p)}`).join(', ') : '—',
       'value-control-points');

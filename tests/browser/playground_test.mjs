@@ -255,7 +255,7 @@ test('t0: slider and a two-decimal field clamped to [0, 1]; the page shows the A
   const shown = numbersIn(await page.locator('#value-curve-point').textContent());
   assert.equal(shown.length, 2);
   shown.forEach((v, k) => assertClose(v, exact.curve_point[k], `B(t0)[${k}]`));
-  const shownPolar = numbersIn((await page.locator('#value-polar-points').textContent()).replace(/b\d+/g, ''));
+  const shownPolar = numbersIn((await page.locator('#value-polar-points').textContent()).replace(/b[₀-₉]+¹/g, ''));
   assert.equal(shownPolar.length, 6);
   shownPolar.forEach((v, k) => assertClose(v, exact.control_points[k >> 1][k & 1], `polar point ${k >> 1}`));
   assert.equal(await page.locator('#value-t0').textContent(), '0.37');
@@ -805,8 +805,12 @@ test('exact input: the table, pasted points and SVG path data, undo and redo, th
   await settle();
 
   // The permalink opens the same drawing.
+  await page.waitForFunction(() => location.hash === '#a=100,100;300,500;500,100&b=500,100;700,700&t0=0.37');
   const url = page.url();
-  assert.match(url, /#a=100,100;300,500;500,100&b=500,100;700,700&t0=0\.37$/);
+  await page.locator('#copy-link').click();
+  const shared = page.locator('#share-message');
+  await shared.waitFor({state: 'visible'});
+  assert.ok(/Link copied/.test(await shared.textContent()) || (await shared.textContent()).includes(url), 'the link is copied or shown');
   const other = await context.newPage();
   other.on('pageerror', (e) => pageErrors.push(e.message));
   recordPolicyViolations(other);
@@ -873,8 +877,14 @@ test('a 1280 x 800 screen holds the main controls; a refused request is shown on
   assert.match(await listed.textContent(), /Asked for: .*, .*/);
   assert.equal(await laptop.locator('#errors li').count(), 0, 'nothing in the general list');
 
+  // A link that cannot be read says so beside the canvas and changes nothing.
+  await laptop.goto(`${baseUrl}/#a=1,2;3&t0=0.5`);
+  await laptop.locator('#canvas-message').waitFor({state: 'visible'});
+  assert.match(await laptop.locator('#canvas-message').textContent(), /could not be read: point 1 of a/);
+  assert.equal((await pageState(laptop)).curves[0].points.length, 7);
   await laptop.goto(`${baseUrl}/#a=${kFour.map((p) => p.join(',')).join(';')}&t0=0.5`);
   await settle(laptop);
+  assert.deepEqual((await pageState(laptop)).curves[0].points, kFour);
   assert.equal(await laptop.locator('#points-errors li').count(), 0);
   for (const selector of ['.toolbar', '#scene', '#t0-range', '#t0-number', '#animate', '.checks', '#points-table', '#add-point']) {
     const box = await laptop.locator(selector).boundingBox();
