@@ -3,7 +3,7 @@
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
-#include "core/classify.hpp"
+#include "core/cubic/classify.hpp"
 
 namespace bezier::api {
 

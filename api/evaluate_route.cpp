@@ -1,10 +1,10 @@
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
-#include "core/derivative.hpp"
-#include "core/evaluate.hpp"
+#include "core/curve/derivative.hpp"
+#include "core/curve/evaluate.hpp"
 #include "core/measure/frame.hpp"
-#include "core/subdivide.hpp"
+#include "core/curve/subdivide.hpp"
 
 namespace bezier::api {
 

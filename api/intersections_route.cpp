@@ -35,10 +35,10 @@
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
-#include "core/evaluate.hpp"
+#include "core/curve/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
-#include "core/self_intersection.hpp"
-#include "core/self_intersection_work_cost.hpp"
+#include "core/self_intersect/self_intersection.hpp"
+#include "core/self_intersect/work_cost.hpp"
 
 namespace bezier::api {
 

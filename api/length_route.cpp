@@ -22,7 +22,7 @@
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
-#include "core/evaluate.hpp"
+#include "core/curve/evaluate.hpp"
 #include "core/measure/arc_length.hpp"
 
 namespace bezier::api {

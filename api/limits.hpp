@@ -20,7 +20,7 @@ struct Limits {
   /// refinements, the overlap and collinear tests, the self-intersection search's boxes and
   /// Newton runs, and the certification of each self-intersection, which gets what the
   /// search left), each by its degrees and arithmetic (core/intersect/work_cost.hpp,
-  /// core/self_intersection_work_cost.hpp), so that units are proportional to time and the
+  /// core/self_intersect/work_cost.hpp), so that units are proportional to time and the
   /// cap bounds a request's CPU time whatever its method. The default is what the heaviest
   /// legitimate request we know needs with a margin (two degree-20 curves crossing 400
   /// times, the most possible, by the default method). BENCHMARKS.md §4e has the worst

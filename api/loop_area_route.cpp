@@ -17,7 +17,7 @@
 // Errors: 422 validation problems with JSON Pointers (an area beyond the double range is
 // reported at /points); 422 work-cap problem when the self-intersection search needs more
 // than limits.max_work work units (parameter boxes charged by the curve's degree,
-// core/self_intersection_work_cost.hpp).
+// core/self_intersect/work_cost.hpp).
 
 #include <cmath>
 #include <optional>
@@ -27,10 +27,10 @@
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
-#include "core/area.hpp"
-#include "core/evaluate.hpp"
-#include "core/loop_area.hpp"
-#include "core/self_intersection_work_cost.hpp"
+#include "core/curve/area.hpp"
+#include "core/curve/evaluate.hpp"
+#include "core/loop/loop_area.hpp"
+#include "core/self_intersect/work_cost.hpp"
 
 namespace bezier::api {
 

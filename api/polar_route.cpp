@@ -3,8 +3,8 @@
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
-#include "core/evaluate.hpp"
-#include "core/polar.hpp"
+#include "core/curve/evaluate.hpp"
+#include "core/curve/polar.hpp"
 
 namespace bezier::api {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/evaluate.hpp"
+#include "core/curve/evaluate.hpp"
 
 namespace bezier::api {
 

@@ -11,7 +11,7 @@
 
 #include "api/limits.hpp"
 #include "api/problem.hpp"
-#include "core/curve.hpp"
+#include "core/base/curve.hpp"
 
 namespace bezier::api {
 

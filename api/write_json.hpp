@@ -15,7 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/point.hpp"
+#include "core/base/point.hpp"
 
 namespace bezier::api {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/bernstein_roots.hpp"
-#include "core/intersect/bernstein1d.hpp"
+#include "core/bernstein/roots.hpp"
+#include "core/bernstein/bernstein1d.hpp"
 #include "core/intersect/overlap.hpp"
 
 namespace bezier::core {

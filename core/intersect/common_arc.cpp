@@ -5,13 +5,13 @@
 #include <memory>
 #include <numbers>
 
-#include "core/bernstein_roots.hpp"
-#include "core/binomial.hpp"
-#include "core/intersect/bernstein1d.hpp"
-#include "core/intersect/double_double.hpp"
+#include "core/bernstein/roots.hpp"
+#include "core/numeric/binomial.hpp"
+#include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/double_double.hpp"
 #include "core/intersect/gauss_newton.hpp"
-#include "core/intersect/monomial.hpp"
-#include "core/linear_solve.hpp"
+#include "core/bernstein/monomial.hpp"
+#include "core/numeric/linear_solve.hpp"
 
 namespace bezier::core {
 

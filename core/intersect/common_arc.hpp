@@ -3,7 +3,7 @@
 #include <optional>
 #include <vector>
 
-#include "core/intersect/coeffs.hpp"
+#include "core/numeric/small_array.hpp"
 #include "core/intersect/overlap.hpp"
 #include "core/intersect/result.hpp"
 #include "core/intersect/working_curve.hpp"

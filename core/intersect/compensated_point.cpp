@@ -2,9 +2,9 @@
 
 #include <array>
 
-#include "core/error_free.hpp"
-#include "core/intersect/fixed_extent.hpp"
-#include "core/multiversion.hpp"
+#include "core/numeric/error_free.hpp"
+#include "core/numeric/fixed_extent.hpp"
+#include "core/base/multiversion.hpp"
 
 namespace bezier::core {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/intersect/double_double.hpp"
+#include "core/numeric/double_double.hpp"
 #include "core/intersect/working_curve.hpp"
 
 namespace bezier::core {

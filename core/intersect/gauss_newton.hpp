@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "core/intersect/bernstein1d.hpp"
-#include "core/point.hpp"
+#include "core/bernstein/bernstein1d.hpp"
+#include "core/base/point.hpp"
 
 namespace bezier::core {
 

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <utility>
 
-#include "core/intersect/bernstein1d.hpp"
+#include "core/bernstein/bernstein1d.hpp"
 #include "core/intersect/collinear.hpp"
 #include "core/intersect/common_arc.hpp"
-#include "core/intersect/fat_curve.hpp"
+#include "core/intersect/clip/fat_curve.hpp"
 #include "core/intersect/kind.hpp"
 #include "core/intersect/merge.hpp"
 #include "core/intersect/overlap.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/curve.hpp"
+#include "core/base/curve.hpp"
 #include "core/intersect/options.hpp"
 #include "core/intersect/result.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "core/intersect/result.hpp"
-#include "core/point.hpp"
+#include "core/base/point.hpp"
 
 namespace bezier::core {
 

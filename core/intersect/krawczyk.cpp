@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "core/intersect/bernstein1d.hpp"
-#include "core/multiversion.hpp"
+#include "core/bernstein/bernstein1d.hpp"
+#include "core/base/multiversion.hpp"
 
 namespace bezier::core {
 

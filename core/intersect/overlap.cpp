@@ -4,13 +4,13 @@
 #include <array>
 #include <cmath>
 
-#include "core/binomial.hpp"
-#include "core/degree.hpp"
-#include "core/intersect/bernstein1d.hpp"
+#include "core/numeric/binomial.hpp"
+#include "core/bernstein/degree.hpp"
+#include "core/bernstein/bernstein1d.hpp"
 #include "core/intersect/common_arc.hpp"
 #include "core/intersect/gauss_newton.hpp"
-#include "core/intersect/monomial.hpp"
-#include "core/power_of_two.hpp"
+#include "core/bernstein/monomial.hpp"
+#include "core/numeric/power_of_two.hpp"
 
 namespace bezier::core {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/intersect/bernstein1d.hpp"
+#include "core/bernstein/bernstein1d.hpp"
 #include "core/intersect/compensated_point.hpp"
 #include "core/intersect/kind.hpp"
 

@@ -4,19 +4,10 @@
 #include <string_view>
 #include <vector>
 
-#include "core/point.hpp"
+#include "core/base/interval.hpp"
+#include "core/base/point.hpp"
 
 namespace bezier::core {
-
-/// A closed parameter interval [lo, hi], lo <= hi (a single point when lo == hi).
-struct ParamInterval {
-  double lo = 0.0;
-  double hi = 0.0;
-
-  [[nodiscard]] constexpr double width() const noexcept { return hi - lo; }
-  [[nodiscard]] constexpr bool contains(double x) const noexcept { return lo <= x && x <= hi; }
-  friend constexpr bool operator==(ParamInterval, ParamInterval) = default;
-};
 
 /// How two curves meet at an intersection, from the cross product of their derivatives
 /// (seed 003, def. 3.4), judged relative to the curves (see kind.hpp for the thresholds).

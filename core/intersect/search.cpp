@@ -7,15 +7,15 @@
 #include <cstdint>
 #include <optional>
 
-#include "core/intersect/bernstein1d.hpp"
-#include "core/intersect/bezier_clip.hpp"
+#include "core/bernstein/bernstein1d.hpp"
+#include "core/intersect/clip/bezier_clip.hpp"
 #include "core/intersect/common_arc.hpp"
-#include "core/intersect/hybrid.hpp"
-#include "core/intersect/implicit_clip.hpp"
+#include "core/intersect/clip/hybrid.hpp"
+#include "core/intersect/clip/implicit_clip.hpp"
 #include "core/intersect/kind.hpp"
 #include "core/intersect/krawczyk.hpp"
 #include "core/intersect/overlap.hpp"
-#include "core/intersect/subdivision.hpp"
+#include "core/intersect/clip/subdivision.hpp"
 #include "core/intersect/work_cost.hpp"
 
 namespace bezier::core {

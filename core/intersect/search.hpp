@@ -4,7 +4,7 @@
 #include <span>
 #include <vector>
 
-#include "core/intersect/fat_curve.hpp"
+#include "core/intersect/clip/fat_curve.hpp"
 #include "core/intersect/overlap.hpp"
 #include "core/intersect/result.hpp"
 #include "core/intersect/working_curve.hpp"

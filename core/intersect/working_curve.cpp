@@ -6,10 +6,10 @@
 #include <cstdint>
 #include <optional>
 
-#include "core/intersect/bernstein1d.hpp"
-#include "core/intersect/fixed_extent.hpp"
-#include "core/multiversion.hpp"
-#include "core/power_of_two.hpp"
+#include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/fixed_extent.hpp"
+#include "core/base/multiversion.hpp"
+#include "core/numeric/power_of_two.hpp"
 
 namespace bezier::core {
 

@@ -2,9 +2,9 @@
 
 #include <vector>
 
-#include "core/curve.hpp"
-#include "core/intersect/coeffs.hpp"
-#include "core/intersect/double_double.hpp"
+#include "core/base/curve.hpp"
+#include "core/numeric/small_array.hpp"
+#include "core/numeric/double_double.hpp"
 
 namespace bezier::core {
 

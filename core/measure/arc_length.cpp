@@ -6,9 +6,9 @@
 #include <cmath>
 #include <tuple>
 
-#include "core/binomial.hpp"
-#include "core/derivative.hpp"
-#include "core/intersect/bernstein1d.hpp"
+#include "core/numeric/binomial.hpp"
+#include "core/curve/derivative.hpp"
+#include "core/bernstein/bernstein1d.hpp"
 #include "core/measure/bernstein_product.hpp"
 #include "core/measure/interval_roots.hpp"
 #include "core/measure/normalised.hpp"

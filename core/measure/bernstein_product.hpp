@@ -4,8 +4,8 @@
 #include <span>
 #include <vector>
 
-#include "core/binomial.hpp"
-#include "core/point.hpp"
+#include "core/numeric/binomial.hpp"
+#include "core/base/point.hpp"
 
 namespace bezier::core {
 

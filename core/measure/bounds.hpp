@@ -3,7 +3,7 @@
 #include <array>
 #include <vector>
 
-#include "core/curve.hpp"
+#include "core/base/curve.hpp"
 
 namespace bezier::core {
 

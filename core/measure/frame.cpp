@@ -3,8 +3,8 @@
 #include <cmath>
 #include <vector>
 
-#include "core/derivative.hpp"
-#include "core/intersect/bernstein1d.hpp"
+#include "core/curve/derivative.hpp"
+#include "core/bernstein/bernstein1d.hpp"
 #include "core/measure/normalised.hpp"
 
 namespace bezier::core {

@@ -4,7 +4,7 @@
 #include <cassert>
 #include <cmath>
 
-#include "core/intersect/bernstein1d.hpp"
+#include "core/bernstein/bernstein1d.hpp"
 
 namespace bezier::core {
 

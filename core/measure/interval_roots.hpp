@@ -12,7 +12,7 @@ enum class IntervalEnds { open, closed };
 /// The roots of a scalar polynomial in Bernstein form on [0, 1], c_0..c_n, that lie in
 /// [a, b] (or (a, b)), ascending, each root once.
 ///
-/// Isolation as in bernstein_roots (core/bernstein_roots.hpp), by subdivision of [a, b] with
+/// Isolation as in bernstein_roots (core/bernstein/roots.hpp), by subdivision of [a, b] with
 /// Descartes' rule of signs on the Bernstein coefficients of each piece (Lane & Riesenfeld,
 /// BIT 21, 1981): a piece is discarded only when its coefficients, each computed within its
 /// rounding bound e = 3.02 n u max|c_i|, have one strict sign (then p has no root there, by

@@ -4,9 +4,9 @@
 #include <cassert>
 #include <cmath>
 
-#include "core/derivative.hpp"
-#include "core/evaluate.hpp"
-#include "core/intersect/bernstein1d.hpp"
+#include "core/curve/derivative.hpp"
+#include "core/curve/evaluate.hpp"
+#include "core/bernstein/bernstein1d.hpp"
 #include "core/measure/bernstein_product.hpp"
 #include "core/measure/interval_roots.hpp"
 #include "core/measure/normalised.hpp"

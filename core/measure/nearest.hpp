@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "core/curve.hpp"
+#include "core/base/curve.hpp"
 
 namespace bezier::core {
 

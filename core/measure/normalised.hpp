@@ -3,8 +3,8 @@
 #include <cmath>
 #include <vector>
 
-#include "core/curve.hpp"
-#include "core/power_of_two.hpp"
+#include "core/base/curve.hpp"
+#include "core/numeric/power_of_two.hpp"
 
 namespace bezier::core {
 

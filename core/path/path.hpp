@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-#include "core/curve.hpp"
+#include "core/base/curve.hpp"
 
 namespace bezier::path {
 

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/point.hpp"
+#include "core/base/point.hpp"
 
 namespace bezier::path {
 

@@ -7,7 +7,7 @@
 
 #include "api/write_json.hpp"
 #include "api/handler.hpp"
-#include "core/classify.hpp"
+#include "core/cubic/classify.hpp"
 
 namespace bezier::api {
 namespace {

@@ -5,8 +5,8 @@
 
 #include "api/write_json.hpp"
 #include "api/handler.hpp"
-#include "core/derivative.hpp"
-#include "core/evaluate.hpp"
+#include "core/curve/derivative.hpp"
+#include "core/curve/evaluate.hpp"
 
 namespace bezier::api {
 namespace {
@@ -94,7 +94,7 @@ TEST(EvaluateRoute, ResultBeyondTheDoubleRangeNamesItsField) {
 TEST(EvaluateRoute, AnswersAreTheKernelsBitForBit) {
   // Degree 20, control points alternating around ±1000 (the issue-2 accuracy case): the
   // API must return exactly the compensated kernel's values (whose accuracy
-  // tests/core/derivative_test.cpp and evaluate_test.cpp prove), with no extra rounding
+  // tests/core/curve/derivative_test.cpp and evaluate_test.cpp prove), with no extra rounding
   // from hodographs computed separately or from number formatting.
   std::vector<core::Point2> pts;
   json points = json::array();

@@ -17,13 +17,13 @@
 #include <vector>
 
 #include "api/handler.hpp"
-#include "core/classify.hpp"
-#include "core/cubic_double_point.hpp"
-#include "core/cubic_predicates.hpp"
-#include "core/evaluate.hpp"
+#include "core/cubic/classify.hpp"
+#include "core/cubic/double_point.hpp"
+#include "core/cubic/predicates.hpp"
+#include "core/curve/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
-#include "core/self_intersection.hpp"
-#include "tests/core/classify_oracle.hpp"
+#include "core/self_intersect/self_intersection.hpp"
+#include "tests/core/cubic/classify_oracle.hpp"
 #include "tests/support/exact.hpp"
 
 namespace bezier::api {

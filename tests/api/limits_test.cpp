@@ -12,7 +12,7 @@
 #include <string>
 
 #include "api/handler.hpp"
-#include "core/self_intersection_work_cost.hpp"
+#include "core/self_intersect/work_cost.hpp"
 
 namespace bezier::api {
 namespace {

@@ -5,8 +5,8 @@
 
 #include "api/write_json.hpp"
 #include "api/handler.hpp"
-#include "core/loop_area.hpp"
-#include "core/self_intersection_work_cost.hpp"
+#include "core/loop/loop_area.hpp"
+#include "core/self_intersect/work_cost.hpp"
 
 namespace bezier::api {
 namespace {

@@ -12,8 +12,8 @@
 #include <array>
 #include <vector>
 
-#include "core/classify.hpp"
-#include "core/cubic_predicates.hpp"
+#include "core/cubic/classify.hpp"
+#include "core/cubic/predicates.hpp"
 #include "tests/support/mulberry32.hpp"
 
 namespace {

@@ -17,10 +17,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/derivative.hpp"
-#include "core/evaluate.hpp"
-#include "core/polar.hpp"
-#include "core/subdivide.hpp"
+#include "core/curve/derivative.hpp"
+#include "core/curve/evaluate.hpp"
+#include "core/curve/polar.hpp"
+#include "core/curve/subdivide.hpp"
 #include "tests/support/mulberry32.hpp"
 
 namespace {

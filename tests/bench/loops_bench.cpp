@@ -14,10 +14,10 @@
 #include <numbers>
 #include <vector>
 
-#include "core/area.hpp"
-#include "core/cubic_double_point.hpp"
-#include "core/loop_area.hpp"
-#include "core/self_intersection.hpp"
+#include "core/curve/area.hpp"
+#include "core/cubic/double_point.hpp"
+#include "core/loop/loop_area.hpp"
+#include "core/self_intersect/self_intersection.hpp"
 #include "tests/support/mulberry32.hpp"
 
 namespace {

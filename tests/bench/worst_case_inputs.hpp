@@ -25,9 +25,9 @@
 #include <utility>
 #include <vector>
 
-#include "core/curve.hpp"
-#include "core/degree.hpp"
-#include "core/polar.hpp"
+#include "core/base/curve.hpp"
+#include "core/bernstein/degree.hpp"
+#include "core/curve/polar.hpp"
 #include "tests/support/exact.hpp"
 #include "tests/support/exact_bezier.hpp"
 #include "tests/support/mulberry32.hpp"

@@ -1,8 +1,8 @@
 // libFuzzer target: core::classify (cubic classification) on arbitrary finite control
 // points.
 //
-// Checks (core/classify.hpp, cubic_type.hpp and DESIGN §1 are the contract):
-//  - the type equals the exact oracle's (tests/core/classify_oracle.hpp: the canonical
+// Checks (core/cubic/classify.hpp, cubic_type.hpp and DESIGN §1 are the contract):
+//  - the type equals the exact oracle's (tests/core/cubic/classify_oracle.hpp: the canonical
 //    point in rationals, sharing no code with core/) whenever classify() says its
 //    decisions were exact;
 //  - the fields agree with the type: a cusp parameter exactly for `cusp`, a double point
@@ -24,8 +24,8 @@
 #include <span>
 #include <string>
 
-#include "core/classify.hpp"
-#include "tests/core/classify_oracle.hpp"
+#include "core/cubic/classify.hpp"
+#include "tests/core/cubic/classify_oracle.hpp"
 #include "tests/fuzz/fuzz_support.hpp"
 
 namespace {

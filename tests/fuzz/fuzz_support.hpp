@@ -17,8 +17,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "core/curve.hpp"
-#include "core/point.hpp"
+#include "core/base/curve.hpp"
+#include "core/base/point.hpp"
 
 namespace bezier::fuzz {
 

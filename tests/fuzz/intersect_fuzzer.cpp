@@ -25,7 +25,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/evaluate.hpp"
+#include "core/curve/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
 #include "tests/fuzz/fuzz_support.hpp"
 

@@ -157,7 +157,7 @@ self_seed("quintic_two_loops", [(0, 0), (4, 4), (-2, 4), (6, -4), (0, -4), (4, 0
 self_seed("collinear_retracing", [(0, 0), (2, 0), (-1, 0), (1, 0)])
 self_seed("point", [(1, 1), (1, 1), (1, 1)])
 self_seed("line", [(0, 0), (3, 1)])
-# Improper curves that turn back on themselves (core/self_intersection.cpp's improper branch).
+# Improper curves that turn back on themselves (core/self_intersect/self_intersection.cpp's improper branch).
 self_seed("fold", compose(PARABOLA, [Fraction(1, 16), Fraction(-3, 16), Fraction(9, 16)]))
 self_seed("folded_loop", compose([(-9, 0), (13, 16), (-13, 16), (9, 0)],
                                  [Fraction(1, 4), Fraction(-1, 2), Fraction(1)]), scale=-10)

@@ -1,7 +1,7 @@
 // libFuzzer target: core::self_intersections on arbitrary finite control points, degrees
 // 1..20, with the cubic closed form on or off.
 //
-// Checks (core/self_intersection.hpp is the contract):
+// Checks (core/self_intersect/self_intersection.hpp is the contract):
 //  - status ok, degenerate or work_cap_reached; overlaps only with status degenerate;
 //  - pairs: 0 <= t < s <= 1, finite point, sorted by t then s (so each once), never (0, 1)
 //    (the trivial pair of a closed curve; no double point on an open one), and B(t) close
@@ -23,8 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "core/evaluate.hpp"
-#include "core/self_intersection.hpp"
+#include "core/curve/evaluate.hpp"
+#include "core/self_intersect/self_intersection.hpp"
 #include "tests/fuzz/fuzz_support.hpp"
 
 namespace {

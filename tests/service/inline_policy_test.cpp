@@ -16,7 +16,7 @@
 #include <string_view>
 
 #include "api/handler.hpp"
-#include "core/self_intersection_work_cost.hpp"
+#include "core/self_intersect/work_cost.hpp"
 #include "service/router.hpp"
 #include "tests/support/mulberry32.hpp"
 

@@ -17,7 +17,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "core/point.hpp"
+#include "core/base/point.hpp"
 #include "tests/support/big_int.hpp"
 
 namespace bezier::test {

@@ -3,7 +3,7 @@
 // Exact Bézier arithmetic for tests of the kernel: de Casteljau, polars and hodographs in
 // rationals (tests/support/exact.hpp) on a curve's double control points, the condition
 // scales that floating-point errors are measured against, the accuracy contract of the
-// compensated kernel (core/evaluate.hpp, CasteljauRow), and seeded random test curves.
+// compensated kernel (core/curve/evaluate.hpp, CasteljauRow), and seeded random test curves.
 
 #include <algorithm>
 #include <cassert>
@@ -14,8 +14,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/curve.hpp"
-#include "core/point.hpp"
+#include "core/base/curve.hpp"
+#include "core/base/point.hpp"
 #include "tests/support/exact.hpp"
 #include "tests/support/mulberry32.hpp"
 

@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "core/curve.hpp"
+#include "core/base/curve.hpp"
 #include "tests/support/exact.hpp"
 #include "tests/support/exact_bezier.hpp"
 

@@ -46,7 +46,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/evaluate.hpp"
+#include "core/curve/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
 #include "tests/support/exact_bezier.hpp"
 #include "tests/support/mulberry32.hpp"

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "core/curve.hpp"
-#include "core/degree.hpp"
-#include "core/evaluate.hpp"
+#include "core/base/curve.hpp"
+#include "core/bernstein/degree.hpp"
+#include "core/curve/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
 #include "tests/support/exact.hpp"
 #include "tests/support/exact_bezier.hpp"

@@ -9,14 +9,14 @@
 #include <cmath>
 #include <vector>
 
-#include "core/bernstein_roots.hpp"
-#include "core/binomial.hpp"
-#include "core/intersect/band_solve.hpp"
-#include "core/intersect/bernstein1d.hpp"
-#include "core/intersect/clip.hpp"
-#include "core/intersect/fat_curve.hpp"
-#include "core/intersect/fat_line.hpp"
-#include "core/intersect/implicit_clip.hpp"
+#include "core/bernstein/roots.hpp"
+#include "core/numeric/binomial.hpp"
+#include "core/intersect/clip/band_solve.hpp"
+#include "core/bernstein/bernstein1d.hpp"
+#include "core/intersect/clip/clip.hpp"
+#include "core/intersect/clip/fat_curve.hpp"
+#include "core/intersect/clip/fat_line.hpp"
+#include "core/intersect/clip/implicit_clip.hpp"
 #include "core/intersect/working_curve.hpp"
 #include "tests/support/exact.hpp"
 #include "tests/support/exact_bezier.hpp"

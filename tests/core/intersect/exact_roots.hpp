@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "core/curve.hpp"
+#include "core/base/curve.hpp"
 #include "core/intersect/result.hpp"
 #include "tests/support/exact.hpp"
 #include "tests/support/exact_bezier.hpp"

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "core/binomial.hpp"
-#include "core/curve.hpp"
-#include "core/degree.hpp"
-#include "core/evaluate.hpp"
+#include "core/numeric/binomial.hpp"
+#include "core/base/curve.hpp"
+#include "core/bernstein/degree.hpp"
+#include "core/curve/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
 #include "tests/core/intersect/exact_roots.hpp"
 #include "tests/core/intersect/python_bezier_fixtures.hpp"

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "core/curve.hpp"
+#include "core/base/curve.hpp"
 #include "tests/support/exact.hpp"
 
 namespace bezier::test::python_bezier {

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/evaluate.hpp"
+#include "core/curve/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
 
 namespace bezier::core {

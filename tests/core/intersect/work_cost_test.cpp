@@ -1,4 +1,4 @@
-// The work cost model (core/intersect/work_cost.hpp, core/self_intersection_work_cost.hpp):
+// The work cost model (core/intersect/work_cost.hpp, core/self_intersect/work_cost.hpp):
 // higher degrees and compensated arithmetic cost more, and a budget in units buys fewer
 // steps the costlier they are. No timing here: BENCHMARKS.md §4 has the calibration.
 
@@ -6,10 +6,10 @@
 
 #include <vector>
 
-#include "core/degree.hpp"
+#include "core/bernstein/degree.hpp"
 #include "core/intersect/intersect.hpp"
 #include "core/intersect/work_cost.hpp"
-#include "core/self_intersection_work_cost.hpp"
+#include "core/self_intersect/work_cost.hpp"
 
 namespace bezier::core {
 namespace {

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/derivative.hpp"
+#include "core/curve/derivative.hpp"
 #include "tests/support/mulberry32.hpp"
 
 namespace bezier::core {

@@ -12,7 +12,7 @@
 
 #include <cmath>
 
-#include "core/evaluate.hpp"
+#include "core/curve/evaluate.hpp"
 #include "tests/support/mulberry32.hpp"
 
 namespace bezier::core {

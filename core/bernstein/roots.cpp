@@ -1,0 +1,121 @@
+#include "core/bernstein/roots.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/bernstein/bernstein1d.hpp"
+
+namespace bezier::core {
+
+namespace {
+
+constexpr double kU = bernstein::kU;
+
+struct Job {
+  double a, b;
+  int depth;
+};
+
+/// A root of p in (a, b), where p(a) and p(b) have opposite signs: bisection on the sign of
+/// p evaluated from the original coefficients, until the bracket is one ulp wide.
+double bisect(std::span<const double> c, double a, double b, double pa) {
+  for (int i = 0; i < 200; ++i) {
+    const double m = a + (b - a) / 2;
+    if (!(a < m && m < b)) break;
+    const double pm = bernstein::evaluate(c, m);
+    if (pm == 0.0) return m;
+    if ((pm < 0) == (pa < 0)) {
+      a = m;
+      pa = pm;
+    } else {
+      b = m;
+    }
+  }
+  return a + (b - a) / 2;
+}
+
+}  // namespace
+
+BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth) {
+  BernsteinRoots out;
+  const int n = static_cast<int>(c.size()) - 1;
+  if (n < 0) return out;
+  const double e = 3.02 * std::max(n, 1) * kU * bernstein::max_abs(c);
+  if (c.front() == 0.0) out.roots.push_back(0.0);
+  std::vector<Job> stack = {{0.0, 1.0, 0}};
+  while (!stack.empty()) {
+    const Job job = stack.back();
+    stack.pop_back();
+    const Coeffs q = bernstein::portion<double>(c, job.a, job.b);
+    // Sign changes among the coefficients that are clearly nonzero.
+    int changes = 0, last = 0;
+    bool any_small = false;
+    for (const double v : q) {
+      if (std::fabs(v) <= e) {
+        any_small = true;
+        continue;
+      }
+      const int sign = v > 0 ? 1 : -1;
+      if (last != 0 && sign != last) ++changes;
+      last = sign;
+    }
+    if (last == 0) {
+      // Zero to within rounding on the whole interval.
+      out.isolated = false;
+      out.roots.push_back(job.a + (job.b - job.a) / 2);
+      continue;
+    }
+    if (changes == 0 && !any_small) continue;
+    const double pa = bernstein::evaluate(c, job.a), pb = bernstein::evaluate(c, job.b);
+    if (changes == 1 && !any_small && pa != 0.0 && pb != 0.0 && (pa < 0) != (pb < 0)) {
+      out.roots.push_back(bisect(c, job.a, job.b, pa));
+      continue;
+    }
+    const double m = job.a + (job.b - job.a) / 2;
+    if (job.depth >= max_depth || !(job.a < m && m < job.b)) {
+      if (changes > 0 || (pa < 0) != (pb < 0) || std::fabs(bernstein::evaluate(c, m)) <= e) {
+        out.isolated = false;
+        out.roots.push_back(m);
+      }
+      continue;
+    }
+    stack.push_back({m, job.b, job.depth + 1});
+    stack.push_back({job.a, m, job.depth + 1});
+  }
+  if (c.back() == 0.0) out.roots.push_back(1.0);
+  // Roots reported at the depth limit (a root on a split point, a cluster) are polished by
+  // Newton's method, kept only while |p| decreases and the step stays tiny.
+  std::vector<double> derivative(static_cast<std::size_t>(std::max(n, 1)), 0.0);
+  for (int i = 0; i < n; ++i)
+    derivative[static_cast<std::size_t>(i)] =
+        n * (c[static_cast<std::size_t>(i) + 1] - c[static_cast<std::size_t>(i)]);
+  for (double& r : out.roots) {
+    if (n == 0) break;
+    for (int i = 0; i < 4; ++i) {
+      const double v = bernstein::evaluate(c, r), d = bernstein::evaluate(derivative, r);
+      if (v == 0.0 || !(d != 0.0)) break;
+      const double next = r - v / d;
+      if (!(next >= 0.0 && next <= 1.0) || std::fabs(next - r) > 0x1p-30 ||
+          !(std::fabs(bernstein::evaluate(c, next)) < std::fabs(v))) {
+        break;
+      }
+      r = next;
+    }
+  }
+  std::sort(out.roots.begin(), out.roots.end());
+  // The same root may come from two neighbouring intervals (a root on a split point): keep
+  // the one where |p| is smallest (an exact zero wins).
+  std::vector<double> unique;
+  for (const double r : out.roots) {
+    if (!unique.empty() && r - unique.back() <= 0x1p-30) {
+      if (std::fabs(bernstein::evaluate(c, r)) < std::fabs(bernstein::evaluate(c, unique.back())))
+        unique.back() = r;
+      continue;
+    }
+    unique.push_back(r);
+  }
+  out.roots = std::move(unique);
+  return out;
+}
+
+}  // namespace bezier::core

@@ -1,0 +1,34 @@
+#include "core/curve/evaluate.hpp"
+
+#include <cassert>
+
+#include "core/bernstein/casteljau_row.hpp"
+#include "core/base/multiversion.hpp"
+
+namespace bezier::core {
+
+namespace {
+
+template <class P>
+P evaluate_row(const BasicCurve<P>& curve, double t) {
+  CasteljauRow<P> row(curve.points());
+  while (row.size() > 1) row.casteljau_step(t);
+  return row.point(0);
+}
+
+}  // namespace
+
+BEZIER_FMA_CLONES Point2 evaluate(const Curve& curve, double t) { return evaluate_row(curve, t); }
+BEZIER_FMA_CLONES Point3 evaluate(const Curve3& curve, double t) { return evaluate_row(curve, t); }
+
+std::vector<double> uniform_parameters(int count) {
+  assert(count >= 1);
+  std::vector<double> ts(static_cast<std::size_t>(count));
+  if (count == 1) return {0.0};
+  // i / (count - 1) rather than i * step: one rounding, and the last value is exactly 1.
+  const double last = count - 1;
+  for (int i = 0; i < count; ++i) ts[static_cast<std::size_t>(i)] = i / last;
+  return ts;
+}
+
+}  // namespace bezier::core

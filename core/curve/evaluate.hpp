@@ -1,0 +1,30 @@
+#pragma once
+
+#include <vector>
+
+#include "core/base/curve.hpp"
+
+namespace bezier::core {
+
+/// B(t) = Σ C(n,i) (1-t)^(n-i) t^i P_i by de Casteljau's algorithm, n rounds of
+/// P_i <- (1-t) P_i + t P_{i+1} (Farin, §4.1), compensated (see CasteljauRow): within one
+/// rounding of the exact value plus O(n^2 u^2) Σ |P_i| |b_i(t)|, for any degree.
+/// Any finite t is allowed; outside [0,1] the polynomial is extrapolated (the bound holds
+/// with the same formula, which grows like |2t - 1|^n). Returns P_0 exactly at t = 0 and
+/// P_n exactly at t = 1 (every error term is zero there).
+[[nodiscard]] Point2 evaluate(const Curve& curve, double t);
+[[nodiscard]] Point3 evaluate(const Curve3& curve, double t);
+
+/// The parameters of `count` uniform samples: t_i = i / (count - 1), so 0 and 1 are
+/// included exactly. count = 1 gives {0}. Precondition: count >= 1.
+[[nodiscard]] std::vector<double> uniform_parameters(int count);
+
+/// B(t_i) at each parameter of uniform_parameters(count).
+template <class P>
+[[nodiscard]] std::vector<P> sample(const BasicCurve<P>& curve, int count) {
+  std::vector<P> samples;
+  for (const double t : uniform_parameters(count)) samples.push_back(evaluate(curve, t));
+  return samples;
+}
+
+}  // namespace bezier::core

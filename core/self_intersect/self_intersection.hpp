@@ -1,0 +1,165 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/base/curve.hpp"
+#include "core/base/point.hpp"
+
+namespace bezier::core {
+
+/// How the two branches meet at a self-intersection, from the cross product of the
+/// tangents B'(t) and B'(s) (DESIGN §1, as for two-curve intersections).
+enum class SelfIntersectionKind {
+  transversal,  ///< the tangents are not parallel: the curve crosses itself
+  tangent,      ///< parallel non-zero tangents: the curve touches itself
+  degenerate,   ///< a tangent is zero there (a cusp of one branch lies on the other)
+};
+
+/// One self-intersection: 0 <= t < s <= 1 with B(t) = B(s).
+struct SelfIntersection {
+  double t = 0.0;
+  double s = 0.0;
+  /// The double point, (B(t) + B(s)) / 2.
+  Point2 point;
+  SelfIntersectionKind kind = SelfIntersectionKind::transversal;
+};
+
+/// A continuum of self-intersections: the curve retraces itself, B on [t_lo, t_hi] runs
+/// over the same points as B on [s_lo, s_hi] (t_hi <= s_lo). Reported for collinear curves
+/// (every control point within the distance tolerance of one line), single points (t and s
+/// both cover [0, 1]), palindromic control points (P_i = P_{n-i}: B(1 - t) = B(t), the
+/// overlap [0, 1/2] x [1/2, 1]) and any other improper parametrisation B = C(p(t)) with p
+/// turning back (the pieces where p(t) = p(s)).
+struct SelfOverlap {
+  double t_lo = 0.0;
+  double t_hi = 0.0;
+  double s_lo = 0.0;
+  double s_hi = 0.0;
+};
+
+enum class SelfIntersectionStatus {
+  ok,                ///< every self-intersection is in `pairs`
+  degenerate,        ///< the curve retraces itself (see `overlaps`); `pairs` are the rest
+  work_cap_reached,  ///< the work budget ran out: `pairs` holds what was found, maybe not all
+};
+
+enum class SelfIntersectionMethod {
+  closed_form_cubic,  ///< cubic: the double point from the quadratic in t + s and t s
+  subdivision,        ///< any degree: subdivision of the parameter square (see below)
+  collinear,          ///< 1-D analysis of a collinear curve
+};
+
+/// The method's name as the API writes it: "closed-form-cubic", "subdivision", "collinear".
+[[nodiscard]] constexpr const char* method_name(SelfIntersectionMethod method) noexcept {
+  switch (method) {
+    case SelfIntersectionMethod::closed_form_cubic:
+      return "closed-form-cubic";
+    case SelfIntersectionMethod::collinear:
+      return "collinear";
+    case SelfIntersectionMethod::subdivision:
+      break;
+  }
+  return "subdivision";
+}
+
+/// What the search cost; for benchmarks and the API's `stats`.
+struct SelfIntersectionStats {
+  SelfIntersectionMethod method = SelfIntersectionMethod::subdivision;
+  /// Parameter boxes examined (the unit of the work budget).
+  std::int64_t work = 0;
+  /// Deepest subdivision level reached (boxes of width 2^-depth).
+  int max_depth = 0;
+  /// Newton refinements started, and their iterations in all.
+  int newton_runs = 0;
+  int newton_iterations = 0;
+  /// Boxes left undecided at the resolution limit (tangential contacts, near misses).
+  int contact_candidates = 0;
+  /// Boxes next to the diagonal dropped at the resolution limit: cusps and near-cusps.
+  int cusp_regions = 0;
+};
+
+struct SelfIntersectionResult {
+  /// Every pair, sorted by t then s; never the trivial pair (0, 1) of a closed curve.
+  std::vector<SelfIntersection> pairs;
+  /// Retraced pieces (status degenerate only).
+  std::vector<SelfOverlap> overlaps;
+  SelfIntersectionStatus status = SelfIntersectionStatus::ok;
+  SelfIntersectionStats stats;
+};
+
+/// Tolerances and budget. The defaults suit any input scale: the distance tolerance is
+/// relative to scale(curve).
+struct SelfIntersectionOptions {
+  /// Most parameter boxes to examine before giving up with work_cap_reached (a budget in
+  /// work units converts with self_intersection_box_budget, self_intersection_work_cost.hpp).
+  std::int64_t max_work = 200000;
+  /// dist_tol = dist_rel * scale(curve): two points closer than this are "the same point"
+  /// for tangential contacts and collinearity. 2^-44 is about 256 ulps of the largest
+  /// coordinate: above the rounding of de Casteljau subdivision over ~50 levels at degree
+  /// 20 (about depth * n * 2^-53), far below any geometric feature worth reporting.
+  double dist_rel = 0x1p-44;
+  /// Deepest subdivision level, a backstop for the flatness tests that normally stop it
+  /// near level 25 (boxes of width 2^-max_depth).
+  int max_depth = 48;
+  /// Cubics: use the exact closed form of cubic_double_point.hpp (the general method gives
+  /// the same pairs above its resolution; tests compare).
+  bool cubic_closed_form = true;
+};
+
+/// Every pair 0 <= t < s <= 1 with B(t) = B(s), for any degree n >= 1.
+///
+/// Method (any degree): the pairs are the zeros of F(u, v) = B(v) - B(u) with u < v in the
+/// parameter square, searched by subdivision. A box I x J pairs two dyadic pieces of B:
+///  - I = J (diagonal): no pair inside when the piece's hodograph control vectors lie in an
+///    open half-plane (B is then strictly monotone along a direction, hence injective);
+///    otherwise split into two diagonal boxes and one adjacent box.
+///  - I, J adjacent (sharing B(c)), and for a closed curve the pieces meeting at P_0 = P_n:
+///    the same half-plane test on the union; otherwise split. These boxes contain the
+///    trivial zeros of the diagonal (and cusps, where B' = 0): when they shrink below the
+///    distance tolerance they are dropped, so cusps are never reported as pairs.
+///  - I, J apart: discarded when a separating axis exists (their chords, the chords'
+///    normals, x, y: convex hulls of the control points disjoint). When both pieces are
+///    monotone and their tangent cones, taken as lines, are disjoint, the box holds at most
+///    one pair (a second one would give a chord direction in both cones); Newton's method
+///    on F from the chords' crossing finds it, and a result inside the box is final.
+///    Otherwise split; pieces flat to within the distance tolerance that still cannot be
+///    separated are tangential-contact candidates, refined by refine_contact.
+/// Results are refined to full double precision (Newton with quadratic convergence, then
+/// Newton steps on a compensated residual B(s) - B(t)), moved to exactly t = 0 or s = 1
+/// when the end point satisfies B(t) = B(s) as well (a root found just outside [0, 1] that
+/// does not snap is a double point off the segment, not reported), and merged when found
+/// twice. Cubics take the exact closed form of cubic_double_point.hpp instead of the search
+/// (unless options.cubic_closed_form is off); where its predicates are not exact (coordinates
+/// spanning more than about 2^400) it is trusted only for a pair with B(t) = B(s) to within
+/// the distance tolerance, and the search decides otherwise. Curves that retrace themselves
+/// get a named branch each (status degenerate, see SelfOverlap): collinear ones a 1-D
+/// analysis, palindromic control points (B(1 - t) = B(t)) the self-intersections of the
+/// outbound half and their mirror images.
+///
+/// Resolution: next to a cusp, |B(s) - B(t)| stays at rounding level for s - t up to about
+/// 1e-5, so pairs there are accepted only when rounding could not move them onto the
+/// diagonal (is_resolved_double_point); loops closer to a cusp than that (s - t below
+/// roughly 1e-4, area below ~1e-18 of the curve's size) are treated as the cusp and not
+/// reported. On a closed curve the seam (t, s) = (0, 1) is treated like the diagonal (with
+/// s - t replaced by 1 - (s - t)): loops next to it that small count as the trivial pair.
+/// The exact cubic closed form has no such limit. Distinct pairs closer than 1e-10 in both t
+/// and s are merged.
+/// Tangential contacts are located by refine_contact (to full precision when the branches'
+/// curvatures differ, to about half the digits when they agree). Every stage counts against
+/// options.max_work; running out gives status work_cap_reached, never a long run. Other curves that
+/// retrace part of themselves (improper parametrisations C(p(t)) with p not symmetric about 1/2,
+/// e.g. p = (t - 1/4)^2) are factored (intersect/common_arc.hpp): their retraced pieces come
+/// from p, their pairs from C's own double points. Curves within rounding of retracing
+/// themselves without doing so can exhaust the budget.
+///
+/// The approach of classifying boxes of the (t, s) square follows the divided-difference
+/// view of self-intersection (Pekerman, Elber, Kim, "Self-intersection detection and
+/// elimination in freeform curves and surfaces", Computer-Aided Design 40(2), 2008); the
+/// half-plane and cone criteria are the classical ones for curve pieces without loops
+/// (Sederberg & Meyers 1988, "Loop detection in surface patch intersections").
+/// Precondition: finite coordinates.
+[[nodiscard]] SelfIntersectionResult self_intersections(
+    const Curve& curve, const SelfIntersectionOptions& options = {});
+
+}  // namespace bezier::core
