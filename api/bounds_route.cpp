@@ -8,8 +8,18 @@
 //              exact extreme rounded outward (core/measure/bounds.hpp).
 //   critical   per axis, increasing: the t in (a, b) where that coordinate's derivative
 //              vanishes, a double root once.
+// With {"path": SVG path data} instead of points (DESIGN §7; no interval): the box of the
+// whole path, the union of its segments' tight boxes,
+//   {"critical": [[{"segment", "t"}, ...] per axis], "max", "min", "segment_count"}
+//   critical   per axis, by segment then t: each segment's critical t in (0, 1).
 // Errors: 422 validation problems with JSON Pointers.
 
+#include <algorithm>
+#include <array>
+#include <utility>
+#include <vector>
+
+#include "api/curve_or_path.hpp"
 #include "api/parameter_interval.hpp"
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
@@ -42,11 +52,49 @@ Reply bounds_answer(const core::BasicCurve<P>& curve, ParameterInterval interval
   return json_reply(std::move(w));
 }
 
+// {"critical", "max", "min", "segment_count"}, members in key order.
+Reply path_bounds_answer(const path::Path& p) {
+  core::Bounds<core::Point2> box = core::bounds(p.segments[0], 0.0, 1.0);
+  std::array<std::vector<std::pair<std::size_t, double>>, 2> critical;
+  for (std::size_t k = 0; k < p.segments.size(); ++k) {
+    const core::Bounds<core::Point2> b = k == 0 ? box : core::bounds(p.segments[k], 0.0, 1.0);
+    box.min = {std::min(box.min.x, b.min.x), std::min(box.min.y, b.min.y)};
+    box.max = {std::max(box.max.x, b.max.x), std::max(box.max.y, b.max.y)};
+    for (std::size_t axis = 0; axis < 2; ++axis) {
+      for (const double t : b.critical[axis]) critical[axis].emplace_back(k, t);
+    }
+  }
+  JsonWriter w;
+  w.begin_object();
+  w.key("critical").begin_array();
+  for (const auto& axis : critical) {
+    w.begin_array();
+    for (const auto& [segment, t] : axis) {
+      w.begin_object();
+      w.key("segment").value(static_cast<std::int64_t>(segment));
+      w.key("t").value(t);
+      w.end_object();
+    }
+    w.end_array();
+  }
+  w.end_array();
+  write_point(w.key("max"), box.max);
+  write_point(w.key("min"), box.min);
+  w.key("segment_count").value(static_cast<std::int64_t>(p.segments.size()));
+  w.end_object();
+  return json_reply(std::move(w));
+}
+
 }  // namespace
 
 Reply bounds_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
-  reader.reject_unknown_fields(request, {"points", "interval"}, "");
+  reader.reject_unknown_fields(request, {"points", "path", "interval"}, "");
+  if (RequestReader::optional(request, "path") != nullptr) {
+    const std::optional<path::Path> p = read_request_path(reader, request);
+    if (!reader.ok()) return reader.refusal();
+    return path_bounds_answer(*p);
+  }
   std::optional<std::variant<core::Curve, core::Curve3>> curve;
   if (const auto* points = reader.required(request, "points", "")) {
     curve = reader.curve(*points, "/points");

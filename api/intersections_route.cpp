@@ -3,7 +3,8 @@
 //
 // Request:  {"curves": [{"points": [[x, y], ...]}, {"points": ...}],
 //            "tolerance": 1e-12, "method": "hybrid", "fat_curve_degree": 2}
-//   curves            1 or 2 objects {"points"}: 2 to max_degree + 1 finite points each.
+//   curves            1 or 2 objects {"points"}: 2 to max_degree + 1 finite points each, or
+//                     {"path": SVG path data} (DESIGN §7, api/curve_or_path.hpp).
 //   tolerance         optional, default 1e-12: every reported interval is narrower than
 //                     this; at least 2^-46 (about 1.42e-14, what doubles can guarantee) and at
 //                     most 1.
@@ -24,6 +25,16 @@
 // search: "closed-form-cubic", "subdivision" or "collinear"), "work", "max_depth",
 // "newton_iterations", "certification_iterations"}; `method` and `fat_curve_degree` do not
 // apply there and are ignored.
+// With a path among the curves (a curve then counts as a path of one segment, segment 0):
+// the same answers over the paths' segments (core/path/path_intersections.hpp), each
+// intersection and overlap with "segments": [i, j], the segment of the first curve or path
+// that holds t and that of the second (or of the same path) that holds s; sorted by i, t,
+// j, s. Two: every crossing, tangency and overlap of a segment of one with a segment of
+// the other, a contact at a joint once. One path: its self-intersections between
+// different segments (not the joints consecutive segments share, nor a closed subpath's
+// start meeting its end) and within segments (certified as for one curve). "stats" then
+// sums the pair searches' stats and adds "candidate_pairs" (segment pairs whose boxes
+// meet) and, for one path, "certification_iterations"; "work" counts every phase.
 // Errors: 422 validation problems with JSON Pointers (tolerance out of range included);
 // 422 work-cap problem when the search needs more than limits.max_work work units (steps
 // charged by their cost, core/intersect/work_cost.hpp).
@@ -31,12 +42,17 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
+#include <utility>
+#include <variant>
 
+#include "api/curve_or_path.hpp"
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
+#include "core/path/path_intersections.hpp"
 #include "core/self_intersect/self_intersection.hpp"
 #include "core/self_intersect/work_cost.hpp"
 
@@ -45,8 +61,18 @@ namespace bezier::api {
 namespace {
 
 struct IntersectionsRequest {
-  std::vector<core::Curve> curves;
+  std::vector<CurveOrPath> inputs;
   core::IntersectOptions options;
+  /// Whether any input is a path: then the answers locate points by segment.
+  [[nodiscard]] bool has_path() const {
+    for (const CurveOrPath& input : inputs) {
+      if (std::holds_alternative<path::Path>(input)) return true;
+    }
+    return false;
+  }
+  [[nodiscard]] const core::Curve& curve(std::size_t i) const {
+    return std::get<core::Curve>(inputs[i]);
+  }
 };
 
 // Members in key order, so the text is what a document of the same answer would dump to.
@@ -62,12 +88,49 @@ void write_intersection(JsonWriter& w, const core::Intersection& x) {
   w.end_object();
 }
 
-void write_overlap(JsonWriter& w, bool reversed, double s_lo, double s_hi, double t_lo, double t_hi) {
+/// "segments": [i, j].
+void write_segments(JsonWriter& w, std::size_t i, std::size_t j) {
+  w.key("segments").begin_array();
+  w.value(static_cast<std::int64_t>(i)).value(static_cast<std::int64_t>(j));
+  w.end_array();
+}
+
+/// A path's intersection: the members of write_intersection and `segments`.
+void write_path_intersection(JsonWriter& w, const path::PathContact& c) {
+  const core::Intersection& x = c.intersection;
+  w.begin_object();
+  w.key("kind").value(core::to_string(x.kind));
+  w.key("point").pair(x.point.x, x.point.y);
+  w.key("resolved").value(x.resolved);
+  w.key("s").value(x.s);
+  w.key("s_interval").pair(x.s_interval.lo, x.s_interval.hi);
+  write_segments(w, c.segment_t, c.segment_s);
+  w.key("t").value(x.t);
+  w.key("t_interval").pair(x.t_interval.lo, x.t_interval.hi);
+  w.end_object();
+}
+
+/// An overlap; `segments` (i, j) for a path's, nullptr for two curves'.
+void write_overlap(JsonWriter& w, bool reversed, double s_lo, double s_hi, double t_lo, double t_hi,
+                   const std::pair<std::size_t, std::size_t>* segments = nullptr) {
   w.begin_object();
   w.key("reversed").value(reversed);
   w.key("s_interval").pair(s_lo, s_hi);
+  if (segments != nullptr) {
+    write_segments(w, segments->first, segments->second);
+  }
   w.key("t_interval").pair(t_lo, t_hi);
   w.end_object();
+}
+
+/// A piece a curve retraces: the same way when B(t_lo) is B(s_lo), backwards when it is
+/// B(s_hi).
+void write_self_overlap(JsonWriter& w, const core::Curve& curve, const core::SelfOverlap& o,
+                        const std::pair<std::size_t, std::size_t>* segments = nullptr) {
+  const core::Point2 a = core::evaluate(curve, o.t_lo);
+  const double same = core::length(a - core::evaluate(curve, o.s_lo));
+  const double opposite = core::length(a - core::evaluate(curve, o.s_hi));
+  write_overlap(w, opposite < same, o.s_lo, o.s_hi, o.t_lo, o.t_hi, segments);
 }
 
 Reply work_cap_reply(std::int64_t steps, const Limits& limits) {
@@ -82,7 +145,7 @@ Reply work_cap_reply(std::int64_t steps, const Limits& limits) {
 
 Reply two_curves_answer(const IntersectionsRequest& request, const Limits& limits) {
   const core::IntersectionResult r =
-      core::intersect(request.curves[0], request.curves[1], request.options);
+      core::intersect(request.curve(0), request.curve(1), request.options);
   if (r.status == core::IntersectStatus::work_cap_reached)
     return work_cap_reply(r.stats.iterations, limits);
   if (r.status == core::IntersectStatus::tolerance_too_small) {
@@ -165,7 +228,7 @@ CertifiedPair certified_pair(const core::Curve& curve, const core::SelfIntersect
 }
 
 Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits) {
-  const core::Curve& curve = request.curves[0];
+  const core::Curve& curve = request.curve(0);
   core::SelfIntersectionOptions options;
   options.max_work = core::self_intersection_box_budget(limits.max_work, curve.degree());
   const core::SelfIntersectionResult r = core::self_intersections(curve, options);
@@ -189,13 +252,7 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   }
   w.end_array();
   w.key("overlaps").begin_array();
-  for (const core::SelfOverlap& o : r.overlaps) {
-    // The pieces run the same way when B(t_lo) is B(s_lo), backwards when it is B(s_hi).
-    const core::Point2 a = core::evaluate(curve, o.t_lo);
-    const double same = core::length(a - core::evaluate(curve, o.s_lo));
-    const double opposite = core::length(a - core::evaluate(curve, o.s_hi));
-    write_overlap(w, opposite < same, o.s_lo, o.s_hi, o.t_lo, o.t_hi);
-  }
+  for (const core::SelfOverlap& o : r.overlaps) write_self_overlap(w, curve, o);
   w.end_array();
   w.key("stats").begin_object();
   w.key("certification_iterations").value(certification_steps);
@@ -212,6 +269,126 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   return reply;
 }
 
+Reply path_work_cap_reply(const path::PathSearchStats& stats, const Limits& limits) {
+  return problem_reply(ProblemKind::work_cap,
+                       "the path intersection search spent " + std::to_string(stats.work) +
+                           " work units on " + std::to_string(stats.candidate_pairs) +
+                           " segment pairs without finishing, beyond the per-request work cap of " +
+                           std::to_string(limits.max_work) +
+                           " units (it covers the whole path request: every segment pair whose "
+                           "boxes meet, and each segment's own search)");
+}
+
+/// `stats` of a path answer: the pair searches' sums, the pairs searched, every unit spent.
+void write_path_stats(JsonWriter& w, const IntersectionsRequest& request,
+                      const path::PathSearchStats& path_stats,
+                      const std::int64_t* certification_iterations) {
+  const core::IntersectStats& stats = path_stats.pairs;
+  w.key("stats").begin_object();
+  w.key("candidate_boxes").value(stats.candidate_boxes);
+  w.key("candidate_pairs").value(path_stats.candidate_pairs);
+  if (certification_iterations != nullptr) {
+    w.key("certification_iterations").value(*certification_iterations);
+  }
+  w.key("clipping_steps").value(stats.clipping_steps);
+  w.key("compensated_steps").value(stats.compensated_steps);
+  if (request.options.method == core::IntersectMethod::hybrid) {
+    w.key("fat_curve_degree").value(request.options.fat_curve_degree);
+  }
+  w.key("iterations").value(stats.iterations);
+  w.key("max_depth").value(stats.max_depth);
+  w.key("method").value(core::to_string(request.options.method));
+  w.key("newton_iterations").value(stats.newton_iterations);
+  w.key("subdivisions").value(stats.subdivisions);
+  w.key("work").value(path_stats.work);
+  w.end_object();
+}
+
+void sort_contacts(std::vector<path::PathContact>& contacts) {
+  std::sort(contacts.begin(), contacts.end(),
+            [](const path::PathContact& p, const path::PathContact& q) {
+              return std::tuple(p.segment_t, p.intersection.t, p.segment_s, p.intersection.s) <
+                     std::tuple(q.segment_t, q.intersection.t, q.segment_s, q.intersection.s);
+            });
+}
+
+Reply two_paths_answer(const IntersectionsRequest& request, const Limits& limits) {
+  const path::Path a = as_path(request.inputs[0]);
+  const path::Path b = as_path(request.inputs[1]);
+  const path::PathIntersectionResult r = path::intersect(a, b, request.options);
+  if (r.status == core::IntersectStatus::work_cap_reached) return path_work_cap_reply(r.stats, limits);
+  if (r.status == core::IntersectStatus::tolerance_too_small) {
+    return validation_reply({{"/tolerance", "below what doubles can guarantee"}});
+  }
+  JsonWriter w;
+  w.begin_object();
+  w.key("intersections").begin_array();
+  for (const path::PathContact& c : r.intersections) write_path_intersection(w, c);
+  w.end_array();
+  w.key("overlaps").begin_array();
+  for (const path::PathOverlap& o : r.overlaps) {
+    const std::pair segments{o.segment_t, o.segment_s};
+    write_overlap(w, o.overlap.reversed, o.overlap.s_interval.lo, o.overlap.s_interval.hi,
+                  o.overlap.t_interval.lo, o.overlap.t_interval.hi, &segments);
+  }
+  w.end_array();
+  write_path_stats(w, request, r.stats, nullptr);
+  w.key("tolerance").value(request.options.tolerance);
+  w.end_object();
+  return json_reply(std::move(w));
+}
+
+Reply one_path_answer(const IntersectionsRequest& request, const Limits& limits) {
+  const path::Path p = as_path(request.inputs[0]);
+  const path::PathSelfIntersectionResult r = path::self_intersections(p, request.options);
+  if (r.status == core::IntersectStatus::work_cap_reached) return path_work_cap_reply(r.stats, limits);
+  if (r.status == core::IntersectStatus::tolerance_too_small) {
+    return validation_reply({{"/tolerance", "below what doubles can guarantee"}});
+  }
+  // The pairs within segments are certified as one curve's are, with what the search left.
+  std::vector<path::PathContact> contacts = r.intersections;
+  std::int64_t certification_work = 0, certification_steps = 0;
+  bool out_of_work = false;
+  for (const path::SegmentSelfIntersections& within : r.within_segments) {
+    for (const core::SelfIntersection& pair : within.result.pairs) {
+      const CertifiedPair c =
+          certified_pair(p.segments[within.segment], pair, request.options,
+                         limits.max_work - r.stats.work - certification_work);
+      certification_work += c.work;
+      certification_steps += c.steps;
+      out_of_work = out_of_work || c.out_of_work;
+      contacts.push_back({within.segment, within.segment, c.intersection});
+    }
+  }
+  sort_contacts(contacts);
+  JsonWriter w;
+  w.begin_object();
+  w.key("intersections").begin_array();
+  for (const path::PathContact& c : contacts) write_path_intersection(w, c);
+  w.end_array();
+  w.key("overlaps").begin_array();
+  for (const path::PathOverlap& o : r.overlaps) {
+    const std::pair segments{o.segment_t, o.segment_s};
+    write_overlap(w, o.overlap.reversed, o.overlap.s_interval.lo, o.overlap.s_interval.hi,
+                  o.overlap.t_interval.lo, o.overlap.t_interval.hi, &segments);
+  }
+  for (const path::SegmentSelfIntersections& within : r.within_segments) {
+    const std::pair segments{within.segment, within.segment};
+    for (const core::SelfOverlap& o : within.result.overlaps) {
+      write_self_overlap(w, p.segments[within.segment], o, &segments);
+    }
+  }
+  w.end_array();
+  path::PathSearchStats stats = r.stats;
+  stats.work += certification_work;
+  write_path_stats(w, request, stats, &certification_steps);
+  w.key("tolerance").value(request.options.tolerance);
+  w.end_object();
+  Reply reply = json_reply(std::move(w));
+  reply.limit_reached = out_of_work;
+  return reply;
+}
+
 }  // namespace
 
 Reply intersections_route(const nlohmann::json& request, const Limits& limits) {
@@ -221,20 +398,18 @@ Reply intersections_route(const nlohmann::json& request, const Limits& limits) {
   parsed.options.max_work = limits.max_work;
   if (const auto* curves = reader.required(request, "curves", "")) {
     if (!curves->is_array() || curves->empty() || curves->size() > 2) {
-      reader.fail("/curves", "expected an array of 1 or 2 curves {\"points\": [[x, y], ...]}");
+      reader.fail("/curves", "expected an array of 1 or 2 curves {\"points\": [[x, y], ...]} "
+                             "or paths {\"path\": \"M0 0 C1 1 2 1 3 0\"}");
     } else {
       for (std::size_t i = 0; i < curves->size(); ++i) {
         const std::string at = pointer_to("/curves", i);
         const Json& c = (*curves)[i];
         if (!c.is_object()) {
-          reader.fail(at, "expected an object {\"points\": [[x, y], ...]}");
+          reader.fail(at, "expected an object {\"points\": [[x, y], ...]} or {\"path\": \"...\"}");
           continue;
         }
-        reader.reject_unknown_fields(c, {"points"}, at);
-        if (const auto* points = reader.required(c, "points", at)) {
-          if (auto curve = reader.curve2(*points, pointer_to(at, "points")))
-            parsed.curves.push_back(std::move(*curve));
-        }
+        reader.reject_unknown_fields(c, {"points", "path"}, at);
+        if (auto input = read_curve_or_path(reader, c, at)) parsed.inputs.push_back(std::move(*input));
       }
     }
   }
@@ -262,7 +437,11 @@ Reply intersections_route(const nlohmann::json& request, const Limits& limits) {
       parsed.options.fat_curve_degree = *v;
   }
   if (!reader.ok()) return reader.refusal();
-  return parsed.curves.size() == 1 ? one_curve_answer(parsed, limits)
+  if (parsed.has_path()) {
+    return parsed.inputs.size() == 1 ? one_path_answer(parsed, limits)
+                                     : two_paths_answer(parsed, limits);
+  }
+  return parsed.inputs.size() == 1 ? one_curve_answer(parsed, limits)
                                     : two_curves_answer(parsed, limits);
 }
 

@@ -11,13 +11,22 @@
 //   length       ∫_a^b |B'(t)| dt within 1e-12 relative; error_bound the bound it met
 //                (core/measure/arc_length.hpp).
 //   parameters   the t in [a, b] with length(a, t) = l, and B(t).
+// With {"path": SVG path data} instead of points (DESIGN §7; no interval): the length of the
+// whole path, the sum of its segments' (each measured as above),
+//   {"error_bound": Σ, "length": Σ, "parameters": [{"length", "point", "segment", "t"}],
+//    "segment_count", "segment_lengths": [...]}
+//   parameters   the segment holding length l from the path's start (the first one whose
+//                cumulative length reaches l) and its t there.
 // Errors: 422 validation problems with JSON Pointers; 422 work-cap problem when the
 // quadrature needs more pieces than its cap.
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
+#include "api/curve_or_path.hpp"
 #include "api/parameter_interval.hpp"
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
@@ -83,20 +92,92 @@ Reply length_answer(RequestReader& reader, const core::BasicCurve<P>& curve,
   return json_reply(std::move(w));
 }
 
+Reply path_length_answer(RequestReader& reader, const path::Path& p,
+                         const std::optional<std::vector<double>>& at_lengths) {
+  std::vector<core::ArcLength> measured;
+  measured.reserve(p.segments.size());
+  double total = 0.0, error_bound = 0.0;
+  for (std::size_t k = 0; k < p.segments.size(); ++k) {
+    measured.push_back(core::arc_length(p.segments[k], 0.0, 1.0));
+    if (measured.back().status == core::ArcLengthStatus::work_cap_reached) {
+      return problem_reply(ProblemKind::work_cap,
+                           "the arc length of segment " + std::to_string(k) +
+                               " did not reach its 1e-12 relative accuracy within " +
+                               std::to_string(core::ArcLengthOptions{}.max_pieces) +
+                               " quadrature pieces");
+    }
+    total += measured.back().length;
+    error_bound += measured.back().error_bound;
+  }
+  if (at_lengths) {
+    for (std::size_t i = 0; i < at_lengths->size(); ++i) {
+      if ((*at_lengths)[i] > total + error_bound) {
+        reader.fail(pointer_to("/at_lengths", i),
+                    "beyond the length of the path (" + format_number(total) + ")");
+      }
+    }
+    if (!reader.ok()) return reader.refusal();
+  }
+  // {"error_bound", "length", "parameters"?: [{"length", "point", "segment", "t"}],
+  //  "segment_count", "segment_lengths"}, members in key order.
+  JsonWriter w;
+  w.begin_object();
+  w.key("error_bound").value(error_bound);
+  w.key("length").value(total);
+  if (at_lengths) {
+    w.key("parameters").begin_array();
+    for (const double l : *at_lengths) {
+      // The first segment whose cumulative length reaches l (the last one for l beyond the
+      // rounded total), and the rest of l on it.
+      std::size_t k = 0;
+      double before = 0.0;
+      while (k + 1 < measured.size() && before + measured[k].length < l) {
+        before += measured[k].length;
+        ++k;
+      }
+      const double local = std::max(0.0, l - before);
+      const double t = core::parameter_at_length(p.segments[k], measured[k], local);
+      w.begin_object();
+      w.key("length").value(l);
+      write_point(w.key("point"), core::evaluate(p.segments[k], t));
+      w.key("segment").value(static_cast<std::int64_t>(k));
+      w.key("t").value(t);
+      w.end_object();
+    }
+    w.end_array();
+  }
+  w.key("segment_count").value(static_cast<std::int64_t>(p.segments.size()));
+  w.key("segment_lengths").begin_array();
+  for (const core::ArcLength& m : measured) w.value(m.length);
+  w.end_array();
+  w.end_object();
+  return json_reply(std::move(w));
+}
+
+std::optional<std::vector<double>> read_at_lengths(RequestReader& reader, const Json& request) {
+  if (const auto* value = RequestReader::optional(request, "at_lengths")) {
+    return reader.numbers(*value, "/at_lengths", 0.0, std::numeric_limits<double>::max());
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 Reply length_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
-  reader.reject_unknown_fields(request, {"points", "interval", "at_lengths"}, "");
+  reader.reject_unknown_fields(request, {"points", "path", "interval", "at_lengths"}, "");
+  if (RequestReader::optional(request, "path") != nullptr) {
+    const std::optional<path::Path> p = read_request_path(reader, request);
+    const auto at_lengths = read_at_lengths(reader, request);
+    if (!reader.ok()) return reader.refusal();
+    return path_length_answer(reader, *p, at_lengths);
+  }
   std::optional<std::variant<core::Curve, core::Curve3>> curve;
   if (const auto* points = reader.required(request, "points", "")) {
     curve = reader.curve(*points, "/points");
   }
   const auto interval = read_parameter_interval(reader, request);
-  std::optional<std::vector<double>> at_lengths;
-  if (const auto* value = RequestReader::optional(request, "at_lengths")) {
-    at_lengths = reader.numbers(*value, "/at_lengths", 0.0, std::numeric_limits<double>::max());
-  }
+  const auto at_lengths = read_at_lengths(reader, request);
   if (!reader.ok()) return reader.refusal();
   return std::visit([&](const auto& c) { return length_answer(reader, c, *interval, at_lengths); },
                     *curve);

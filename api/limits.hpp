@@ -12,6 +12,10 @@ struct Limits {
   int max_degree = 20;
   /// Most parameter values in one request: length of a `t` array, or `samples`.
   int max_t_values = 10000;
+  /// Most segments in one SVG path (DESIGN §7: {"path": ...} wherever a curve is taken).
+  /// A path costs memory and time per segment before any work is charged (parsing, boxes);
+  /// the work cap bounds everything after.
+  int max_path_segments = 10000;
   /// Largest request body in bytes (the service answers 413 above it).
   std::size_t max_body_bytes = 1 << 20;
   /// Per-request work cap for iterative kernels, in work units. Every phase of a request

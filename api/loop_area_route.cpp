@@ -14,6 +14,13 @@
 // Answer with interval (no loop search):
 //   {"degree", "interval": [t1, t2], "area": |A|, "signed_area": A, "chord": [B(t1), B(t2)],
 //    "closed", "closed_area"}
+// With {"path": SVG path data} instead of points (DESIGN §7; no interval):
+//   {"area": Σ loop areas, "closed": every subpath closed, "closed_area": the signed area
+//    the closed subpaths enclose (Green's theorem, core/path/path_area.hpp) or null when
+//    none is closed, "loops": [{"area", "kind", "point", "segments": [i, j],
+//    "signed_area", "t": [t on segment i, s on segment j]}] (the path's self-intersection
+//    loops, core/path/path_loops.hpp), "overlaps": [{"s_interval", "segments",
+//    "t_interval"}], "segment_count", "stats": {"candidate_pairs", "work"}}
 // Errors: 422 validation problems with JSON Pointers (an area beyond the double range is
 // reported at /points); 422 work-cap problem when the self-intersection search needs more
 // than limits.max_work work units (parameter boxes charged by the curve's degree,
@@ -23,13 +30,19 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
+#include <vector>
 
+#include "api/curve_or_path.hpp"
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
 #include "core/curve/area.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/loop/loop_area.hpp"
+#include "core/path/path_area.hpp"
+#include "core/path/path_intersections.hpp"
+#include "core/path/path_loops.hpp"
 #include "core/self_intersect/work_cost.hpp"
 
 namespace bezier::api {
@@ -50,8 +63,8 @@ const char* kind_name(core::SelfIntersectionKind kind) {
 
 /// An area beyond the double range (the curve is finite, its area need not be: a loop
 /// 1e200 wide) cannot be written as a JSON number: that request is answered with a problem.
-Reply area_out_of_range() {
-  return validation_reply({{"/points",
+Reply area_out_of_range(const char* pointer = "/points") {
+  return validation_reply({{pointer,
                             "the area is beyond the double range (about 1.8e308): "
                             "the coordinates are too large"}});
 }
@@ -150,20 +163,99 @@ Reply loops_answer(const core::Curve& curve, const Limits& limits) {
   return json_reply(std::move(w));
 }
 
+void write_segments(JsonWriter& w, std::size_t i, std::size_t j) {
+  w.key("segments").begin_array();
+  w.value(static_cast<std::int64_t>(i)).value(static_cast<std::int64_t>(j));
+  w.end_array();
+}
+
+Reply path_loops_answer(const path::Path& p, const Limits& limits) {
+  core::IntersectOptions options;
+  options.max_work = limits.max_work;
+  const path::PathSelfIntersectionResult self = path::self_intersections(p, options);
+  if (self.status == core::IntersectStatus::work_cap_reached) {
+    return problem_reply(ProblemKind::work_cap,
+                         "the path's self-intersection search spent " +
+                             std::to_string(self.stats.work) + " work units on " +
+                             std::to_string(self.stats.candidate_pairs) +
+                             " segment pairs without finishing, beyond the per-request work cap of " +
+                             std::to_string(limits.max_work) + " units");
+  }
+  const std::vector<path::PathLoop> loops = path::loops(p, self);
+  double total = 0.0;
+  for (const path::PathLoop& loop : loops) total += loop.area;
+  const std::optional<double> closed_area = path::closed_area(p);
+  if (!std::isfinite(total) || (closed_area && !std::isfinite(*closed_area))) {
+    return area_out_of_range("/path");
+  }
+  bool closed = true;
+  for (const path::Subpath& sub : p.subpaths) closed = closed && sub.closed;
+  // {"area", "closed", "closed_area", "loops": [{"area", "kind", "point", "segments",
+  //  "signed_area", "t"}], "overlaps": [{"s_interval", "segments", "t_interval"}],
+  //  "segment_count", "stats": {"candidate_pairs", "work"}}, members in key order.
+  JsonWriter w;
+  w.begin_object();
+  w.key("area").value(total);
+  w.key("closed").value(closed);
+  write_optional(w.key("closed_area"), closed_area);
+  w.key("loops").begin_array();
+  for (const path::PathLoop& loop : loops) {
+    w.begin_object();
+    w.key("area").value(loop.area);
+    w.key("kind").value(core::to_string(loop.kind));
+    write_point(w.key("point"), loop.point);
+    write_segments(w, loop.segment_t, loop.segment_s);
+    w.key("signed_area").value(loop.signed_area);
+    w.key("t").pair(loop.t, loop.s);
+    w.end_object();
+  }
+  w.end_array();
+  w.key("overlaps").begin_array();
+  for (const path::PathOverlap& o : self.overlaps) {
+    w.begin_object();
+    w.key("s_interval").pair(o.overlap.s_interval.lo, o.overlap.s_interval.hi);
+    write_segments(w, o.segment_t, o.segment_s);
+    w.key("t_interval").pair(o.overlap.t_interval.lo, o.overlap.t_interval.hi);
+    w.end_object();
+  }
+  for (const path::SegmentSelfIntersections& within : self.within_segments) {
+    for (const core::SelfOverlap& o : within.result.overlaps) {
+      w.begin_object();
+      w.key("s_interval").pair(o.s_lo, o.s_hi);
+      write_segments(w, within.segment, within.segment);
+      w.key("t_interval").pair(o.t_lo, o.t_hi);
+      w.end_object();
+    }
+  }
+  w.end_array();
+  w.key("segment_count").value(static_cast<std::int64_t>(p.segments.size()));
+  w.key("stats").begin_object();
+  w.key("candidate_pairs").value(self.stats.candidate_pairs);
+  w.key("work").value(self.stats.work);
+  w.end_object();
+  w.end_object();
+  return json_reply(std::move(w));
+}
+
 }  // namespace
 
 Reply loop_area_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
-  reader.reject_unknown_fields(request, {"points", "interval"}, "");
-  std::optional<core::Curve> curve;
-  if (const auto* points = reader.required(request, "points", ""))
-    curve = reader.curve2(*points, "/points");
+  reader.reject_unknown_fields(request, {"points", "path", "interval"}, "");
+  std::optional<CurveOrPath> input = read_curve_or_path(reader, request, "");
   std::optional<std::pair<double, double>> interval;
-  if (const auto* value = RequestReader::optional(request, "interval"))
-    interval = read_interval(reader, *value);
+  if (const auto* value = RequestReader::optional(request, "interval")) {
+    if (RequestReader::optional(request, "path") != nullptr) {
+      reader.fail("/interval", "applies to a curve given by \"points\", not to a path");
+    } else {
+      interval = read_interval(reader, *value);
+    }
+  }
   if (!reader.ok()) return reader.refusal();
-  if (interval) return interval_answer(*curve, interval->first, interval->second);
-  return loops_answer(*curve, limits);
+  if (const auto* p = std::get_if<path::Path>(&*input)) return path_loops_answer(*p, limits);
+  const core::Curve& curve = std::get<core::Curve>(*input);
+  if (interval) return interval_answer(curve, interval->first, interval->second);
+  return loops_answer(curve, limits);
 }
 
 }  // namespace bezier::api

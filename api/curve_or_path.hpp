@@ -1,0 +1,38 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "api/read_json.hpp"
+#include "core/base/curve.hpp"
+#include "core/path/path.hpp"
+
+namespace bezier::api {
+
+/// What a route takes where DESIGN §7 lets a path stand for a curve: control points
+/// {"points": [[x, y], ...]} or SVG path data {"path": "M0 0 C..."}.
+using CurveOrPath = std::variant<core::Curve, path::Path>;
+
+/// SVG path data (core/path/svg_path_data.hpp) as a path of at least one segment. A refusal
+/// is recorded at `pointer` (the string's JSON Pointer); a pointer cannot reach inside a
+/// string, so the message begins with the character offset where parsing stopped, then says
+/// what was expected there ("offset 12: expected a number, found 'x'"). More segments than
+/// limits().max_path_segments, or a segment above limits().max_degree, is a limit's refusal.
+std::optional<path::Path> read_path(RequestReader& reader, const Json& value,
+                                    const std::string& pointer);
+
+/// The member `points` (a planar curve, RequestReader::curve2) or `path` (read_path) of the
+/// object at `pointer`: exactly one of the two, else a refusal at `pointer`.
+std::optional<CurveOrPath> read_curve_or_path(RequestReader& reader, const Json& object,
+                                              const std::string& pointer);
+
+/// For the measuring routes (/length, /bounds, /nearest) with a request that has `path`:
+/// the path (read_path at /path), with `points` beside it refused at /points and
+/// `interval` at /interval (a parameter interval is one curve's).
+std::optional<path::Path> read_request_path(RequestReader& reader, const Json& request);
+
+/// A curve as a path of one segment (segment 0), or the path itself.
+[[nodiscard]] path::Path as_path(CurveOrPath input);
+
+}  // namespace bezier::api
