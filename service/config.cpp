@@ -60,6 +60,8 @@ ParsedConfig parse_config(int argc, char** argv) {
       ->envname("BEZIER_MAX_DEGREE")->check(CLI::Range(1, 1000))->capture_default_str();
   app.add_option("--max-t-values", config.limits.max_t_values, "Most t values or samples per request")
       ->envname("BEZIER_MAX_T_VALUES")->check(CLI::Range(1, 10000000))->capture_default_str();
+  app.add_option("--max-path-segments", config.limits.max_path_segments, "Most segments in one SVG path (422 above)")
+      ->envname("BEZIER_MAX_PATH_SEGMENTS")->check(CLI::Range(1, 10000000))->capture_default_str();
   app.add_option("--max-work", config.limits.max_work, "Per-request work cap of iterative kernels (work units, about 3-6 ns each)")
       ->envname("BEZIER_MAX_WORK")->check(CLI::Range(std::int64_t{1000}, std::int64_t{1} << 40))->capture_default_str();
   app.add_option("--log-level", config.log_level, "trace, debug, info, warn, error, critical or off")
