@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
-# bezier-service against the peer (Paper.js behind node's http, ../shared/tools/peer-service)
-# in the same run: wrk at 64 connections, alternating A and B per round, for /evaluate,
-# /intersections and /classify with the peer's own request bodies. While each load runs
+# bezier-service against the peer in the same run. The peer is a Node.js service that is not
+# part of this repository: Paper.js 0.12 behind node's http (cluster of 2 workers), answering
+# POST /evaluate, /intersections, /classify and GET /healthz with the same JSON shapes for
+# cubics, its request bodies in its wrk/*.lua. PEER_SERVICE names its directory (default:
+# ../shared/tools/peer-service beside the checkout).
+# The script runs wrk at 64 connections, alternating the two servers per round, on /evaluate,
+# /intersections and /classify with the peer's request bodies. While each load runs
 # a 65th client probes /healthz every 100 ms: a req/s figure counts only if every probe is
 # answered (all connections served). Prints one line per run and the medians.
 # cpu_us is the server's CPU time per request (user + system, all its processes: ours, or

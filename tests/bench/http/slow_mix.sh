@@ -11,7 +11,6 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 binary=${1:-$here/../../../build/service/bezier-service}
 seconds=${2:-10}
-peer_wrk=${PEER_SERVICE:-$here/../../../../shared/tools/peer-service}/wrk/evaluate.lua
 command -v wrk >/dev/null || { echo "wrk is needed: apt-get install wrk" >&2; exit 2; }
 
 work=$(mktemp -d)
@@ -36,7 +35,7 @@ slow_pid=$!
   done >"$work/probe" ) &
 probe_pid=$!
 echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
-wrk -t2 -c64 -d"${seconds}s" --latency -s "$peer_wrk" "$url/evaluate" | grep -E "Requests/sec|Non-2xx|Socket errors|50%|99%"
+wrk -t2 -c64 -d"${seconds}s" --latency -s "$here/evaluate.lua" "$url/evaluate" | grep -E "Requests/sec|Non-2xx|Socket errors|50%|99%"
 rm -f "$work/flag"
 wait $slow_pid $probe_pid
 echo "slow requests answered: $(cat "$work/slow.count")"
