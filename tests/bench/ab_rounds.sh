@@ -2,7 +2,7 @@
 # Alternating A/B timing for a noisy machine: per round, every benchmark matching FILTER
 # runs in A's binary, then in B's; the report gives, per benchmark, the minimum and median
 # of each side's time per pair and the ratio of the minima and the median of the per-round
-# ratios (BENCHMARKS.md §2d).
+# ratios.
 #
 #   tests/bench/ab_rounds.sh 5 IntersectCubicPairs A/tests/bezier_bench B/tests/bezier_bench
 set -euo pipefail

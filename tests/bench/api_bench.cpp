@@ -1,12 +1,13 @@
 // The request -> answer path without sockets: api::handle on the bodies that
 // tests/bench/http/compare_peer.sh sends with wrk, so the HTTP figures can be split into
 // what the socket layer costs and what parsing, the kernel and the JSON answer cost.
-// The bodies are byte for byte those of ../shared/tools/peer-service/wrk/*.lua (the peer's
-// own benchmark bodies: one cubic with t = 0.5, the first intersecting random cubic pair of
-// the peer's generator, one cubic to classify), plus /healthz-sized work for reference:
+// The bodies are byte for byte the peer service's wrk bodies (compare_peer.sh says what the
+// peer is; its own benchmark bodies: one cubic with t = 0.5, the first intersecting random cubic
+// pair of the peer's generator, one cubic to classify), plus /healthz-sized work for reference:
 // parsing an empty object.
 //
-//   ninja -C build bezier_bench && build/tests/bezier_bench --benchmark_filter='ApiHandle|ParseJson'
+// ninja -C build bezier_bench && build/tests/bezier_bench --benchmark_filter='ApiHandle|ParseJson'
+// 
 //
 // ParseJson_*: a body parsed into a document and freed again, by api::parse_json and by
 // nlohmann's own parser (its DOM parse is sax_parse with nlohmann's document-building

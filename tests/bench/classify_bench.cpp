@@ -1,5 +1,5 @@
-// Classification throughput on the shared benchmark input (DESIGN §5): the mulberry32
-// stream with seed 1, after the 20000 intersection pairs (320000 draws), gives single
+// Classification throughput on the shared benchmark input (BENCHMARKS.md, "Benchmark input"): the
+// mulberry32 stream with seed 1, after the 20000 intersection pairs (320000 draws), gives single
 // cubics, 8 draws each in the order x0 y0 x1 y1 x2 y2 x3 y3.
 //
 //   ninja -C build bezier_bench && build/tests/bezier_bench --benchmark_filter=Classify

@@ -1,4 +1,4 @@
-// Evaluation and polars (issue 9, item 1): B(t) at one t and at 1000 t for degrees 3, 7
+// Evaluation and polars: B(t) at one t and at 1000 t for degrees 3, 7
 // and 20, uniform sampling, derivatives, subdivision, first polar, blossom and portion.
 //
 //   ninja -C build bezier_bench && build/tests/bezier_bench --benchmark_filter='Evaluate|Polar'

@@ -1,6 +1,7 @@
-// Curve-curve intersection throughput (issue 4, item 6) on the shared benchmark input
-// (DESIGN §5): 20000 pairs of cubics from mulberry32 seed 1, 16 draws per pair in the order
-// a0x a0y .. a3y b0x .. b3y. Certified libraries find 16178 intersections on them.
+// Curve-curve intersection throughput on the shared benchmark input
+// (BENCHMARKS.md, "Benchmark input"): 20000 pairs of cubics from mulberry32 seed 1, 16 draws per
+// pair in the order a0x a0y .. a3y b0x .. b3y. Certified libraries find 16178 intersections on
+// them.
 //
 //   ninja -C build bezier_bench && build/tests/bezier_bench --benchmark_filter=Intersect
 //

@@ -6,12 +6,12 @@
 //   build/tests/bezier_intersection_dump > after.txt     # on the new one
 //   cmp before.txt after.txt
 //
-// The pairs: the 20000 random cubic pairs of DESIGN §5 (mulberry32 seed 1) by hybrid with
-// fat curves of degree 3 and 2, Bézier clipping and subdivision; 1000 degree-7 pairs (seed 7)
-// by hybrid and Bézier clipping; 200 degree-10 pairs (seed 10); 2000 cubic-line (seed 5) and
-// 2000 cubic-quadratic pairs (seed 6). Per pair: a header line (set, index, status, counts),
-// then each intersection (estimates, both intervals, point, kind, resolved) and each overlap,
-// every number as %a.
+// The pairs: the 20000 random cubic pairs of the shared benchmark input (mulberry32 seed 1;
+// BENCHMARKS.md) by hybrid with fat curves of degree 3 and 2, Bézier clipping and subdivision; 1000
+// degree-7 pairs (seed 7) by hybrid and Bézier clipping; 200 degree-10 pairs (seed 10); 2000
+// cubic-line (seed 5) and 2000 cubic-quadratic pairs (seed 6). Per pair: a header line (set, index,
+// status, counts), then each intersection (estimates, both intervals, point, kind, resolved) and
+// each overlap, every number as %a.
 
 #include <cstdint>
 #include <cstdio>

@@ -1,11 +1,11 @@
-// Self-intersection and loop area (issue 3): the kernel against the seed's sampling method,
+// Self-intersection and loop area: the kernel against the seed's sampling method,
 // same binary, same run.
 //
 //   ninja -C build bezier_bench && build/tests/bezier_bench --benchmark_filter='Loops'
 //
 // Inputs: the seed's degree-7 example, and random self-intersecting cubics drawn from
-// mulberry32 seed 1 after the 20000 intersection pairs (DESIGN §5: 320000 draws skipped,
-// then 8 draws per cubic P0x P0y .. P3x P3y, kept when the loop lies on [0, 1]).
+// mulberry32 seed 1 after the 20000 intersection pairs (BENCHMARKS.md, "Benchmark input": 320000
+// draws skipped, then 8 draws per cubic P0x P0y .. P3x P3y, kept when the loop lies on [0, 1]).
 
 #include <benchmark/benchmark.h>
 

@@ -1,9 +1,10 @@
-// The measuring kernels (core/measure/) on the shared benchmark input (DESIGN §5): the
-// mulberry32 stream with seed 1, after the 20000 intersection pairs (320000 draws), gives
-// curves of the degree asked for, x and y of each control point in turn; /nearest's target
+// The measuring kernels (core/measure/) on the shared benchmark input (BENCHMARKS.md, "Benchmark
+// input"): the mulberry32 stream with seed 1, after the 20000 intersection pairs (320000 draws),
+// gives curves of the degree asked for, x and y of each control point in turn; /nearest's target
 // is the next two draws.
 //
-//   ninja -C build bezier_bench && build/tests/bezier_bench --benchmark_filter='Length|Bounds|Nearest'
+// ninja -C build bezier_bench && build/tests/bezier_bench
+// --benchmark_filter='Length|Bounds|Nearest'
 //
 // The argument is the degree (3: the shared random cubics; 7: degree-7 curves from the same
 // stream). Each benchmark cycles through 1024 curves.

@@ -2,8 +2,8 @@
 """Accuracy of the reported intersection points of the benchmark's cubic pairs.
 
 Reads dumps written by bezier_intersection_dump (tests/bench/intersection_dump.cpp), draws
-the same 20000 pairs (DESIGN §5: mulberry32, seed 1, control points in [0, 1)^2), and for
-every crossing of the default method ("cubic/hybrid3") compares the reported point with
+the same 20000 pairs (BENCHMARKS.md, "Benchmark input": mulberry32, seed 1, control points
+in [0, 1)^2), and for every crossing of the default method ("cubic/hybrid3") compares the reported point with
 (f(t) + g(s)) / 2 evaluated exactly in rationals at the reported t and s. Prints, per dump,
 the mean and largest error in ulps of the exact value (the larger coordinate's), how many
 points are off by more than 1 ulp, and the same restricted to points whose coordinates are

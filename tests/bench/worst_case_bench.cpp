@@ -6,9 +6,9 @@
 //   build/tests/bezier_bench --benchmark_filter=WorstCase --benchmark_min_time=0.2
 //
 // Counters: status (200, or 422 when a work cap answered), reply_bytes, work (the units the
-// answer's stats report; 0 for a 422). BENCHMARKS.md §4b has the figures and the target.
-// BEZIER_BENCH_MAX_WORK=<units> replaces Limits::max_work, to measure what another default
-// would cost and which requests it would turn into 422s.
+// answer's stats report; 0 for a 422). BENCHMARKS.md, "Worst requests at the default limits", has
+// the figures. BEZIER_BENCH_MAX_WORK=<units> replaces Limits::max_work, to measure what another
+// default would cost and which requests it would turn into 422s.
 
 #include <benchmark/benchmark.h>
 
