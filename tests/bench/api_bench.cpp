@@ -6,8 +6,7 @@
 // pair of the peer's generator, one cubic to classify), plus /healthz-sized work for reference:
 // parsing an empty object.
 //
-// ninja -C build bezier_bench && build/tests/bezier_bench --benchmark_filter='ApiHandle|ParseJson'
-// 
+//   ninja -C build bezier_bench && build/tests/bezier_bench --benchmark_filter='ApiHandle|ParseJson'
 //
 // ParseJson_*: a body parsed into a document and freed again, by api::parse_json and by
 // nlohmann's own parser (its DOM parse is sax_parse with nlohmann's document-building

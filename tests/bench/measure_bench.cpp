@@ -3,8 +3,7 @@
 // gives curves of the degree asked for, x and y of each control point in turn; /nearest's target
 // is the next two draws.
 //
-// ninja -C build bezier_bench && build/tests/bezier_bench
-// --benchmark_filter='Length|Bounds|Nearest'
+//   ninja -C build bezier_bench && build/tests/bezier_bench --benchmark_filter='Length|Bounds|Nearest'
 //
 // The argument is the degree (3: the shared random cubics; 7: degree-7 curves from the same
 // stream). Each benchmark cycles through 1024 curves.

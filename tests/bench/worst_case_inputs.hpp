@@ -5,8 +5,8 @@
 // closed forms and seeded random curves, timed by tests/bench/worst_case_bench.cpp.
 //
 // The curves:
-// * random(seed, n): control points uniform in [0,1]^2 from mulberry32 (BENCHMARKS.md, "Benchmark
-// input");
+//   * random(seed, n): control points uniform in [0,1]^2 from mulberry32 (BENCHMARKS.md,
+//     "Benchmark input");
 //   * chebyshev(n): T_n(2t - 1), whose Bernstein coefficients are
 //     (-1)^(n-k) C(2n, 2k) / C(n, k) (Farouki & Rajan 1988 give the conversion; checked
 //     against T_2: 1, -3, 1); it oscillates n times between -1 and 1 on [0, 1] with
