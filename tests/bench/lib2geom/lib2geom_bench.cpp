@@ -30,27 +30,6 @@
 //     curves are evaluated: one virtual call).
 // Counter max_err_ulps: the largest distance, in ulps, from the correctly rounded exact value
 // (rational de Casteljau, tests/support/exact_bezier.hpp) over the 1024 parameters.
-//
-// Measuring (issue 20): 1024 curves of degree 3 (the shared random cubics) or 7 from the
-// stream of DESIGN §5 after the 20000 intersection pairs, x and y of each control point in
-// turn, each followed by a /nearest target (the next two draws): the inputs of
-// tests/bench/measure_bench.cpp. Whole interval [0, 1]; time per curve.
-//   * length: ours core::arc_length at relative tolerance 1e-12 (the API's) and looser;
-//     lib2geom's bezier_length (what BezierCurve::length and Path::length call; the 4-point
-//     overload for cubics): control polygon against chord, halving with the tolerance
-//     (absolute; the curves have lengths near 1) until they agree, returning their mean,
-//     at most 8 levels deep (256 pieces), so asking below its reach costs the full 511
-//     nodes. Counters max_rel_err and median_rel_err: |result - reference| / reference over
-//     the 1024 curves, the reference being adaptive Gauss-Legendre in long double
-//     (reference_length below), checked against ours at 1e-14 (counter ref_vs_ours_1e14).
-//   * nearest, one target: ours core::nearest; lib2geom's nearest_time(Point, D2<Bezier>),
-//     the roots of (B - q) · B' by its Bézier root finder. Counters: farther_than_other
-//     (curves where the returned point is farther than the other library's by more than
-//     1e-9: a local minimum reported) and max_excess (the largest such difference), both
-//     distances from core::evaluate at the returned t.
-//   * bounds: ours core::bounds; lib2geom's bounds_exact(D2<Bezier>) (roots of each
-//     coordinate's derivative, then the values there). Counter max_face_diff: the largest
-//     |lib2geom face - our face|.
 
 #include <benchmark/benchmark.h>
 
@@ -58,7 +37,6 @@
 #include <2geom/bezier-curve.h>
 #include <2geom/bezier.h>
 #include <2geom/d2.h>
-#include <2geom/nearest-time.h>
 #include <2geom/point.h>
 
 #include <algorithm>
@@ -66,15 +44,11 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
-#include <numbers>
 #include <utility>
 #include <vector>
 
 #include "core/curve/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
-#include "core/measure/arc_length.hpp"
-#include "core/measure/bounds.hpp"
-#include "core/measure/nearest.hpp"
 #include "tests/support/exact_bezier.hpp"
 #include "tests/support/mulberry32.hpp"
 
@@ -333,5 +307,4 @@ void BM_Eval1000_Lib2geom_D2Bezier(benchmark::State& state) {
 }
 BENCHMARK(BM_Eval1000_Lib2geom_D2Bezier)->ArgName("degree")->Arg(3)->Arg(20);
 
-@@MEASURE@@
 }  // namespace
