@@ -12,6 +12,9 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -21,6 +24,7 @@
 #include "core/intersect/options.hpp"
 #include "core/intersect/result.hpp"
 #include "tests/contract/schema_violations.hpp"
+#include "tests/integration/raw_http.hpp"
 #include "tests/support/service_process.hpp"
 
 namespace bezier::test {
@@ -64,6 +68,34 @@ HttpExchange send(int port, const std::string& method, const std::string& path,
     for (const char c : name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     e.response_headers[lower] = value;
   }
+  return e;
+}
+
+/// The exchange of a raw request (one no client library sends) whose `answer` is the
+/// service's bytes, head and body.
+HttpExchange exchange_of_raw(const std::string& method, const std::string& path, const std::string& answer) {
+  HttpExchange e;
+  e.method = method;
+  e.path = path;
+  const std::size_t head_end = answer.find("\r\n\r\n");
+  if (answer.size() < 12 || head_end == std::string::npos) {
+    ADD_FAILURE() << method << " " << path << ": no complete answer: " << answer.substr(0, 300);
+    return e;
+  }
+  e.status = status_of(answer);
+  e.headers_known = true;
+  for (std::size_t at = answer.find("\r\n"); at < head_end;) {
+    const std::size_t next = answer.find("\r\n", at + 2);
+    const std::string line = answer.substr(at + 2, next - at - 2);
+    const std::size_t colon = line.find(':');
+    std::string name;
+    for (const char c : line.substr(0, colon)) name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::size_t value_at = line.find_first_not_of(' ', colon + 1);
+    e.response_headers[name] = value_at == std::string::npos ? "" : line.substr(value_at);
+    at = next;
+  }
+  e.response_content_type = e.response_headers["content-type"];
+  e.response_body = body_of(answer);
   return e;
 }
 
@@ -400,6 +432,62 @@ TEST_F(ContractTest, ErrorsOutsideTheSchemasAreDocumented) {
   EXPECT_EQ(exchange(port(), "GET", "/no-such-route").status, 404);
   EXPECT_EQ(exchange(port(), "POST", "/no-such-route", "application/json", "{}").status, 404);
   EXPECT_EQ(exchange(port(), "GET", "/playground/no-such-file.html").status, 404);
+}
+
+TEST_F(ContractTest, AnswersOfTheHttpLayerAreDocumented) {
+  // Requests that are not valid HTTP/1.1, or too large, to every operation: each answer
+  // is a status the operation declares, with the documented body and headers.
+  for (const Operation& op : operations()) {
+    const std::string method = upper(op.method);
+    const std::string path = concrete_path(op);
+    const std::string line = method + " " + path;
+    const std::string pad(api::Limits{}.max_body_bytes / 64, 'a');  // beyond the 16 KiB head limit
+    const std::vector<std::pair<int, std::string>> requests = {
+        {400, line + " HTTP/1.1\r\nHost: x\r\nno colon in this header line\r\n\r\n"},
+        {413, line + " HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\nContent-Length: " +
+                  std::to_string(api::Limits{}.max_body_bytes + 1) + "\r\n\r\n"},
+        {414, line + "?" + pad + " HTTP/1.1\r\nHost: x\r\n\r\n"},
+        {431, line + " HTTP/1.1\r\nHost: x\r\nX-Pad: " + pad + "\r\n\r\n"},
+        {501, line + " HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: gzip\r\n\r\n"},
+        {505, line + " HTTP/2.0\r\nHost: x\r\n\r\n"},
+    };
+    for (const auto& [status, bytes] : requests) {
+      SCOPED_TRACE(line + ", expecting " + std::to_string(status));
+      const HttpExchange e = exchange_of_raw(method, path, round_trip(port(), bytes));
+      EXPECT_EQ(e.status, status) << e.response_body;
+      expect_conforms(e);
+    }
+  }
+}
+
+TEST(ContractOfSlowRequests, RequestTimeoutIsDocumented) {
+  ServiceProcess service({"--read-timeout", "1"});
+  for (const auto& [method, path, bytes] : std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"GET", "/healthz", "GET /healthz HTTP/1.1\r\nHost: x\r\n"},
+           {"POST", "/evaluate",
+            "POST /evaluate HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\nContent-Length: 40\r\n\r\n{"}}) {
+    SCOPED_TRACE(method + " " + path);
+    const HttpExchange e = exchange_of_raw(method, path, round_trip(service.port(), bytes));
+    EXPECT_EQ(e.status, 408) << e.response_body;
+    expect_conforms(e);
+  }
+}
+
+TEST(ContractAtTheConnectionLimit, OverloadedIsDocumented) {
+  ServiceProcess service({"--max-connections", "1", "--io-threads", "1"});
+  Connection held(service.port());
+  ASSERT_TRUE(held.send_all(get_request("/healthz")));
+  ASSERT_EQ(held.responses(1).size(), 1u);
+  for (const Operation& op : operations()) {
+    SCOPED_TRACE(op.method + " " + op.path);
+    // The answer comes before any request is read: the connection is refused at once.
+    Connection refused(service.port());
+    const auto answers = refused.responses(1);
+    ASSERT_EQ(answers.size(), 1u);
+    const HttpExchange e = exchange_of_raw(upper(op.method), concrete_path(op), answers[0]);
+    EXPECT_EQ(e.status, 503) << e.response_body;
+    expect_conforms(e);
+  }
 }
 
 TEST(ContractWithToken, UnauthorizedIsDocumented) {
