@@ -3,9 +3,10 @@
 // "./api"), for `tsc --strict` to check (tests/contract/typed_client.sh):
 //   - each request body is typed as its operation's JSON request body, and each answer
 //     as the response of its status (200, or the problem's `status`);
-//   - each body and answer again with one member added, and each body with one point
-//     given a third coordinate among 2-D points, under `@ts-expect-error`: the generated
-//     types must refuse them (closed objects, tuples), or the unused directive fails.
+//   - each body and answer again with one member added, and each body with one control
+//     point given a third coordinate among 2-D points, under `@ts-expect-error`: the
+//     generated types must refuse them (closed objects, tuples), or the unused directive
+//     fails.
 // An answer that is a problem answers a request the service refused, so that request is
 // sent untyped; its answer is typed all the same.
 //
@@ -53,22 +54,15 @@ function withUnknownMember(value) {
 
 const isPoint2 = (v) => Array.isArray(v) && v.length === 2 && v.every((c) => typeof c === "number");
 
-// The body with the first point of its first list of 2-D points given a third
-// coordinate (a ragged list), or null when it has no such list.
-function withRaggedPoint(value) {
-  if (Array.isArray(value)) {
-    if (value.length >= 2 && value.every(isPoint2)) return [[...value[0], 0], ...value.slice(1)];
-    for (let i = 0; i < value.length; ++i) {
-      const changed = withRaggedPoint(value[i]);
-      if (changed !== null) return value.map((v, j) => (j === i ? changed : v));
-    }
-    return null;
-  }
-  if (typeof value === "object" && value !== null) {
-    for (const [key, member] of Object.entries(value)) {
-      const changed = withRaggedPoint(member);
-      if (changed !== null) return { ...value, [key]: changed };
-    }
+// The body with the first of its control points (`points`, or the first curve's) given a
+// third coordinate among 2-D points, or null when it has no such list. Only these lists:
+// elsewhere a body may hold JSON the spec leaves free (a /batch item's body).
+function withRaggedPoint(body) {
+  const ragged = (points) => [[...points[0], 0], ...points.slice(1)];
+  const planar = (points) => Array.isArray(points) && points.length >= 2 && points.every(isPoint2);
+  if (planar(body.points)) return { ...body, points: ragged(body.points) };
+  if (Array.isArray(body.curves) && planar(body.curves[0]?.points)) {
+    return { ...body, curves: [{ ...body.curves[0], points: ragged(body.curves[0].points) }, ...body.curves.slice(1)] };
   }
   return null;
 }
