@@ -27,6 +27,10 @@ struct Sweep {
   static MeetingBoxes run(std::vector<Entry> entries, int sets, std::int64_t max_work) {
     MeetingBoxes out;
     out.work = sort_work(entries.size());
+    if (out.work > max_work) {
+      out.complete = false;
+      return out;
+    }
     std::sort(entries.begin(), entries.end(), [](const Entry& p, const Entry& q) {
       return p.box.x_lo < q.box.x_lo || (p.box.x_lo == q.box.x_lo && p.set < q.set) ||
              (p.box.x_lo == q.box.x_lo && p.set == q.set && p.index < q.index);

@@ -1,0 +1,81 @@
+#include "core/path/segment_boxes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "tests/support/mulberry32.hpp"
+
+namespace bezier::path {
+namespace {
+
+bool meet(const Box& p, const Box& q) {
+  return p.x_lo <= q.x_hi && q.x_lo <= p.x_hi && p.y_lo <= q.y_hi && q.y_lo <= p.y_hi;
+}
+
+/// Random boxes on a coarse grid, so that shared and touching edges are common.
+std::vector<Box> random_boxes(test::Mulberry32& rng, std::size_t n) {
+  std::vector<Box> boxes;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double x = std::floor(rng.uniform(0, 40)), y = std::floor(rng.uniform(0, 40));
+    boxes.push_back({x, x + std::floor(rng.uniform(0, 8)), y, y + std::floor(rng.uniform(0, 8))});
+  }
+  return boxes;
+}
+
+TEST(SegmentBoxes, ControlBoxHoldsEveryControlPoint) {
+  const Box b = control_box(core::Curve({{1, 5}, {-2, 3}, {4, -1}, {0, 0}}));
+  EXPECT_EQ(b.x_lo, -2.0);
+  EXPECT_EQ(b.x_hi, 4.0);
+  EXPECT_EQ(b.y_lo, -1.0);
+  EXPECT_EQ(b.y_hi, 5.0);
+}
+
+TEST(SegmentBoxes, TwoSetsGiveExactlyThePairsThatMeet) {
+  test::Mulberry32 rng(5);
+  for (int round = 0; round < 50; ++round) {
+    const auto a = random_boxes(rng, 1 + static_cast<std::size_t>(rng.next() * 60));
+    const auto b = random_boxes(rng, 1 + static_cast<std::size_t>(rng.next() * 60));
+    std::vector<std::pair<std::size_t, std::size_t>> expected;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      for (std::size_t j = 0; j < b.size(); ++j) {
+        if (meet(a[i], b[j])) expected.emplace_back(i, j);
+      }
+    }
+    const MeetingBoxes found = meeting_boxes(a, b, 1 << 30);
+    EXPECT_TRUE(found.complete);
+    EXPECT_EQ(found.pairs, expected) << "round " << round;
+  }
+}
+
+TEST(SegmentBoxes, OneSetGivesEachMeetingPairOnce) {
+  test::Mulberry32 rng(6);
+  for (int round = 0; round < 50; ++round) {
+    const auto boxes = random_boxes(rng, 1 + static_cast<std::size_t>(rng.next() * 80));
+    std::vector<std::pair<std::size_t, std::size_t>> expected;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+        if (meet(boxes[i], boxes[j])) expected.emplace_back(i, j);
+      }
+    }
+    EXPECT_EQ(meeting_boxes(boxes, 1 << 30).pairs, expected) << "round " << round;
+  }
+}
+
+TEST(SegmentBoxes, StopsAtItsWorkLimit) {
+  // 100 boxes over the same x range: the sweep compares every pair, 5050 units after the
+  // sort's 700. Capped at 1000 it stops within one box's comparisons (at most 100) of it.
+  std::vector<Box> boxes(100, Box{0, 1, 0, 1});
+  const MeetingBoxes capped = meeting_boxes(boxes, 1000);
+  EXPECT_FALSE(capped.complete);
+  EXPECT_LE(capped.work, 1000 + 100);
+  EXPECT_FALSE(meeting_boxes(boxes, 500).complete);
+  const MeetingBoxes full = meeting_boxes(boxes, 1 << 30);
+  EXPECT_TRUE(full.complete);
+  EXPECT_EQ(full.pairs.size(), 100u * 99 / 2);
+}
+
+}  // namespace
+}  // namespace bezier::path
