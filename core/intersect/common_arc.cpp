@@ -369,18 +369,36 @@ bool piece_lies_on(const WorkingCurve& f, const WorkingCurve& g, const Coeffs& p
   return true;
 }
 
-/// The overlaps of the pieces of f (t) and g (s) on which p and q are monotone; false when
-/// a piece long enough to report fails its verification.
-bool arc_pieces(const WorkingCurve& f, const WorkingCurve& g, CommonArc& arc,
-                std::vector<Overlap>& out, bool later_pieces_only = false,
-                ParamInterval t_window = {0.0, 1.0}, ParamInterval s_window = {0.0, 1.0}) {
+/// Which pairs of monotone pieces arc_pieces looks at.
+struct PieceSelection {
+  /// Only pairs (i, j) with j > i: a curve against itself, each retraced pair once.
+  bool later_pieces_only = false;
+  /// Only pieces whose boxes meet t_window x s_window.
+  ParamInterval t_window{0.0, 1.0};
+  ParamInterval s_window{0.0, 1.0};
+};
+
+/// What arc_pieces finds: the overlaps to report and the boxes around pieces too short to
+/// report (CommonArc::searched), or verified = false when a piece long enough to report
+/// failed its verification.
+struct ArcPieces {
+  bool verified = true;
+  std::vector<Overlap> overlaps;
+  std::vector<std::pair<ParamInterval, ParamInterval>> searched;
+};
+
+/// The overlaps of the pieces of f (t) and g (s) on which arc.p and arc.q are monotone.
+ArcPieces arc_pieces(const WorkingCurve& f, const WorkingCurve& g, const CommonArc& arc,
+                     const PieceSelection& selection) {
+  ArcPieces result;
+  const ParamInterval t_window = selection.t_window, s_window = selection.s_window;
   const std::vector<ParamInterval> t_pieces = monotone_pieces(arc.p);
   const std::vector<ParamInterval> s_pieces = monotone_pieces(arc.q);
   const double end_tol = coincidence_tolerance(f, g);
   for (std::size_t i = 0; i < t_pieces.size(); ++i) {
     const ParamInterval I = t_pieces[i];
     const double p0 = value(arc.p, I.lo), p1 = value(arc.p, I.hi);
-    for (std::size_t j = later_pieces_only ? i + 1 : 0; j < s_pieces.size(); ++j) {
+    for (std::size_t j = selection.later_pieces_only ? i + 1 : 0; j < s_pieces.size(); ++j) {
       const ParamInterval J = s_pieces[j];
       const double q0 = value(arc.q, J.lo), q1 = value(arc.q, J.hi);
       const double p_lo = bernstein::min2(p0, p1), p_hi = bernstein::max2(p0, p1);
@@ -420,7 +438,7 @@ bool arc_pieces(const WorkingCurve& f, const WorkingCurve& g, CommonArc& arc,
           }
           found = agree(ends_t[e], ends_s[e]);
         }
-        if (!found) return false;  // neither end lies on the other curve: no common arc here
+        if (!found) return ArcPieces{false, {}, {}};  // neither end lies on the other curve
       }
       const ParamInterval t_range{bernstein::min2(ends_t[0], ends_t[1]),
                                   bernstein::max2(ends_t[0], ends_t[1])};
@@ -434,7 +452,7 @@ bool arc_pieces(const WorkingCurve& f, const WorkingCurve& g, CommonArc& arc,
         continue;
       if (!(u_hi - u_lo > kArcSlack) || !(t_range.width() > kShortestOverlap) ||
           !(s_range.width() > kShortestOverlap)) {
-        arc.searched.push_back({{t_range.lo - kShortestOverlap, t_range.hi + kShortestOverlap},
+        result.searched.push_back({{t_range.lo - kShortestOverlap, t_range.hi + kShortestOverlap},
                                 {s_range.lo - kShortestOverlap, s_range.hi + kShortestOverlap}});
         continue;
       }
@@ -444,15 +462,15 @@ bool arc_pieces(const WorkingCurve& f, const WorkingCurve& g, CommonArc& arc,
       // its end point, 8e-8 of the 0.4-long g away from g, in one order only).
       if (!piece_lies_on(f, g, arc.p, arc.q, t_range.lo, t_range.hi, J) ||
           !piece_lies_on(g, f, arc.q, arc.p, s_range.lo, s_range.hi, I))
-        return false;
+        return ArcPieces{false, {}, {}};
       Overlap o;
       o.t_interval = t_range;
       o.s_interval = s_range;
       o.reversed = (p0 <= p1) != (q0 <= q1);
-      out.push_back(o);
+      result.overlaps.push_back(o);
     }
   }
-  return true;
+  return result;
 }
 
 /// The overlaps as findings that share their arc.
@@ -544,9 +562,10 @@ std::vector<OverlapFinding> find_arc_overlaps(const WorkingCurve& f, const Worki
     arc->p = a.p;
     arc->q = b.p;
     for (double& v : arc->q.span()) v = alpha + beta * v;
-    std::vector<Overlap> overlaps;
-    if (!arc_pieces(f, g, *arc, overlaps, false, t_window, s_window) || overlaps.empty()) continue;
-    return findings(std::move(arc), overlaps);
+    ArcPieces pieces = arc_pieces(f, g, *arc, PieceSelection{false, t_window, s_window});
+    if (!pieces.verified || pieces.overlaps.empty()) continue;
+    arc->searched = std::move(pieces.searched);
+    return findings(std::move(arc), pieces.overlaps);
   }
   return {};
 }
@@ -560,9 +579,10 @@ std::vector<OverlapFinding> find_self_arc_overlaps(const WorkingCurve& c) {
   arc->h_magnitude = bernstein::max2(max_abs(fc->hx), max_abs(fc->hy));
   arc->p = fc->p;
   arc->q = fc->p;
-  std::vector<Overlap> overlaps;
-  if (!arc_pieces(c, c, *arc, overlaps, true)) return {};
-  return findings(std::move(arc), overlaps);
+  ArcPieces pieces = arc_pieces(c, c, *arc, PieceSelection{true, {0.0, 1.0}, {0.0, 1.0}});
+  if (!pieces.verified) return {};
+  arc->searched = std::move(pieces.searched);
+  return findings(std::move(arc), pieces.overlaps);
 }
 
 bool covered_by_arc(const CommonArc& arc, ParamInterval t, ParamInterval s) {

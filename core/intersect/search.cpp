@@ -79,6 +79,17 @@ bool nearly_parallel(const Piece& a, const Piece& b) noexcept {
   return sine_between(ca, cb) <= kParallelSine;
 }
 
+/// A clip that keeps more than this fraction of its interval has not done enough: the box
+/// is split instead of clipped again. The hybrid method halves both intervals once a clip
+/// keeps more than half (halving then gains more than the clip); Bézier clipping halves the
+/// wider interval once a clip removes less than 20 % of it (Sederberg & Nishita 1990, §4).
+constexpr double kHybridKeptFraction = 0.5;
+constexpr double kBezierClipKeptFraction = 0.8;
+
+/// When rounding decides even on compensated pieces and one piece is more than this many
+/// times longer than the other, the longer one is halved: its fat line is the blunt one.
+constexpr double kUnevenPieces = 8;
+
 /// Boxes narrower than this in t and s (hybrid, fast pieces) try the Krawczyk test
 /// (krawczyk.hpp) before they are clipped: at a transversal crossing the Jacobian varies by
 /// O(width) over the box, so the test usually succeeds and replaces the last few clips.
@@ -230,196 +241,237 @@ class Searcher {
     return test.coincide;
   }
 
+  /// What a step leaves: the box is finished (dropped, reported or split), or it goes round
+  /// again as the step changed it (pieces switched to compensated, a clip direction tried).
+  enum class Next { finished, again };
+
+  /// The clips a box has tried without shrinking enough since it last shrank.
+  struct Tried {
+    bool other_direction = false;  ///< the line along a point-like piece
+    bool other_curve = false;      ///< clipping the other curve's interval
+  };
+
+  /// Steps on one box until it is finished or the work budget runs out.
   void process(Box box) {
     f_ok_ = g_ok_ = false;
-    bool tried_alternative = false;
-    bool tried_other = false;
-    for (;;) {
-      const std::int64_t cost = step_cost(in_.f->degree, in_.g->degree, box.compensated);
-      if (out_.stats.work + cost > in_.max_work) {
-        out_.capped = true;
-        return;
-      }
-      ++out_.stats.iterations;
-      out_.stats.work += cost;
-      out_.stats.max_depth = std::max(out_.stats.max_depth, box.depth);
-      const bool td = t_done(box), sd = s_done(box);
-      if (!in_.overlaps.empty() && covered(box)) return;
-      make_pieces(box);
-      if (box.compensated) ++out_.stats.compensated_steps;
-      if (bounding_boxes_disjoint(f_piece_, g_piece_)) return;
-      if (td && sd) {
-        // A clip shrinks a box onto where the pieces may meet, but only the next test
-        // shows whether they do: test once more before reporting.
-        const Separation sep = separation(f_piece_, g_piece_);
-        if (sep.separated) return;
-        // When rounding decides, the compensated pieces have their say. So they do at an
-        // end of either curve, even when only one side's test was noisy: there a root of
-        // the curves' extensions a few ulps beyond the end stays within the fast pieces'
-        // rounding (about 1e-15 of the working scale) however narrow the box gets (F27: a
-        // curve ending 5e-15 of the scale beside the other, which crosses its line there,
-        // was reported in one order only). Inside, the fast test stands: retesting every
-        // box there cost Bézier clipping a quarter more work on the benchmark pairs.
-        const bool at_end =
-            box.t.lo == 0.0 || box.t.hi == 1.0 || box.s.lo == 0.0 || box.s.hi == 1.0;
-        if ((sep.noisy || at_end) && !box.compensated) {
-          box.compensated = true;
-          f_ok_ = g_ok_ = false;
-          continue;
-        }
-        emit(box, true);
-        return;
-      }
+    Tried tried;
+    while (charge_step(box) && step(box, tried) == Next::again) {
+    }
+  }
 
-      if (use_krawczyk_ && !box.compensated) {
-        const double w = std::max(box.t.width(), box.s.width());
-        if (w <= kKrawczykWidth && w <= box.krawczyk_failed_at / 2) {
-          const KrawczykResult k =
-              krawczyk(*in_.f, *in_.g, f_piece_, g_piece_, box.t, box.s, krawczyk_radius_);
-          if (k.verdict == KrawczykResult::Verdict::no_root) return;
-          if (k.verdict == KrawczykResult::Verdict::one_root) {
-            Box root = box;
-            root.t = k.t;
-            root.s = k.s;
-            emit(root, true);
-            return;
-          }
-          box.krawczyk_failed_at = w;
-        }
-      }
+  /// Charges one step on the box to the budget; false (and the search capped) when it would
+  /// exceed it.
+  bool charge_step(const Box& box) {
+    const std::int64_t cost = step_cost(in_.f->degree, in_.g->degree, box.compensated);
+    if (out_.stats.work + cost > in_.max_work) {
+      out_.capped = true;
+      return false;
+    }
+    ++out_.stats.iterations;
+    out_.stats.work += cost;
+    out_.stats.max_depth = std::max(out_.stats.max_depth, box.depth);
+    return true;
+  }
 
-      if (in_.method == IntersectMethod::subdivision) {
-        out_.stats.work += subdivision_test_cost(in_.f->degree, in_.g->degree);
-        const Separation sep = separation(f_piece_, g_piece_);
-        if (sep.separated) return;
-        const bool parallel = nearly_parallel(f_piece_, g_piece_);
-        if (parallel)
-          out_.stats.work += implicit_clip_cost(in_.f->degree) + implicit_clip_cost(in_.g->degree);
-        if (parallel && (!implicit_clip(f_piece_, g_piece_, fit2(false)).kept ||
-                         !implicit_clip(g_piece_, f_piece_, fit2(true)).kept)) {
-          return;
-        }
-        if (sep.noisy) {
-          if (!box.compensated) {
-            box.compensated = true;
-            f_ok_ = g_ok_ = false;
-            continue;
-          }
-          if (box.t.width() <= kFloorWidth && box.s.width() <= kFloorWidth) {
-            emit(box, false);  // precision floor
-            return;
-          }
-        }
-        const bool at_floor = box.compensated && !td && !sd && box.t.width() <= kFloorWidth &&
-                              box.s.width() <= kFloorWidth;
-        if (at_floor && coincides(box)) {
-          emit(box, false);
-          return;
-        }
-        split(box, !td, !sd);
-        return;
-      }
+  /// One step: drop the box when an overlap covers it or its pieces are apart, report it when
+  /// it is narrow enough, otherwise let the method shrink or split it.
+  Next step(Box& box, Tried& tried) {
+    const bool td = t_done(box), sd = s_done(box);
+    if (!in_.overlaps.empty() && covered(box)) return Next::finished;
+    make_pieces(box);
+    if (box.compensated) ++out_.stats.compensated_steps;
+    if (bounding_boxes_disjoint(f_piece_, g_piece_)) return Next::finished;
+    if (td && sd) return report(box);
+    if (use_krawczyk_ && !box.compensated && krawczyk_decides(box)) return Next::finished;
+    if (in_.method == IntersectMethod::subdivision) return separate_or_subdivide(box, td, sd);
+    return clip(box, tried, td, sd);
+  }
 
-      const bool clip_s = td ? true : (sd ? false : box.clip_s);
-      const Piece& x = clip_s ? g_piece_ : f_piece_;
-      const Piece& other = clip_s ? f_piece_ : g_piece_;
-      const PointLineDirection direction =
-          box.along ? PointLineDirection::along_other : PointLineDirection::across_other;
-      Clip clip = in_.method == IntersectMethod::hybrid
-                      ? hybrid_clip(x, other, clip_s ? *in_.op_g : *in_.op_f, direction)
-                      : bezier_clip(x, other, direction);
+  /// The compensated retry: when rounding decides a test on fast pieces, the box goes round
+  /// again on compensated ones. False when its pieces are compensated already.
+  bool retry_compensated(Box& box) {
+    if (box.compensated) return false;
+    box.compensated = true;
+    f_ok_ = g_ok_ = false;
+    return true;
+  }
+
+  /// Both intervals at most the floor width: below it, noise that even compensated pieces
+  /// cannot resolve is the precision floor, not an overlap along a stretch (kFloorWidth).
+  [[nodiscard]] static bool within_floor(const Box& b) noexcept {
+    return b.t.width() <= kFloorWidth && b.s.width() <= kFloorWidth;
+  }
+
+  /// The floor test: a compensated box within the floor width, not yet narrow in either
+  /// interval, on which the curves agree to within rounding (a high-order contact), is
+  /// reported unresolved instead of being split further.
+  bool coincides_at_floor(const Box& box, bool td, bool sd) {
+    return box.compensated && !td && !sd && within_floor(box) && coincides(box);
+  }
+
+  /// A box narrow in t and s: a clip shrinks a box onto where the pieces may meet, but only
+  /// the next test shows whether they do, so test once more before reporting.
+  Next report(Box& box) {
+    const Separation sep = separation(f_piece_, g_piece_);
+    if (sep.separated) return Next::finished;
+    // When rounding decides, the compensated pieces have their say. So they do at an end of
+    // either curve, even when only one side's test was noisy: there a root of the curves'
+    // extensions a few ulps beyond the end stays within the fast pieces' rounding (about
+    // 1e-15 of the working scale) however narrow the box gets (F27: a curve ending 5e-15 of
+    // the scale beside the other, which crosses its line there, was reported in one order
+    // only). Inside, the fast test stands: retesting every box there cost Bézier clipping a
+    // quarter more work on the benchmark pairs.
+    const bool at_end = box.t.lo == 0.0 || box.t.hi == 1.0 || box.s.lo == 0.0 || box.s.hi == 1.0;
+    if ((sep.noisy || at_end) && retry_compensated(box)) return Next::again;
+    emit(box, true);
+    return Next::finished;
+  }
+
+  /// The Krawczyk test on a narrow enough box: true when it proved the box empty or holding
+  /// exactly one crossing (then reported); false when the box goes on to be clipped.
+  bool krawczyk_decides(Box& box) {
+    const double w = std::max(box.t.width(), box.s.width());
+    if (!(w <= kKrawczykWidth && w <= box.krawczyk_failed_at / 2)) return false;
+    const KrawczykResult k =
+        krawczyk(*in_.f, *in_.g, f_piece_, g_piece_, box.t, box.s, krawczyk_radius_);
+    if (k.verdict == KrawczykResult::Verdict::no_root) return true;
+    if (k.verdict == KrawczykResult::Verdict::one_root) {
+      Box root = box;
+      root.t = k.t;
+      root.s = k.s;
+      emit(root, true);
+      return true;
+    }
+    box.krawczyk_failed_at = w;
+    return false;
+  }
+
+  /// The subdivision method's step: drop the box when its pieces are separated (bounding
+  /// boxes, fat lines, and the implicit clip when they run nearly parallel), else halve it.
+  Next separate_or_subdivide(Box& box, bool td, bool sd) {
+    out_.stats.work += subdivision_test_cost(in_.f->degree, in_.g->degree);
+    const Separation sep = separation(f_piece_, g_piece_);
+    if (sep.separated) return Next::finished;
+    if (nearly_parallel(f_piece_, g_piece_)) {
+      out_.stats.work += implicit_clip_cost(in_.f->degree) + implicit_clip_cost(in_.g->degree);
+      if (!implicit_clip(f_piece_, g_piece_, fit2(false)).kept ||
+          !implicit_clip(g_piece_, f_piece_, fit2(true)).kept)
+        return Next::finished;
+    }
+    if (sep.noisy) {
+      if (retry_compensated(box)) return Next::again;
+      if (within_floor(box)) {
+        emit(box, false);  // precision floor
+        return Next::finished;
+      }
+    }
+    if (coincides_at_floor(box, td, sd)) {
+      emit(box, false);
+      return Next::finished;
+    }
+    return subdivide(box, td, sd);
+  }
+
+  /// The clipping methods' step: clip one interval against the other piece's fat line (with
+  /// the implicit clip when the pieces run nearly parallel). A clip that removes enough keeps
+  /// the box going; otherwise the box tries the other direction and the other curve, then the
+  /// floor test, then is split.
+  Next clip(Box& box, Tried& tried, bool td, bool sd) {
+    const bool clip_s = td ? true : (sd ? false : box.clip_s);
+    const Piece& x = clip_s ? g_piece_ : f_piece_;
+    const Piece& other = clip_s ? f_piece_ : g_piece_;
+    const PointLineDirection direction =
+        box.along ? PointLineDirection::along_other : PointLineDirection::across_other;
+    Clip clip = in_.method == IntersectMethod::hybrid
+                    ? hybrid_clip(x, other, clip_s ? *in_.op_g : *in_.op_f, direction)
+                    : bezier_clip(x, other, direction);
+    ++out_.stats.clipping_steps;
+    if (!clip.kept) return Next::finished;
+    const double threshold =
+        in_.method == IntersectMethod::hybrid ? kHybridKeptFraction : kBezierClipKeptFraction;
+    if (clip.kept->width() > threshold &&
+        (in_.method != IntersectMethod::hybrid ||
+         std::max(box.t.width(), box.s.width()) <= kImplicitClipWidth) &&
+        nearly_parallel(x, other)) {
+      const Clip fine = implicit_clip(x, other, fit2(clip_s));
       ++out_.stats.clipping_steps;
-      if (!clip.kept) return;
-      const double threshold = in_.method == IntersectMethod::hybrid ? 0.5 : 0.8;
-      if (clip.kept->width() > threshold &&
-          (in_.method != IntersectMethod::hybrid ||
-           std::max(box.t.width(), box.s.width()) <= kImplicitClipWidth) &&
-          nearly_parallel(x, other)) {
-        const Clip fine = implicit_clip(x, other, fit2(clip_s));
-        ++out_.stats.clipping_steps;
-        out_.stats.work += implicit_clip_cost(x.degree());
-        clip.kept = intersect_kept(clip.kept, fine.kept);
-        if (!clip.kept) return;
-        // The finer test decides whether rounding is what keeps the pieces together.
-        if (fine.informative) clip.noisy = fine.noisy;
-      }
-      if (clip.noisy && !box.compensated) {
-        box.compensated = true;
-        f_ok_ = g_ok_ = false;
-        continue;
-      }
-      ParamInterval& domain = clip_s ? box.s : box.t;
-      const ParamInterval next = map_to_domain(domain, *clip.kept);
-      // Kept more than the threshold's fraction of the domain? (A product, not the quotient:
-      // the division's latency held up this hard-to-predict branch.)
-      if (next.width() > threshold * domain.width()) {
-        // Keep what the clip removed (it is sound), then decide how to go on.
-        if (next.width() < domain.width()) {
-          domain = next;
-          if (box.compensated)
-            f_ok_ = g_ok_ = false;
-          else if (clip_s)
-            g_ok_ = false;
-          else
-            f_ok_ = false;
-        }
-        if (!tried_alternative && is_point_like(other)) {
-          // A point-like piece defines no line: try the other direction through it.
-          tried_alternative = true;
-          box.along = !box.along;
-          continue;
-        }
-        const bool at_floor = box.compensated && !td && !sd && box.t.width() <= kFloorWidth &&
-                              box.s.width() <= kFloorWidth;
-        if (at_floor && coincides(box)) {
-          emit(box, false);  // the curves agree to within rounding here: a high-order contact
-          return;
-        }
-        if (!tried_other && !td && !sd) {
-          // The other curve's clip may still succeed: try it before halving.
-          tried_other = true;
-          box.clip_s = !clip_s;
-          continue;
-        }
-        if (clip.noisy) {
-          if (!box.compensated) {
-            box.compensated = true;
-            f_ok_ = g_ok_ = false;
-            continue;
-          }
-          // Rounding decides, even in compensated pieces. When one piece is much longer
-          // than the other, halving it still helps (its fat line was the blunt one); a wide
-          // box is halved too (the pieces may coincide along a stretch: an improper
-          // overlap); otherwise this is the precision floor.
-          const double ef = extent(f_piece_.x, f_piece_.y), eg = extent(g_piece_.x, g_piece_.y);
-          if (!td && !sd && (ef > 8 * eg || eg > 8 * ef)) {
-            split(box, ef > eg, eg >= ef);
-            return;
-          }
-          if (box.t.width() <= kFloorWidth && box.s.width() <= kFloorWidth) {
-            emit(box, false);
-            return;
-          }
-        }
-        if (in_.method == IntersectMethod::hybrid) {
-          split(box, !td, !sd);
-        } else {
-          const bool split_t = !td && (sd || box.t.width() >= box.s.width());
-          split(box, split_t, !split_t);
-        }
-        return;
-      }
-      tried_alternative = tried_other = false;
-      domain = next;
-      if (box.compensated)
-        f_ok_ = g_ok_ = false;
-      else if (clip_s)
-        g_ok_ = false;
-      else
-        f_ok_ = false;
+      out_.stats.work += implicit_clip_cost(x.degree());
+      clip.kept = intersect_kept(clip.kept, fine.kept);
+      if (!clip.kept) return Next::finished;
+      // The finer test decides whether rounding is what keeps the pieces together.
+      if (fine.informative) clip.noisy = fine.noisy;
+    }
+    if (clip.noisy && retry_compensated(box)) return Next::again;
+    const ParamInterval domain = clip_s ? box.s : box.t;
+    const ParamInterval next = map_to_domain(domain, *clip.kept);
+    // Kept more than the threshold's fraction of the domain? (A product, not the quotient: the
+    // division's latency would hold up this hard-to-predict branch.)
+    const bool kept_too_much = next.width() > threshold * domain.width();
+    if (!kept_too_much) {
+      tried = {};
+      shrink(box, clip_s, next);
       box.clip_s = !clip_s;
       ++box.depth;
+      return Next::again;
     }
+    // Keep what the clip removed (it is sound), then decide how to go on.
+    if (next.width() < domain.width()) shrink(box, clip_s, next);
+    if (!tried.other_direction && is_point_like(other)) {
+      // A point-like piece defines no line: try the other direction through it.
+      tried.other_direction = true;
+      box.along = !box.along;
+      return Next::again;
+    }
+    if (coincides_at_floor(box, td, sd)) {
+      emit(box, false);  // the curves agree to within rounding here: a high-order contact
+      return Next::finished;
+    }
+    if (!tried.other_curve && !td && !sd) {
+      // The other curve's clip may still succeed: try it before halving.
+      tried.other_curve = true;
+      box.clip_s = !clip_s;
+      return Next::again;
+    }
+    if (clip.noisy) {
+      // Rounding decides, even in compensated pieces. When one piece is much longer than the
+      // other, halving it still helps (its fat line was the blunt one); a wide box is halved
+      // too (the pieces may coincide along a stretch: an improper overlap); otherwise this is
+      // the precision floor.
+      const double ef = extent(f_piece_.x, f_piece_.y), eg = extent(g_piece_.x, g_piece_.y);
+      if (!td && !sd && (ef > kUnevenPieces * eg || eg > kUnevenPieces * ef)) {
+        split(box, ef > eg, eg >= ef);
+        return Next::finished;
+      }
+      if (within_floor(box)) {
+        emit(box, false);
+        return Next::finished;
+      }
+    }
+    return subdivide(box, td, sd);
+  }
+
+  /// Narrows the clipped interval to next; the pieces that changed are rebuilt on the next
+  /// step (both when compensated: they share a frame centred on the box).
+  void shrink(Box& box, bool clip_s, ParamInterval next) {
+    (clip_s ? box.s : box.t) = next;
+    if (box.compensated)
+      f_ok_ = g_ok_ = false;
+    else if (clip_s)
+      g_ok_ = false;
+    else
+      f_ok_ = false;
+  }
+
+  /// Splits a box its method could not shrink: both intervals not yet narrow (hybrid,
+  /// subdivision), or the wider one (Bézier clipping, Sederberg & Nishita 1990, §4).
+  Next subdivide(const Box& box, bool td, bool sd) {
+    if (in_.method != IntersectMethod::bezier_clipping) {
+      split(box, !td, !sd);
+    } else {
+      const bool split_t = !td && (sd || box.t.width() >= box.s.width());
+      split(box, split_t, !split_t);
+    }
+    return Next::finished;
   }
 
   const SearchInput& in_;
