@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Container test: builds docker/Dockerfile with ../shared/tools/docker-check (podman, no
-# Docker daemon needed), waits until /healthz answers, then checks the running container:
+# Container test: builds docker/Dockerfile with docker-check, a helper that is not part of
+# this repository (it drives podman, so no Docker daemon is needed, and builds the Debian
+# base image locally; see the lookup below), waits until /healthz answers, then checks the
+# running container:
 #   - GET /healthz is 200 {"status":"ok"} and /readyz is 200;
 #   - the image declares a non-root USER, STOPSIGNAL SIGTERM, EXPOSE 8080 and a HEALTHCHECK;
 #   - the process runs as a non-root uid and the image holds no compiler;

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 6.4(b): three bezier-service instances behind nginx (Debian package, started here
+# Three bezier-service instances behind nginx (Debian package, started here
 # with its own config on loopback); one instance is killed in the middle of a wrk run.
 # nginx retries the next upstream on error or timeout, POSTs included (every route is a
 # pure computation, so a retry is safe): the run must end with zero failed requests.

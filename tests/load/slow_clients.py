@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Issue 6.4(c) and (d): idle keep-alive connections, slow clients and oversized bodies
-must not hold up other clients.
+"""Idle keep-alive connections, slow clients and oversized bodies must not hold up other
+clients.
 
 (c) open ten times the worker count of idle keep-alive connections, then GET /healthz
     must answer within 100 ms;
