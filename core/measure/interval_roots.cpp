@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cassert>
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include "core/bernstein/bernstein1d.hpp"
 
@@ -26,10 +28,21 @@ struct ValueAndSlope {
 };
 
 /// p(t) and p'(t) from the last level of de Casteljau's triangle (p = lerp of its two
-/// entries, p' = n times their difference).
-ValueAndSlope value_and_slope(std::span<const double> c, double t) {
+/// entries, p' = n times their difference), for E = n + 1 coefficients fixed at compile
+/// time: the triangle stays in registers (the same lerps in the same order as
+/// bernstein::evaluate, so the same value).
+template <std::size_t E>
+ValueAndSlope value_and_slope_of(const double* c, double t) {
+  if constexpr (E == 1) {
+    return {c[0], 0.0};
+  } else {
+    const auto last = bernstein::last_casteljau_level(std::span<const double, E>(c, E), t);
+    return {bernstein::lerp(last[0], last[1], t), static_cast<double>(E - 1) * (last[1] - last[0])};
+  }
+}
+
+ValueAndSlope value_and_slope_any(std::span<const double> c, double t) {
   const std::size_t n = c.size() - 1;
-  if (n == 0) return {c[0], 0.0};
   SmallArray<double> row(c);
   for (std::size_t level = n; level > 1; --level) {
     for (std::size_t k = 0; k < level; ++k) row[k] = bernstein::lerp(row[k], row[k + 1], t);
@@ -39,13 +52,20 @@ ValueAndSlope value_and_slope(std::span<const double> c, double t) {
 
 /// The root of p in (lo, hi), where p(lo) and p(hi) have opposite signs and p has exactly
 /// one root: Newton's method kept inside the bracket, which shrinks with the sign of p at
-/// every iterate (a step out of it, or a zero slope, is a bisection), until the step or the
-/// bracket is one ulp. The sign test decides as bisection would; Newton only chooses where
-/// to test, so a simple root is reached in a few steps instead of 55.
-double refine(std::span<const double> c, double lo, double hi, double p_lo) {
-  double t = lo + (hi - lo) / 2;
+/// every iterate (a step out of it, or a zero slope, is a bisection). It stops at the first
+/// iterate where |p| is within e, the rounding bound of its evaluation, after one more
+/// Newton step if that stays in the bracket: closer than that the computed signs are
+/// rounding, and the step from there is already within about e / |p'| of the root, which
+/// is as closely as p's rounding determines it (a step that rounds onto the bracket's end
+/// just set would otherwise turn the rest into bisection, about 15 steps per root). It
+/// stops too when the step or the bracket is one ulp. The first test is at the chord's zero (regula falsi from the end values), which
+/// the piece's single sign change puts near the root.
+template <class ValueAndSlopeAt>
+double refine(ValueAndSlopeAt p_at, double e, double lo, double hi, double p_lo, double p_hi) {
+  double t = lo + (hi - lo) * (p_lo / (p_lo - p_hi));
+  if (!(lo < t && t < hi)) t = lo + (hi - lo) / 2;
   for (int iteration = 0; iteration < 200; ++iteration) {
-    const ValueAndSlope p = value_and_slope(c, t);
+    const ValueAndSlope p = p_at(t);
     if (p.value == 0.0) return t;
     if ((p.value < 0) == (p_lo < 0)) {
       lo = t;
@@ -55,23 +75,72 @@ double refine(std::span<const double> c, double lo, double hi, double p_lo) {
     const double middle = lo + (hi - lo) / 2;
     if (!(lo < middle && middle < hi)) return t;
     double next = t - p.value / p.slope;
-    if (!(lo < next && next < hi)) next = middle;
+    const bool inside = lo < next && next < hi;
+    if (std::fabs(p.value) <= e) return inside ? next : t;
+    if (!inside) next = middle;
     if (std::fabs(next - t) <= kU * std::fabs(t)) return next;
     t = next;
   }
   return t;
 }
 
+/// Evaluation and refinement for E = n + 1 coefficients fixed at compile time, so that
+/// each Newton step's evaluation is inlined into the loop.
+template <std::size_t E>
+struct Unrolled {
+  static ValueAndSlope at(const double* c, double t) { return value_and_slope_of<E>(c, t); }
+  static double root(const double* c, double e, double lo, double hi, double p_lo, double p_hi) {
+    return refine([c](double t) { return value_and_slope_of<E>(c, t); }, e, lo, hi, p_lo, p_hi);
+  }
+};
+
+struct UnrolledFunctions {
+  ValueAndSlope (*at)(const double*, double) = nullptr;
+  double (*root)(const double*, double, double, double, double, double) = nullptr;
+};
+
+/// Up to this many coefficients the evaluation is unrolled for the size.
+constexpr std::size_t kUnrolledSizes = 24;
+
+template <std::size_t... I>
+constexpr std::array<UnrolledFunctions, sizeof...(I)> unrolled(std::index_sequence<I...>) {
+  return {UnrolledFunctions{&Unrolled<I + 1>::at, &Unrolled<I + 1>::root}...};
+}
+
+/// p and p' at t, and the root in a bracket, for one polynomial: chooses the code for its
+/// size once.
+class Evaluator {
+ public:
+  explicit Evaluator(std::span<const double> c) : c_(c) {
+    static constexpr auto kTable = unrolled(std::make_index_sequence<kUnrolledSizes>{});
+    if (c.size() <= kUnrolledSizes) unrolled_ = kTable[c.size() - 1];
+  }
+  [[nodiscard]] double value(double t) const {
+    return unrolled_.at != nullptr ? unrolled_.at(c_.data(), t).value : value_and_slope_any(c_, t).value;
+  }
+  /// The root in (lo, hi) (see refine), e the rounding bound of p's evaluation.
+  [[nodiscard]] double root(double e, double lo, double hi, double p_lo, double p_hi) const {
+    if (unrolled_.root != nullptr) return unrolled_.root(c_.data(), e, lo, hi, p_lo, p_hi);
+    return refine([this](double t) { return value_and_slope_any(c_, t); }, e, lo, hi, p_lo, p_hi);
+  }
+
+ private:
+  std::span<const double> c_;
+  UnrolledFunctions unrolled_;
+};
+
 }  // namespace
 
 IntervalRoots interval_roots(std::span<const double> c, double a, double b, IntervalEnds ends) {
   assert(!c.empty() && 0.0 <= a && a <= b && b <= 1.0);
   const std::size_t n = c.size() - 1;
-  // The rounding bound of a coefficient of a piece (bernstein::portion_into: 3.01 n u max|c|).
+  // The rounding bound of a coefficient of a piece (bernstein::portion_into: 3.01 n u max|c|),
+  // and of p at a point (de Casteljau: the same n steps).
   const double e = 3.02 * static_cast<double>(std::max<std::size_t>(n, 1)) * kU * bernstein::max_abs(c);
   IntervalRoots out;
   std::vector<double> found;
-  const double p_a = bernstein::evaluate(c, a), p_b = bernstein::evaluate(c, b);
+  const Evaluator p_at(c);
+  const double p_a = p_at.value(a), p_b = p_at.value(b);
   if (p_a == 0.0) found.push_back(a);
   if (p_b == 0.0) found.push_back(b);
   std::vector<Job> stack;
@@ -103,22 +172,22 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
       continue;
     }
     if (changes == 0 && !any_small) continue;
-    const double p_lo = bernstein::evaluate(c, job.lo), p_hi = bernstein::evaluate(c, job.hi);
+    const double p_lo = p_at.value(job.lo), p_hi = p_at.value(job.hi);
     if (changes == 1 && !any_small && p_lo != 0.0 && p_hi != 0.0 && (p_lo < 0) != (p_hi < 0)) {
-      found.push_back(refine(c, job.lo, job.hi, p_lo));
+      found.push_back(p_at.root(e, job.lo, job.hi, p_lo, p_hi));
       continue;
     }
     if (job.depth >= kMaxDepth || !(job.lo < middle && middle < job.hi)) {
       // A root on the piece, possibly at an end where p rounds to a tiny nonzero value
       // (then neither piece of the split shows a clear sign change, but p's signs differ).
       const bool signs_differ = p_lo != 0.0 && p_hi != 0.0 && (p_lo < 0) != (p_hi < 0);
-      if (changes > 0 || signs_differ || std::fabs(bernstein::evaluate(c, middle)) <= e) {
+      if (changes > 0 || signs_differ || std::fabs(p_at.value(middle)) <= e) {
         out.isolated = false;
         found.push_back(middle);
       }
       continue;
     }
-    const bool zero_middle = bernstein::evaluate(c, middle) == 0.0;
+    const bool zero_middle = p_at.value(middle) == 0.0;
     if (zero_middle) found.push_back(middle);
     stack.push_back({middle, job.hi, job.depth + 1, zero_middle, job.zero_hi});
     stack.push_back({job.lo, middle, job.depth + 1, job.zero_lo, zero_middle});
@@ -130,9 +199,9 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
     if (!out.roots.empty()) {
       const double previous = out.roots.back();
       if (r == previous) continue;
-      if (std::fabs(bernstein::evaluate(c, previous + (r - previous) / 2)) <= e) {
+      if (std::fabs(p_at.value(previous + (r - previous) / 2)) <= e) {
         // One flat stretch of p (a multiple root, a cluster): keep its best representative.
-        if (std::fabs(bernstein::evaluate(c, r)) < std::fabs(bernstein::evaluate(c, previous)))
+        if (std::fabs(p_at.value(r)) < std::fabs(p_at.value(previous)))
           out.roots.back() = r;
         out.isolated = false;
         continue;
