@@ -26,10 +26,9 @@ double axis(const Point3& p, std::size_t k) noexcept {
 }
 
 template <class P>
-std::vector<double> coordinate(std::span<const P> points, std::size_t k) {
-  std::vector<double> c;
-  c.reserve(points.size());
-  for (const P& p : points) c.push_back(axis(p, k));
+Coeffs coordinate(std::span<const P> points, std::size_t k) {
+  Coeffs c(points.size(), Coeffs::Uninitialized{});
+  for (std::size_t i = 0; i < points.size(); ++i) c[i] = axis(points[i], k);
   return c;
 }
 
@@ -38,7 +37,9 @@ Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
   assert(0.0 <= a && a <= b && b <= 1.0);
   constexpr std::size_t kAxes = Bounds<P>::kAxes;
   Bounds<P> out;
-  const P start = evaluate(curve, a), end = evaluate(curve, b);
+  // At 0 and 1 the curve is its end control point (evaluate would return it too).
+  const P start = a == 0.0 ? curve.points().front() : evaluate(curve, a);
+  const P end = b == 1.0 ? curve.points().back() : evaluate(curve, b);
   const BasicCurve<P> hodograph = derivative(curve);
   const double n = curve.degree();
   for (std::size_t k = 0; k < kAxes; ++k) {
@@ -56,7 +57,7 @@ Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
     include(a, axis(start, k));
     include(b, axis(end, k));
     if (a < b) {
-      const std::vector<double> slope = coordinate(hodograph.points(), k);
+      const Coeffs slope = coordinate(hodograph.points(), k);
       out.critical[k] = interval_roots(slope, a, b, IntervalEnds::open).roots;
       for (const double t : out.critical[k]) include(t, axis(evaluate(curve, t), k));
     }

@@ -1,8 +1,8 @@
 #include "core/measure/interval_roots.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <utility>
 
@@ -138,17 +138,23 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
   // and of p at a point (de Casteljau: the same n steps).
   const double e = 3.02 * static_cast<double>(std::max<std::size_t>(n, 1)) * kU * bernstein::max_abs(c);
   IntervalRoots out;
-  std::vector<double> found;
+  // Roots and root-like points as found, sorted and merged in place below.
+  std::vector<double>& found = out.roots;
   const Evaluator p_at(c);
   const double p_a = p_at.value(a), p_b = p_at.value(b);
   if (p_a == 0.0) found.push_back(a);
   if (p_b == 0.0) found.push_back(b);
-  std::vector<Job> stack;
-  if (a < b) stack.push_back({a, b, 0, p_a == 0.0, p_b == 0.0});
-  while (!stack.empty()) {
-    const Job job = stack.back();
-    stack.pop_back();
-    const Coeffs q = bernstein::portion<double>(c, job.lo, job.hi);
+  // Depth first: at most one pending sibling per depth below the piece split last.
+  std::array<Job, kMaxDepth + 2> stack;
+  std::size_t pending = 0;
+  if (a < b) stack[pending++] = {a, b, 0, p_a == 0.0, p_b == 0.0};
+  Coeffs piece(n + 1, Coeffs::Uninitialized{});
+  while (pending > 0) {
+    const Job job = stack[--pending];
+    // On [0, 1] the piece is c itself (de Casteljau steps at 0 and 1 are exact).
+    const bool whole = job.lo == 0.0 && job.hi == 1.0;
+    if (!whole) bernstein::portion_into(c, job.lo, job.hi, piece.data());
+    const std::span<const double> q = whole ? c : std::span<const double>(piece);
     // Descartes' rule on the coefficients that are clearly nonzero; an end that is an exact
     // zero is left out (p = (t - end) r(t), and r's coefficients have the others' signs).
     const std::size_t first = job.zero_lo ? 1 : 0, last_index = job.zero_hi ? n - 1 : n;
@@ -189,26 +195,29 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
     }
     const bool zero_middle = p_at.value(middle) == 0.0;
     if (zero_middle) found.push_back(middle);
-    stack.push_back({middle, job.hi, job.depth + 1, zero_middle, job.zero_hi});
-    stack.push_back({job.lo, middle, job.depth + 1, job.zero_lo, zero_middle});
+    assert(pending + 2 <= stack.size());
+    stack[pending++] = {middle, job.hi, job.depth + 1, zero_middle, job.zero_hi};
+    stack[pending++] = {job.lo, middle, job.depth + 1, job.zero_lo, zero_middle};
   }
   std::sort(found.begin(), found.end());
-  for (const double r : found) {
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    const double r = found[i];
     const bool inside = ends == IntervalEnds::closed ? (a <= r && r <= b) : (a < r && r < b);
     if (!inside) continue;
-    if (!out.roots.empty()) {
-      const double previous = out.roots.back();
+    if (kept > 0) {
+      const double previous = found[kept - 1];
       if (r == previous) continue;
       if (std::fabs(p_at.value(previous + (r - previous) / 2)) <= e) {
         // One flat stretch of p (a multiple root, a cluster): keep its best representative.
-        if (std::fabs(p_at.value(r)) < std::fabs(p_at.value(previous)))
-          out.roots.back() = r;
+        if (std::fabs(p_at.value(r)) < std::fabs(p_at.value(previous))) found[kept - 1] = r;
         out.isolated = false;
         continue;
       }
     }
-    out.roots.push_back(r);
+    found[kept++] = r;
   }
+  found.resize(kept);
   return out;
 }
 
