@@ -2,11 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
 
 #include "core/cubic/canonical_form.hpp"
+#include "core/cubic/double_point.hpp"
 #include "core/cubic/predicates.hpp"
 #include "core/curve/derivative.hpp"
 #include "core/curve/evaluate.hpp"
@@ -396,6 +398,72 @@ TEST(Classify, InvariantUnderExactAffineMapsAndScaling) {
       ASSERT_EQ(classify_cubic(s).type, test::exact_type(s)) << i << " scaled by " << f;
     }
   }
+}
+
+// Coordinates at the ends of the double range: the type is the exact oracle's, the double
+// point finite and ordered.
+// a loop whose double point sits within two ulps of t = 1
+// on a cubic with coordinates 2^250 apart. The exact signs say 0 < t1 < t2 < 1; t1 rounded to
+// 1 and t2 was clamped below 1, so the pair came out reversed (t1 = 1 > t2). The type is the
+// exact rational oracle's; the pair must keep its order and stay strictly inside (0, 1).
+TEST(ClassifyExtremes, LoopNextToAnEndKeepsItsParametersOrdered) {
+  const std::array<Point2, 4> p{
+      Point2{-0x1.f2fc8ffffff65p+260, -0x1.62fc8fffffff1p+261}, Point2{0x1.62fc8fffffff1p+261, 0.0},
+      Point2{-0x1.1548p+11, -0x1.1548p+10}, Point2{0x1.1548p+10, -0x1.1548p+10}};
+  const CubicClassification c = classify(p);
+  ASSERT_TRUE(c.exact);
+  EXPECT_EQ(c.type, bezier::test::exact_type(p));
+  ASSERT_EQ(c.type, CubicType::loop);
+  ASSERT_TRUE(c.self_intersection.has_value());
+  const CubicDoublePoint& d = *c.self_intersection;
+  EXPECT_TRUE(d.on_segment);
+  EXPECT_LT(0.0, d.t1);
+  EXPECT_LT(d.t1, d.t2);
+  EXPECT_LT(d.t2, 1.0);
+}
+
+// finite coordinates more than the largest
+// double apart. The differences P_i - P_0 overflow to infinity and the filter's finiteness
+// assertion, written on their sum (inf - inf = NaN), aborted; release builds took the exact
+// path, which rescales. The type must be the exact oracle's (the assertion itself is checked
+// by the fuzz build only: this build has none).
+TEST(ClassifyExtremes, CoordinatesFartherApartThanTheLargestDoubleAreClassified) {
+  const std::array<std::array<Point2, 4>, 4> cubics{{
+      {Point2{1.5e308, -1.5e308}, Point2{-1.5e308, 1.5e308}, Point2{-1e308, -1e308},
+       Point2{1e308, 1e308}},  // differences -inf and +inf: their sum was NaN
+      {Point2{-1.5e308, 0.0}, Point2{1.5e308, 1e300}, Point2{0.0, 1e308}, Point2{1e300, -1e308}},
+      {Point2{-1.7e308, -1.7e308}, Point2{1.7e308, 1.7e308}, Point2{1.7e308, -1.7e308},
+       Point2{-1.7e308, 1.7e308}},
+      {Point2{1e308, 0.0}, Point2{-1e308, 1e308}, Point2{-1e308, -1e308}, Point2{1e308, 1e299}},
+  }};
+  for (const auto& p : cubics) {
+    const CubicClassification c = classify(p);
+    EXPECT_TRUE(c.exact);
+    EXPECT_EQ(c.type, bezier::test::exact_type(p));
+  }
+}
+
+// a loop on a cubic with coordinates near the largest double.
+// The double point, the mean of B(t1) and B(t2), was computed as half their sum, which
+// overflowed to -inf. Both points lie in the control points' convex hull, so their mean does:
+// it must be finite and inside the control points' bounding box.
+TEST(ClassifyExtremes, DoublePointNearTheLargestDoubleIsFinite) {
+  const std::array<Point2, 4> p{Point2{0.0, -0x1.7000001f00108p+1023},
+                                Point2{-0x1.7000001f0efefp+1023, 0x1.7000001f0efefp+1023},
+                                Point2{-0x1.7000001f0efefp+1023, -0x1.fffffffcp-50},
+                                Point2{0.0, 0.0}};
+  const CubicClassification c = classify(p);
+  ASSERT_TRUE(c.self_intersection.has_value());
+  const Point2 d = c.self_intersection->point;
+  double x_lo = p[0].x, x_hi = p[0].x, y_lo = p[0].y, y_hi = p[0].y;
+  for (const Point2& q : p) {
+    x_lo = std::min(x_lo, q.x);
+    x_hi = std::max(x_hi, q.x);
+    y_lo = std::min(y_lo, q.y);
+    y_hi = std::max(y_hi, q.y);
+  }
+  EXPECT_TRUE(std::isfinite(d.x) && std::isfinite(d.y));
+  EXPECT_TRUE(x_lo <= d.x && d.x <= x_hi && y_lo <= d.y && d.y <= y_hi);
 }
 
 }  // namespace

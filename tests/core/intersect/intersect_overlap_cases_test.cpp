@@ -345,7 +345,7 @@ TEST(IntersectHardCases, ExtremeMagnitudes) {
 // --- Budget and tolerance ----------------------------------------------------------------
 
 TEST(IntersectHardCases, NearRetracingHitsTheWorkCapNotAHang) {
-  // g(s) = f(4 s (1 - s)) (found as two overlaps: arc_overlap_test.cpp) with its middle
+  // g(s) = f(4 s (1 - s)) (found as two overlaps: common_arc_test.cpp) with its middle
   // control point moved by 2^-34: no longer an overlap, but within 2^-35 of f all along,
   // which takes the search about a million units of work: under a small budget it must
   // stop with the cap, not run on.

@@ -18,10 +18,12 @@
 #include "core/intersect/intersect.hpp"
 #include "tests/support/exact.hpp"
 #include "tests/support/exact_bezier.hpp"
+#include "tests/support/intersection_checks.hpp"
 
 namespace bezier::core {
 namespace {
 
+using test::expect_no_common_point;
 using test::Rational;
 using test::RPoint2;
 using Poly = test::BernsteinPoly;
@@ -229,6 +231,33 @@ TEST(ArcOverlap, TheArcsOwnCrossingIsStillFound) {
     EXPECT_NEAR(r.intersections[0].s, std::sqrt(u2), 1e-12);
     EXPECT_NEAR(r.intersections[1].s, std::sqrt(u1), 1e-12);
   }
+}
+
+TEST(CommonArc, ACurveBesideALineSegmentDoesNotOverlapIt) {
+  // f(t) = (2 c t (1 - t), 32768 t^2) with c = 0x1.90005010a01p-31 leaves the y axis for
+  // every t in (0, 1); g, a quartic on the y axis (x = 0), has y(s) = a (1 - s)^4 + b s^4
+  // with a = 0x1.6cp-23 and b = 0x1.858585858p-2, so 0 < y(s) <= b. A common point needs x = 0
+  // on f: t = 0 or 1, the points (0, 0) and (0, 32768), and neither is on g. So there is no
+  // intersection and no overlap, in either order. (intersect_fuzzer: g, read as a quadratic
+  // through a quadratic to within the frame's tolerance, gave an overlap in one order, its
+  // points all within 5e-12 of f but f's piece starting at (0, 0), 8e-8 below g.)
+  const Curve f({{0.0, 0.0}, {0x1.90005010a01p-31, 0.0}, {0.0, 0x1p+15}});
+  const Curve g({{0.0, 0x1.6cp-23}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0x1.858585858p-2}});
+  expect_no_common_point(f, g);
+}
+
+TEST(CommonArc, AnOverlapEndsWhereBothCurvesAre) {
+  // f = (0, 0), (c, h), (X, 0) with c = 0x1.9p-31, h = 0x1.018p-12, X = 0x1.fp+29 has
+  // y(t) = 2 h t (1 - t) > 0 inside (0, 1); g, a quartic on the x axis, has x(s) =
+  // A (1 - s)^4 + s^4 with A = 0x1.2p+27, so 0 < x(s) <= A < X. A common point needs y = 0
+  // on f, t = 0 or 1, and f(0) = (0, 0) has x below g's, f(1) = (X, 0) beyond them: none.
+  // f lies within 1.2e-4 of g's line along its 1.5e8 (8e-13 of g's length), and the
+  // common-arc search reported an overlap whose end paired f's start (0, 0) with g's point
+  // nearest to it, 0.99 away. Every overlap's ends must be points of both curves;
+  // here there are none.
+  const Curve f({{0.0, 0.0}, {0x1.9p-31, 0x1.018p-12}, {0x1.fp+29, 0.0}});
+  const Curve g({{0x1.2p+27, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}, {1.0, 0.0}});
+  expect_no_common_point(f, g);
 }
 
 }  // namespace
