@@ -29,9 +29,11 @@ constexpr std::array kRoutes = {
     Route{"/nearest", &nearest_route},
 };
 
-constexpr std::array<std::string_view, kRoutes.size()> kPaths = [] {
-  std::array<std::string_view, kRoutes.size()> paths{};
+// The compute routes, then /batch.
+constexpr std::array<std::string_view, kRoutes.size() + 1> kPaths = [] {
+  std::array<std::string_view, kRoutes.size() + 1> paths{};
   for (std::size_t i = 0; i < kRoutes.size(); ++i) paths[i] = kRoutes[i].path;
+  paths[kRoutes.size()] = kBatchPath;
   return paths;
 }();
 
@@ -39,14 +41,29 @@ constexpr std::array<std::string_view, kRoutes.size()> kPaths = [] {
 
 std::span<const std::string_view> post_routes() noexcept { return kPaths; }
 
+std::span<const std::string_view> batch_item_routes() noexcept {
+  return std::span<const std::string_view>(kPaths).first(kRoutes.size());
+}
+
 bool is_post_route(std::string_view path) noexcept {
-  for (const Route& r : kRoutes) {
-    if (r.path == path) return true;
+  for (const std::string_view p : kPaths) {
+    if (p == path) return true;
   }
   return false;
 }
 
-Reply handle(std::string_view path, std::string_view body, const Limits& limits) {
+Reply compute_route_answer(std::string_view path, const nlohmann::json& body, const Limits& limits) {
+  if (!body.is_object()) {
+    return problem_reply(ProblemKind::malformed_json, "body must be a JSON object");
+  }
+  for (const Route& r : kRoutes) {
+    if (r.path == path) return r.function(body, limits);
+  }
+  return problem_reply(ProblemKind::not_found, "no route " + std::string(path));
+}
+
+Reply handle(std::string_view path, std::string_view body, const Limits& limits,
+             const BatchItemObserver& observer) {
   const ParsedJson parsed = parse_json(body);
   // Nested too deeply to parse: a body that is not an object is a 400 like any other; an
   // object is a request this service will not take.
@@ -60,13 +77,8 @@ Reply handle(std::string_view path, std::string_view body, const Limits& limits)
                                                           parsed.error);
   }
   const nlohmann::json& request = parsed.value;
-  if (!request.is_object()) {
-    return problem_reply(ProblemKind::malformed_json, "body must be a JSON object");
-  }
-  for (const Route& r : kRoutes) {
-    if (r.path == path) return r.function(request, limits);
-  }
-  return problem_reply(ProblemKind::not_found, "no route " + std::string(path));
+  if (path == kBatchPath && request.is_object()) return batch_route(request, limits, observer);
+  return compute_route_answer(path, request, limits);
 }
 
 }  // namespace bezier::api

@@ -31,6 +31,17 @@ struct Limits {
   /// request of every method at this cap and the command that measures it; hitting it
   /// answers 422, never a hang.
   std::int64_t max_work = 22000000;
+  /// Most items in one POST /batch (its 422 above, before any item is computed).
+  int max_batch_items = 1000;
+  /// Work cap of a whole batch, in the units of max_work: the batch is refused before any
+  /// item is computed when its items may spend more (each item of a route the per-item cap
+  /// bounds is charged max_work; api/batch_route.hpp). The default admits 32 such items at
+  /// the default max_work, a batch's CPU time at most a few seconds.
+  std::int64_t max_batch_work = 32 * std::int64_t{22000000};
+  /// Largest answer of a whole batch in bytes (the items' answers bound the memory a batch
+  /// holds, since each may be much larger than its request: a batch is refused when they
+  /// exceed it).
+  std::size_t max_batch_answer_bytes = std::size_t{64} << 20;
 };
 
 }  // namespace bezier::api

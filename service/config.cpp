@@ -9,6 +9,27 @@
 
 namespace bezier::service {
 
+bool is_cors_origin(std::string_view value) noexcept {
+  if (value == "*") return true;
+  // RFC 6454 §6.2: scheme "://" host [":" port]; a browser sends it lower-case, without
+  // a path, query or trailing slash.
+  const std::size_t separator = value.find("://");
+  if (separator == std::string_view::npos || separator == 0) return false;
+  for (std::size_t i = 0; i < separator; ++i) {
+    const char c = value[i];
+    const bool letter = c >= 'a' && c <= 'z';
+    if (!(letter || (i > 0 && ((c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.')))) return false;
+  }
+  const std::string_view authority = value.substr(separator + 3);
+  if (authority.empty()) return false;
+  for (const char c : authority) {
+    const bool allowed = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '.' || c == ':' ||
+                         c == '[' || c == ']';
+    if (!allowed) return false;
+  }
+  return true;
+}
+
 ParsedConfig parse_config(int argc, char** argv) {
   Config config;
   CLI::App app{"bezier-service: a Bézier-curve geometry kernel behind a JSON/HTTP API"};
@@ -64,6 +85,26 @@ ParsedConfig parse_config(int argc, char** argv) {
       ->envname("BEZIER_MAX_PATH_SEGMENTS")->check(CLI::Range(1, 10000000))->capture_default_str();
   app.add_option("--max-work", config.limits.max_work, "Per-request work cap of iterative kernels (work units, about 3-6 ns each)")
       ->envname("BEZIER_MAX_WORK")->check(CLI::Range(std::int64_t{1000}, std::int64_t{1} << 40))->capture_default_str();
+  app.add_option("--max-batch-items", config.limits.max_batch_items, "Most items in one POST /batch (422 above)")
+      ->envname("BEZIER_MAX_BATCH_ITEMS")->check(CLI::Range(1, 1000000))->capture_default_str();
+  app.add_option("--max-batch-work", config.limits.max_batch_work,
+                 "Work cap of a whole batch: each item of a work-capped route is charged --max-work (422 above)")
+      ->envname("BEZIER_MAX_BATCH_WORK")->check(CLI::Range(std::int64_t{1000}, std::int64_t{1} << 50))
+      ->capture_default_str();
+  app.add_option("--max-batch-answer-bytes", config.limits.max_batch_answer_bytes,
+                 "Largest answer of a whole batch (422 when its items' answers exceed it)")
+      ->envname("BEZIER_MAX_BATCH_ANSWER_BYTES")
+      ->check(CLI::Range(std::size_t{1024}, std::size_t{1} << 34))->capture_default_str();
+  app.add_option("--cors-origin", config.cors_origins,
+                 "Origin allowed to call the service from a browser (CORS), as scheme://host[:port], or * for any; "
+                 "repeatable, or comma-separated in the variable; none: CORS off")
+      ->envname("BEZIER_CORS_ORIGIN")->delimiter(',')->take_all()
+      ->check(CLI::Validator(
+          [](const std::string& value) -> std::string {
+            if (is_cors_origin(value)) return {};
+            return "'" + value + "' is not an origin: * or scheme://host[:port], no path, no trailing slash";
+          },
+          "ORIGIN"));
   app.add_option("--log-level", config.log_level, "trace, debug, info, warn, error, critical or off")
       ->envname("BEZIER_LOG_LEVEL")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}))

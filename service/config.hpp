@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "api/limits.hpp"
@@ -43,6 +44,9 @@ struct Config {
   LogFormat log_format = LogFormat::text;
   /// Optional bearer token; empty means no authentication. Never logged.
   std::string auth_token;
+  /// Origins whose browser pages may call the service (CORS): each "scheme://host[:port]"
+  /// exactly as a browser sends it in Origin, or "*" for any. Empty: CORS is off.
+  std::vector<std::string> cors_origins;
   api::Limits limits;
 };
 
@@ -53,6 +57,10 @@ struct ParsedConfig {
   int exit_code = 0;
   std::string message;
 };
+
+/// Whether `value` may be given to --cors-origin: "*", or an origin as a browser
+/// serializes it in the Origin header (lower-case scheme "://" host [":" port]).
+[[nodiscard]] bool is_cors_origin(std::string_view value) noexcept;
 
 /// Reads flags (argv) and BEZIER_* environment variables.
 [[nodiscard]] ParsedConfig parse_config(int argc, char** argv);

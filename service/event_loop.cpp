@@ -199,7 +199,7 @@ void EventLoop::accept_all() {
       std::string out;
       Response busy = http_problem(503, "the service holds its maximum number of connections");
       busy.headers.emplace_back("Retry-After", "1");
-      append_response(out, busy, WireOptions{1, false, false, 0, {}});
+      append_response(out, busy, WireOptions{1, false, false, 0, {}, {}, false});
       [[maybe_unused]] const auto n = ::send(fd, out.data(), out.size(), MSG_NOSIGNAL);
       ::close(fd);
       shared_.router.finish_unrouted("-", "-", 503, address_text(peer), out.size());
@@ -305,7 +305,8 @@ void EventLoop::answer_expect_continue(Connection& c) {
     return;
   }
   const Exchange exchange = shared_.router.begin(view);
-  const std::size_t bytes = respond(c, *refusal, WireOptions{request.minor_version, false, false, 0, exchange.id});
+  WireOptions wire{request.minor_version, false, false, 0, {}, {}, false};
+  const std::size_t bytes = respond(c, *refusal, for_exchange(wire, exchange));
   shared_.router.finish(exchange, request.method, request.path, refusal->status, bytes);
   c.parser.reset();
 }
@@ -326,15 +327,14 @@ void EventLoop::dispatch(Connection& c) {
   wire.keep_alive_timeout_s = config_.keep_alive_timeout_s;
 
   const auto finish_here = [&](const Response& response) {
-    wire.request_id = exchange.id;
-    const std::size_t bytes = respond(c, response, wire);
+    const std::size_t bytes = respond(c, response, for_exchange(wire, exchange));
     router.finish(exchange, request.method, request.path, response.status, bytes);
     c.parser.reset();
     c.continue_sent = false;
   };
 
   if (auto answer = router.answer(view)) return finish_here(*answer);
-  if (InlinePolicy::may_try(request.body.size())) {
+  if (InlinePolicy::may_try(request.path, request.body.size())) {
     Response inline_answer = router.compute(request.path, request.body, inline_limits_);
     if (InlinePolicy::is_final(inline_answer)) return finish_here(inline_answer);
   }
@@ -357,8 +357,7 @@ void EventLoop::dispatch(Connection& c) {
     router.metrics().overloaded(Overload::queue_full);
     Response full = http_problem(503, "the compute queue is full");
     full.headers.emplace_back("Retry-After", "1");
-    pending->wire.request_id = pending->exchange.id;
-    const std::size_t bytes = respond(c, full, pending->wire);
+    const std::size_t bytes = respond(c, full, for_exchange(pending->wire, pending->exchange));
     router.finish(pending->exchange, pending->method, pending->path, full.status, bytes);
     c.parser.reset();
     c.continue_sent = false;
@@ -385,7 +384,7 @@ void EventLoop::run_on_pool(std::uint64_t connection, const std::shared_ptr<Pend
     response.headers.emplace_back("Retry-After", "1");
   } else {
     response = router.compute(pending->path, body, config_.limits);
-    if (work_cap_reached(response)) router.metrics().work_cap_hit();
+    if (work_cap_reached(pending->path, response)) router.metrics().work_cap_hit();
   }
   {
     const std::lock_guard lock(completions_mutex_);
@@ -413,8 +412,7 @@ void EventLoop::take_completions() {
     c.on_pool.reset();
     // Stopping may have begun while it computed: the answer then closes the connection.
     p.wire.keep_alive = p.wire.keep_alive && !stopping_;
-    p.wire.request_id = p.exchange.id;
-    const std::size_t bytes = respond(c, completion.response, p.wire);
+    const std::size_t bytes = respond(c, completion.response, for_exchange(p.wire, p.exchange));
     shared_.router.finish(p.exchange, p.method, p.path, completion.response.status, bytes);
     process(c);  // the pipelined requests that waited, then flush
   }
@@ -436,7 +434,8 @@ void EventLoop::refuse(Connection& c, int status, std::string detail) {
                          [&request](std::string_view name) { return request.header(name); }, {}, c.client};
   const Exchange exchange = shared_.router.begin(view);
   const Response response = http_problem(status, std::move(detail));
-  const std::size_t bytes = respond(c, response, WireOptions{1, false, false, 0, exchange.id});
+  WireOptions wire{1, false, false, 0, {}, {}, false};
+  const std::size_t bytes = respond(c, response, for_exchange(wire, exchange));
   shared_.router.finish(exchange, request.method.empty() ? "-" : request.method,
                         request.path.empty() ? "-" : request.path, status, bytes);
   c.parser.reset();

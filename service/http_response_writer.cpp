@@ -68,14 +68,21 @@ void append_response(std::string& out, const Response& response, const WireOptio
   out += ' ';
   out += reason_phrase(response.status);
   out += "\r\n";
-  append_header(out, "Content-Type", response.content_type);
-  out += "Content-Length: ";
-  append_number(out, response.body.size());
-  out += "\r\n";
+  if (response.status != 204) {
+    append_header(out, "Content-Type", response.content_type);
+    out += "Content-Length: ";
+    append_number(out, response.body.size());
+    out += "\r\n";
+  }
   out += kNoSniff;
   if (is_html(response.content_type)) out += kPageSecurityPolicy;
   for (const auto& [name, value] : response.headers) append_header(out, name, value);
   if (!options.request_id.empty()) append_header(out, "X-Request-Id", options.request_id);
+  if (!options.allow_origin.empty()) {
+    append_header(out, "Access-Control-Allow-Origin", options.allow_origin);
+    append_header(out, "Access-Control-Expose-Headers", kCorsExposeHeaders);
+  }
+  if (options.vary_origin) out += "Vary: Origin\r\n";
   if (!options.keep_alive) {
     out += "Connection: close\r\n";
   } else {
@@ -85,7 +92,7 @@ void append_response(std::string& out, const Response& response, const WireOptio
     out += "\r\n";
   }
   out += "\r\n";
-  if (!options.head_only) out += response.body;
+  if (!options.head_only && response.status != 204) out += response.body;
 }
 
 }  // namespace bezier::service

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <string_view>
 
+#include "api/batch_route.hpp"
 #include "api/limits.hpp"
 #include "service/router.hpp"
 
@@ -29,8 +30,11 @@ struct InlinePolicy {
   static constexpr int kMaxTValues = 32;
   static constexpr int kMaxDegree = 7;
 
-  /// Whether a request with this body may be tried inline at all.
-  [[nodiscard]] static bool may_try(std::size_t body_bytes) noexcept { return body_bytes <= kMaxBodyBytes; }
+  /// Whether a request to `path` with this body may be tried inline at all: not a /batch,
+  /// whose items add up (each is bounded, their sum only by the batch's limits).
+  [[nodiscard]] static bool may_try(std::string_view path, std::size_t body_bytes) noexcept {
+    return path != api::kBatchPath && body_bytes <= kMaxBodyBytes;
+  }
   /// The limits of the inline try.
   [[nodiscard]] static api::Limits limits(const api::Limits& full) noexcept;
   /// Whether the inline answer is the answer (false: re-run on the pool). A refusal by a

@@ -49,6 +49,19 @@ std::string Metrics::render() const {
       out += line;
     }
   }
+  out += "# HELP bezier_batch_items_total Items of POST /batch answered, by the item's route and status.\n";
+  out += "# TYPE bezier_batch_items_total counter\n";
+  for (std::size_t r = 0; r < kRoutes.size(); ++r) {
+    for (std::size_t s = 0; s < kStatuses.size(); ++s) {
+      const auto n = batch_items_[r][s].load(std::memory_order_relaxed);
+      if (n == 0) continue;
+      const std::string status = kStatuses[s] == 0 ? "other" : std::to_string(kStatuses[s]);
+      std::snprintf(line, sizeof line, "bezier_batch_items_total{route=\"%.*s\",status=\"%s\"} %llu\n",
+                    static_cast<int>(kRoutes[r].size()), kRoutes[r].data(), status.c_str(),
+                    static_cast<unsigned long long>(n));
+      out += line;
+    }
+  }
   out += "# HELP bezier_request_duration_seconds Time from request parsed to answer ready.\n";
   out += "# TYPE bezier_request_duration_seconds histogram\n";
   for (std::size_t r = 0; r < kRoutes.size(); ++r) {

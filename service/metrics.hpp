@@ -31,6 +31,11 @@ class Metrics {
     in_flight_.fetch_sub(1, std::memory_order_relaxed);
     dropped_.fetch_add(1, std::memory_order_relaxed);
   }
+  /// One item of a /batch answered: counted by the item's route and status (the batch
+  /// itself is one request of route /batch).
+  void batch_item_finished(std::string_view route, int status) noexcept {
+    batch_items_[route_index(route)][status_index(status)].fetch_add(1, std::memory_order_relaxed);
+  }
   /// An answer the work cap decided (a 422 work-cap, or an answer it cut short).
   void work_cap_hit() noexcept { work_cap_hits_.fetch_add(1, std::memory_order_relaxed); }
   /// A 503 for want of capacity.
@@ -44,10 +49,10 @@ class Metrics {
   /// The exposition text for GET /metrics.
   [[nodiscard]] std::string render() const;
 
-  static constexpr std::array<std::string_view, 14> kRoutes = {
+  static constexpr std::array<std::string_view, 15> kRoutes = {
       "/evaluate", "/polar",   "/loop-area", "/intersections", "/classify", "/length",
-      "/bounds",   "/nearest", "/openapi.yaml", "/healthz",    "/readyz",   "/metrics",
-      "/",         "other"};
+      "/bounds",   "/nearest", "/batch",     "/openapi.yaml",   "/healthz",  "/readyz",
+      "/metrics",  "/",        "other"};
   static constexpr std::array<int, 13> kStatuses = {200, 204, 400, 401, 404, 405, 408,
                                                     413, 415, 422, 500, 503, 0 /*other*/};
   /// Upper bounds of the latency buckets, in seconds (+Inf is implied).
@@ -65,6 +70,7 @@ class Metrics {
   std::atomic<std::uint64_t> work_cap_hits_{0};
   std::array<std::atomic<std::uint64_t>, 3> overloaded_{};
   std::array<std::array<std::atomic<std::uint64_t>, kStatuses.size()>, kRoutes.size()> requests_{};
+  std::array<std::array<std::atomic<std::uint64_t>, kStatuses.size()>, kRoutes.size()> batch_items_{};
   std::array<std::array<std::atomic<std::uint64_t>, kBuckets.size() + 1>, kRoutes.size()> buckets_{};
   std::array<std::atomic<std::uint64_t>, kRoutes.size()> count_{};
   // Sum of durations in nanoseconds, so it can be an integer atomic.

@@ -70,6 +70,13 @@ bool is_get_route(std::string_view path) {
   return find_static_file(path).has_value();
 }
 
+bool decided_by_work_cap(bool limit_reached, int status, std::string_view body) noexcept {
+  if (!limit_reached) return false;
+  if (status == 200) return true;
+  // A limit_reached 422 is the work cap's, or another limit's refusal (a degree, a count).
+  return status == 422 && body.find("\"urn:bezier-service:problem:work-cap\"") != std::string_view::npos;
+}
+
 Response content(std::string_view body, std::string_view content_type) {
   Response response;
   response.content_type = std::string(content_type);
@@ -92,26 +99,74 @@ Response problem_response(api::ProblemKind kind, std::string detail) {
   return to_response(api::problem_reply(kind, std::move(detail)));
 }
 
+bool work_cap_reached(std::string_view path, const Response& response) noexcept {
+  if (path == api::kBatchPath) return response.status == 422 && work_cap_reached(response);
+  return work_cap_reached(response);
+}
+
 bool work_cap_reached(const Response& response) noexcept {
-  if (!response.limit_reached) return false;
-  if (response.status == 200) return true;
-  // A limit_reached 422 is the work cap's, or another limit's refusal (a degree, a count).
-  return response.status == 422 &&
-         response.body.find("\"urn:bezier-service:problem:work-cap\"") != std::string::npos;
+  return decided_by_work_cap(response.limit_reached, response.status, response.body);
 }
 
 Router::Router(const Config& config, Log log) : config_(config), log_(std::move(log)) {}
 
 Exchange Router::begin(const RequestView& request) {
   metrics_.request_started();
-  return {Clock::now(), request_id_for(request.header("X-Request-Id")),
-          request.client.empty() ? std::string("-") : std::string(request.client)};
+  Exchange exchange{Clock::now(), request_id_for(request.header("X-Request-Id")),
+                    request.client.empty() ? std::string("-") : std::string(request.client),
+                    allowed_origin(request.header("Origin")), false};
+  // With a list of origins the answer depends on Origin (allowed or not, present or
+  // not), so every answer says so to caches; with "*" every answer is the same.
+  exchange.vary_origin = !config_.cors_origins.empty() && exchange.allow_origin != "*";
+  return exchange;
+}
+
+std::string Router::allowed_origin(std::string_view origin) const {
+  for (const std::string& allowed : config_.cors_origins) {
+    if (allowed == "*") return allowed;
+  }
+  if (origin.empty()) return {};
+  for (const std::string& allowed : config_.cors_origins) {
+    if (allowed == origin) return allowed;
+  }
+  return {};
 }
 
 std::optional<Response> Router::answer(const RequestView& request) const {
   if (request.method == "GET" || request.method == "HEAD") return answer_get(request.path);
   if (request.method == "POST") return check_post(request);
+  if (request.method == "OPTIONS") {
+    if (auto preflight = answer_preflight(request)) return preflight;
+  }
   return answer_other_method(request);
+}
+
+std::optional<Response> Router::answer_preflight(const RequestView& request) const {
+  // Fetch standard, CORS protocol: a preflight is OPTIONS with Origin and
+  // Access-Control-Request-Method; it carries no credentials, so it is answered without
+  // the bearer token. Any other OPTIONS, or one from an origin not allowed, is answered
+  // as before (405 with Allow on a route), and the browser then refuses the request.
+  const std::string_view origin = request.header("Origin");
+  if (origin.empty() || request.header("Access-Control-Request-Method").empty() ||
+      allowed_origin(origin).empty()) {
+    return std::nullopt;
+  }
+  const std::string path(request.path);
+  const char* methods = nullptr;
+  if (api::is_post_route(path)) {
+    methods = "POST";
+  } else if (is_get_route(path)) {
+    methods = "GET, HEAD";
+  } else {
+    return std::nullopt;
+  }
+  Response response;
+  response.status = 204;
+  response.content_type.clear();
+  response.headers.emplace_back("Access-Control-Allow-Methods", methods);
+  response.headers.emplace_back("Access-Control-Allow-Headers", std::string(kCorsAllowHeaders));
+  response.headers.emplace_back("Access-Control-Max-Age", std::string(kCorsMaxAgeSeconds));
+  return response;
 }
 
 Response Router::answer_get(std::string_view path) const {
@@ -182,6 +237,13 @@ Response Router::answer_other_method(const RequestView& request) const {
 Response Router::compute(std::string_view path, std::string_view body, const api::Limits& limits) {
   std::string what = "unknown exception";
   try {
+    if (path == api::kBatchPath) {
+      const auto count_item = [this](std::string_view item_path, const api::Reply& reply) {
+        metrics_.batch_item_finished(item_path, reply.status);
+        if (decided_by_work_cap(reply.limit_reached, reply.status, reply.body)) metrics_.work_cap_hit();
+      };
+      return to_response(api::handle(path, body, limits, count_item));
+    }
     return to_response(api::handle(path, body, limits));
   } catch (const std::exception& e) {
     what = e.what();

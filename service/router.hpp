@@ -40,26 +40,34 @@ struct Response {
   bool limit_reached = false;
 };
 
-/// The request's start time, id and client, from Router::begin to Router::finish.
+/// The request's start time, id and client, from Router::begin to Router::finish, and
+/// what CORS adds to its answer, whatever answers it (the router, a compute thread, or
+/// the engine's own error).
 struct Exchange {
   std::chrono::steady_clock::time_point start;
   std::string id;
   std::string client;
+  /// Access-Control-Allow-Origin of the answer ("*", or the allowed Origin as sent), empty
+  /// when the answer gets none.
+  std::string allow_origin;
+  /// Whether the answer carries "Vary: Origin": it depends on the request's Origin (CORS
+  /// with a list of origins), so caches must key on it.
+  bool vary_origin = false;
 };
 
 /// Everything about a request that does not depend on the transport (the event loops
 /// of service/epoll_engine.hpp parse and write; this decides):
 /// GET routes (health, readiness, metrics, the spec, the playground), 404 and 405 with
-/// Allow, bearer authentication, the JSON media type check, request ids, metrics and
-/// the access log. POST routes are computed by api::handle; the router only decides
+/// Allow, bearer authentication, the JSON media type check, CORS (preflight answers, and
+/// which origin an answer admits), request ids, metrics and the access log. POST routes are computed by api::handle; the router only decides
 /// whether a request gets that far, so the engine can choose the thread that runs it.
 /// Thread-safe: every member may be called from any thread at once.
 class Router {
  public:
   Router(const Config& config, Log log);
 
-  /// Starts a request: the in-flight gauge and its request id (the client's
-  /// X-Request-Id when short and plain, otherwise a random one).
+  /// Starts a request: the in-flight gauge, its request id (the client's X-Request-Id
+  /// when short and plain, otherwise a random one) and its CORS headers.
   [[nodiscard]] Exchange begin(const RequestView& request);
 
   /// The answer to `request`, or nullopt when it is a valid POST to an API route: then
@@ -68,7 +76,9 @@ class Router {
   [[nodiscard]] std::optional<Response> answer(const RequestView& request) const;
 
   /// api::handle(path, body, limits) as a Response; an exception (a bug, or bad_alloc)
-  /// is logged and becomes a 500 problem instead of reaching the engine.
+  /// is logged and becomes a 500 problem instead of reaching the engine. The items of a
+  /// /batch are counted in the metrics by route and status (and the work cap's decisions,
+  /// of its items and of the batch itself).
   [[nodiscard]] Response compute(std::string_view path, std::string_view body,
                                  const api::Limits& limits);
 
@@ -100,6 +110,11 @@ class Router {
   [[nodiscard]] Response answer_get(std::string_view path) const;
   [[nodiscard]] std::optional<Response> check_post(const RequestView& request) const;
   [[nodiscard]] Response answer_other_method(const RequestView& request) const;
+  /// The answer to a CORS preflight (OPTIONS with Origin and
+  /// Access-Control-Request-Method) from an allowed origin to a route; nullopt otherwise.
+  [[nodiscard]] std::optional<Response> answer_preflight(const RequestView& request) const;
+  /// Access-Control-Allow-Origin for a request with this Origin header, empty for none.
+  [[nodiscard]] std::string allowed_origin(std::string_view origin) const;
   [[nodiscard]] bool authorized(const RequestView& request) const;
   void log_access(std::string_view method, std::string_view path, int status, double seconds,
                   std::string_view id, std::string_view client, std::size_t bytes_sent);
@@ -117,7 +132,16 @@ class Router {
 [[nodiscard]] Response problem_response(api::ProblemKind kind, std::string detail);
 
 /// Whether the work cap decided a computed answer: a 422 work-cap problem, or a 200 the
-/// cap cut short (api::Reply::limit_reached on a success).
+/// cap cut short (api::Reply::limit_reached on a success). For a /batch, whose items the
+/// router counts as it computes them, only the batch's own refusal by its work cap.
 [[nodiscard]] bool work_cap_reached(const Response& response) noexcept;
+[[nodiscard]] bool work_cap_reached(std::string_view path, const Response& response) noexcept;
+
+/// The headers of a preflight answer beyond Access-Control-Allow-Origin: the methods
+/// allowed, the request headers a page may send, and how long a browser may cache it.
+inline constexpr std::string_view kCorsAllowHeaders = "Authorization, Content-Type, X-Request-Id";
+inline constexpr std::string_view kCorsMaxAgeSeconds = "600";
+/// The answer headers a page may read besides the CORS-safelisted ones.
+inline constexpr std::string_view kCorsExposeHeaders = "X-Request-Id, Retry-After, Allow, WWW-Authenticate";
 
 }  // namespace bezier::service

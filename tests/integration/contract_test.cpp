@@ -240,11 +240,15 @@ TEST_F(ContractTest, TheSpecStatesTheServiceDefaults) {
   EXPECT_EQ(limits.at("max_t_values"), defaults.max_t_values);
   EXPECT_EQ(limits.at("max_body_bytes"), defaults.max_body_bytes);
   EXPECT_EQ(limits.at("max_work"), defaults.max_work);
+  EXPECT_EQ(limits.at("max_batch_items"), defaults.max_batch_items);
+  EXPECT_EQ(limits.at("max_batch_work"), defaults.max_batch_work);
+  EXPECT_EQ(limits.at("max_batch_answer_bytes"), defaults.max_batch_answer_bytes);
   const auto schema = [](const std::string& name) -> const json& { return contract().at("/components/schemas/" + name); };
   EXPECT_EQ(schema("Points2").at("maxItems"), defaults.max_degree + 1);
   EXPECT_EQ(schema("Points3").at("maxItems"), defaults.max_degree + 1);
   EXPECT_EQ(schema("Parameters").at("oneOf").at(1).at("maxItems"), defaults.max_t_values);
   EXPECT_EQ(schema("Samples").at("maximum"), defaults.max_t_values);
+  EXPECT_EQ(schema("BatchRequest").at("properties").at("requests").at("maxItems"), defaults.max_batch_items);
   EXPECT_EQ(schema("EvaluateRequest").at("properties").at("derivatives").at("maximum"), defaults.max_degree);
   EXPECT_EQ(schema("PolarRequest").at("properties").at("t0").at("oneOf").at(1).at("maxItems"), defaults.max_degree);
   const core::IntersectOptions intersect;

@@ -54,6 +54,13 @@ TEST(InlinePolicy, IsFinalUnlessALimitDecided) {
   EXPECT_TRUE(InlinePolicy::is_final(answer));
 }
 
+TEST(InlinePolicy, SmallBodiesAreTriedInlineButNeverABatch) {
+  EXPECT_TRUE(InlinePolicy::may_try("/classify", InlinePolicy::kMaxBodyBytes));
+  EXPECT_FALSE(InlinePolicy::may_try("/classify", InlinePolicy::kMaxBodyBytes + 1));
+  // A batch's items are each bounded, their sum only by the batch's own limits.
+  EXPECT_FALSE(InlinePolicy::may_try("/batch", 16));
+}
+
 TEST(InlinePolicy, LimitsOnlyShrink) {
   const api::Limits full;
   const api::Limits small = InlinePolicy::limits(full);
