@@ -4,7 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
+#include "core/base/multiversion.hpp"
 #include "core/bernstein/roots.hpp"
 #include "core/bernstein/casteljau_row.hpp"
 #include "core/self_intersect/collinear_fold.hpp"
@@ -61,7 +63,7 @@ bool resolved(const CurveFacts& facts, double u, double v) {
 /// error parts are subtracted separately: good to about u |F| + n^2 u^2 S. The difference of
 /// the two rounded points (evaluate()) is only good to u |B|, one ulp of the double point,
 /// which two branches crossing at a tiny angle turn into parameter errors of 1e-11.
-Point2 compensated_difference(const Curve& curve, double u, double v) {
+BEZIER_FMA_CLONES Point2 compensated_difference(const Curve& curve, double u, double v) {
   CasteljauRow<Point2> at_u(curve.points()), at_v(curve.points());
   while (at_u.size() > 1) {
     at_u.casteljau_step(u);
@@ -72,6 +74,60 @@ Point2 compensated_difference(const Curve& curve, double u, double v) {
   if (!is_finite(bu.lo) || !is_finite(bv.lo)) return at_v.point(0) - at_u.point(0);
   const TwoTerm<Point2> values = two_sum(bv.hi, -bu.hi);
   return values.hi + (values.lo + (bv.lo - bu.lo));
+}
+
+/// |B(v) - B(u)| and |B(v2) - B(u2)| of a cubic, each exactly as exact_residual() gives it:
+/// CasteljauRow's compensated recurrence (casteljau_step, the same operations in the same
+/// order) run on the four parameters side by side, so that the four independent evaluations
+/// share the vector lanes instead of waiting on each other's rounding chains.
+BEZIER_FMA_CLONES std::pair<double, double> cubic_exact_residuals(std::span<const Point2> p,
+                                                                  double u, double v, double u2,
+                                                                  double v2) {
+  constexpr int kLanes = 4;
+  const double t[kLanes] = {u, v, u2, v2};
+  double r[kLanes], rho[kLanes];
+  double hx[4][kLanes], hy[4][kLanes], lx[4][kLanes], ly[4][kLanes];
+  for (int k = 0; k < kLanes; ++k) {
+    const TwoTerm<double> one_minus_t = two_sum(1.0, -t[k]);
+    r[k] = one_minus_t.hi;
+    rho[k] = one_minus_t.lo;
+    for (int i = 0; i < 4; ++i) {
+      hx[i][k] = p[i].x;
+      hy[i][k] = p[i].y;
+      lx[i][k] = 0.0;
+      ly[i][k] = 0.0;
+    }
+  }
+  const auto step = [&](double (&h)[4][kLanes], double (&l)[4][kLanes], int i) {
+    for (int k = 0; k < kLanes; ++k) {
+      const TwoTerm<double> left = two_product(r[k], h[i][k]);
+      const TwoTerm<double> right = two_product(t[k], h[i + 1][k]);
+      const TwoTerm<double> sum = two_sum(left.hi, right.hi);
+      const double local = (left.lo + right.lo) + (sum.lo + rho[k] * h[i][k]);
+      l[i][k] = (r[k] * l[i][k] + t[k] * l[i + 1][k]) + local;
+      h[i][k] = sum.hi;
+    }
+  };
+  for (int size = 4; size > 1; --size) {
+    for (int i = 0; i + 1 < size; ++i) {
+      step(hx, lx, i);
+      step(hy, ly, i);
+    }
+  }
+  const auto residual = [&](int a, int b) {
+    const TwoTerm<Point2> bu{{hx[0][a], hy[0][a]}, {lx[0][a], ly[0][a]}};
+    const TwoTerm<Point2> bv{{hx[0][b], hy[0][b]}, {lx[0][b], ly[0][b]}};
+    if (!is_finite(bu.lo) || !is_finite(bv.lo)) {
+      // As CasteljauRow::point: the plain value where an error part overflowed.
+      const auto rounded = [](const TwoTerm<Point2>& e) {
+        return is_finite(e.lo) ? e.hi + e.lo : e.hi;
+      };
+      return norm(rounded(bv) - rounded(bu));
+    }
+    const TwoTerm<Point2> values = two_sum(bv.hi, -bu.hi);
+    return norm(values.hi + (values.lo + (bv.lo - bu.lo)));
+  };
+  return {residual(0, 1), residual(2, 3)};
 }
 
 /// |B(v) - B(u)| from compensated_difference(): the most accurate residual available, used
@@ -380,8 +436,9 @@ std::vector<double> level_set(const Coeffs& p, double u) {
 /// itself: B(t) = B(s) exactly where p(t) = p(s), between different pieces on which p is
 /// monotone (the overlaps: find_self_arc_overlaps), or where h crosses itself,
 /// h(u1) = h(u2): every t with p(t) = u1 against every s with p(s) = u2, found from h's own
-/// self-intersections (h is proper: the search resolves them) and polished on B. The palindrome is the case p(1 - t) = p(t); the general
-/// search cannot see either (a continuum of pairs). Nothing when B is proper or p monotone
+/// self-intersections (h is proper: the search resolves them) and polished on B. The
+/// palindrome is the case p(1 - t) = p(t); the general search cannot see either (a
+/// continuum of pairs). Nothing when B is proper or p monotone
 /// (no retraced piece: the general search then works).
 std::optional<SelfIntersectionResult> improper_result(const CurveFacts& facts,
                                                       const SelfIntersectionOptions& options) {
@@ -415,14 +472,18 @@ std::optional<SelfIntersectionResult> improper_result(const CurveFacts& facts,
   return result;
 }
 
-/// What the cubic closed form says: a loop (`result`), no loop on [0, 1] other than a closed
-/// curve's trivial pair (the caller then still checks for a collinear or palindromic,
-/// retracing, cubic, which the closed form does not describe), or nothing certain.
+/// What the cubic closed form says: a loop (the pair (t, s) with its point), no loop on
+/// [0, 1] other than a closed curve's trivial pair (the caller then still checks for a
+/// collinear or palindromic, retracing, cubic, which the closed form does not describe), or
+/// nothing certain.
 enum class ClosedFormVerdict { loop, no_loop, undecided };
 
 struct ClosedFormAnswer {
   ClosedFormVerdict verdict = ClosedFormVerdict::undecided;
-  SelfIntersectionResult result;
+  double t = 0.0;
+  double s = 0.0;
+  Point2 point;
+  int newton_iterations = 0;  ///< of the polish
 };
 
 /// Cubics: the exact closed form of cubic_double_point() (exact decisions, and t = 0 or 1
@@ -434,25 +495,21 @@ struct ClosedFormAnswer {
 /// Coordinates spanning more than about 2^400 leave the predicates inexact
 /// (CubicPredicates::exact false): then the answer is the closed form's only when it is a
 /// pair with B(t) = B(s) to within the distance tolerance, and undecided otherwise (an
-/// inexact "no loop", or a pair that is no double point: (0, 1) on an open curve was seen).
+/// inexact "no loop", or a pair that is no double point, such as (0, 1) on an open curve).
 ClosedFormAnswer closed_form_cubic(const CurveFacts& facts) {
   const std::span<const Point2, 4> p(facts.points.data(), 4);
   const CubicPredicates predicates = cubic_predicates(p);
-  const ClosedFormAnswer no_loop{
-      predicates.exact ? ClosedFormVerdict::no_loop : ClosedFormVerdict::undecided, {}};
+  ClosedFormAnswer no_loop;
+  if (predicates.exact) no_loop.verdict = ClosedFormVerdict::no_loop;
   const auto dp = cubic_double_point(p, predicates);
   if (!dp || !dp->on_segment) return no_loop;
   // (0, 1): the trivial pair; on an open curve only when the power-of-two rescaling made
   // the ends equal by underflow, a loop closing below the resolution.
   if (dp->t1 == 0.0 && dp->t2 == 1.0) return no_loop;
   if (!(dp->t1 < dp->t2)) return no_loop;  // a loop of width zero is no pair (t < s)
-  SelfIntersectionResult result;
-  result.stats.method = SelfIntersectionMethod::closed_form_cubic;
   double u = dp->t1, v = dp->t2;
   const PairRefinement polished =
       refine_double_point(facts.points, u, v, {0.0, 1.0, 0.0, 1.0}, facts.rounding, 8);
-  ++result.stats.newton_runs;
-  result.stats.newton_iterations += polished.iterations;
   if (polished.converged && polished.u < polished.v) {
     // Ends decided exactly stay exact. The polish is kept only when it does not increase
     // the compensated residual |B(v) - B(u)|: on an ill-conditioned (nearly collinear)
@@ -461,7 +518,9 @@ ClosedFormAnswer closed_form_cubic(const CurveFacts& facts) {
     const double nu =
         u != 0.0 ? std::max(polished.u, std::numeric_limits<double>::denorm_min()) : u;
     const double nv = v != 1.0 ? std::min(polished.v, std::nextafter(1.0, 0.0)) : v;
-    if (exact_residual(facts.curve, nu, nv) <= exact_residual(facts.curve, u, v)) {
+    const auto [polished_residual, closed_form_residual] =
+        cubic_exact_residuals(facts.points, nu, nv, u, v);
+    if (polished_residual <= closed_form_residual) {
       u = nu;
       v = nv;
     }
@@ -470,8 +529,7 @@ ClosedFormAnswer closed_form_cubic(const CurveFacts& facts) {
       ((u == 0.0 && v == 1.0) || !(exact_residual(facts.curve, u, v) <= facts.dist_tol))) {
     return {};
   }
-  result.pairs.push_back({u, v, dp->point, SelfIntersectionKind::transversal});
-  return {ClosedFormVerdict::loop, std::move(result)};
+  return {ClosedFormVerdict::loop, u, v, dp->point, polished.iterations};
 }
 
 }  // namespace
@@ -506,7 +564,10 @@ SelfIntersectionResult self_intersections(const Curve& curve,
   if (curve.degree() == 3 && options.cubic_closed_form) cubic = closed_form_cubic(facts);
   SelfIntersectionResult result;
   if (cubic.verdict == ClosedFormVerdict::loop) {
-    result = std::move(cubic.result);
+    result.stats.method = SelfIntersectionMethod::closed_form_cubic;
+    result.stats.newton_runs = 1;
+    result.stats.newton_iterations = cubic.newton_iterations;
+    result.pairs.push_back({cubic.t, cubic.s, cubic.point, SelfIntersectionKind::transversal});
   } else if (const auto frame = collinear_frame(points, facts.dist_tol)) {
     result = collinear_result(facts, *frame, options);
   } else if (is_palindrome(points)) {
