@@ -15,6 +15,15 @@ namespace {
 constexpr double kU = bernstein::kU;
 constexpr int kMaxDepth = 40;
 
+// The fixed-size de Casteljau rounds below are chains of scalar lerps; GCC's straight-line
+// vectoriser pairs them through the stack (a pair stored, then an overlapping pair loaded),
+// which stalls store forwarding at every level. They stay scalar.
+#if defined(__GNUC__) && !defined(__clang__)
+#define BEZIER_SCALAR_ROUNDS __attribute__((optimize("no-tree-slp-vectorize", "no-tree-loop-vectorize")))
+#else
+#define BEZIER_SCALAR_ROUNDS
+#endif
+
 /// A piece [lo, hi] still to examine; an end flagged as a known root is an exact zero of p
 /// found when the parent was split there.
 struct Job {
@@ -27,17 +36,66 @@ struct ValueAndSlope {
   double value, slope;
 };
 
+/// The two entries of the last level but one of de Casteljau's triangle at t, for E >= 2
+/// coefficients fixed at compile time, each level a fresh array (as
+/// bernstein::last_casteljau_level, the same lerps in the same order), forced inline so
+/// that the whole triangle stays in registers.
+template <std::size_t E>
+BEZIER_SCALAR_ROUNDS [[gnu::always_inline]] inline std::array<double, 2> last_level(const std::array<double, E>& c, double t) {
+  if constexpr (E == 2) {
+    return {c[0], c[1]};
+  } else {
+    std::array<double, E - 1> next;
+    for (std::size_t i = 0; i + 1 < E; ++i) next[i] = bernstein::lerp(c[i], c[i + 1], t);
+    return last_level<E - 1>(next, t);
+  }
+}
+
 /// p(t) and p'(t) from the last level of de Casteljau's triangle (p = lerp of its two
 /// entries, p' = n times their difference), for E = n + 1 coefficients fixed at compile
-/// time: the triangle stays in registers (the same lerps in the same order as
-/// bernstein::evaluate, so the same value).
+/// time (the same value as bernstein::evaluate).
 template <std::size_t E>
-ValueAndSlope value_and_slope_of(const double* c, double t) {
+BEZIER_SCALAR_ROUNDS ValueAndSlope value_and_slope_of(const double* c, double t) {
   if constexpr (E == 1) {
     return {c[0], 0.0};
   } else {
-    const auto last = bernstein::last_casteljau_level(std::span<const double, E>(c, E), t);
+    std::array<double, E> row;
+    for (std::size_t i = 0; i < E; ++i) row[i] = c[i];
+    const auto last = last_level<E>(row, t);
     return {bernstein::lerp(last[0], last[1], t), static_cast<double>(E - 1) * (last[1] - last[0])};
+  }
+}
+
+/// bernstein::portion_into (the blossom values b(a^(n-i), b^i), the same rounds in the
+/// same order) for E = n + 1 coefficients fixed at compile time, so that the rounds unroll.
+template <std::size_t E>
+BEZIER_SCALAR_ROUNDS void portion_of(const double* c, double a, double b, double* out) {
+  constexpr std::size_t n = E - 1;
+  std::array<double, E> row, work;
+  for (std::size_t k = 0; k <= n; ++k) row[k] = c[k];
+  for (std::size_t j = 0;; ++j) {
+    const std::size_t i = n - j;
+    if (2 * i <= n) {
+      for (std::size_t k = 0; k <= i; ++k) work[k] = row[k];
+      for (std::size_t level = i; level > 0; --level) {
+        for (std::size_t k = 0; k < level; ++k) work[k] = bernstein::lerp(work[k], work[k + 1], b);
+      }
+      out[i] = work[0];
+    }
+    if (j == n) break;
+    for (std::size_t k = 0; k + j < n; ++k) row[k] = bernstein::lerp(row[k], row[k + 1], a);
+  }
+  for (std::size_t k = 0; k <= n; ++k) row[k] = c[k];
+  for (std::size_t j = 1; j <= n; ++j) {
+    for (std::size_t k = 0; k + j <= n; ++k) row[k] = bernstein::lerp(row[k], row[k + 1], b);
+    if (2 * j > n) {
+      const std::size_t m = n - j;
+      for (std::size_t k = 0; k <= m; ++k) work[k] = row[k];
+      for (std::size_t level = m; level > 0; --level) {
+        for (std::size_t k = 0; k < level; ++k) work[k] = bernstein::lerp(work[k], work[k + 1], a);
+      }
+      out[j] = work[0];
+    }
   }
 }
 
@@ -89,6 +147,13 @@ double refine(ValueAndSlopeAt p_at, double e, double lo, double hi, double p_lo,
 template <std::size_t E>
 struct Unrolled {
   static ValueAndSlope at(const double* c, double t) { return value_and_slope_of<E>(c, t); }
+  static void portion(const double* c, double a, double b, double* out) {
+    if constexpr (E <= 4) {
+      bernstein::portion_into(std::span<const double>(c, E), a, b, out);  // straight-line there
+    } else {
+      portion_of<E>(c, a, b, out);
+    }
+  }
   static double root(const double* c, double e, double lo, double hi, double p_lo, double p_hi) {
     return refine([c](double t) { return value_and_slope_of<E>(c, t); }, e, lo, hi, p_lo, p_hi);
   }
@@ -96,6 +161,7 @@ struct Unrolled {
 
 struct UnrolledFunctions {
   ValueAndSlope (*at)(const double*, double) = nullptr;
+  void (*portion)(const double*, double, double, double*) = nullptr;
   double (*root)(const double*, double, double, double, double, double) = nullptr;
 };
 
@@ -104,7 +170,7 @@ constexpr std::size_t kUnrolledSizes = 24;
 
 template <std::size_t... I>
 constexpr std::array<UnrolledFunctions, sizeof...(I)> unrolled(std::index_sequence<I...>) {
-  return {UnrolledFunctions{&Unrolled<I + 1>::at, &Unrolled<I + 1>::root}...};
+  return {UnrolledFunctions{&Unrolled<I + 1>::at, &Unrolled<I + 1>::portion, &Unrolled<I + 1>::root}...};
 }
 
 /// p and p' at t, and the root in a bracket, for one polynomial: chooses the code for its
@@ -117,6 +183,14 @@ class Evaluator {
   }
   [[nodiscard]] double value(double t) const {
     return unrolled_.at != nullptr ? unrolled_.at(c_.data(), t).value : value_and_slope_any(c_, t).value;
+  }
+  /// The piece of p on [lo, hi] (bernstein::portion_into) into out[0..n].
+  void portion(double lo, double hi, double* out) const {
+    if (unrolled_.portion != nullptr) {
+      unrolled_.portion(c_.data(), lo, hi, out);
+    } else {
+      bernstein::portion_into(c_, lo, hi, out);
+    }
   }
   /// The root in (lo, hi) (see refine), e the rounding bound of p's evaluation.
   [[nodiscard]] double root(double e, double lo, double hi, double p_lo, double p_hi) const {
@@ -153,7 +227,7 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
     const Job job = stack[--pending];
     // On [0, 1] the piece is c itself (de Casteljau steps at 0 and 1 are exact).
     const bool whole = job.lo == 0.0 && job.hi == 1.0;
-    if (!whole) bernstein::portion_into(c, job.lo, job.hi, piece.data());
+    if (!whole) p_at.portion(job.lo, job.hi, piece.data());
     const std::span<const double> q = whole ? c : std::span<const double>(piece);
     // Descartes' rule on the coefficients that are clearly nonzero; an end that is an exact
     // zero is left out (p = (t - end) r(t), and r's coefficients have the others' signs).
