@@ -145,7 +145,7 @@ std::optional<Response> Router::answer_preflight(const RequestView& request) con
   // Fetch standard, CORS protocol: a preflight is OPTIONS with Origin and
   // Access-Control-Request-Method; it carries no credentials, so it is answered without
   // the bearer token. Any other OPTIONS, or one from an origin not allowed, is answered
-  // as before (405 with Allow on a route), and the browser then refuses the request.
+  // as any OPTIONS is (405 with Allow on a route), and the browser then refuses the call.
   const std::string_view origin = request.header("Origin");
   if (origin.empty() || request.header("Access-Control-Request-Method").empty() ||
       allowed_origin(origin).empty()) {
