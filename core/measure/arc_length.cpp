@@ -286,6 +286,7 @@ double invert(const BasicCurve<P>& curve, const ArcLength& measured, double targ
 template <class P>
 ArcLength scaled_measure(const BasicCurve<P>& curve, double a, double b,
                          const ArcLengthOptions& options) {
+  if (normalising_factor(curve) == 1.0) return measure(curve, a, b, options);
   const Normalised<P> unit = normalised(curve);
   ArcLength out = measure(unit.curve, a, b, options);
   out.length /= unit.factor;

@@ -70,6 +70,7 @@ Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
 /// The box of the normalised curve, scaled back (exactly: powers of two).
 template <class P>
 Bounds<P> scaled_box(const BasicCurve<P>& curve, double a, double b) {
+  if (normalising_factor(curve) == 1.0) return box(curve, a, b);
   const Normalised<P> unit = normalised(curve);
   Bounds<P> out = box(unit.curve, a, b);
   out.min = out.min / unit.factor;

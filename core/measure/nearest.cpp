@@ -10,6 +10,7 @@
 #include "core/measure/bernstein_product.hpp"
 #include "core/measure/interval_roots.hpp"
 #include "core/measure/normalised.hpp"
+#include "core/numeric/small_array.hpp"
 
 namespace bezier::core {
 
@@ -17,10 +18,27 @@ namespace {
 
 constexpr double kU = bernstein::kU;
 
+template <class P>
 struct Candidate {
   double t;
   double distance;
+  P point;  // B(t)
 };
+
+template <class P>
+Candidate<P> candidate_at(const BasicCurve<P>& curve, P target, double t) {
+  const P point = evaluate(curve, t);
+  return {t, length(point - target), point};
+}
+
+/// The candidate at an end of [a, b]: at t = 0 or 1 the end control point (what evaluate
+/// returns there).
+template <class P>
+Candidate<P> end_candidate(const BasicCurve<P>& curve, P target, double t) {
+  if (t != 0.0 && t != 1.0) return candidate_at(curve, target, t);
+  const P point = t == 0.0 ? curve.points().front() : curve.points().back();
+  return {t, length(point - target), point};
+}
 
 template <class P>
 double distance_at(const BasicCurve<P>& curve, P target, double t) {
@@ -30,19 +48,19 @@ double distance_at(const BasicCurve<P>& curve, P target, double t) {
 /// Newton's method on f = (B - q) · B', each step kept only while it stays in [a, b] and
 /// lowers the distance.
 template <class P>
-Candidate polish(const BasicCurve<P>& curve, P target, double a, double b, double t) {
-  Candidate best{t, distance_at(curve, target, t)};
+Candidate<P> polish(const BasicCurve<P>& curve, P target, double a, double b, double t) {
+  Candidate<P> best = candidate_at(curve, target, t);
   for (int iteration = 0; iteration < 8; ++iteration) {
-    const P offset = evaluate(curve, best.t) - target;
+    const P offset = best.point - target;
     const auto d = derivatives_at(curve, best.t, 2);
     const double f = dot(offset, d[0]);
     const double slope = dot(d[0], d[0]) + dot(offset, d[1]);
     if (f == 0.0 || !(slope != 0.0)) break;
     const double next = best.t - f / slope;
     if (!(a <= next && next <= b) || next == best.t) break;
-    const double distance = distance_at(curve, target, next);
-    if (!(distance < best.distance)) break;
-    best = {next, distance};
+    const Candidate<P> moved = candidate_at(curve, target, next);
+    if (!(moved.distance < best.distance)) break;
+    best = moved;
   }
   return best;
 }
@@ -50,30 +68,31 @@ Candidate polish(const BasicCurve<P>& curve, P target, double a, double b, doubl
 template <class P>
 NearestPoint<P> closest(const BasicCurve<P>& curve, P target, double a, double b) {
   assert(0.0 <= a && a <= b && b <= 1.0);
-  std::vector<Candidate> candidates = {{a, distance_at(curve, target, a)},
-                                       {b, distance_at(curve, target, b)}};
+  std::vector<Candidate<P>> candidates = {end_candidate(curve, target, a),
+                                          end_candidate(curve, target, b)};
   if (a < b) {
-    std::vector<P> offsets;
-    for (const P& p : curve.points()) offsets.push_back(p - target);
+    const auto points = curve.points();
+    SmallArray<P> offsets(points.size(), typename SmallArray<P>::Uninitialized{});
+    for (std::size_t i = 0; i < points.size(); ++i) offsets[i] = points[i] - target;
     const BasicCurve<P> hodograph = derivative(curve);
-    const std::vector<double> f =
-        dot_product_polynomial<P>(std::span<const P>(offsets), hodograph.points());
+    const std::vector<double> f = dot_product_polynomial<P>(offsets, hodograph.points());
     for (const double t : interval_roots(f, a, b, IntervalEnds::closed).roots)
       candidates.push_back(polish(curve, target, a, b, t));
   }
   double least = candidates.front().distance;
-  for (const Candidate& c : candidates) least = std::min(least, c.distance);
+  for (const Candidate<P>& c : candidates) least = std::min(least, c.distance);
   const double coordinate_scale = std::max(scale(curve), max_abs_coordinate(target));
   const double tolerance = std::max(1e-12 * least, 8 * kU * coordinate_scale);
 
-  std::vector<Candidate> tied;
-  for (const Candidate& c : candidates) {
+  std::vector<Candidate<P>> tied;
+  for (const Candidate<P>& c : candidates) {
     if (c.distance <= least + tolerance) tied.push_back(c);
   }
-  std::sort(tied.begin(), tied.end(), [](const Candidate& x, const Candidate& y) { return x.t < y.t; });
+  std::sort(tied.begin(), tied.end(),
+            [](const Candidate<P>& x, const Candidate<P>& y) { return x.t < y.t; });
   NearestPoint<P> out;
   out.t = tied.front().t;
-  out.point = evaluate(curve, out.t);
+  out.point = tied.front().point;
   out.distance = least;
   double previous = tied.front().t;
   for (std::size_t i = 1; i < tied.size(); ++i) {
@@ -91,6 +110,7 @@ NearestPoint<P> closest(const BasicCurve<P>& curve, P target, double a, double b
 /// point and distance scaled back.
 template <class P>
 NearestPoint<P> scaled_closest(const BasicCurve<P>& curve, P target, double a, double b) {
+  if (normalising_factor(curve, max_abs_coordinate(target)) == 1.0) return closest(curve, target, a, b);
   const Normalised<P> unit = normalised(curve, max_abs_coordinate(target));
   NearestPoint<P> out = closest(unit.curve, unit.factor * target, a, b);
   out.point = out.point / unit.factor;

@@ -23,10 +23,18 @@ struct Normalised {
 /// coordinates that become subnormal, more than 2^1021 below the largest), so every
 /// result scales back exactly and the answers are those of the original curve.
 template <class P>
-[[nodiscard]] Normalised<P> normalised(const BasicCurve<P>& curve, double extra = 0.0) {
+[[nodiscard]] double normalising_factor(const BasicCurve<P>& curve, double extra = 0.0) {
   const double largest = std::fmax(scale(curve), extra);
-  if (!(largest > 0.0) || !std::isfinite(largest)) return {curve, 1.0};
-  const double factor = power_of_two(-(std::ilogb(largest) + 1));
+  if (!(largest > 0.0) || !std::isfinite(largest)) return 1.0;
+  return power_of_two(-(std::ilogb(largest) + 1));
+}
+
+/// The curve times normalising_factor (a copy; a caller whose curve already has the factor
+/// 1 can skip it).
+template <class P>
+[[nodiscard]] Normalised<P> normalised(const BasicCurve<P>& curve, double extra = 0.0) {
+  const double factor = normalising_factor(curve, extra);
+  if (factor == 1.0) return {curve, 1.0};
   std::vector<P> points;
   points.reserve(curve.points().size());
   for (const P& p : curve.points()) points.push_back(factor * p);
