@@ -252,7 +252,9 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
       continue;
     }
     if (changes == 0 && !any_small) continue;
-    const double p_lo = p_at.value(job.lo), p_hi = p_at.value(job.hi);
+    // The piece's end coefficients are p at its ends: the same de Casteljau rounds (and
+    // exact on [0, 1]).
+    const double p_lo = q[0], p_hi = q[n];
     if (changes == 1 && !any_small && p_lo != 0.0 && p_hi != 0.0 && (p_lo < 0) != (p_hi < 0)) {
       found.push_back(p_at.root(e, job.lo, job.hi, p_lo, p_hi));
       continue;

@@ -48,8 +48,7 @@ double distance_at(const BasicCurve<P>& curve, P target, double t) {
 /// Newton's method on f = (B - q) · B', each step kept only while it stays in [a, b] and
 /// lowers the distance.
 template <class P>
-Candidate<P> polish(const BasicCurve<P>& curve, P target, double a, double b, double t) {
-  Candidate<P> best = candidate_at(curve, target, t);
+Candidate<P> polish(const BasicCurve<P>& curve, P target, double a, double b, Candidate<P> best) {
   for (int iteration = 0; iteration < 8; ++iteration) {
     const P offset = best.point - target;
     const auto d = derivatives_at(curve, best.t, 2);
@@ -77,11 +76,24 @@ NearestPoint<P> closest(const BasicCurve<P>& curve, P target, double a, double b
     const BasicCurve<P> hodograph = derivative(curve);
     const std::vector<double> f = dot_product_polynomial<P>(offsets, hodograph.points());
     for (const double t : interval_roots(f, a, b, IntervalEnds::closed).roots)
-      candidates.push_back(polish(curve, target, a, b, t));
+      candidates.push_back(candidate_at(curve, target, t));
+  }
+  const double coordinate_scale = std::max(scale(curve), max_abs_coordinate(target));
+  // Only the candidates near the least distance are polished. A root of the computed f is
+  // within a rounding-level stretch of the exact one (f's coefficients are within their
+  // bound e, about 1e-14 of the scale squared, of the exact ones), and along that stretch
+  // D = |B - q|^2 changes by 2 ∫ f, where |f| stays at rounding level: polishing lowers a
+  // distance by far less than 1e-6 of the coordinate scale, so a candidate further than
+  // that above the least is neither the minimum nor tied with it.
+  double rough_least = candidates.front().distance;
+  for (const Candidate<P>& c : candidates) rough_least = std::min(rough_least, c.distance);
+  const double polish_margin = 1e-6 * coordinate_scale;
+  for (std::size_t i = 2; i < candidates.size(); ++i) {
+    if (candidates[i].distance <= rough_least + polish_margin)
+      candidates[i] = polish(curve, target, a, b, candidates[i]);
   }
   double least = candidates.front().distance;
   for (const Candidate<P>& c : candidates) least = std::min(least, c.distance);
-  const double coordinate_scale = std::max(scale(curve), max_abs_coordinate(target));
   const double tolerance = std::max(1e-12 * least, 8 * kU * coordinate_scale);
 
   std::vector<Candidate<P>> tied;

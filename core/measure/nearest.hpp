@@ -31,10 +31,13 @@ struct NearestPoint {
 /// (interval_roots): an interval is discarded only when f's coefficients there have one
 /// strict sign beyond their rounding bound, so no root is lost except where |f| stays at
 /// that bound, where D varies by no more than the bound times the width: such a loss moves
-/// the answer by a rounding-level amount, never to another local minimum. Each root is then
-/// polished by Newton's method on f with f' = |B'|^2 + (B - q) · B'' from the compensated
-/// evaluations (kept only while it lowers the distance and stays in [a, b]), and the
-/// candidates are compared by their distance, hypot(B(t) - q) from the compensated B(t).
+/// the answer by a rounding-level amount, never to another local minimum. Each root whose
+/// distance is within 1e-6 of the coordinate scale of the least is then polished by
+/// Newton's method on f with f' = |B'|^2 + (B - q) · B'' from the compensated evaluations
+/// (kept only while it lowers the distance and stays in [a, b]; polishing moves a distance
+/// by a rounding-level amount, so the others are neither the minimum nor tied with it),
+/// and the candidates are compared by their distance, hypot(B(t) - q) from the compensated
+/// B(t).
 ///
 /// Ties (DESIGN §6): the candidates within max(1e-12 d_min, 8 u s) of the least distance
 /// d_min, s the largest coordinate of the control points and the target (below 8 ulps of
