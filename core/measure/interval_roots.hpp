@@ -19,8 +19,10 @@ enum class IntervalEnds { open, closed };
 /// the convex hull property), so no root of the polynomial with the given coefficients is
 /// lost except where |p| <= e throughout. A piece with exactly one sign change and p of
 /// opposite signs at its ends holds exactly one root, which is refined by Newton's method
-/// kept inside the sign bracket (a step out of it is a bisection) to one ulp: the same
-/// sign tests as bisection, a few instead of 55 per root. An exact zero of p at a split
+/// kept inside the sign bracket (a step out of it is a bisection) until |p| is within its
+/// evaluation bound e, then one more Newton step: within about e / |p'| of the root, as
+/// closely as the rounded p determines it (or until the bracket is one ulp). The same sign
+/// tests as bisection, a few instead of 55 per root. An exact zero of p at a split
 /// point is a root, and the pieces on either side leave that end out of their count.
 /// A cluster still unresolved at width 2^-40 (a multiple root, a root where p rounds to
 /// a tiny nonzero value at a split point) is reported at the middle of its piece.
