@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/numeric/binomial.hpp"
+#include "core/numeric/small_array.hpp"
 #include "core/base/point.hpp"
 
 namespace bezier::core {
@@ -23,10 +24,15 @@ template <class P>
                                                          std::span<const P> v) {
   const int m = static_cast<int>(u.size()) - 1, n = static_cast<int>(v.size()) - 1;
   std::vector<double> w(static_cast<std::size_t>(m + n + 1), 0.0);
+  // The binomials once each (exact integers, so the same values as computed per term).
+  SmallArray<double> cn(static_cast<std::size_t>(n + 1)), cmn(static_cast<std::size_t>(m + n + 1));
+  for (int j = 0; j <= n; ++j) cn[static_cast<std::size_t>(j)] = binomial(n, j);
+  for (int k = 0; k <= m + n; ++k) cmn[static_cast<std::size_t>(k)] = binomial(m + n, k);
   for (int i = 0; i <= m; ++i) {
     const double ci = binomial(m, i);
     for (int j = 0; j <= n; ++j) {
-      const double weight = ci * binomial(n, j) / binomial(m + n, i + j);
+      const double weight =
+          ci * cn[static_cast<std::size_t>(j)] / cmn[static_cast<std::size_t>(i + j)];
       w[static_cast<std::size_t>(i + j)] +=
           weight * dot(u[static_cast<std::size_t>(i)], v[static_cast<std::size_t>(j)]);
     }
