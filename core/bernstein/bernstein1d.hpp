@@ -158,8 +158,8 @@ template <class T>
 /// falling through it) and for the right end (c_n). The crossing abscissae are computed with
 /// a few roundings; the result is widened by 8 u on each side and clamped to [0, 1]. Empty
 /// (nullopt) exactly when every c_i < lo or every c_i > hi. This is the clip of Sederberg &
-/// Nishita (1990), without building the hull; testing only the segments and the level each
-/// end needs took 0.8x the time of testing every segment against both levels. For E
+/// Nishita (1990), without building the hull: only the segments and the level each end
+/// needs are tested, not every segment against both levels. For E
 /// coefficients, E fixed at compile time for the low degrees (fixed_extent.hpp: the loops
 /// unroll) or dynamic.
 template <std::size_t E>

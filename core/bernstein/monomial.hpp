@@ -54,8 +54,7 @@ namespace monomial_detail {
 
 /// Δ^(E-1) of E values: level by level into fresh arrays, d_i <- d_(i+1) - d_i as in
 /// monomial_from, the first level read from d itself. (A copy of d, differenced in place,
-/// made GCC store the values and reload overlapping pairs, which stalled store forwarding:
-/// 3 % of the benchmark's time.)
+/// makes GCC store the values and reload overlapping pairs, which stalls store forwarding.)
 template <std::size_t E>
 double top_forward_difference(std::span<const double, E> d) noexcept {
   if constexpr (E == 1) {

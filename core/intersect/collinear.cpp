@@ -35,8 +35,8 @@ int sign_of(double v) noexcept {
 /// u cut into monotone pieces at its turning points: the roots of u' where u' changes sign.
 /// A root of even multiplicity is no turning point; at an end where the derivative vanishes
 /// (P0 = P1, say) bernstein_roots reports its double root a few 1e-8 inside the interval,
-/// and cutting there left a sliver of a piece whose range only touches the other curve's
-/// (finding F10: an overlap stopping 5e-8 short of the end, contacts next to it).
+/// and cutting there would leave a sliver of a piece whose range only touches the other
+/// curve's (Collinear.OverlapReachesAFlatEnd).
 std::vector<MonotonePiece> monotone_pieces(const std::vector<double>& u) {
   const std::size_t n = u.size() - 1;
   std::vector<double> breaks = {0.0};
@@ -72,7 +72,7 @@ bool flat(const MonotonePiece& p) noexcept {
 }
 
 /// The midpoint of [min(a, b), max(a, b)], inside it even for subnormal ends (a / 2 + b / 2
-/// rounds 3 * 2^-1074 / 2 to 2^-1073: finding F14).
+/// rounds 3 * 2^-1074 / 2 to 2^-1073: Collinear.SubnormalEstimateInsideItsInterval).
 double middle(double a, double b) noexcept {
   const double lo = std::min(a, b), hi = std::max(a, b);
   return lo + (hi - lo) / 2;
@@ -163,15 +163,16 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
                                                         const WorkingCurve& g,
                                                         std::span<const ExactRoot> exact_roots) {
   // Relative to the smaller curve, as the overlap tests: a curve about 2^-14 the size of the other
-  // and bent by 4e-9 of its own size lay within the frame's tolerance of the other's line,
-  // and its end 1e-4 off that line was taken for a touch, placed differently in the two
-  // orders (finding F26).
+  // and bent by 4e-9 of its own size lies within the frame's tolerance of the other's line,
+  // and its end 1e-4 off that line is no touch
+  // (Collinear.ASmallCurveBentAboveItsRoundingIsNotOnALargeCurvesLine).
   const double quick_tol = coincidence_tolerance_bound(f, g);
   if (!roughly_straight(f, quick_tol) || !roughly_straight(g, quick_tol)) return std::nullopt;
   const double tol = coincidence_tolerance(f, g);
   // The line through the two control points farthest apart, of both curves, from the
   // lexicographically smaller: the same line whichever curve comes first (from f's first
-  // control point, the decision near the tolerance depended on the order: finding F26).
+  // control point, the decision near the tolerance would depend on the order:
+  // Collinear.NearlyCollinearCurvesOfDifferentSizesCrossOnce).
   std::vector<Point2> all;
   for (const WorkingCurve* c : {&f, &g}) {
     for (std::size_t i = 0; i < c->x.size(); ++i) all.push_back({c->x[i], c->y[i]});
@@ -213,7 +214,7 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
       // curve's parameter is exact; the other parameter, from bisection on the rounded
       // positions, is pinned down by Newton's method on the exact point. When it is an end
       // of both, both parameters are exact: moving either would depend on which curve
-      // comes first (finding F26: a touch at (0, 2^-43) in one order, (0, 0) in the other).
+      // comes first (Collinear.ATouchAtTwoEndsIsTheSameInBothOrders).
       const auto refine = [&](double w, double& t, double& s) {
         const bool from_f = w == pf.u0 || w == pf.u1, from_g = w == pg.u0 || w == pg.u1;
         if (from_f && from_g) return;
@@ -235,7 +236,8 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
       }
       // The ranges only touch: one contact, unless an overlap already ends there. A flat
       // piece touches with all of its parameters (a curve within the line tolerance of a
-      // point: finding F4), and the other curve's parameters are those of its two ends
+      // point: Collinear.EndPointRootOfATinyCurveIsReported), and the other curve's
+      // parameters are those of its two ends
       // (its positions, rounded, may be one number, while its exact points are not).
       if (flat(pf) && !flat(pg)) {
         ta = pf.t0;

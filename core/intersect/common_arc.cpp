@@ -39,7 +39,7 @@ constexpr double kRefineBelow = 1e-2;
 constexpr std::size_t kRefineDegree = 5;
 /// How well h(p) must fit the curve (relative to its magnitude) for a factorisation: a
 /// true factor, refined, fits to the interpolation's rounding (about 1e-12 at degree 20);
-/// a curve within 1e-6 of an improper one (a wave 1e-6 wide, seen) is not one.
+/// a curve within 1e-6 of an improper one (say a wave 1e-6 wide on it) is not one.
 constexpr double kFactorFit = 1e-9;
 /// Changes of p or q (whose ranges are about [0, 1]) below this are rounding, not turns.
 constexpr double kTurnNoise = 0x1p-40;
@@ -243,7 +243,7 @@ std::vector<double> misfit(const WorkingCurve& c, const Factorisation& f) {
 /// p_1 .. p_(k-1) (monic, p(0) = 0) minimising c - h(p) at the samples of misfit, h
 /// interpolated anew for each p, with a forward-difference Jacobian. The truncated root
 /// of right_factor takes p from the top coefficients of the power form, which cancel most
-/// (seen: s^2 - 2.9999985 s for s^2 - 3 s at degree 20, a misfit of 1e-5); a few steps
+/// (at degree 20, s^2 - 3 s can come out as s^2 - 2.9999985 s, a misfit of 1e-5); a few steps
 /// bring it to the rounding. A step that does not reduce the misfit ends it.
 Monomial refined_on_curve(const WorkingCurve& c, Monomial p, int d) {
   const std::size_t unknowns = p.size() - 2;
@@ -409,8 +409,9 @@ ArcPieces arc_pieces(const WorkingCurve& f, const WorkingCurve& g, const CommonA
       // on f) whose point lies on g, or one of g's on f, or both ends at once when their
       // bounds agree (Newton could not move from a turning point). p and q say which; they
       // fit the curves only to the factor's accuracy, so the point pair must agree too, and
-      // when it does not, the other curve's end is tried (finding F32: f's end at the origin,
-      // on curves 1e9 long, was paired with g's nearest point 0.99 away).
+      // when it does not, the other curve's end is tried (f's end at the origin on curves 1e9
+      // long is not to be paired with g's nearest point 0.99 away:
+      // CommonArc.AnOverlapEndsWhereBothCurvesAre).
       const auto agree = [&](double t, double s) {
         const Point2 d = point_of(f, t) - point_of(g, s);
         return std::fabs(d.x) <= end_tol && std::fabs(d.y) <= end_tol;
@@ -458,8 +459,9 @@ ArcPieces arc_pieces(const WorkingCurve& f, const WorkingCurve& g, const CommonA
       }
       // Both ways: a factor that only nearly fits (a curve on a line, taken for a quadratic
       // through a quadratic within the tolerance of the frame's magnitude) misplaces the
-      // ends, and only the other curve's points show it (finding F30: f's piece began at
-      // its end point, 8e-8 of the 0.4-long g away from g, in one order only).
+      // ends, and only the other curve's points show it (a piece of f beginning at its end
+      // point, 8e-8 of the 0.4-long g away from g:
+      // CommonArc.ACurveBesideALineSegmentDoesNotOverlapIt).
       if (!piece_lies_on(f, g, arc.p, arc.q, t_range.lo, t_range.hi, J) ||
           !piece_lies_on(g, f, arc.q, arc.p, s_range.lo, s_range.hi, I))
         return ArcPieces{false, {}, {}};
@@ -601,7 +603,7 @@ bool on_arc_overlap(const CommonArc& arc, const Overlap& overlap, double t, doub
   constexpr double kSlack = 0x1p-30;
   if (t < overlap.t_interval.lo - kSlack || t > overlap.t_interval.hi + kSlack) return false;
   if (s < overlap.s_interval.lo - kSlack || s > overlap.s_interval.hi + kSlack) return false;
-  // p and q are as good as h's interpolation (seen: q(0) = 1.5e-9 for 0 at degree 20).
+  // p and q are as good as h's interpolation (at degree 20, q(0) can be 1.5e-9 for 0).
   return std::fabs(value(arc.p, t) - value(arc.q, s)) <= kArcSlack;
 }
 

@@ -92,7 +92,7 @@ bool control_boxes_disjoint(const Curve& f, const Curve& g) noexcept {
 /// End points of f and g equal bit for bit: exact roots, unless they lie on an overlap,
 /// which then reaches them exactly (its ends, pinned by Newton's method, may stop a
 /// rounding short: t from 3e-27 instead of 0 on two curves sharing their first point, so
-/// the answer did not contain that point; finding F26).
+/// the answer would not contain that point: Overlap.AnOverlapReachesTheEndPointTheCurvesShare).
 std::vector<ExactRoot> exact_end_roots(const Curve& f, const Curve& g,
                                        std::span<OverlapFinding> overlaps) {
   const Point2 f_ends[2] = {f.front(), f.back()}, g_ends[2] = {g.front(), g.back()};
@@ -169,7 +169,8 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
         if (!t_range.contains(c.t_estimate) || !s_range.contains(c.s_estimate)) continue;
         Intersection x = make_intersection(wf, wg, scales, c.t_estimate, c.s_estimate, c.t, c.s);
         // A curve within the line tolerance of a point touches with all of its parameter
-        // range: resolved only when both ranges are narrower than the tolerance (F2).
+        // range: resolved only when both ranges are narrower than the tolerance
+        // (Intersect.TinyCurveIsNotReportedResolvedWithItsWholeInterval).
         x.resolved = c.t.width() < options.tolerance && c.s.width() < options.tolerance;
         result.intersections.push_back(x);
       }
@@ -183,7 +184,7 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   if (overlaps.empty()) overlaps = find_overlaps(wf, wg);
   // A point curve's parameter is free: one exact root (at 0, its interval widened to [0, 1]
   // below) per end of the other curve that is the point. The search alone can miss a point
-  // lying exactly on an end (found by the fuzzer once F4's gate was gone).
+  // lying exactly on an end (Collinear.PointAtAnEndIsAnExactRoot).
   std::vector<ExactRoot> exact = exact_end_roots(f, g, overlaps);
   for (const OverlapFinding& o : overlaps) result.overlaps.push_back(o.overlap);
   std::erase_if(exact, [&](const ExactRoot& r) {
@@ -205,7 +206,8 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   FatCurveOperator op_f, op_g;
   if (options.method != IntersectMethod::subdivision) {
     // Bézier clipping bounds the distance function itself: no reduction (k >= n; a point
-    // curve, n = 0, still takes k = 1, the operator's least degree: finding F3).
+    // curve, n = 0, still takes k = 1, the operator's least degree:
+    // Intersect.BezierClippingAcceptsAPointCurve).
     const bool hybrid = options.method == IntersectMethod::hybrid;
     const int k = std::clamp(options.fat_curve_degree, 1, 3);
     op_f = fat_curve_operator(wf.degree, hybrid ? k : std::max(wf.degree, 1));
@@ -246,7 +248,7 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
             : make_intersection(wf, wg, scales, r.t, r.s, c.t, c.s);
     if (in.t_free || in.s_free) x.kind = IntersectionKind::degenerate;
     // A curve handled as a point keeps the whole (or half) parameter interval: it is not
-    // resolved then, whatever the other curve's box (Intersection's contract; finding F2).
+    // resolved then, whatever the other curve's box (Intersection's contract).
     x.resolved = c.resolved && c.t.width() < options.tolerance && c.s.width() < options.tolerance;
     result.intersections.push_back(x);
   }

@@ -19,8 +19,8 @@ struct KindTolerances {
   double tangent_sine = 0x1p-33;
 };
 
-/// transversal / tangent / degenerate from the derivatives at the intersection (seed 003,
-/// def. 3.4): degenerate when either derivative is zero relative to its scale, tangent when
+/// transversal / tangent / degenerate from the derivatives at the intersection:
+/// degenerate when either derivative is zero relative to its scale, tangent when
 /// the sine of the angle between them is below the threshold, transversal otherwise.
 [[nodiscard]] IntersectionKind classify_intersection(Point2 df, Point2 dg, double df_scale,
                                                      double dg_scale,

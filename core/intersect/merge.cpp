@@ -46,9 +46,8 @@ ClosedBox grown(const Contact& c) noexcept {
 
 /// Boxes left at the precision floor (unresolved) trace a contact of order >= 3 as a tube
 /// along the stretch where the curves agree to within rounding, and the search's decisions
-/// there, at the floor, can leave holes in the tube several boxes long (finding F11: a
-/// third-order contact at an end came as two contacts 7e-6 apart, placed differently in the
-/// two orders). Two unresolved contacts are one when the gap between them, in t and in s,
+/// there, at the floor, can leave holes in the tube several boxes long (a third-order
+/// contact at an end: Merge.HighOrderContactIsReportedOnce). Two unresolved contacts are one when the gap between them, in t and in s,
 /// is at most the sum of their extents (their hulls grown by their extents meet); repeated
 /// until nothing changes, as joined contacts grow. Each round is one box_components over
 /// the unresolved contacts (O(u log u)), charged before it runs; the contacts joined keep

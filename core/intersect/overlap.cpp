@@ -225,8 +225,8 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
   // to within what overlap_tolerance allows of the control points, plus the conversion's
   // rounding (coefficient_error), with every quotient's error carried through. The
   // verification below looks at the overlapping pieces only, which cannot tell a short
-  // piece of a coincident curve from a curve that leaves at a small angle (finding F19:
-  // segments 2.4e-7 rad apart, which a tolerance of 2^-20 on these tests let through).
+  // piece of a coincident curve from a curve that leaves at a small angle (regression test
+  // Overlap.SwappingTheCurvesGivesTheSameKindOfAnswer: segments 2.4e-7 rad apart).
   if (!top_coefficients_agree(f, g, {at(fx, d), at(fy, d)}, {at(gx, d), at(gy, d)}, d)) return out;
   const double r = at(b, d) / at(a, d);
   const int top_degree = std::max(f.degree, g.degree);
@@ -299,11 +299,11 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
     if (!(gap <= tol)) continue;
     // Two pieces that both lie within the tolerance of a point (a tiny curve's end next to a
     // huge one's, within the rounding of the huge one's scale) are not an overlap: two
-    // distinct points may look so, and which pieces pass this test depended on which curve
-    // came first (finding F31: an overlap of 1e-7 in one order only, between ends 3e-9
-    // apart). The search decides there as anywhere else. (Finding F28: such an "overlap",
-    // reported in both orders, had its map extrapolated over the whole square and hid a
-    // crossing.)
+    // distinct points may look so, and which pieces pass this test would depend on which
+    // curve comes first (Overlap.TwoEndsWithinRoundingOfEachOtherAreNoOverlap: ends 3e-9
+    // apart). The search decides there as anywhere else. (Such an "overlap" would have its
+    // map extrapolated over the whole square and hide a crossing:
+    // Overlap.AnOverlapWithinRoundingOfAPointHidesNoCrossing.)
     if (!(extent(px, py) > tol || extent(qx, qy) > tol)) continue;
     OverlapFinding found;
     found.map.beta = (ends_t[1] - ends_t[0]) / (ends_s[1] - ends_s[0]);

@@ -46,8 +46,8 @@ struct OverlapFinding {
 /// How far two pieces may be apart and still coincide: overlap_tolerance of the smaller
 /// curve's size (at most the frame's, about 1), plus the rounding of pieces and
 /// evaluations in doubles (64 n u of the magnitude) and of the frame. Relative to the frame
-/// alone, a curve 2^-27 the size of the other passed as an overlap of a piece of it
-/// (finding F26).
+/// alone, a curve 2^-27 the size of the other would pass as an overlap of a piece of it
+/// (Overlap.ACurveTheSizeOfAnotherCurvesRoundingIsNoOverlap).
 [[nodiscard]] double coincidence_tolerance(const WorkingCurve& f, const WorkingCurve& g) noexcept;
 
 /// At least coincidence_tolerance(f, g): its value with the smaller curve's size taken as 1,
@@ -85,7 +85,7 @@ struct OverlapFinding {
 /// strictly monotone along a direction). Then f(t) = g(s) = f(alpha + beta s) forces
 /// t = alpha + beta s. Near a cusp of f the test fails and the box is kept (the search
 /// subdivides it further). (find_overlaps reports no overlap whose two pieces both lie
-/// within the tolerance of a point, whose map would be verified on nothing more: F28, F31.)
+/// within the tolerance of a point, whose map would be verified on nothing more.)
 [[nodiscard]] bool covered_by_overlap(const WorkingCurve& f, const OverlapFinding& o,
                                       ParamInterval t, ParamInterval s);
 

@@ -10,7 +10,7 @@
 namespace bezier::core {
 
 /// How two curves meet at an intersection, from the cross product of their derivatives
-/// (seed 003, def. 3.4), judged relative to the curves (see kind.hpp for the thresholds).
+/// (the usual definition: transversal where it is nonzero), judged relative to the curves (see kind.hpp for the thresholds).
 enum class IntersectionKind {
   transversal,  ///< f'(t) x g'(s) != 0: the curves cross at a nonzero angle
   tangent,      ///< f'(t) x g'(s) = 0 with both derivatives nonzero: they touch (or cross
@@ -87,7 +87,7 @@ enum class IntersectStatus {
   tolerance_too_small,  ///< the requested tolerance is below what doubles resolve (API: 422)
 };
 
-/// What the search cost, so methods can be compared (seed 003 §3).
+/// What the search cost, so methods can be compared.
 struct IntersectStats {
   IntersectMethod method = IntersectMethod::hybrid;
   std::int64_t iterations = 0;         ///< box steps taken

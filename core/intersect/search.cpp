@@ -93,8 +93,8 @@ constexpr double kUnevenPieces = 8;
 /// Boxes narrower than this in t and s (hybrid, fast pieces) try the Krawczyk test
 /// (krawczyk.hpp) before they are clipped: at a transversal crossing the Jacobian varies by
 /// O(width) over the box, so the test usually succeeds and replaces the last few clips.
-/// (2^-5 until Newton's method started from where the chords cross: from there it also
-/// converges on boxes twice as wide, which saves 0.17 steps per benchmark pair.)
+/// (Newton's method starts from where the chords cross, from which it converges on boxes
+/// this wide.)
 constexpr double kKrawczykWidth = 0x1p-4;
 
 /// The intersection of two kept intervals (both contain every root), or nothing.
@@ -317,10 +317,9 @@ class Searcher {
     // When rounding decides, the compensated pieces have their say. So they do at an end of
     // either curve, even when only one side's test was noisy: there a root of the curves'
     // extensions a few ulps beyond the end stays within the fast pieces' rounding (about
-    // 1e-15 of the working scale) however narrow the box gets (F27: a curve ending 5e-15 of
-    // the scale beside the other, which crosses its line there, was reported in one order
-    // only). Inside, the fast test stands: retesting every box there cost Bézier clipping a
-    // quarter more work on the benchmark pairs.
+    // 1e-15 of the working scale) however narrow the box gets
+    // (Search.ACurveEndingBesideAnotherDoesNotMeetItThere). Inside, the fast test stands:
+    // retesting every box there would cost Bézier clipping more work than it saves.
     const bool at_end = box.t.lo == 0.0 || box.t.hi == 1.0 || box.s.lo == 0.0 || box.s.hi == 1.0;
     if ((sep.noisy || at_end) && retry_compensated(box)) return Next::again;
     emit(box, true);

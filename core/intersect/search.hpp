@@ -50,7 +50,7 @@ struct SearchOutput {
 /// max_work by its cost (work_cost.hpp).
 ///
 ///  - hybrid: clip the pieces in turn against each other's fat line with fat curves;
-///    when a clip keeps more than half of its interval, halve both intervals (seed 003).
+///    when a clip keeps more than half of its interval, halve both intervals (after Lou & Liu 2012).
 ///    Boxes narrower than 2^-4 first try the Krawczyk test (krawczyk.hpp), which proves a
 ///    transversal crossing unique and returns it in a box of half the search width, or
 ///    proves the box empty, in one step.

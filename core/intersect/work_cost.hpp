@@ -15,9 +15,9 @@ namespace bezier::core {
 // either cut legitimate searches short or let pathological ones run for seconds. Charging
 // each step by what it computes makes the spent units proportional to time: one unit is
 // about one coordinate update of de Casteljau's algorithm in doubles. The multipliers are
-// fitted to the worst and the heaviest ordinary requests of tests/bench/worst_case_inputs.hpp
-// (BENCHMARKS.md §4b: 4-5 ns per unit on every one that reaches the cap, where the previous
-// multipliers ranged over 7.5-25 ns): a plain step is cheap next to what the costly ones add.
+// fitted to the worst and the heaviest ordinary requests of tests/bench/worst_case_inputs.hpp,
+// so that every one that reaches the cap spends about the same time per unit: a plain step
+// is cheap next to what the costly ones add.
 
 /// Compensated (double-double) pieces cost this many times the plain ones: each update is
 /// a two-product and two two-sums instead of one multiply-add.
@@ -98,7 +98,7 @@ inline constexpr std::int64_t kCandidateCost = 32;
 /// affine map or a common arc. For proper curves the factorisation attempts stop at their
 /// first filter and this covers them; an improper curve (or a degenerate one, most of its
 /// control points equal) takes every candidate factor of its degree through division and
-/// interpolation and costs a few times more (BENCHMARKS.md §4b), still bounded by the degree.
+/// interpolation and costs a few times more, still bounded by the degree.
 [[nodiscard]] constexpr std::int64_t overlap_search_cost(int m, int n) noexcept {
   const std::int64_t a = m + 1, b = n + 1;
   return 4 * (a * a * a + b * b * b);

@@ -20,11 +20,12 @@ constexpr double kU = bernstein::kU;
 constexpr int kSmallestExponent = -1074;
 
 /// The multiple of `grid` nearest to x, or the one next to it towards zero when the nearest
-/// is beyond the largest double (x within half a grid step of it, finding F13).
+/// is beyond the largest double (x within half a grid step of it:
+/// WorkingCurve.CoordinatesNextToTheLargestDouble).
 double grid_point(double x, double grid) noexcept {
   // From 2^53 grid steps on, x's ulp is a multiple of the grid, and so is x; x / grid may
-  // then even overflow (a curve 2^-1030 tall at x = -7: the origin came out infinite, and the
-  // frame's exponent overflowed an int, finding F29).
+  // then even overflow (a curve 2^-1030 tall at x = -7 would give an infinite origin and
+  // overflow the frame's exponent: WorkingCurve.ATinyCurveFarFromTheOriginHasAFiniteFrame).
   if (!(std::fabs(x) < grid * 0x1p53)) return x;
   const double nearest = std::nearbyint(x / grid) * grid;
   return std::isfinite(nearest) ? nearest : std::trunc(x / grid) * grid;
@@ -82,7 +83,8 @@ WorkingFrame working_frame(const Curve& f, const Curve& g) {
   // A grid of a sixteenth of the extent: the origin has few significant bits, so inputs on
   // any finer grid subtract from it exactly, and translating the inputs by a multiple of
   // the grid translates the origin by the same amount. (Never finer than the smallest
-  // subnormal: a grid of 0 would make the origin NaN, finding F5b.)
+  // subnormal: a grid of 0 would make the origin NaN,
+  // WorkingCurve.SegmentFourSubnormalStepsLong.)
   const double grid = power_of_two(std::max(exponent_of(extent) - 4, kSmallestExponent));
   frame.origin = {grid_point(center.x, grid), grid_point(center.y, grid)};
   double m = 0.0;

@@ -7,7 +7,7 @@
 namespace bezier::core {
 
 /// The number of coefficients E of a low-degree piece as a compile-time constant, for the
-/// hot loops of the search (issue 4 item 6): `with_fixed_extent(size, fn)` calls
+/// hot loops of the search: `with_fixed_extent(size, fn)` calls
 /// fn(std::integral_constant<std::size_t, E>{}) with E = size for the sizes 2, 3 and 4
 /// (degrees 1 to 3, every piece of the cubic benchmark), and with E = std::dynamic_extent
 /// for any other size. A function body written once over std::span<const double, E> then

@@ -50,7 +50,7 @@ void expect_no_overflowed_number(const std::string& path, const std::string& bod
   }
 }
 
-// finite input, non-finite result. The exact
+// Finite input, non-finite result. The exact
 // results here are 2e308 (B(2) of the segment 0 -> 1e308), 2e308 (B' of -1e308 -> 1e308),
 // 2e308 (the first polar at t0 = 2) and about 1e400 (the area of a loop 1e200 wide), all
 // beyond the largest double (about 1.8e308).

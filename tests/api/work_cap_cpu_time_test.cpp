@@ -16,11 +16,11 @@ namespace {
 
 using nlohmann::json;
 
-// a quadratic reaching 3e129 against a
+// A quadratic reaching 3e129 against a
 // quartic reaching 1e237, by subdivision. The search spends its budget at the precision
-// floor, where each coincidence test projected five points onto the other curve by up to 30
-// Gauss-Newton steps and was charged as one step: the request took several times the CPU
-// time its units stand for. The test is now charged by its evaluations. Through the API at
+// floor, where each coincidence test projects five points onto the other curve by up to 30
+// Gauss-Newton steps: charged as one step, the request would take several times the CPU
+// time its units stand for, so the test is charged by its evaluations. Through the API at
 // the default limits, by every method: 200 or the work-cap 422, within a CPU time no bounded
 // request comes near (a wide margin, not a timing).
 TEST(WorkCapCpuTime, CoincidenceTestsAreChargedByTheirEvaluations) {
@@ -42,11 +42,11 @@ TEST(WorkCapCpuTime, CoincidenceTestsAreChargedByTheirEvaluations) {
   }
 }
 
-// one curve of degree 12 whose last nine control points
+// One curve of degree 12 whose last nine control points
 // are the origin (its first four 1e-323, 6, 8 and 181.74 from it), by subdivision. Most boxes
-// next to the diagonal start a Newton run, and the parameter boxes were charged too little
-// for them: the self-intersection search took half again the time its units stand for. Now
-// each Newton iteration is charged as a box and a box's cost covers the run's setup. Through
+// next to the diagonal start a Newton run: each Newton iteration is charged as a box and a
+// box's cost covers the run's setup, or the search would take more time than its units
+// stand for. Through
 // the API at the default limits, one curve and /loop-area: 200 or the work-cap 422 within a
 // CPU time no bounded request comes near.
 TEST(WorkCapCpuTime, NewtonRunsOfTheSelfIntersectionSearchAreCharged) {

@@ -229,9 +229,9 @@ double value(std::span<const double, E> p, double t) noexcept {
 /// Where the monotone p (power coefficients c) crosses level[0] and level[1] in [0, 1], for
 /// the lanes marked wanted (the others keep their start). Halley's method, whose order is 3:
 /// started where the control polygon crosses the level, which on the first, large pieces
-/// can be 0.2 off, two steps reach the 2^-32 pad where Newton's method often needed four (it
-/// had three, and 8.7 % of the monotone clips of the benchmark pairs failed their
-/// certificate and took the hull iteration; now 0.02 %). The two lanes are independent
+/// can be 0.2 off, two steps reach the 2^-32 pad where Newton's method often needs four, so
+/// that a certificate rarely fails and sends the clip to the hull iteration. The two lanes
+/// are independent
 /// chains and every step's outcome is a select, not a branch: they overlap in the pipeline.
 template <std::size_t E>
 std::array<double, 2> monotone_roots(std::span<const double, E> p, const double* c, bool increasing,
@@ -324,11 +324,10 @@ std::optional<ParamInterval> kept_interval_of(std::span<const double, E> p, doub
     const bool beta_certified = beta == 1.0 || (increasing ? at_beta > hi + e : at_beta < lo - e);
     if (alpha_certified && beta_certified && alpha <= beta) return ParamInterval{alpha, beta};
   }
-  // Not monotone, degree 3 (57 % of the clips of the cubic benchmark pairs, nearly all on
-  // the first, large pieces): the hull iteration. The exact set from the cubic's monotone
-  // stretches (Newton's method per stretch, a certificate per stretch, the hull iteration
-  // when one failed: a quarter of them) was tighter, but its branches cost more than the
-  // few extra steps the looser bound takes (BENCHMARKS.md §2d); near a root, where the
+  // Not monotone, degree 3 (common on the first, large pieces): the hull iteration. The
+  // exact set from the cubic's monotone stretches (Newton's method per stretch, a
+  // certificate per stretch, the hull iteration when one fails) is tighter, but its
+  // branches cost more than the few extra steps the looser bound takes; near a root, where the
   // convergence order counts, the distance function is monotone and takes the path above.
   if (k == 3) return kept_interval_by_hulls_of(p, lo, hi);
   // Not monotone, degree <= 2: the roots of p = lo and p = hi in closed form; segments between

@@ -24,7 +24,7 @@ namespace bezier::core {
 ///    strictly below lo or all strictly above hi, which by the convex hull property proves p
 ///    avoids the band there.
 ///  - otherwise, degree 3: repeated convex-hull clips of p (below). The exact set from the
-///    cubic's monotone stretches was tighter there but cost more than it saved: such
+///    cubic's monotone stretches is tighter there but costs more than it saves: such
 ///    cubics come from large pieces, far from convergence.
 ///  - whenever a certificate fails: repeated convex-hull clips of p (bernstein::hull_clip),
 ///    conservative by construction.

@@ -34,7 +34,7 @@ struct FatCurveOperator {
 
 [[nodiscard]] FatCurveOperator fat_curve_operator(int n, int k);
 
-/// A fat curve of a scalar Bernstein polynomial D of degree n (seed 003; Lou & Liu 2012):
+/// A fat curve of a scalar Bernstein polynomial D of degree n (Lou & Liu 2012, hybrid.hpp):
 /// p = R a, the L2-best degree-k approximation, and delta with |D(t) - p(t)| <= delta for all
 /// t in [0, 1]. delta = max_i |a_i - c_i| over the coefficients c = E p of p elevated back to
 /// degree n (D - p has Bernstein coefficients a - c, and a Bernstein polynomial is bounded

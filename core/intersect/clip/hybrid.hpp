@@ -5,7 +5,8 @@
 
 namespace bezier::core {
 
-/// Hybrid clip (seed 003, after Lou & Liu 2012): x against the fat line of `other`, with x's
+/// Hybrid clip (after Q. Lou and L. Liu, "Curve intersection using hybrid clipping",
+/// Computers & Graphics 36(5), 2012, 309-320): x against the fat line of `other`, with x's
 /// distance function bounded by its fat curve of degree op.k (fat_curve_clip).
 [[nodiscard]] Clip hybrid_clip(const Piece& x, const Piece& other, const FatCurveOperator& op,
                                PointLineDirection direction);

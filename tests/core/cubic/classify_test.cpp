@@ -422,7 +422,7 @@ TEST(ClassifyExtremes, LoopNextToAnEndKeepsItsParametersOrdered) {
   EXPECT_LT(d.t2, 1.0);
 }
 
-// finite coordinates more than the largest
+// Finite coordinates more than the largest
 // double apart. The differences P_i - P_0 overflow to infinity and the filter's finiteness
 // assertion, written on their sum (inf - inf = NaN), aborted; release builds took the exact
 // path, which rescales. The type must be the exact oracle's (the assertion itself is checked
@@ -443,7 +443,7 @@ TEST(ClassifyExtremes, CoordinatesFartherApartThanTheLargestDoubleAreClassified)
   }
 }
 
-// a loop on a cubic with coordinates near the largest double.
+// A loop on a cubic with coordinates near the largest double.
 // The double point, the mean of B(t1) and B(t2), was computed as half their sum, which
 // overflowed to -inf. Both points lie in the control points' convex hull, so their mean does:
 // it must be finite and inside the control points' bounding box.

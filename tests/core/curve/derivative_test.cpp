@@ -189,7 +189,7 @@ TEST(DerivativesAt, MatchExactValuesDegrees1To20In3D) {
   }
 }
 
-// The "Done when" cases of issue 2 for the first and second derivatives (the point is in
+// The hard inputs for the first and second derivatives (the point is in
 // evaluate_test.cpp): degree 20, coordinates around 1e6, around 1e-6, alternating ±1000.
 template <class P>
 void check_degree_20(std::uint32_t seed, double magnitude, bool alternate) {

@@ -111,7 +111,7 @@ TEST(Evaluate, MatchesExactValueDegrees1To20In3D) {
   for (const std::uint32_t seed : {4u, 5u}) check_random_curves<Point3>(seed, -100.0, 100.0);
 }
 
-// The "Done when" cases of issue 2: degree 20, coordinates around 1e6, around 1e-6, and
+// The hard inputs: degree 20, coordinates around 1e6, around 1e-6, and
 // alternating ±1000 (where B(t) cancels: the x coordinate of the pure alternating curve is
 // 1000 (1 - 2t)^20, tiny near t = 1/2, yet the result stays within one rounding of it).
 template <class P>

@@ -28,7 +28,7 @@ using test::for_every_option;
 using test::on_parabola;
 using test::RationalPoint;
 
-// f starts exactly where g ends; g is 2^-29 long and f 2^24, so g
+// Here f starts exactly where g ends; g is 2^-29 long and f 2^24, so g
 // is within the working frame's line tolerance of f's line and of a point, and the pair goes the
 // collinear way. g(s) = (0x1.d4p-30 (1 - s)^2, 0) meets the line x = 0 of f only at s = 1: the
 // one intersection is f(0) = g(1) = (0, 0), equal bit for bit. g's positions along f's line were
@@ -41,7 +41,7 @@ TEST(Collinear, EndPointRootOfATinyCurveIsReported) {
   expect_one_exact_end_root(f, g, 0.0, 1.0);
 }
 
-// a single point exactly at an end
+// A single point exactly at an end
 // of the other curve. Bézier clipping missed f(1) = (0, 0) of this cubic against the point (0, 0)
 // altogether; a closed quadratic through the point (a degree-1 curve with equal points) came back
 // with its root t = 0 only. End points equal bit for bit are exact roots, a point curve's
@@ -69,7 +69,7 @@ TEST(Collinear, PointAtAnEndIsAnExactRoot) {
   EXPECT_TRUE(covered(c, 1.0, 0.5));
 }
 
-// two curves on the line y = −x, f from (1, −1) to
+// Two curves on the line y = −x, f from (1, −1) to
 // (−1/2, 1/2) with P1 = P2 = P3 (f'(1) = 0) and g from (−1/2, 1/2) to (0, 0). g lies on f:
 // the overlap is t in [t0, 1] (f(t0) = (0, 0): f(t) = P0 + (1 − (1 − t)^3)(P3 − P0), so
 // 1 − t0 = 3^(-1/3)) with s in [0, 1] reversed, and f(1) = g(0) bit for bit. The double root of
@@ -96,7 +96,7 @@ TEST(Collinear, OverlapReachesAFlatEnd) {
   }
 }
 
-// an estimate one subnormal step outside its
+// An estimate one subnormal step outside its
 // zero-width interval. f, 2^-900 long, lies on the segment g(s) = (0, 2^64 s), from s = 3 2^-1074
 // to s = 2^-964; in the working frame f's positions along the line are one number, so the pair
 // came as a touch with s in [3 2^-1074, 3 2^-1074] and the estimate s/2 + s/2 = 4 2^-1074 (and

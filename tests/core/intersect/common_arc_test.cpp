@@ -1,4 +1,4 @@
-// Overlaps along polynomial reparametrisations (issue 4, item 3): curves g = h(q(s)) that
+// Overlaps along polynomial reparametrisations (common_arc.hpp): curves g = h(q(s)) that
 // trace an arc of a proper curve h at a non-uniform speed, or more than once. Each curve is
 // built in exact rationals (the composition of Bézier curves through de Casteljau's
 // algorithm on polynomials in Bernstein form) and rounded once; each expected overlap comes

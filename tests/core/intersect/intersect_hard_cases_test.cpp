@@ -1,4 +1,4 @@
-// The hard cases of issue 4, item 3 (part 1: tangencies, near-tangencies, end points), each
+// Hard cases of curve intersection (part 1: tangencies, near-tangencies, end points), each
 // with an independent expectation: exact roots built into the input (dyadic parameters) or
 // exact rational arithmetic. Part 2 is intersect_overlap_cases_test.cpp.
 

@@ -1,4 +1,4 @@
-// The hard cases of issue 4, item 3 (part 2: overlaps, straight lines, points, high degree,
+// Hard cases of curve intersection (part 2: overlaps, straight lines, points, high degree,
 // scale and translation, budget), each with an independent expectation: exact rational
 // arithmetic or a construction whose answer is known (portions, reversals, degree
 // elevation, an independent sign count). Part 1 is intersect_hard_cases_test.cpp.

@@ -27,7 +27,7 @@ using test::for_every_option;
 using test::on_parabola;
 using test::RationalPoint;
 
-// a curve smaller than about 2^-44 of the other is handled
+// A curve smaller than about 2^-44 of the other is handled
 // as a point, its parameter interval is [0, 1] (or a half of it), and the intersection is
 // still flagged `resolved`. Here f is the segment y = 2x of length ~2^-48 through the
 // origin and g the segment y = x / 2 through it: one transversal crossing, at t = s = 1/2.

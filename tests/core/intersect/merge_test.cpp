@@ -27,7 +27,7 @@ using test::for_every_option;
 using test::on_parabola;
 using test::RationalPoint;
 
-// g touches the segment f at f's end with third-order
+// The curve g touches the segment f at f's end with third-order
 // contact (P0, P1, P2 of g on the line y = 1, so g's y is 1 − s^3): one contact, f(1) = g(0)
 // exactly, where f' = (−2, 0) and g'(0) = 3 (P1 − P0) are parallel and nonzero (tangent). The
 // curves agree to within rounding along a stretch next to it, where the search leaves boxes at

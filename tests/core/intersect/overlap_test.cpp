@@ -27,7 +27,7 @@ using test::for_every_option;
 using test::on_parabola;
 using test::RationalPoint;
 
-// g starts on the segment f, at
+// The curve g starts on the segment f, at
 // x = 0x1.3p-23, and leaves it at an angle of 2^-22 (g's slope 2^-19 / (8 + 0x1.3p-23)). In
 // the order (f, g) the answer was an overlap t in [0, 2.2e-9], s in [0, 1.8e-8]; in the order
 // (g, f) the single crossing. Two distinct lines cross once: at f(t) = g(0), t = 0x1.3p-29
@@ -51,7 +51,7 @@ TEST(Overlap, SwappingTheCurvesGivesTheSameKindOfAnswer) {
   }
 }
 
-// g(s) = 0x1.80200021p-2 (1 - s)^3
+// The curve g(s) = 0x1.80200021p-2 (1 - s)^3
 // is within the overlap tolerance of a point for s near 1, so "g on [0.99992, 1] = f at t = 0"
 // passed the overlap verification in one order: an overlap of width 0 in t; nothing in the
 // other. The only root is the exact end root f(0) = g(1).

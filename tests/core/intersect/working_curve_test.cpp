@@ -28,7 +28,7 @@ using test::for_every_option;
 using test::on_parabola;
 using test::RationalPoint;
 
-// subnormal coordinates. Two segments 1e-310 long meeting
+// Subnormal coordinates. Two segments 1e-310 long meeting
 // at the origin, f(1) = g(0) = (0, 0): the kernel answered (1, 1) with a NaN point (the
 // working frame's power-of-two scale overflowed).
 TEST(WorkingCurve, SubnormalCoordinatesGiveFinitePointsAndTheRightRoot) {
@@ -40,7 +40,7 @@ TEST(WorkingCurve, SubnormalCoordinatesGiveFinitePointsAndTheRightRoot) {
   expect_intersection_contract(r, IntersectOptions{}.tolerance);
 }
 
-// coordinates a few subnormal steps
+// Coordinates a few subnormal steps
 // from zero. A point (a degree-1 curve with equal points) at the origin and the segment
 // g(s) = (-4 (1 - s) 2^-1074, 0) ending there: the working frame's grid (a sixteenth of the
 // extent) underflowed to 0 and its origin became NaN, so the search spent the whole work
@@ -63,7 +63,7 @@ TEST(WorkingCurve, SegmentFourSubnormalStepsLong) {
   }
 }
 
-// coordinates next to the largest double. The working
+// Coordinates next to the largest double. The working
 // frame's origin, rounded to its grid, was beyond the largest double, so the offsets were infinite
 // and `std::ilogb(m) + 1` overflowed an int (undefined behaviour; in release the search spent the
 // whole work budget). The answer: f(t) = (1.79e308 t, -1.79e308) ends where g (a point) is, t = 1,

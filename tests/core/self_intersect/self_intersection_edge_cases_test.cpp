@@ -19,7 +19,7 @@
 namespace bezier::core {
 namespace {
 
-// the cubic closed form's Newton polish walks away
+// The cubic closed form's Newton polish walks away
 // from an ill-conditioned double point (a nearly collinear cubic) and still counts as
 // converged. In closed form (cubic_double_point.hpp's derivation): with a = P1 − P0,
 // b = P2 − 2P1 + P0, c = P3 − 3P2 + 3P1 − P0, t + s = −(a × c)/(b × c) = 6/5 and
@@ -59,7 +59,7 @@ double worst_relative_gap(const Curve& c, const SelfIntersectionResult& r) {
   return worst;
 }
 
-// next to an end where B' vanishes (here P3 = P4 =
+// Next to an end where B' vanishes (here P3 = P4 =
 // P5, so B(s) − B(1) = O((1 − s)^3)) the general method accepts a pair far from any double
 // point: |B(t) − B(s)| = 0.74 on a curve of scale 2208 (reported as transversal).
 TEST(SelfIntersectionEdgeCases, PairsNextToAFlatEndAreDoublePoints) {
@@ -74,7 +74,7 @@ TEST(SelfIntersectionEdgeCases, PairsNextToAFlatEndAreDoublePoints) {
   EXPECT_LT(worst_relative_gap(c, r), 1e-9);
 }
 
-// with coordinates spanning more than 2^400 the
+// With coordinates spanning more than 2^400 the
 // classification is not exact, and the cubic with P2 = P3 (B'(1) = 0: a cusp at t = 1 by
 // DESIGN §1, whatever the other points) came out as loop-at-end with t1 = t2 = 1, which
 // self_intersections() passed on as the pair (1, 1).
@@ -94,7 +94,7 @@ TEST(SelfIntersectionEdgeCases, CuspAtTheEndIsNotALoopOfWidthZero) {
   }
 }
 
-// the general method
+// The general method
 // (subdivision) missed the loop of this cubic and reported status ok. The loop is certain: the
 // closed form decides it exactly (cubic_double_point.hpp), at t about 0.04 and s about 0.998,
 // where the branches cross at an angle of 9e-8. (The search's Newton stopped at its plain
@@ -117,7 +117,7 @@ TEST(SelfIntersectionEdgeCases, GeneralMethodFindsTheLoopTheClosedFormFinds) {
   }
 }
 
-// coordinates spanning more than 2^400: the cubic's
+// Coordinates spanning more than 2^400: the cubic's
 // closed form is not exact (CubicPredicates::exact false), and the pair it gave was no double
 // point: (0, 1) on an open curve, |B(0) − B(1)| = 0.027 on a curve of size 8. The exact double
 // point (rational elimination of s + t and s t, done off-line) is at t = 1.3e-6, s = 1.0011: off
@@ -137,7 +137,7 @@ TEST(SelfIntersectionEdgeCases, InexactClosedFormGivesDoublePoints) {
   }
 }
 
-// pairs outside the unit square, and the trivial pair of
+// Pairs outside the unit square, and the trivial pair of
 // a closed curve leaking out (the polish after the end snapping moved parameters past the ends;
 // next to a flat seam Newton and the contact stage settled on pairs the search could not tell
 // from (0, 1)). Every pair must have 0 <= t < s <= 1 and never be (0, 1).
@@ -214,7 +214,7 @@ TEST(SelfIntersectionEdgeCases, FlatSeamGivesNoPair) {
   }
 }
 
-// a degree-20 curve's double point at t = 0.000195
+// A degree-20 curve's double point at t = 0.000195
 // reported twice, out of order, the copies 1.4e-9 apart in s (above the 1e-10 merge distance),
 // the second 1.8e-9 off the curve's other branch. The curve has two double points (off-line, in
 // 60-digit arithmetic: a dense polyline's crossings, then Newton), each to be reported once,
