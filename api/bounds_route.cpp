@@ -90,7 +90,7 @@ Reply path_bounds_answer(const path::Path& p) {
 Reply bounds_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
   reader.reject_unknown_fields(request, {"points", "path", "interval"}, "");
-  if (RequestReader::optional(request, "path") != nullptr) {
+  if (has_path(request)) {
     const std::optional<path::Path> p = read_request_path(reader, request);
     if (!reader.ok()) return reader.refusal();
     return path_bounds_answer(*p);

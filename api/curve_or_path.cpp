@@ -6,6 +6,17 @@
 
 namespace bezier::api {
 
+namespace {
+
+/// The member `path` of `object`, null included (a null path is refused, not ignored, so
+/// that it is never taken for a missing one and the request read as a curve's).
+const Json* path_member(const Json& object) {
+  const auto it = object.find("path");
+  return it == object.end() ? nullptr : &*it;
+}
+
+}  // namespace
+
 std::optional<path::Path> read_path(RequestReader& reader, const Json& value,
                                     const std::string& pointer) {
   if (!value.is_string()) {
@@ -44,7 +55,7 @@ std::optional<path::Path> read_path(RequestReader& reader, const Json& value,
 std::optional<CurveOrPath> read_curve_or_path(RequestReader& reader, const Json& object,
                                               const std::string& pointer) {
   const Json* points = RequestReader::optional(object, "points");
-  const Json* path = RequestReader::optional(object, "path");
+  const Json* path = path_member(object);
   if (points != nullptr && path != nullptr) {
     reader.fail(pointer, "give either \"points\" or \"path\", not both");
     return std::nullopt;
@@ -71,10 +82,12 @@ std::optional<path::Path> read_request_path(RequestReader& reader, const Json& r
   if (RequestReader::optional(request, "interval") != nullptr) {
     reader.fail("/interval", "applies to a curve given by \"points\", not to a path");
   }
-  const Json* value = RequestReader::optional(request, "path");
+  const Json* value = path_member(request);
   if (value == nullptr) return std::nullopt;
   return read_path(reader, *value, "/path");
 }
+
+bool has_path(const Json& object) { return path_member(object) != nullptr; }
 
 path::Path as_path(CurveOrPath input) {
   if (auto* p = std::get_if<path::Path>(&input)) return std::move(*p);

@@ -27,6 +27,9 @@ std::optional<path::Path> read_path(RequestReader& reader, const Json& value,
 std::optional<CurveOrPath> read_curve_or_path(RequestReader& reader, const Json& object,
                                               const std::string& pointer);
 
+/// Whether `object` has a member `path` (null included: it is then refused as a path).
+[[nodiscard]] bool has_path(const Json& object);
+
 /// For the measuring routes (/length, /bounds, /nearest) with a request that has `path`:
 /// the path (read_path at /path), with `points` beside it refused at /points and
 /// `interval` at /interval (a parameter interval is one curve's).

@@ -166,7 +166,7 @@ std::optional<std::vector<double>> read_at_lengths(RequestReader& reader, const 
 Reply length_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
   reader.reject_unknown_fields(request, {"points", "path", "interval", "at_lengths"}, "");
-  if (RequestReader::optional(request, "path") != nullptr) {
+  if (has_path(request)) {
     const std::optional<path::Path> p = read_request_path(reader, request);
     const auto at_lengths = read_at_lengths(reader, request);
     if (!reader.ok()) return reader.refusal();

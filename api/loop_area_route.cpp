@@ -245,7 +245,7 @@ Reply loop_area_route(const nlohmann::json& request, const Limits& limits) {
   std::optional<CurveOrPath> input = read_curve_or_path(reader, request, "");
   std::optional<std::pair<double, double>> interval;
   if (const auto* value = RequestReader::optional(request, "interval")) {
-    if (RequestReader::optional(request, "path") != nullptr) {
+    if (has_path(request)) {
       reader.fail("/interval", "applies to a curve given by \"points\", not to a path");
     } else {
       interval = read_interval(reader, *value);

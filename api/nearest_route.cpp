@@ -235,7 +235,7 @@ Reply read_path_and_answer(RequestReader& reader, const Json& request) {
 Reply nearest_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
   reader.reject_unknown_fields(request, {"points", "path", "targets", "interval"}, "");
-  if (RequestReader::optional(request, "path") != nullptr) return read_path_and_answer(reader, request);
+  if (has_path(request)) return read_path_and_answer(reader, request);
   std::optional<std::variant<core::Curve, core::Curve3>> curve;
   if (const auto* points = reader.required(request, "points", "")) {
     curve = reader.curve(*points, "/points");
