@@ -205,7 +205,8 @@ class Evaluator {
 
 }  // namespace
 
-IntervalRoots interval_roots(std::span<const double> c, double a, double b, IntervalEnds ends) {
+IntervalRoots interval_roots(std::span<const double> c, double a, double b, IntervalEnds ends,
+                             Crossings wanted) {
   assert(!c.empty() && 0.0 <= a && a <= b && b <= 1.0);
   const std::size_t n = c.size() - 1;
   // The rounding bound of a coefficient of a piece (bernstein::portion_into: 3.01 n u max|c|),
@@ -256,7 +257,7 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
     // exact on [0, 1]).
     const double p_lo = q[0], p_hi = q[n];
     if (changes == 1 && !any_small && p_lo != 0.0 && p_hi != 0.0 && (p_lo < 0) != (p_hi < 0)) {
-      found.push_back(p_at.root(e, job.lo, job.hi, p_lo, p_hi));
+      if (wanted == Crossings::any || p_lo < 0) found.push_back(p_at.root(e, job.lo, job.hi, p_lo, p_hi));
       continue;
     }
     if (job.depth >= kMaxDepth || !(job.lo < middle && middle < job.hi)) {

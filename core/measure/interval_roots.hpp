@@ -36,8 +36,15 @@ struct IntervalRoots {
   bool isolated = true;
 };
 
+/// Which roots are wanted: every one, or only those where p rises through zero (a
+/// minimum of a function whose derivative is p, as /nearest wants). With `rising`, a
+/// one-root piece where p falls from positive to negative is left out unrefined; every
+/// other root is reported as with `any` (exact zeros, clusters and flat stretches, whose
+/// direction the signs do not settle).
+enum class Crossings { any, rising };
+
 /// Precondition: c non-empty, 0 <= a <= b <= 1.
 [[nodiscard]] IntervalRoots interval_roots(std::span<const double> c, double a, double b,
-                                           IntervalEnds ends);
+                                           IntervalEnds ends, Crossings wanted = Crossings::any);
 
 }  // namespace bezier::core

@@ -75,7 +75,9 @@ NearestPoint<P> closest(const BasicCurve<P>& curve, P target, double a, double b
     for (std::size_t i = 0; i < points.size(); ++i) offsets[i] = points[i] - target;
     const BasicCurve<P> hodograph = derivative(curve);
     const std::vector<double> f = dot_product_polynomial<P>(offsets, hodograph.points());
-    for (const double t : interval_roots(f, a, b, IntervalEnds::closed).roots)
+    // f = D' / 2 for D = |B - q|^2: a minimum of D inside (a, b) is where f rises through
+    // zero; where it falls D has a maximum, never the answer.
+    for (const double t : interval_roots(f, a, b, IntervalEnds::closed, Crossings::rising).roots)
       candidates.push_back(candidate_at(curve, target, t));
   }
   const double coordinate_scale = std::max(scale(curve), max_abs_coordinate(target));

@@ -25,7 +25,8 @@ struct NearestPoint {
 /// The global minimum of |B(t) - q| over t in [a, b], ends included.
 ///
 /// Candidates: a, b and every root in [a, b] of f(t) = (B(t) - q) · B'(t) = D'(t) / 2, where
-/// D = |B - q|^2 (a minimum of D inside (a, b) is a root of f). f has degree 2n - 1; its
+/// D = |B - q|^2 (a minimum of D inside (a, b) is a root of f), except the simple roots
+/// where f falls through zero (maxima of D; Crossings::rising). f has degree 2n - 1; its
 /// Bernstein coefficients are products of the points P_i - q and of the hodograph's
 /// (bernstein_product.hpp). Its roots come from the certified Bernstein root finder
 /// (interval_roots): an interval is discarded only when f's coefficients there have one
