@@ -152,6 +152,11 @@ TEST(PathInput, SyntaxErrorsPointAtThePathStringWithTheOffset) {
 TEST(PathInput, RefusalsOfTheShape) {
   EXPECT_EQ(only_error(call("/bounds", R"({"path":"M1 1"})", 422)).first, "/path");
   EXPECT_EQ(only_error(call("/bounds", R"({"path":7})", 422)).first, "/path");
+  // A null path is refused as a path, not read as a missing one (then a curve's).
+  EXPECT_EQ(only_error(call("/bounds", R"({"path":null})", 422)).first, "/path");
+  EXPECT_EQ(only_error(call("/loop-area", R"({"path":null})", 422)).first, "/path");
+  EXPECT_EQ(only_error(call("/intersections", R"({"curves":[{"path":null}]})", 422)).first,
+            "/curves/0/path");
   EXPECT_EQ(only_error(call("/bounds", R"({"path":"M0 0 L1 1","points":[[0,0],[1,1]]})", 422)).first,
             "/points");
   EXPECT_EQ(only_error(call("/nearest", R"({"path":"M0 0 L1 1","targets":[[0,0]],"interval":[0,1]})", 422)).first,
