@@ -27,19 +27,21 @@ struct Box {
 struct MeetingBoxes {
   /// (i, j) pairs, sorted.
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  /// Work units (core/intersect/work_cost.hpp: about one coordinate update each) charged for
-  /// the sort and the sweep: one per comparison of the sort's estimated N log2 N and one per
-  /// pair of boxes whose x ranges overlap.
+  /// Work units (core/intersect/work_cost.hpp: about one coordinate update each) charged
+  /// for the sweep: its sorts by their estimated comparisons (the pairs' sort as each pair
+  /// is found), each insertion, removal and query by the tree nodes and entries it reads.
   std::int64_t work = 0;
   /// False when the sweep stopped at its work limit: `pairs` may then miss some.
   bool complete = true;
 };
 
-/// Every (i, j) with a[i] and b[j] meeting. Sweep along x (sort and sweep): the boxes sorted
-/// by x_lo, each box compared with the boxes of the other set still open at its x_lo. Cost
-/// O(N log N + P) for N boxes in all, P the pairs whose x ranges overlap (at least the
-/// pairs that meet, at most all of them when every box spans the same x range). Stops
-/// early (complete = false) once the work exceeds `max_work`.
+/// Every (i, j) with a[i] and b[j] meeting. A sweep along x (Bentley & Wood, "An optimal
+/// worst case algorithm for reporting intersections of rectangles", IEEE Trans. Computers
+/// C-29, 1980): the boxes in the order of x_lo; at each, the boxes that end before it are
+/// closed and the open boxes of the other set whose y ranges meet its own are reported, from
+/// a map of the open boxes by y_lo and a segment tree of their y ranges. Cost O(N log N + K)
+/// for N boxes in all and K pairs that meet. Stops early (complete = false) once the work
+/// exceeds `max_work`.
 [[nodiscard]] MeetingBoxes meeting_boxes(std::span<const Box> a, std::span<const Box> b,
                                          std::int64_t max_work);
 

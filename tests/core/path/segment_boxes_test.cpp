@@ -65,16 +65,28 @@ TEST(SegmentBoxes, OneSetGivesEachMeetingPairOnce) {
 }
 
 TEST(SegmentBoxes, StopsAtItsWorkLimit) {
-  // 100 boxes over the same x range: the sweep compares every pair, 5050 units after the
-  // sort's 700. Capped at 1000 it stops within one box's comparisons (at most 100) of it.
+  // 100 equal boxes: every pair meets, 4950 pairs reported one after another. Capped at
+  // 3000 units the sweep stops within one box's query of the cap: its entries (at most
+  // 2 x 100), its pairs (at most 100, 2 log2 N = 14 units each) and its tree path.
   std::vector<Box> boxes(100, Box{0, 1, 0, 1});
-  const MeetingBoxes capped = meeting_boxes(boxes, 1000);
+  const MeetingBoxes capped = meeting_boxes(boxes, 3000);
   EXPECT_FALSE(capped.complete);
-  EXPECT_LE(capped.work, 1000 + 100);
+  EXPECT_LE(capped.work, 3000 + 2 * 100 + 100 * 14 + 64);
   EXPECT_FALSE(meeting_boxes(boxes, 500).complete);
   const MeetingBoxes full = meeting_boxes(boxes, 1 << 30);
   EXPECT_TRUE(full.complete);
   EXPECT_EQ(full.pairs.size(), 100u * 99 / 2);
+}
+
+TEST(SegmentBoxes, WorkGrowsWithThePairsThatMeetNotWithTheirXOverlaps) {
+  // 200 thin horizontal boxes spanning the same x range at distinct heights: all overlap in
+  // x, none meets another. Their work stays near N log N, far below the 19900 x-overlapping
+  // pairs a sweep over x alone would compare.
+  std::vector<Box> boxes;
+  for (int k = 0; k < 200; ++k) boxes.push_back({0, 1, 2.0 * k, 2.0 * k + 1});
+  const MeetingBoxes found = meeting_boxes(boxes, 1 << 30);
+  EXPECT_TRUE(found.pairs.empty());
+  EXPECT_LT(found.work, 200 * 8 * 8);
 }
 
 }  // namespace
