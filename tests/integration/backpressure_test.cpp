@@ -13,7 +13,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/integration/raw_http.hpp"
+#include "tests/support/raw_http.hpp"
 #include "tests/support/service_process.hpp"
 
 namespace bezier::test {

@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/integration/costly_request.hpp"
-#include "tests/integration/raw_http.hpp"
+#include "tests/support/raw_http.hpp"
 #include "tests/support/service_process.hpp"
 
 namespace bezier::test {

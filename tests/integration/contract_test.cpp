@@ -24,7 +24,7 @@
 #include "core/intersect/options.hpp"
 #include "core/intersect/result.hpp"
 #include "tests/contract/schema_violations.hpp"
-#include "tests/integration/raw_http.hpp"
+#include "tests/support/raw_http.hpp"
 #include "tests/support/service_process.hpp"
 
 namespace bezier::test {

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/integration/raw_http.hpp"
+#include "tests/support/raw_http.hpp"
 #include "tests/support/service_process.hpp"
 
 namespace bezier::test {

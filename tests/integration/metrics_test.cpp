@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/integration/costly_request.hpp"
-#include "tests/integration/raw_http.hpp"
+#include "tests/support/raw_http.hpp"
 #include "tests/support/service_process.hpp"
 
 namespace bezier::test {

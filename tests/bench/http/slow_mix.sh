@@ -6,7 +6,7 @@
 # that runs requests on its I/O threads shows the slow request in every other client's p99.
 #   tests/bench/http/slow_mix.sh [service-binary] [seconds]
 # The binary must take --port 0 --log-level warn and print "listening on http://HOST:PORT"
-# (bezier-service does; so does tests/bench/http/epoll_prototype.cpp).
+# (bezier-service does).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 binary=${1:-$here/../../../build/service/bezier-service}
