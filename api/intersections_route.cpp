@@ -53,8 +53,8 @@
 #include "core/curve/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
 #include "core/path/path_intersections.hpp"
+#include "core/self_intersect/certify.hpp"
 #include "core/self_intersect/self_intersection.hpp"
-#include "core/self_intersect/work_cost.hpp"
 
 namespace bezier::api {
 
@@ -179,83 +179,26 @@ Reply two_curves_answer(const IntersectionsRequest& request, const Limits& limit
   return json_reply(std::move(w));
 }
 
-core::IntersectionKind kind_of(core::SelfIntersectionKind kind) {
-  switch (kind) {
-    case core::SelfIntersectionKind::tangent:
-      return core::IntersectionKind::tangent;
-    case core::SelfIntersectionKind::degenerate:
-      return core::IntersectionKind::degenerate;
-    case core::SelfIntersectionKind::transversal:
-      break;
-  }
-  return core::IntersectionKind::transversal;
-}
-
-/// A self-intersection (t, s) with guaranteed intervals: the curve against itself, searched
-/// in a box around (t, s) that stays away from the diagonal t = s (where every point is a
-/// trivial solution). When the box holds exactly one contact, its intervals and estimate
-/// are used; otherwise the pair is reported as found, with point intervals, unresolved.
-struct CertifiedPair {
-  core::Intersection intersection;
-  std::int64_t work = 0;   ///< work units spent
-  std::int64_t steps = 0;  ///< search steps taken
-  /// Left unresolved for want of work units (none left, or the search hit its budget):
-  /// with a larger work cap it might have been certified.
-  bool out_of_work = false;
-};
-
-CertifiedPair certified_pair(const core::Curve& curve, const core::SelfIntersection& pair,
-                             const core::IntersectOptions& options, std::int64_t budget) {
-  core::Intersection x;
-  x.t = pair.t;
-  x.s = pair.s;
-  x.t_interval = {pair.t, pair.t};
-  x.s_interval = {pair.s, pair.s};
-  x.point = pair.point;
-  x.kind = kind_of(pair.kind);
-  x.resolved = false;
-  const double w = std::min(0x1p-20, (pair.s - pair.t) / 4);
-  if (!(w > 0)) return {x, 0, 0, false};
-  if (budget <= 0) return {x, 0, 0, true};
-  core::IntersectOptions local = options;
-  local.max_work = budget;
-  const core::IntersectionResult r =
-      core::intersect_in(curve, curve, {std::max(0.0, pair.t - w), std::min(1.0, pair.t + w)},
-                         {std::max(0.0, pair.s - w), std::min(1.0, pair.s + w)}, local);
-  if (r.status != core::IntersectStatus::ok || r.intersections.size() != 1)
-    return {x, r.stats.work, r.stats.iterations, r.status == core::IntersectStatus::work_cap_reached};
-  return {r.intersections.front(), r.stats.work, r.stats.iterations, false};
-}
-
 Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits) {
   const core::Curve& curve = request.curve(0);
-  core::SelfIntersectionOptions options;
-  options.max_work = core::self_intersection_box_budget(limits.max_work, curve.degree());
-  const core::SelfIntersectionResult r = core::self_intersections(curve, options);
+  const core::SelfIntersectionResult r = core::self_intersections(
+      curve, core::self_intersection_options(limits.max_work, curve.degree()));
   if (r.status == core::SelfIntersectionStatus::work_cap_reached)
     return self_intersection_work_cap_reply(r.stats.work, limits.max_work);
   // The certification searches share what the self-intersection search left of the budget;
   // a pair they cannot certify within it is reported as found, unresolved.
-  const std::int64_t search_units = r.stats.work * core::self_intersection_box_cost(curve.degree());
-  std::int64_t certification_work = 0, certification_steps = 0;
-  bool out_of_work = false;
+  const core::CertifiedSelfIntersections certified = core::certify_self_intersections(
+      curve, r.pairs, request.options, limits.max_work - r.stats.work_units);
   JsonWriter w;
   w.begin_object();
   w.key("intersections").begin_array();
-  for (const core::SelfIntersection& pair : r.pairs) {
-    const CertifiedPair c = certified_pair(curve, pair, request.options,
-                                           limits.max_work - search_units - certification_work);
-    certification_work += c.work;
-    certification_steps += c.steps;
-    out_of_work = out_of_work || c.out_of_work;
-    write_intersection(w, c.intersection);
-  }
+  for (const core::Intersection& x : certified.intersections) write_intersection(w, x);
   w.end_array();
   w.key("overlaps").begin_array();
   for (const core::SelfOverlap& o : r.overlaps) write_self_overlap(w, curve, o);
   w.end_array();
   w.key("stats").begin_object();
-  w.key("certification_iterations").value(certification_steps);
+  w.key("certification_iterations").value(certified.steps);
   w.key("max_depth").value(r.stats.max_depth);
   w.key("method").value(core::method_name(r.stats.method));
   w.key("newton_iterations").value(r.stats.newton_iterations);
@@ -265,7 +208,7 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   w.end_object();
   Reply reply = json_reply(std::move(w));
   // A pair left unresolved for want of work units is an answer the cap decided.
-  reply.limit_reached = out_of_work;
+  reply.limit_reached = certified.out_of_work;
   return reply;
 }
 
@@ -350,14 +293,14 @@ Reply one_path_answer(const IntersectionsRequest& request, const Limits& limits)
   std::int64_t certification_work = 0, certification_steps = 0;
   bool out_of_work = false;
   for (const path::SegmentSelfIntersections& within : r.within_segments) {
-    for (const core::SelfIntersection& pair : within.result.pairs) {
-      const CertifiedPair c =
-          certified_pair(p.segments[within.segment], pair, request.options,
-                         limits.max_work - r.stats.work - certification_work);
-      certification_work += c.work;
-      certification_steps += c.steps;
-      out_of_work = out_of_work || c.out_of_work;
-      contacts.push_back({within.segment, within.segment, c.intersection});
+    const core::CertifiedSelfIntersections c = core::certify_self_intersections(
+        p.segments[within.segment], within.result.pairs, request.options,
+        limits.max_work - r.stats.work - certification_work);
+    certification_work += c.work;
+    certification_steps += c.steps;
+    out_of_work = out_of_work || c.out_of_work;
+    for (const core::Intersection& x : c.intersections) {
+      contacts.push_back({within.segment, within.segment, x});
     }
   }
   sort_contacts(contacts);

@@ -24,7 +24,7 @@
 // Errors: 422 validation problems with JSON Pointers (an area beyond the double range is
 // reported at /points); 422 work-cap problem when the self-intersection search needs more
 // than limits.max_work work units (parameter boxes charged by the curve's degree,
-// core/self_intersect/work_cost.hpp).
+// core::self_intersection_options).
 
 #include <cmath>
 #include <optional>
@@ -43,23 +43,10 @@
 #include "core/path/path_area.hpp"
 #include "core/path/path_intersections.hpp"
 #include "core/path/path_loops.hpp"
-#include "core/self_intersect/work_cost.hpp"
 
 namespace bezier::api {
 
 namespace {
-
-const char* kind_name(core::SelfIntersectionKind kind) {
-  switch (kind) {
-    case core::SelfIntersectionKind::tangent:
-      return "tangent";
-    case core::SelfIntersectionKind::degenerate:
-      return "degenerate";
-    case core::SelfIntersectionKind::transversal:
-      break;
-  }
-  return "transversal";
-}
 
 /// An area beyond the double range (the curve is finite, its area need not be: a loop
 /// 1e200 wide) cannot be written as a JSON number: that request is answered with a problem.
@@ -115,9 +102,8 @@ Reply interval_answer(const core::Curve& curve, double t1, double t2) {
 }
 
 Reply loops_answer(const core::Curve& curve, const Limits& limits) {
-  core::SelfIntersectionOptions options;
-  options.max_work = core::self_intersection_box_budget(limits.max_work, curve.degree());
-  const core::LoopAreaResult result = core::loop_area(curve, options);
+  const core::LoopAreaResult result =
+      core::loop_area(curve, core::self_intersection_options(limits.max_work, curve.degree()));
   if (result.status == core::SelfIntersectionStatus::work_cap_reached) {
     return self_intersection_work_cap_reply(result.stats.work, limits.max_work);
   }
@@ -138,7 +124,7 @@ Reply loops_answer(const core::Curve& curve, const Limits& limits) {
   for (const core::Loop& loop : result.loops) {
     w.begin_object();
     w.key("area").value(loop.area);
-    w.key("kind").value(kind_name(loop.kind));
+    w.key("kind").value(core::to_string(loop.kind));
     write_point(w.key("point"), loop.point);
     w.key("signed_area").value(loop.signed_area);
     w.key("t").pair(loop.t1, loop.t2);

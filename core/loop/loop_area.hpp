@@ -21,7 +21,7 @@ struct Loop {
   /// 1/2 ∮ (x dy - y dx) over B on [t1, t2]: positive when the loop runs counter-clockwise
   /// (y up). Exact Bernstein form (enclosed_area); the chord B(t2) -> B(t1) has zero length.
   double signed_area = 0.0;
-  SelfIntersectionKind kind = SelfIntersectionKind::transversal;
+  IntersectionKind kind = IntersectionKind::transversal;
 };
 
 struct LoopAreaResult {

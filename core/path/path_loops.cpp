@@ -8,22 +8,6 @@
 
 namespace bezier::path {
 
-namespace {
-
-core::IntersectionKind kind_of(core::SelfIntersectionKind kind) {
-  switch (kind) {
-    case core::SelfIntersectionKind::tangent:
-      return core::IntersectionKind::tangent;
-    case core::SelfIntersectionKind::degenerate:
-      return core::IntersectionKind::degenerate;
-    case core::SelfIntersectionKind::transversal:
-      break;
-  }
-  return core::IntersectionKind::transversal;
-}
-
-}  // namespace
-
 std::vector<PathLoop> loops(const Path& path, const PathSelfIntersectionResult& self) {
   std::vector<PathLoop> out;
   for (const PathContact& c : self.intersections) {
@@ -37,7 +21,7 @@ std::vector<PathLoop> loops(const Path& path, const PathSelfIntersectionResult& 
     for (const core::SelfIntersection& pair : within.result.pairs) {
       const double a = piece_area(path, within.segment, pair.t, within.segment, pair.s);
       out.push_back({within.segment, within.segment, pair.t, pair.s, pair.point, std::fabs(a), a,
-                     kind_of(pair.kind)});
+                     pair.kind});
     }
   }
   std::sort(out.begin(), out.end(), [](const PathLoop& p, const PathLoop& q) {

@@ -18,6 +18,7 @@
 #include "core/intersect/working_curve.hpp"
 #include "core/self_intersect/refine.hpp"
 #include "core/self_intersect/search.hpp"
+#include "core/self_intersect/work_cost.hpp"
 #include "core/curve/subdivide.hpp"
 
 namespace bezier::core {
@@ -140,9 +141,9 @@ double exact_residual(const Curve& curve, double u, double v) {
 /// compensated_difference() (mixed-precision iterative refinement). The search's Newton
 /// works with plain de Casteljau, whose F is only good to the rounding level n u S: it stops
 /// anywhere within double_point_uncertainty() of the root, which for branches crossing at
-/// a small angle is far more than ulps (seen: one double point found from two boxes as two
-/// pairs 1.4e-9 apart in s; a certain pair dropped because its |B(v) - B(u)| exceeded the
-/// distance tolerance). With the accurate F the steps shrink quadratically down to the
+/// a small angle is far more than ulps: one double point reached from two boxes would come
+/// out as two pairs too far apart to merge, and a real pair could fail the distance check on
+/// |B(v) - B(u)|. With the accurate F the steps shrink quadratically down to the
 /// noise floor, u |F| ||J^-1||; a step that does not halve the one before is noise and is
 /// not taken. (Not "while |F| decreases": at an ill-conditioned root the doubles next to it
 /// all have |F| at the level of the parameters' own rounding, and points 1e-12 away along
@@ -212,11 +213,11 @@ SelfIntersection finished_pair(const CurveFacts& facts, double u, double v, bool
   const double n = static_cast<double>(facts.points.size() - 1);
   const double zero = 1e-12 * n * facts.scale;
   const double lu = norm(ju.d1), lv = norm(jv.d1);
-  SelfIntersectionKind kind = SelfIntersectionKind::transversal;
+  IntersectionKind kind = IntersectionKind::transversal;
   if (lu <= zero || lv <= zero) {
-    kind = SelfIntersectionKind::degenerate;
+    kind = IntersectionKind::degenerate;
   } else if (contact || std::fabs(cross(ju.d1, jv.d1)) <= kTangentSine * lu * lv) {
-    kind = SelfIntersectionKind::tangent;
+    kind = IntersectionKind::tangent;
   }
   return {u, v, 0.5 * (evaluate(facts.curve, u) + evaluate(facts.curve, v)), kind};
 }
@@ -394,7 +395,7 @@ SelfIntersectionResult retracing_result(const CurveFacts& facts,
   std::vector<SelfIntersection> pairs;
   for (const SelfIntersection& h : result.pairs) {
     const double a = 0.5 * h.t, b = 0.5 * h.s;
-    const bool tangent = h.kind == SelfIntersectionKind::tangent;
+    const bool tangent = h.kind == IntersectionKind::tangent;
     for (const auto& [u, v] : {std::pair{a, b}, {a, 1 - b}, {b, 1 - a}, {1 - b, 1 - a}}) {
       const Candidate c =
           tangent ? Candidate{u, v, 0.0, true} : polished({u, v, 0.0, false}, facts);
@@ -458,7 +459,7 @@ std::optional<SelfIntersectionResult> improper_result(const CurveFacts& facts,
   result.stats = on_h.stats;
   std::vector<Candidate> candidates;
   for (const SelfIntersection& pair : on_h.pairs) {
-    const bool tangent = pair.kind == SelfIntersectionKind::tangent;
+    const bool tangent = pair.kind == IntersectionKind::tangent;
     for (const double t : level_set(arc.p, pair.t)) {
       for (const double s : level_set(arc.p, pair.s)) {
         candidates.push_back({std::min(t, s), std::max(t, s), 0.0, tangent});
@@ -534,6 +535,12 @@ ClosedFormAnswer closed_form_cubic(const CurveFacts& facts) {
 
 }  // namespace
 
+SelfIntersectionOptions self_intersection_options(std::int64_t work_units, int degree) noexcept {
+  SelfIntersectionOptions options;
+  options.max_work = self_intersection_box_budget(work_units, degree);
+  return options;
+}
+
 SelfIntersectionResult self_intersections(const Curve& curve,
                                           const SelfIntersectionOptions& options) {
   // Squared lengths in the inner loops (sqrt(v·v), not the slower overflow-safe hypot) need
@@ -567,7 +574,7 @@ SelfIntersectionResult self_intersections(const Curve& curve,
     result.stats.method = SelfIntersectionMethod::closed_form_cubic;
     result.stats.newton_runs = 1;
     result.stats.newton_iterations = cubic.newton_iterations;
-    result.pairs.push_back({cubic.t, cubic.s, cubic.point, SelfIntersectionKind::transversal});
+    result.pairs.push_back({cubic.t, cubic.s, cubic.point, IntersectionKind::transversal});
   } else if (const auto frame = collinear_frame(points, facts.dist_tol)) {
     result = collinear_result(facts, *frame, options);
   } else if (is_palindrome(points)) {
@@ -604,6 +611,7 @@ SelfIntersectionResult self_intersections(const Curve& curve,
   if (k != 0) {
     for (SelfIntersection& pair : result.pairs) pair.point = (pair.point / f1) / f2;
   }
+  result.stats.work_units = result.stats.work * self_intersection_box_cost(curve.degree());
   return result;
 }
 

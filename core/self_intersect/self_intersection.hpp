@@ -5,24 +5,20 @@
 
 #include "core/base/curve.hpp"
 #include "core/base/point.hpp"
+#include "core/intersect/result.hpp"
 
 namespace bezier::core {
 
-/// How the two branches meet at a self-intersection, from the cross product of the
-/// tangents B'(t) and B'(s) (DESIGN §1, as for two-curve intersections).
-enum class SelfIntersectionKind {
-  transversal,  ///< the tangents are not parallel: the curve crosses itself
-  tangent,      ///< parallel non-zero tangents: the curve touches itself
-  degenerate,   ///< a tangent is zero there (a cusp of one branch lies on the other)
-};
-
-/// One self-intersection: 0 <= t < s <= 1 with B(t) = B(s).
+/// One self-intersection: 0 <= t < s <= 1 with B(t) = B(s). The kind is that of two-curve
+/// intersections, from the cross product of the tangents B'(t) and B'(s) (DESIGN §1):
+/// transversal where the curve crosses itself, tangent where it touches itself, degenerate
+/// where a tangent is zero (a cusp of one branch lies on the other).
 struct SelfIntersection {
   double t = 0.0;
   double s = 0.0;
   /// The double point, (B(t) + B(s)) / 2.
   Point2 point;
-  SelfIntersectionKind kind = SelfIntersectionKind::transversal;
+  IntersectionKind kind = IntersectionKind::transversal;
 };
 
 /// A continuum of self-intersections: the curve retraces itself, B on [t_lo, t_hi] runs
@@ -68,6 +64,9 @@ struct SelfIntersectionStats {
   SelfIntersectionMethod method = SelfIntersectionMethod::subdivision;
   /// Parameter boxes examined (the unit of the work budget).
   std::int64_t work = 0;
+  /// What those boxes cost in work units (core/intersect/work_cost.hpp's unit, shared with
+  /// two-curve intersection; see self_intersection_options).
+  std::int64_t work_units = 0;
   /// Deepest subdivision level reached (boxes of width 2^-depth).
   int max_depth = 0;
   /// Newton refinements started, and their iterations in all.
@@ -92,7 +91,7 @@ struct SelfIntersectionResult {
 /// relative to scale(curve).
 struct SelfIntersectionOptions {
   /// Most parameter boxes to examine before giving up with work_cap_reached (a budget in
-  /// work units converts with self_intersection_box_budget, self_intersection_work_cost.hpp).
+  /// work units converts with self_intersection_options).
   std::int64_t max_work = 200000;
   /// dist_tol = dist_rel * scale(curve): two points closer than this are "the same point"
   /// for tangential contacts and collinearity. 2^-44 is about 256 ulps of the largest
@@ -106,6 +105,13 @@ struct SelfIntersectionOptions {
   /// the same pairs above its resolution; tests compare).
   bool cubic_closed_form = true;
 };
+
+/// The default options with a budget of `work_units` work units (core/intersect/work_cost.hpp's
+/// unit, shared with two-curve intersection) for a curve of degree `degree`: as many
+/// parameter boxes as the units buy (core/self_intersect/work_cost.hpp), so that a cap in
+/// units bounds the time whatever the degree.
+[[nodiscard]] SelfIntersectionOptions self_intersection_options(std::int64_t work_units,
+                                                                int degree) noexcept;
 
 /// Every pair 0 <= t < s <= 1 with B(t) = B(s), for any degree n >= 1.
 ///

@@ -30,8 +30,8 @@
 namespace {
 
 using bezier::core::Curve;
+using bezier::core::IntersectionKind;
 using bezier::core::Point2;
-using bezier::core::SelfIntersectionKind;
 using bezier::core::SelfIntersectionOptions;
 using bezier::core::SelfIntersectionResult;
 using bezier::core::SelfIntersectionStatus;
@@ -92,7 +92,7 @@ void check_result(const Curve& c, const SelfIntersectionResult& r) {
     const double gap = std::fmax(std::fabs(a.x - b.x), std::fabs(a.y - b.y));
     // (At least a few subnormal steps: below them the curve has only a handful of points.)
     const double allowed =
-        (p.kind == SelfIntersectionKind::transversal ? 0x1p-30 : 0x1p-12) * size * c.degree() +
+        (p.kind == IntersectionKind::transversal ? 0x1p-30 : 0x1p-12) * size * c.degree() +
         std::fmax(0x1p-40 * scale, 0x1p-1070);
     // (Findings F6, F8, fixed by 86fab32: the cubic closed form's polish walked away from
     // ill-conditioned double points, and next to a flat end Newton stopped far from one. F15:
@@ -210,7 +210,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const auto& from = *pair;
         const auto& to = pair == &r ? q : r;
         for (const auto& p : from.pairs) {
-          if (p.s - p.t <= 1e-3 || p.kind != SelfIntersectionKind::transversal) continue;
+          if (p.s - p.t <= 1e-3 || p.kind != IntersectionKind::transversal) continue;
           if (loop_thickness(c, p.t, p.s) < 0x1p-30 * bezier::core::scale(c)) continue;
           // At the ends the general method snaps a pair to t = 0 or s = 1 when B(0) = B(s)
           // holds within its distance tolerance, while the closed form decides exactly: a

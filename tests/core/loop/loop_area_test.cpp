@@ -165,7 +165,7 @@ TEST(LoopArea, TangentialContactEnclosesALoop) {
   const double exact = test::exact_enclosed_area(test::power_form(c), q(1, 4), q(3, 4)).to_double();
   const LoopAreaResult r = loop_area(c);
   ASSERT_EQ(r.loops.size(), 1u);
-  EXPECT_EQ(r.loops[0].kind, SelfIntersectionKind::tangent);
+  EXPECT_EQ(r.loops[0].kind, IntersectionKind::tangent);
   EXPECT_NEAR(r.loops[0].signed_area, exact, 1e-12 * std::fabs(exact));
 }
 

@@ -97,7 +97,7 @@ double exact_residual(const Curve& c, double t, double s) {
   return std::hypot(d.x.to_double(), d.y.to_double());
 }
 
-// --- the seed's example ---------------------------------------------------------------
+// --- the degree-7 example --------------------------------------------------------------
 
 TEST(SelfIntersection, Degree7ExampleAgainstExactSymmetricRoot) {
   // P_{7-i} = (1 - x_i, y_i), so B(1 - t) = (1 - x(t), y(t)): the double point pairs t with
@@ -120,7 +120,7 @@ TEST(SelfIntersection, Degree7ExampleAgainstExactSymmetricRoot) {
     EXPECT_NEAR(p.t + p.s, 1.0, 4e-16);
     EXPECT_NEAR(p.point.x, 0.5, 1e-14 * 0.5);
     EXPECT_NEAR(p.point.y, y, 1e-14 * y);
-    EXPECT_EQ(p.kind, SelfIntersectionKind::transversal);
+    EXPECT_EQ(p.kind, IntersectionKind::transversal);
   }
 }
 
@@ -249,7 +249,7 @@ TEST(SelfIntersection, TangentialSelfContactIsFoundOnce) {
   ASSERT_EQ(r.pairs.size(), 1u);
   EXPECT_NEAR(r.pairs[0].t, 0.25, 1e-9);
   EXPECT_NEAR(r.pairs[0].s, 0.75, 1e-9);
-  EXPECT_EQ(r.pairs[0].kind, SelfIntersectionKind::tangent);
+  EXPECT_EQ(r.pairs[0].kind, IntersectionKind::tangent);
   EXPECT_EQ(r.status, SelfIntersectionStatus::ok);
   // Moved off the grid by a translation and a non-dyadic scale: still one contact.
   std::vector<Point2> moved;
@@ -280,13 +280,13 @@ TEST(SelfIntersection, NearTangencyIsTwoCrossingsOrNoneOrOneContact) {
     EXPECT_NEAR(crossing.pairs[0].s, 0.5 + s_out, 1e-12);
     EXPECT_NEAR(crossing.pairs[1].t, 0.5 - s_in, 1e-12);
     EXPECT_NEAR(crossing.pairs[1].s, 0.5 + s_in, 1e-12);
-    EXPECT_EQ(crossing.pairs[0].kind, SelfIntersectionKind::transversal);
+    EXPECT_EQ(crossing.pairs[0].kind, IntersectionKind::transversal);
 
     EXPECT_TRUE(self_intersections(curve(Rational(std::ldexp(1.0, -k)))).pairs.empty()) << k;
   }
   const SelfIntersectionResult touch = self_intersections(curve(Rational(std::ldexp(1.0, -52))));
   ASSERT_EQ(touch.pairs.size(), 1u);
-  EXPECT_EQ(touch.pairs[0].kind, SelfIntersectionKind::tangent);
+  EXPECT_EQ(touch.pairs[0].kind, IntersectionKind::tangent);
   EXPECT_NEAR(touch.pairs[0].t, 0.25, 1e-9);
 }
 
@@ -298,7 +298,7 @@ TEST(SelfIntersection, SeveralLoopsOnOneCurve) {
   EXPECT_NEAR(r.pairs[0].s, 0.875, 1e-15);
   EXPECT_NEAR(r.pairs[1].t, 0.375, 1e-15);
   EXPECT_NEAR(r.pairs[1].s, 0.625, 1e-15);
-  for (const SelfIntersection& p : r.pairs) EXPECT_EQ(p.kind, SelfIntersectionKind::transversal);
+  for (const SelfIntersection& p : r.pairs) EXPECT_EQ(p.kind, IntersectionKind::transversal);
 }
 
 TEST(SelfIntersection, CuspsAreNotSelfIntersections) {
