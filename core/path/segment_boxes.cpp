@@ -25,22 +25,33 @@ std::int64_t sort_work(std::size_t n) {
 /// in the O(log n) nodes that cover it, so that the nodes on the path to lo's leaf hold
 /// each range containing lo exactly once). Removal is immediate in the map and lazy in the
 /// tree: a removed range is dropped from a node's list when a query next reads that list,
-/// which costs each stored copy at most once.
+/// which costs each stored copy at most once. The lists live in one array, laid out before
+/// the sweep from the ranges that will be inserted.
 class OpenBoxes {
  public:
-  /// `ys`: sorted, without repeats; every y_lo and y_hi of the boxes to insert.
-  OpenBoxes(const std::vector<double>& ys, std::size_t ids)
-      : ys_(ys), nodes_(4 * std::max<std::size_t>(ys.size(), 1)), where_(ids), open_(ids, false),
-        y_lo_(ids, 0.0) {}
+  /// `ys`: sorted, without repeats; every y_lo and y_hi of the boxes to insert. `boxes`: the
+  /// boxes that will be inserted, by id (the others are never inserted here); the tree's
+  /// lists are laid out once for them, so inserting allocates nothing.
+  OpenBoxes(const std::vector<double>& ys, const std::vector<const Box*>& boxes)
+      : ys_(ys),
+        offset_(4 * std::max<std::size_t>(ys.size(), 1) + 1, 0),
+        size_(4 * std::max<std::size_t>(ys.size(), 1), 0),
+        where_(boxes.size()),
+        open_(boxes.size(), false) {
+    // offset_[node + 1] counts the node's copies first, then becomes the running sum.
+    for (const Box* box : boxes) {
+      if (box != nullptr) visit(1, 0, ys_.size() - 1, index_of(box->y_lo), index_of(box->y_hi), [&](std::size_t node) { ++offset_[node + 1]; });
+    }
+    for (std::size_t node = 1; node < offset_.size(); ++node) offset_[node] += offset_[node - 1];
+    pool_.resize(offset_.back());
+  }
 
   /// Inserts box `id`; returns the work units it cost (one per tree node visited).
   std::int64_t insert(std::size_t id, const Box& box) {
     open_[id] = true;
-    y_lo_[id] = box.y_lo;
     where_[id] = by_lo_.emplace(box.y_lo, id);
-    std::int64_t visited = 0;
-    store(1, 0, ys_.size() - 1, index_of(box.y_lo), index_of(box.y_hi), id, visited);
-    return visited;
+    return visit(1, 0, ys_.size() - 1, index_of(box.y_lo), index_of(box.y_hi),
+                 [&](std::size_t node) { pool_[offset_[node] + size_[node]++] = {id, box.y_lo}; });
   }
 
   void remove(std::size_t id) {
@@ -60,16 +71,14 @@ class OpenBoxes {
     const std::size_t point = index_of(lo);
     std::size_t node = 1, first = 0, last = ys_.size() - 1;
     while (true) {
-      std::vector<std::size_t>& list = nodes_[node];
-      for (std::size_t k = 0; k < list.size();) {
+      Stored* list = pool_.data() + offset_[node];
+      for (std::size_t k = 0; k < size_[node];) {
         ++visited;
-        const std::size_t id = list[k];
-        if (!open_[id]) {
-          list[k] = list.back();
-          list.pop_back();
+        if (!open_[list[k].id]) {
+          list[k] = list[--size_[node]];
           continue;
         }
-        if (y_lo_[id] < lo) report(id);
+        if (list[k].y_lo < lo) report(list[k].id);
         ++k;
       }
       if (first == last) break;
@@ -86,30 +95,37 @@ class OpenBoxes {
   }
 
  private:
+  struct Stored {
+    std::size_t id;
+    double y_lo;
+  };
+
   [[nodiscard]] std::size_t index_of(double y) const {
     return static_cast<std::size_t>(std::lower_bound(ys_.begin(), ys_.end(), y) - ys_.begin());
   }
 
-  /// Stores `id` in the nodes that together cover [lo, hi] exactly (node covers [first, last]).
-  void store(std::size_t node, std::size_t first, std::size_t last, std::size_t lo, std::size_t hi,
-             std::size_t id, std::int64_t& visited) {
-    ++visited;
-    if (hi < first || last < lo) return;
+  /// Calls at(node) for the nodes that together cover [lo, hi] exactly (node covers
+  /// [first, last]); returns the nodes visited.
+  template <class At>
+  static std::int64_t visit(std::size_t node, std::size_t first, std::size_t last, std::size_t lo,
+                            std::size_t hi, const At& at) {
+    if (hi < first || last < lo) return 1;
     if (lo <= first && last <= hi) {
-      nodes_[node].push_back(id);
-      return;
+      at(node);
+      return 1;
     }
     const std::size_t middle = first + (last - first) / 2;
-    store(2 * node, first, middle, lo, hi, id, visited);
-    store(2 * node + 1, middle + 1, last, lo, hi, id, visited);
+    return 1 + visit(2 * node, first, middle, lo, hi, at) +
+           visit(2 * node + 1, middle + 1, last, lo, hi, at);
   }
 
   std::vector<double> ys_;
-  std::vector<std::vector<std::size_t>> nodes_;
+  std::vector<std::size_t> offset_;
+  std::vector<std::size_t> size_;
+  std::vector<Stored> pool_;
   std::multimap<double, std::size_t> by_lo_;
   std::vector<std::multimap<double, std::size_t>::iterator> where_;
   std::vector<bool> open_;
-  std::vector<double> y_lo_;
 };
 
 struct Entry {
@@ -118,22 +134,66 @@ struct Entry {
   int set;
 };
 
-/// One sweep along x over the boxes of one or two sets: at each box's x_lo, the boxes that
-/// end before it are closed, the open boxes of the other set (or of its own set when there
-/// is one) that meet its y range are reported with it, and it is opened. Each pair whose
-/// boxes meet is reported once, when the second of the two (in the order of x_lo) opens.
-MeetingBoxes sweep(std::vector<Entry> entries, int sets, std::int64_t max_work) {
-  MeetingBoxes out;
-  const std::size_t n = entries.size();
-  if (n == 0) return out;
-  out.work = 2 * sort_work(n);
-  if (out.work > max_work) {
-    out.complete = false;
-    return out;
+void report_pair(MeetingBoxes& out, int sets, const Entry& e, const Entry& o) {
+  if (sets == 1) {
+    out.pairs.emplace_back(std::min(e.index, o.index), std::max(e.index, o.index));
+  } else {
+    out.pairs.emplace_back(e.set == 0 ? e.index : o.index, e.set == 0 ? o.index : e.index);
   }
-  std::sort(entries.begin(), entries.end(), [](const Entry& p, const Entry& q) {
-    return std::tie(p.box.x_lo, p.set, p.index) < std::tie(q.box.x_lo, q.set, q.index);
-  });
+}
+
+/// Which set's open boxes a box of `set` is compared with.
+std::size_t other_set(int sets, int set) { return static_cast<std::size_t>(sets == 1 ? 0 : 1 - set); }
+
+/// The pairs a box is compared with in the plain sweep below: for each box (sorted by x_lo),
+/// the boxes of the other set whose x ranges hold its x_lo. O(N) on the sorted boxes, with
+/// each set's x_hi sorted.
+std::int64_t x_overlapping_pairs(const std::vector<Entry>& entries, int sets) {
+  std::vector<double> x_hi[2];
+  for (const Entry& e : entries) x_hi[e.set].push_back(e.box.x_hi);
+  for (auto& v : x_hi) std::sort(v.begin(), v.end());
+  std::size_t started[2] = {0, 0}, ended[2] = {0, 0};
+  std::int64_t pairs = 0;
+  for (const Entry& e : entries) {
+    const std::size_t o = other_set(sets, e.set);
+    while (ended[o] < x_hi[o].size() && x_hi[o][ended[o]] < e.box.x_lo) ++ended[o];
+    pairs += static_cast<std::int64_t>(started[o]) - static_cast<std::int64_t>(std::min(ended[o], started[o]));
+    ++started[static_cast<std::size_t>(e.set)];
+  }
+  return pairs;
+}
+
+/// Sort and sweep: each box compared with every open box of the other set, O(P) for the P
+/// pairs whose x ranges overlap.
+void plain_sweep(const std::vector<Entry>& entries, int sets, std::int64_t max_work,
+                 MeetingBoxes& out) {
+  const std::int64_t log_n = std::bit_width(entries.size());
+  std::vector<Entry> open[2];
+  for (const Entry& e : entries) {
+    std::vector<Entry>& other = open[other_set(sets, e.set)];
+    // Boxes that end before this one starts never meet it nor any later one.
+    std::erase_if(other, [&](const Entry& o) { return o.box.x_hi < e.box.x_lo; });
+    out.work += static_cast<std::int64_t>(other.size()) + 1;
+    if (out.work > max_work) {
+      out.complete = false;
+      return;
+    }
+    for (const Entry& o : other) {
+      if (e.box.y_lo <= o.box.y_hi && o.box.y_lo <= e.box.y_hi) {
+        // Each pair pays its share of the final sort: log2 of at most N^2 pairs.
+        out.work += 2 * log_n;
+        report_pair(out, sets, e, o);
+      }
+    }
+    open[sets == 1 ? 0 : e.set].push_back(e);
+  }
+}
+
+/// Bentley-Wood: the open boxes in OpenBoxes, each box's query reporting only the boxes it
+/// meets. O(N log N + K) for the K pairs that meet.
+void tree_sweep(const std::vector<Entry>& entries, int sets, std::int64_t max_work,
+                MeetingBoxes& out) {
+  const std::size_t n = entries.size();
   std::vector<double> ys;
   ys.reserve(2 * n);
   for (const Entry& e : entries) {
@@ -143,7 +203,13 @@ MeetingBoxes sweep(std::vector<Entry> entries, int sets, std::int64_t max_work) 
   std::sort(ys.begin(), ys.end());
   ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
   std::vector<OpenBoxes> open;
-  for (int s = 0; s < sets; ++s) open.emplace_back(ys, n);
+  for (int set = 0; set < sets; ++set) {
+    std::vector<const Box*> inserted(n, nullptr);
+    for (std::size_t k = 0; k < n; ++k) {
+      if (entries[k].set == set) inserted[k] = &entries[k].box;
+    }
+    open.emplace_back(ys, inserted);
+  }
   // The open boxes by x_hi, the smallest first: closed once the sweep passes it.
   using Closing = std::pair<double, std::size_t>;
   std::priority_queue<Closing, std::vector<Closing>, std::greater<>> closing;
@@ -153,26 +219,51 @@ MeetingBoxes sweep(std::vector<Entry> entries, int sets, std::int64_t max_work) 
     while (!closing.empty() && closing.top().first < e.box.x_lo) {
       const std::size_t id = closing.top().second;
       closing.pop();
-      open[static_cast<std::size_t>(entries[id].set)].remove(id);
+      open[static_cast<std::size_t>(sets == 1 ? 0 : entries[id].set)].remove(id);
       out.work += log_n;
     }
-    OpenBoxes& others = open[static_cast<std::size_t>(sets == 1 ? 0 : 1 - e.set)];
-    out.work += others.query(e.box.y_lo, e.box.y_hi, [&](std::size_t id) {
+    out.work += open[other_set(sets, e.set)].query(e.box.y_lo, e.box.y_hi, [&](std::size_t id) {
       // Each pair pays its share of the final sort: log2 of at most N^2 pairs.
       out.work += 2 * log_n;
-      const Entry& o = entries[id];
-      if (sets == 1) {
-        out.pairs.emplace_back(std::min(e.index, o.index), std::max(e.index, o.index));
-      } else {
-        out.pairs.emplace_back(e.set == 0 ? e.index : o.index, e.set == 0 ? o.index : e.index);
-      }
+      report_pair(out, sets, e, entries[id]);
     });
     out.work += open[static_cast<std::size_t>(sets == 1 ? 0 : e.set)].insert(k, e.box) + log_n;
     closing.emplace(e.box.x_hi, k);
     if (out.work > max_work) {
       out.complete = false;
-      break;
+      return;
     }
+  }
+}
+
+/// The tree's setup and updates cost a few times log2 N units per box (the nodes covering
+/// its y range, twice, and its query's path); the plain sweep one unit per x-overlapping
+/// pair. Below this many x-overlapping pairs per box and log2 N the plain sweep is cheaper,
+/// and its cost is then within a constant of N log N.
+constexpr std::int64_t kPlainSweepPairsPerBoxAndLog = 8;
+
+/// All pairs of boxes that meet, over one or two sets: the boxes sorted by x_lo, then
+/// whichever sweep costs less, the plain one when the x-overlapping pairs are at most
+/// kPlainSweepPairsPerBoxAndLog N log2 N (so O(N log N) in all), else the tree's.
+MeetingBoxes sweep(std::vector<Entry> entries, int sets, std::int64_t max_work) {
+  MeetingBoxes out;
+  const std::size_t n = entries.size();
+  if (n == 0) return out;
+  out.work = 3 * sort_work(n);
+  if (out.work > max_work) {
+    out.complete = false;
+    return out;
+  }
+  std::sort(entries.begin(), entries.end(), [](const Entry& p, const Entry& q) {
+    return std::tie(p.box.x_lo, p.set, p.index) < std::tie(q.box.x_lo, q.set, q.index);
+  });
+  const std::int64_t log_n = std::bit_width(n);
+  if (x_overlapping_pairs(entries, sets) <=
+      kPlainSweepPairsPerBoxAndLog * static_cast<std::int64_t>(n) * log_n) {
+    plain_sweep(entries, sets, max_work, out);
+  } else {
+    out.work += sort_work(2 * n);
+    tree_sweep(entries, sets, max_work, out);
   }
   std::sort(out.pairs.begin(), out.pairs.end());
   return out;

@@ -80,13 +80,44 @@ TEST(SegmentBoxes, StopsAtItsWorkLimit) {
 
 TEST(SegmentBoxes, WorkGrowsWithThePairsThatMeetNotWithTheirXOverlaps) {
   // 200 thin horizontal boxes spanning the same x range at distinct heights: all overlap in
-  // x, none meets another. Their work stays near N log N, far below the 19900 x-overlapping
-  // pairs a sweep over x alone would compare.
+  // x, none meets another. The work stays below the 19900 x-overlapping pairs a sweep over
+  // x alone would compare (the tree's sweep runs).
   std::vector<Box> boxes;
   for (int k = 0; k < 200; ++k) boxes.push_back({0, 1, 2.0 * k, 2.0 * k + 1});
   const MeetingBoxes found = meeting_boxes(boxes, 1 << 30);
   EXPECT_TRUE(found.pairs.empty());
-  EXPECT_LT(found.work, 200 * 8 * 8);
+  EXPECT_LT(found.work, 19900);
+}
+
+/// Random boxes that all span most of one x range, on a coarse grid in y: every pair
+/// overlaps in x, so the sweep takes its tree.
+std::vector<Box> wide_boxes(test::Mulberry32& rng, std::size_t n) {
+  std::vector<Box> boxes;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double y = std::floor(rng.uniform(0, 400));
+    boxes.push_back({std::floor(rng.uniform(0, 4)), 36 + std::floor(rng.uniform(0, 4)), y,
+                     y + std::floor(rng.uniform(0, 8))});
+  }
+  return boxes;
+}
+
+TEST(SegmentBoxes, TreeSweepGivesExactlyThePairsThatMeet) {
+  test::Mulberry32 rng(8);
+  for (int round = 0; round < 10; ++round) {
+    const auto a = wide_boxes(rng, 200), b = wide_boxes(rng, 200);
+    std::vector<std::pair<std::size_t, std::size_t>> expected, expected_one;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      for (std::size_t j = 0; j < b.size(); ++j) {
+        if (meet(a[i], b[j])) expected.emplace_back(i, j);
+      }
+      for (std::size_t j = i + 1; j < a.size(); ++j) {
+        if (meet(a[i], a[j])) expected_one.emplace_back(i, j);
+      }
+    }
+    const MeetingBoxes two = meeting_boxes(a, b, 1 << 30);
+    EXPECT_EQ(two.pairs, expected) << "round " << round;
+    EXPECT_EQ(meeting_boxes(a, 1 << 30).pairs, expected_one) << "round " << round;
+  }
 }
 
 }  // namespace
