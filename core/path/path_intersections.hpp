@@ -37,7 +37,7 @@ struct PathIntersectionResult {
 /// Every intersection of a segment of `a` with a segment of `b`, each as the two-curve
 /// search core::intersect reports it (guaranteed intervals, kind, overlaps), with the
 /// segments that hold t and s. Only the segment pairs whose control boxes meet are
-/// searched (meeting_boxes: a sweep, O(N log N) plus the pairs whose x ranges overlap);
+/// searched (meeting_boxes: a sweep, O(N log N + the pairs that meet));
 /// the others cannot meet. A contact at a joint of either path, found on the segments on
 /// both sides of it, is reported once, with the lower segment index (without_joint_copies).
 /// options.max_work bounds the whole call: the sweep, a setup charge per pair searched

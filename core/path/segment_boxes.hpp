@@ -29,19 +29,22 @@ struct MeetingBoxes {
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   /// Work units (core/intersect/work_cost.hpp: about one coordinate update each) charged
   /// for the sweep: its sorts by their estimated comparisons (the pairs' sort as each pair
-  /// is found), each insertion, removal and query by the tree nodes and entries it reads.
+  /// is found), one per pair of boxes compared in the plain sweep, and in the tree's each
+  /// insertion, removal and query by the nodes and entries it reads.
   std::int64_t work = 0;
   /// False when the sweep stopped at its work limit: `pairs` may then miss some.
   bool complete = true;
 };
 
-/// Every (i, j) with a[i] and b[j] meeting. A sweep along x (Bentley & Wood, "An optimal
-/// worst case algorithm for reporting intersections of rectangles", IEEE Trans. Computers
-/// C-29, 1980): the boxes in the order of x_lo; at each, the boxes that end before it are
-/// closed and the open boxes of the other set whose y ranges meet its own are reported, from
-/// a map of the open boxes by y_lo and a segment tree of their y ranges. Cost O(N log N + K)
-/// for N boxes in all and K pairs that meet. Stops early (complete = false) once the work
-/// exceeds `max_work`.
+/// Every (i, j) with a[i] and b[j] meeting. The boxes are sorted by x_lo and swept along x:
+/// at each box, the boxes that end before it are closed, the open boxes of the other set
+/// that meet it are reported, and it is opened. When few pairs overlap in x (at most
+/// 8 N log2 N, counted first in O(N)), each box is compared with every open box of the
+/// other set; otherwise the open boxes are held by y_lo in a map and by their y ranges in a
+/// segment tree, so that a box's query reads only the boxes it meets (Bentley & Wood, "An
+/// optimal worst case algorithm for reporting intersections of rectangles", IEEE Trans.
+/// Computers C-29, 1980). Cost O(N log N + K) for N boxes in all and K pairs that meet.
+/// Stops early (complete = false) once the work exceeds `max_work`.
 [[nodiscard]] MeetingBoxes meeting_boxes(std::span<const Box> a, std::span<const Box> b,
                                          std::int64_t max_work);
 
