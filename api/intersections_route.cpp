@@ -50,7 +50,6 @@
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
-#include "core/curve/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
 #include "core/path/path_intersections.hpp"
 #include "core/self_intersect/certify.hpp"
@@ -123,16 +122,6 @@ void write_overlap(JsonWriter& w, bool reversed, double s_lo, double s_hi, doubl
   w.end_object();
 }
 
-/// A piece a curve retraces: the same way when B(t_lo) is B(s_lo), backwards when it is
-/// B(s_hi).
-void write_self_overlap(JsonWriter& w, const core::Curve& curve, const core::SelfOverlap& o,
-                        const std::pair<std::size_t, std::size_t>* segments = nullptr) {
-  const core::Point2 a = core::evaluate(curve, o.t_lo);
-  const double same = core::length(a - core::evaluate(curve, o.s_lo));
-  const double opposite = core::length(a - core::evaluate(curve, o.s_hi));
-  write_overlap(w, opposite < same, o.s_lo, o.s_hi, o.t_lo, o.t_hi, segments);
-}
-
 Reply work_cap_reply(std::int64_t steps, const Limits& limits) {
   return problem_reply(ProblemKind::work_cap,
                        "the intersection search took " + std::to_string(steps) +
@@ -195,7 +184,10 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   for (const core::Intersection& x : certified.intersections) write_intersection(w, x);
   w.end_array();
   w.key("overlaps").begin_array();
-  for (const core::SelfOverlap& o : r.overlaps) write_self_overlap(w, curve, o);
+  for (const core::Overlap& o : r.overlaps) {
+    write_overlap(w, o.reversed, o.s_interval.lo, o.s_interval.hi, o.t_interval.lo,
+                  o.t_interval.hi);
+  }
   w.end_array();
   w.key("stats").begin_object();
   w.key("certification_iterations").value(certified.steps);
@@ -317,8 +309,9 @@ Reply one_path_answer(const IntersectionsRequest& request, const Limits& limits)
   }
   for (const path::SegmentSelfIntersections& within : r.within_segments) {
     const std::pair segments{within.segment, within.segment};
-    for (const core::SelfOverlap& o : within.result.overlaps) {
-      write_self_overlap(w, p.segments[within.segment], o, &segments);
+    for (const core::Overlap& o : within.result.overlaps) {
+      write_overlap(w, o.reversed, o.s_interval.lo, o.s_interval.hi, o.t_interval.lo,
+                    o.t_interval.hi, &segments);
     }
   }
   w.end_array();

@@ -132,10 +132,10 @@ Reply loops_answer(const core::Curve& curve, const Limits& limits) {
   }
   w.end_array();
   w.key("overlaps").begin_array();
-  for (const core::SelfOverlap& o : result.overlaps) {
+  for (const core::Overlap& o : result.overlaps) {
     w.begin_object();
-    w.key("s_interval").pair(o.s_lo, o.s_hi);
-    w.key("t_interval").pair(o.t_lo, o.t_hi);
+    w.key("s_interval").pair(o.s_interval.lo, o.s_interval.hi);
+    w.key("t_interval").pair(o.t_interval.lo, o.t_interval.hi);
     w.end_object();
   }
   w.end_array();
@@ -205,11 +205,11 @@ Reply path_loops_answer(const path::Path& p, const Limits& limits) {
     w.end_object();
   }
   for (const path::SegmentSelfIntersections& within : self.within_segments) {
-    for (const core::SelfOverlap& o : within.result.overlaps) {
+    for (const core::Overlap& o : within.result.overlaps) {
       w.begin_object();
-      w.key("s_interval").pair(o.s_lo, o.s_hi);
+      w.key("s_interval").pair(o.s_interval.lo, o.s_interval.hi);
       write_segments(w, within.segment, within.segment);
-      w.key("t_interval").pair(o.t_lo, o.t_hi);
+      w.key("t_interval").pair(o.t_interval.lo, o.t_interval.hi);
       w.end_object();
     }
   }

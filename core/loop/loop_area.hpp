@@ -37,7 +37,7 @@ struct LoopAreaResult {
   std::optional<double> closed_area;
   /// Pieces the curve retraces (collinear curves, palindromic control points; status
   /// degenerate): they enclose no area. The loops of a palindromic curve are still listed.
-  std::vector<SelfOverlap> overlaps;
+  std::vector<Overlap> overlaps;
   SelfIntersectionStatus status = SelfIntersectionStatus::ok;
   SelfIntersectionStats stats;
 };

@@ -75,7 +75,7 @@ CollinearOverlaps collinear_self_overlaps(std::span<const Point2> points,
   CollinearOverlaps out;
   const double len2 = dot(frame.direction, frame.direction);
   if (len2 == 0.0) {
-    out.overlaps.push_back({0.0, 1.0, 0.0, 1.0});
+    out.overlaps.push_back({{0.0, 1.0}, {0.0, 1.0}});
     return out;
   }
   std::vector<double> x;
@@ -159,12 +159,13 @@ CollinearOverlaps collinear_self_overlaps(std::span<const Point2> points,
       const double t1 = preimage(p, lo), t2 = preimage(p, hi);
       const double s1 = preimage(q, lo), s2 = preimage(q, hi);
       out.overlaps.push_back(
-          {std::min(t1, t2), std::max(t1, t2), std::min(s1, s2), std::max(s1, s2)});
+          {{std::min(t1, t2), std::max(t1, t2)}, {std::min(s1, s2), std::max(s1, s2)}});
     }
   }
   std::sort(out.overlaps.begin(), out.overlaps.end(),
-            [](const SelfOverlap& a, const SelfOverlap& b) {
-              return a.t_lo != b.t_lo ? a.t_lo < b.t_lo : a.s_lo < b.s_lo;
+            [](const Overlap& a, const Overlap& b) {
+              return a.t_interval.lo != b.t_interval.lo ? a.t_interval.lo < b.t_interval.lo
+                                                        : a.s_interval.lo < b.s_interval.lo;
             });
   return out;
 }

@@ -27,7 +27,7 @@ struct CollinearFrame {
                                                             double dist_tol);
 
 struct CollinearOverlaps {
-  std::vector<SelfOverlap> overlaps;
+  std::vector<Overlap> overlaps;
   bool work_cap_reached = false;
   std::int64_t work = 0;
 };

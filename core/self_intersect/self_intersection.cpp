@@ -387,10 +387,11 @@ SelfIntersectionResult retracing_result(const CurveFacts& facts,
   if (result.status != SelfIntersectionStatus::work_cap_reached) {
     result.status = SelfIntersectionStatus::degenerate;
   }
-  std::vector<SelfOverlap> overlaps{{0.0, 0.5, 0.5, 1.0}};
-  for (const SelfOverlap& o : result.overlaps) {
-    overlaps.push_back({0.5 * o.t_lo, 0.5 * o.t_hi, 0.5 * o.s_lo, 0.5 * o.s_hi});
-    overlaps.push_back({1 - 0.5 * o.s_hi, 1 - 0.5 * o.s_lo, 1 - 0.5 * o.t_hi, 1 - 0.5 * o.t_lo});
+  std::vector<Overlap> overlaps{{{0.0, 0.5}, {0.5, 1.0}}};
+  for (const Overlap& o : result.overlaps) {
+    const ParamInterval t = o.t_interval, s = o.s_interval;
+    overlaps.push_back({{0.5 * t.lo, 0.5 * t.hi}, {0.5 * s.lo, 0.5 * s.hi}});
+    overlaps.push_back({{1 - 0.5 * s.hi, 1 - 0.5 * s.lo}, {1 - 0.5 * t.hi, 1 - 0.5 * t.lo}});
   }
   std::vector<SelfIntersection> pairs;
   for (const SelfIntersection& h : result.pairs) {
@@ -408,8 +409,9 @@ SelfIntersectionResult retracing_result(const CurveFacts& facts,
   pairs.erase(std::unique(pairs.begin(), pairs.end(),
                           [](const auto& x, const auto& y) { return x.t == y.t && x.s == y.s; }),
               pairs.end());
-  std::sort(overlaps.begin(), overlaps.end(), [](const SelfOverlap& x, const SelfOverlap& y) {
-    return x.t_lo != y.t_lo ? x.t_lo < y.t_lo : x.s_lo < y.s_lo;
+  std::sort(overlaps.begin(), overlaps.end(), [](const Overlap& x, const Overlap& y) {
+    return x.t_interval.lo != y.t_interval.lo ? x.t_interval.lo < y.t_interval.lo
+                                              : x.s_interval.lo < y.s_interval.lo;
   });
   result.pairs = std::move(pairs);
   result.overlaps = std::move(overlaps);
@@ -449,8 +451,7 @@ std::optional<SelfIntersectionResult> improper_result(const CurveFacts& facts,
   if (found.empty()) return std::nullopt;
   SelfIntersectionResult result;
   for (const OverlapFinding& o : found) {
-    const Overlap& v = o.overlap;
-    result.overlaps.push_back({v.t_interval.lo, v.t_interval.hi, v.s_interval.lo, v.s_interval.hi});
+    result.overlaps.push_back({o.overlap.t_interval, o.overlap.s_interval});
   }
   const CommonArc& arc = *found.front().arc;
   std::vector<Point2> h;
@@ -533,6 +534,16 @@ ClosedFormAnswer closed_form_cubic(const CurveFacts& facts) {
   return {ClosedFormVerdict::loop, u, v, dp->point, polished.iterations};
 }
 
+/// Whether B runs over a retraced piece backwards the second time: B(t_interval.lo) nearer
+/// B(s_interval.hi) than B(s_interval.lo) (evaluated, so it holds for every kind of overlap
+/// above, however its intervals were found).
+bool runs_backwards(const Curve& curve, const Overlap& o) {
+  const Point2 a = evaluate(curve, o.t_interval.lo);
+  const double same = length(a - evaluate(curve, o.s_interval.lo));
+  const double opposite = length(a - evaluate(curve, o.s_interval.hi));
+  return opposite < same;
+}
+
 }  // namespace
 
 SelfIntersectionOptions self_intersection_options(std::int64_t work_units, int degree) noexcept {
@@ -611,6 +622,7 @@ SelfIntersectionResult self_intersections(const Curve& curve,
   if (k != 0) {
     for (SelfIntersection& pair : result.pairs) pair.point = (pair.point / f1) / f2;
   }
+  for (Overlap& o : result.overlaps) o.reversed = runs_backwards(curve, o);
   result.stats.work_units = result.stats.work * self_intersection_box_cost(curve.degree());
   return result;
 }

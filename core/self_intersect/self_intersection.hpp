@@ -21,19 +21,6 @@ struct SelfIntersection {
   IntersectionKind kind = IntersectionKind::transversal;
 };
 
-/// A continuum of self-intersections: the curve retraces itself, B on [t_lo, t_hi] runs
-/// over the same points as B on [s_lo, s_hi] (t_hi <= s_lo). Reported for collinear curves
-/// (every control point within the distance tolerance of one line), single points (t and s
-/// both cover [0, 1]), palindromic control points (P_i = P_{n-i}: B(1 - t) = B(t), the
-/// overlap [0, 1/2] x [1/2, 1]) and any other improper parametrisation B = C(p(t)) with p
-/// turning back (the pieces where p(t) = p(s)).
-struct SelfOverlap {
-  double t_lo = 0.0;
-  double t_hi = 0.0;
-  double s_lo = 0.0;
-  double s_hi = 0.0;
-};
-
 enum class SelfIntersectionStatus {
   ok,                ///< every self-intersection is in `pairs`
   degenerate,        ///< the curve retraces itself (see `overlaps`); `pairs` are the rest
@@ -81,8 +68,15 @@ struct SelfIntersectionStats {
 struct SelfIntersectionResult {
   /// Every pair, sorted by t then s; never the trivial pair (0, 1) of a closed curve.
   std::vector<SelfIntersection> pairs;
-  /// Retraced pieces (status degenerate only).
-  std::vector<SelfOverlap> overlaps;
+  /// Retraced pieces (status degenerate only), sorted by t_interval.lo then s_interval.lo:
+  /// a continuum of self-intersections, B on t_interval runs over the same points as B on
+  /// s_interval (t_interval.hi <= s_interval.lo), reversed when B(t_interval.lo) is nearer
+  /// B(s_interval.hi) than B(s_interval.lo). Reported for collinear curves (every control
+  /// point within the distance tolerance of one line), single points (both intervals
+  /// [0, 1]), palindromic control points (P_i = P_{n-i}: B(1 - t) = B(t), the overlap
+  /// [0, 1/2] x [1/2, 1]) and any other improper parametrisation B = C(p(t)) with p turning
+  /// back (the pieces where p(t) = p(s)).
+  std::vector<Overlap> overlaps;
   SelfIntersectionStatus status = SelfIntersectionStatus::ok;
   SelfIntersectionStats stats;
 };
@@ -139,9 +133,9 @@ struct SelfIntersectionOptions {
 /// (unless options.cubic_closed_form is off); where its predicates are not exact (coordinates
 /// spanning more than about 2^400) it is trusted only for a pair with B(t) = B(s) to within
 /// the distance tolerance, and the search decides otherwise. Curves that retrace themselves
-/// get a named branch each (status degenerate, see SelfOverlap): collinear ones a 1-D
-/// analysis, palindromic control points (B(1 - t) = B(t)) the self-intersections of the
-/// outbound half and their mirror images.
+/// get a named branch each (status degenerate, see SelfIntersectionResult::overlaps):
+/// collinear ones a 1-D analysis, palindromic control points (B(1 - t) = B(t)) the
+/// self-intersections of the outbound half and their mirror images.
 ///
 /// Resolution: next to a cusp, |B(s) - B(t)| stays at rounding level for s - t up to about
 /// 1e-5, so pairs there are accepted only when rounding could not move them onto the

@@ -107,8 +107,9 @@ void check_result(const Curve& c, const SelfIntersectionResult& r) {
   for (const auto& o : r.overlaps) {
     // A single point has t and s both covering [0, 1] (self_intersection.hpp), and so does a
     // curve shorter than the distance tolerance (2^-44 of the scale), which is one.
-    const bool ordered = o.t_hi <= o.s_lo || size <= 0x1p-40 * scale;
-    check(0.0 <= o.t_lo && o.t_lo <= o.t_hi && ordered && o.s_lo <= o.s_hi && o.s_hi <= 1.0,
+    const bezier::core::ParamInterval t = o.t_interval, s = o.s_interval;
+    const bool ordered = t.hi <= s.lo || size <= 0x1p-40 * scale;
+    check(0.0 <= t.lo && t.lo <= t.hi && ordered && s.lo <= s.hi && s.hi <= 1.0,
           [&] { return "overlap intervals out of order: " + ctx(); });
   }
 }

@@ -351,10 +351,10 @@ TEST(SelfIntersection, CollinearCurvesReportOverlaps) {
   EXPECT_EQ(back.stats.method, SelfIntersectionMethod::collinear);
   EXPECT_TRUE(back.pairs.empty());
   ASSERT_EQ(back.overlaps.size(), 1u);
-  EXPECT_EQ(back.overlaps[0].t_lo, 0.0);
-  EXPECT_NEAR(back.overlaps[0].t_hi, 0.5, 1e-12);
-  EXPECT_NEAR(back.overlaps[0].s_lo, 0.5, 1e-12);
-  EXPECT_EQ(back.overlaps[0].s_hi, 1.0);
+  EXPECT_EQ(back.overlaps[0].t_interval.lo, 0.0);
+  EXPECT_NEAR(back.overlaps[0].t_interval.hi, 0.5, 1e-12);
+  EXPECT_NEAR(back.overlaps[0].s_interval.lo, 0.5, 1e-12);
+  EXPECT_EQ(back.overlaps[0].s_interval.hi, 1.0);
 
   // A collinear cubic that turns twice: x(t) with x' = 0 at two parameters; pieces 1 and 2,
   // 2 and 3, 1 and 3 overlap. Every reported interval pair maps onto the same segment.
@@ -362,11 +362,12 @@ TEST(SelfIntersection, CollinearCurvesReportOverlaps) {
   const SelfIntersectionResult z = self_intersections(zigzag);
   EXPECT_EQ(z.status, SelfIntersectionStatus::degenerate);
   ASSERT_EQ(z.overlaps.size(), 3u);
-  for (const SelfOverlap& o : z.overlaps) {
-    EXPECT_LE(o.t_hi, o.s_lo + 1e-12);
+  for (const Overlap& o : z.overlaps) {
+    EXPECT_LE(o.t_interval.hi, o.s_interval.lo + 1e-12);
     const auto x = [&](double t) { return evaluate(zigzag, t).x; };
-    EXPECT_NEAR(std::min(x(o.t_lo), x(o.t_hi)), std::min(x(o.s_lo), x(o.s_hi)), 1e-9);
-    EXPECT_NEAR(std::max(x(o.t_lo), x(o.t_hi)), std::max(x(o.s_lo), x(o.s_hi)), 1e-9);
+    const ParamInterval t = o.t_interval, s = o.s_interval;
+    EXPECT_NEAR(std::min(x(t.lo), x(t.hi)), std::min(x(s.lo), x(s.hi)), 1e-9);
+    EXPECT_NEAR(std::max(x(t.lo), x(t.hi)), std::max(x(s.lo), x(s.hi)), 1e-9);
   }
 
   const SelfIntersectionResult monotone =
@@ -377,8 +378,8 @@ TEST(SelfIntersection, CollinearCurvesReportOverlaps) {
   const SelfIntersectionResult point = self_intersections(Curve({{2, 3}, {2, 3}, {2, 3}}));
   EXPECT_EQ(point.status, SelfIntersectionStatus::degenerate);
   ASSERT_EQ(point.overlaps.size(), 1u);
-  EXPECT_EQ(point.overlaps[0].t_lo, 0.0);
-  EXPECT_EQ(point.overlaps[0].s_hi, 1.0);
+  EXPECT_EQ(point.overlaps[0].t_interval.lo, 0.0);
+  EXPECT_EQ(point.overlaps[0].s_interval.hi, 1.0);
 }
 
 /// scale * H(phi(t)) for H given by its control points and phi in power form, exactly
@@ -408,10 +409,10 @@ TEST(SelfIntersection, PalindromicControlPointsRetraceTheCurve) {
   EXPECT_EQ(r.status, SelfIntersectionStatus::degenerate);
   EXPECT_TRUE(r.pairs.empty());  // the parabola itself does not cross itself
   ASSERT_EQ(r.overlaps.size(), 1u);
-  EXPECT_EQ(r.overlaps[0].t_lo, 0.0);
-  EXPECT_EQ(r.overlaps[0].t_hi, 0.5);
-  EXPECT_EQ(r.overlaps[0].s_lo, 0.5);
-  EXPECT_EQ(r.overlaps[0].s_hi, 1.0);
+  EXPECT_EQ(r.overlaps[0].t_interval.lo, 0.0);
+  EXPECT_EQ(r.overlaps[0].t_interval.hi, 0.5);
+  EXPECT_EQ(r.overlaps[0].s_interval.lo, 0.5);
+  EXPECT_EQ(r.overlaps[0].s_interval.hi, 1.0);
 }
 
 TEST(SelfIntersection, PalindromeOfALoopHasFourPairsPerLoop) {
@@ -447,10 +448,10 @@ TEST(SelfIntersection, AFoldThatIsNoPalindromeRetracesTheCurve) {
   EXPECT_EQ(r.status, SelfIntersectionStatus::degenerate);
   EXPECT_TRUE(r.pairs.empty());  // the parabola itself does not cross itself
   ASSERT_EQ(r.overlaps.size(), 1u);
-  EXPECT_NEAR(r.overlaps[0].t_lo, 0.0, 1e-15);
-  EXPECT_NEAR(r.overlaps[0].t_hi, 0.25, 1e-12);
-  EXPECT_NEAR(r.overlaps[0].s_lo, 0.25, 1e-12);
-  EXPECT_NEAR(r.overlaps[0].s_hi, 0.5, 1e-12);
+  EXPECT_NEAR(r.overlaps[0].t_interval.lo, 0.0, 1e-15);
+  EXPECT_NEAR(r.overlaps[0].t_interval.hi, 0.25, 1e-12);
+  EXPECT_NEAR(r.overlaps[0].s_interval.lo, 0.25, 1e-12);
+  EXPECT_NEAR(r.overlaps[0].s_interval.hi, 0.5, 1e-12);
 }
 
 TEST(SelfIntersection, AFoldedLoopPairsEveryPreimageOfItsDoublePoint) {
@@ -466,10 +467,10 @@ TEST(SelfIntersection, AFoldedLoopPairsEveryPreimageOfItsDoublePoint) {
   const SelfIntersectionResult r = self_intersections(*c);
   EXPECT_EQ(r.status, SelfIntersectionStatus::degenerate);
   ASSERT_EQ(r.overlaps.size(), 1u);
-  EXPECT_NEAR(r.overlaps[0].t_lo, 0.0, 1e-15);
-  EXPECT_NEAR(r.overlaps[0].t_hi, 1.0 / 3, 1e-12);
-  EXPECT_NEAR(r.overlaps[0].s_lo, 1.0 / 3, 1e-12);
-  EXPECT_NEAR(r.overlaps[0].s_hi, 2.0 / 3, 1e-12);
+  EXPECT_NEAR(r.overlaps[0].t_interval.lo, 0.0, 1e-15);
+  EXPECT_NEAR(r.overlaps[0].t_interval.hi, 1.0 / 3, 1e-12);
+  EXPECT_NEAR(r.overlaps[0].s_interval.lo, 1.0 / 3, 1e-12);
+  EXPECT_NEAR(r.overlaps[0].s_interval.hi, 2.0 / 3, 1e-12);
   const double far = (1 + std::sqrt(3.0)) / 3;
   ASSERT_EQ(r.pairs.size(), 2u);
   EXPECT_EQ(r.pairs[0].t, 0.0);
