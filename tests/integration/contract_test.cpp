@@ -238,6 +238,7 @@ TEST_F(ContractTest, TheSpecStatesTheServiceDefaults) {
   const json& limits = contract().spec().at("info").at("x-limits");
   EXPECT_EQ(limits.at("max_degree"), defaults.max_degree);
   EXPECT_EQ(limits.at("max_t_values"), defaults.max_t_values);
+  EXPECT_EQ(limits.at("max_path_segments"), defaults.max_path_segments);
   EXPECT_EQ(limits.at("max_body_bytes"), defaults.max_body_bytes);
   EXPECT_EQ(limits.at("max_work"), defaults.max_work);
   EXPECT_EQ(limits.at("max_batch_items"), defaults.max_batch_items);
