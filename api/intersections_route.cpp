@@ -172,7 +172,7 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   const core::Curve& curve = request.curve(0);
   const core::SelfIntersectionResult r = core::self_intersections(
       curve, core::self_intersection_options(limits.max_work, curve.degree()));
-  if (r.status == core::SelfIntersectionStatus::work_cap_reached)
+  if (r.status == core::IntersectStatus::work_cap_reached)
     return self_intersection_work_cap_reply(r.stats.work, limits.max_work);
   // The certification searches share what the self-intersection search left of the budget;
   // a pair they cannot certify within it is reported as found, unresolved.

@@ -104,7 +104,7 @@ Reply interval_answer(const core::Curve& curve, double t1, double t2) {
 Reply loops_answer(const core::Curve& curve, const Limits& limits) {
   const core::LoopAreaResult result =
       core::loop_area(curve, core::self_intersection_options(limits.max_work, curve.degree()));
-  if (result.status == core::SelfIntersectionStatus::work_cap_reached) {
+  if (result.status == core::IntersectStatus::work_cap_reached) {
     return self_intersection_work_cap_reply(result.stats.work, limits.max_work);
   }
   if (!std::isfinite(result.area) || (result.closed_area && !std::isfinite(*result.closed_area))) {

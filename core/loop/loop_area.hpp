@@ -35,10 +35,10 @@ struct LoopAreaResult {
   bool closed = false;
   /// The whole closed curve's signed area (closed_area()); nullopt when not closed.
   std::optional<double> closed_area;
-  /// Pieces the curve retraces (collinear curves, palindromic control points; status
-  /// degenerate): they enclose no area. The loops of a palindromic curve are still listed.
+  /// Pieces the curve retraces (collinear curves, palindromic control points): they
+  /// enclose no area. The loops of a palindromic curve are still listed.
   std::vector<Overlap> overlaps;
-  SelfIntersectionStatus status = SelfIntersectionStatus::ok;
+  IntersectStatus status = IntersectStatus::ok;
   SelfIntersectionStats stats;
 };
 

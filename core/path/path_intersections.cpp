@@ -132,7 +132,7 @@ PathSelfIntersectionResult self_intersections(const Path& path,
     }
     core::SelfIntersectionResult r = core::self_intersections(segment, self_options);
     out.stats.work += r.stats.work * core::self_intersection_box_cost(segment.degree());
-    if (r.status == core::SelfIntersectionStatus::work_cap_reached) {
+    if (r.status == core::IntersectStatus::work_cap_reached) {
       out.status = core::IntersectStatus::work_cap_reached;
     }
     if (!r.pairs.empty() || !r.overlaps.empty()) out.within_segments.push_back({k, std::move(r)});

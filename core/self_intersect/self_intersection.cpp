@@ -359,11 +359,7 @@ SelfIntersectionResult collinear_result(const CurveFacts& facts, const Collinear
       collinear_self_overlaps(facts.points, frame, facts.dist_tol, options.max_work);
   result.stats.work = found.work;
   result.overlaps = std::move(found.overlaps);
-  if (found.work_cap_reached) {
-    result.status = SelfIntersectionStatus::work_cap_reached;
-  } else if (!result.overlaps.empty()) {
-    result.status = SelfIntersectionStatus::degenerate;
-  }
+  if (found.work_cap_reached) result.status = IntersectStatus::work_cap_reached;
   return result;
 }
 
@@ -384,9 +380,6 @@ bool is_palindrome(std::span<const Point2> p) {
 SelfIntersectionResult retracing_result(const CurveFacts& facts,
                                         const SelfIntersectionOptions& options) {
   SelfIntersectionResult result = self_intersections(subdivide(facts.curve, 0.5).left, options);
-  if (result.status != SelfIntersectionStatus::work_cap_reached) {
-    result.status = SelfIntersectionStatus::degenerate;
-  }
   std::vector<Overlap> overlaps{{{0.0, 0.5}, {0.5, 1.0}}};
   for (const Overlap& o : result.overlaps) {
     const ParamInterval t = o.t_interval, s = o.s_interval;
@@ -468,9 +461,7 @@ std::optional<SelfIntersectionResult> improper_result(const CurveFacts& facts,
     }
   }
   result.pairs = clean_up(candidates, facts);
-  result.status = on_h.status == SelfIntersectionStatus::work_cap_reached
-                      ? SelfIntersectionStatus::work_cap_reached
-                      : SelfIntersectionStatus::degenerate;
+  result.status = on_h.status;
   return result;
 }
 
@@ -617,7 +608,7 @@ SelfIntersectionResult self_intersections(const Curve& curve,
       capped = contacts.work_cap_reached;
     }
     result.pairs = clean_up(candidates, facts);
-    if (capped) result.status = SelfIntersectionStatus::work_cap_reached;
+    if (capped) result.status = IntersectStatus::work_cap_reached;
   }
   if (k != 0) {
     for (SelfIntersection& pair : result.pairs) pair.point = (pair.point / f1) / f2;

@@ -21,12 +21,6 @@ struct SelfIntersection {
   IntersectionKind kind = IntersectionKind::transversal;
 };
 
-enum class SelfIntersectionStatus {
-  ok,                ///< every self-intersection is in `pairs`
-  degenerate,        ///< the curve retraces itself (see `overlaps`); `pairs` are the rest
-  work_cap_reached,  ///< the work budget ran out: `pairs` holds what was found, maybe not all
-};
-
 enum class SelfIntersectionMethod {
   closed_form_cubic,  ///< cubic: the double point from the quadratic in t + s and t s
   subdivision,        ///< any degree: subdivision of the parameter square (see below)
@@ -68,7 +62,7 @@ struct SelfIntersectionStats {
 struct SelfIntersectionResult {
   /// Every pair, sorted by t then s; never the trivial pair (0, 1) of a closed curve.
   std::vector<SelfIntersection> pairs;
-  /// Retraced pieces (status degenerate only), sorted by t_interval.lo then s_interval.lo:
+  /// Retraced pieces, sorted by t_interval.lo then s_interval.lo:
   /// a continuum of self-intersections, B on t_interval runs over the same points as B on
   /// s_interval (t_interval.hi <= s_interval.lo), reversed when B(t_interval.lo) is nearer
   /// B(s_interval.hi) than B(s_interval.lo). Reported for collinear curves (every control
@@ -77,7 +71,10 @@ struct SelfIntersectionResult {
   /// [0, 1/2] x [1/2, 1]) and any other improper parametrisation B = C(p(t)) with p turning
   /// back (the pieces where p(t) = p(s)).
   std::vector<Overlap> overlaps;
-  SelfIntersectionStatus status = SelfIntersectionStatus::ok;
+  /// ok: every pair is in `pairs` and every retraced piece in `overlaps`; work_cap_reached:
+  /// the work budget ran out, `pairs` and `overlaps` hold what was found, maybe not all.
+  /// (Never tolerance_too_small: the pairs are located to full precision.)
+  IntersectStatus status = IntersectStatus::ok;
   SelfIntersectionStats stats;
 };
 
@@ -133,7 +130,7 @@ struct SelfIntersectionOptions {
 /// (unless options.cubic_closed_form is off); where its predicates are not exact (coordinates
 /// spanning more than about 2^400) it is trusted only for a pair with B(t) = B(s) to within
 /// the distance tolerance, and the search decides otherwise. Curves that retrace themselves
-/// get a named branch each (status degenerate, see SelfIntersectionResult::overlaps):
+/// get a named branch each (see SelfIntersectionResult::overlaps):
 /// collinear ones a 1-D analysis, palindromic control points (B(1 - t) = B(t)) the
 /// self-intersections of the outbound half and their mirror images.
 ///

@@ -70,7 +70,7 @@ TEST(SelfIntersectionEdgeCases, PairsNextToAFlatEndAreDoublePoints) {
                  {0.0, 0.0},
                  {0.0, 0.0}});
   const SelfIntersectionResult r = self_intersections(c);
-  ASSERT_EQ(r.status, SelfIntersectionStatus::ok);
+  ASSERT_EQ(r.status, IntersectStatus::ok);
   EXPECT_LT(worst_relative_gap(c, r), 1e-9);
 }
 
@@ -110,7 +110,7 @@ TEST(SelfIntersectionEdgeCases, GeneralMethodFindsTheLoopTheClosedFormFinds) {
   for (const auto& options : {general, SelfIntersectionOptions{}}) {
     const SelfIntersectionResult r =
         self_intersections(Curve(std::vector<Point2>(p.begin(), p.end())), options);
-    ASSERT_EQ(r.status, SelfIntersectionStatus::ok);
+    ASSERT_EQ(r.status, IntersectStatus::ok);
     ASSERT_EQ(r.pairs.size(), 1u);
     EXPECT_NEAR(r.pairs[0].t, dp->t1, 1e-13);
     EXPECT_NEAR(r.pairs[0].s, dp->t2, 1e-13);
@@ -209,7 +209,7 @@ TEST(SelfIntersectionEdgeCases, FlatSeamGivesNoPair) {
     std::vector<Point2> scaled;
     for (const Point2 p : flat_end) scaled.push_back({std::ldexp(p.x, k), std::ldexp(p.y, k)});
     const SelfIntersectionResult r = self_intersections(Curve(scaled));
-    EXPECT_EQ(r.status, SelfIntersectionStatus::ok);
+    EXPECT_EQ(r.status, IntersectStatus::ok);
     EXPECT_TRUE(r.pairs.empty()) << k << ": " << r.pairs.size();
   }
 }
@@ -242,7 +242,7 @@ TEST(SelfIntersectionEdgeCases, DoublePointReportedOnce) {
                  {0.0, 0.0},
                  {0.0, 0.0}});
   const SelfIntersectionResult r = self_intersections(c);
-  ASSERT_EQ(r.status, SelfIntersectionStatus::ok);
+  ASSERT_EQ(r.status, IntersectStatus::ok);
   ASSERT_EQ(r.pairs.size(), 2u);
   EXPECT_NEAR(r.pairs[0].t, 0.000195093157093225009292, 1e-15);
   EXPECT_NEAR(r.pairs[0].s, 0.990241764320379987666646, 1e-13);
