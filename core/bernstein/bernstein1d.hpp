@@ -9,11 +9,9 @@
 #include "core/base/interval.hpp"
 #include "core/numeric/double_double.hpp"
 #include "core/numeric/small_array.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core::bernstein {
-
-/// Unit roundoff of double arithmetic.
-inline constexpr double kU = 0x1p-53;
 
 /// (1 - t) a + t b in doubles, the de Casteljau step. For t in [0,1] its rounding error is
 /// at most 3.01 u max(|a|, |b|): 1 - t, the two products and the sum each round once.
@@ -206,7 +204,7 @@ template <std::size_t E>
       }
     }
   }
-  const double pad = 8 * kU;
+  const double pad = 8 * kUnitRoundoff;
   return ParamInterval{max2(0.0, t_min - pad), min2(1.0, t_max + pad)};
 }
 

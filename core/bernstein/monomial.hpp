@@ -11,6 +11,7 @@
 #include "core/numeric/small_array.hpp"
 #include "core/numeric/fixed_extent.hpp"
 #include "core/numeric/power_of_two.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
@@ -86,7 +87,7 @@ double top_forward_difference(std::span<const double, E> d) noexcept {
 /// of the conversion (C(n,k) 2^k u magnitude, with a safety factor of 64).
 [[nodiscard]] inline bool significant_coefficient(int n, int k, double ax_k, double ay_k,
                                                   double magnitude) {
-  const double tol = 64 * binomial(n, k) * power_of_two(k) * bernstein::kU * magnitude;
+  const double tol = 64 * binomial(n, k) * power_of_two(k) * kUnitRoundoff * magnitude;
   return bernstein::max2(std::fabs(ax_k), std::fabs(ay_k)) > tol;
 }
 

@@ -4,12 +4,11 @@
 #include <cmath>
 
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
 namespace {
-
-constexpr double kU = bernstein::kU;
 
 struct Job {
   double a, b;
@@ -40,7 +39,7 @@ BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth) {
   BernsteinRoots out;
   const int n = static_cast<int>(c.size()) - 1;
   if (n < 0) return out;
-  const double e = 3.02 * std::max(n, 1) * kU * bernstein::max_abs(c);
+  const double e = 3.02 * std::max(n, 1) * kUnitRoundoff * bernstein::max_abs(c);
   if (c.front() == 0.0) out.roots.push_back(0.0);
   std::vector<Job> stack = {{0.0, 1.0, 0}};
   while (!stack.empty()) {

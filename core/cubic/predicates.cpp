@@ -6,15 +6,15 @@
 #include <cmath>
 
 #include "core/numeric/expansion.hpp"
+#include "core/numeric/power_of_two.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
 namespace {
 
-// u = 2^-53, the unit roundoff of double (round to nearest).
-constexpr double kUnitRoundoff = 0x1p-53;
-// The error bounds below are evaluated in floating point themselves: a handful of roundings,
-// each at most u relative, all on nonnegative terms. This factor covers them (and the
+// The error bounds below (multiples of u = kUnitRoundoff) are evaluated in floating point
+// themselves: a handful of roundings, each at most u relative, all on nonnegative terms. This factor covers them (and the
 // (1 + u) factors between computed and true magnitudes) with room to spare.
 constexpr double kBoundSlack = 1.0 + 0x1p-20;
 // The filter runs only when the largest coordinate difference m lies in [2^-200, 2^200]:
@@ -136,7 +136,7 @@ CubicPredicates cubic_predicates_exact(std::span<const Point2, 4> p) {
 
   // Scale by 2^k (exact unless a tiny coordinate falls into the subnormal range, which the
   // window check reports) so nothing overflows and the products stay exact.
-  const int k = kExactTopExponent - std::ilogb(largest);
+  const int k = kExactTopExponent - exponent_of(largest);
   std::array<Point2, 4> q{};
   for (std::size_t i = 0; i < 4; ++i) {
     q[i] = {std::ldexp(p[i].x, k), std::ldexp(p[i].y, k)};

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/numeric/binomial.hpp"
+#include "core/numeric/power_of_two.hpp"
 #include "core/curve/subdivide.hpp"
 
 namespace bezier::core {
@@ -65,13 +66,8 @@ double enclosed_area(std::span<const Point2> points) {
   if (largest == 0.0 || (0x1p-400 <= largest && largest <= 0x1p400)) {
     return enclosed_area_as_given(points);
   }
-  const int k = -std::ilogb(largest);
-  std::vector<Point2> scaled;
-  scaled.reserve(points.size());
-  // 2^k in two normal factors (k reaches 1074 for subnormal input).
-  const double f1 = std::ldexp(1.0, k / 2), f2 = std::ldexp(1.0, k - k / 2);
-  for (const Point2 p : points) scaled.push_back((p * f1) * f2);
-  return std::ldexp(enclosed_area_as_given(scaled), -2 * k);
+  const int k = -exponent_of(largest);
+  return std::ldexp(enclosed_area_as_given(scaled_by_power_of_two(points, k)), -2 * k);
 }
 
 double enclosed_area(const Curve& curve, double a, double b) {

@@ -12,12 +12,12 @@
 #include "core/intersect/gauss_newton.hpp"
 #include "core/bernstein/monomial.hpp"
 #include "core/numeric/linear_solve.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
 namespace {
 
-constexpr double kU = bernstein::kU;
 /// Overlaps shorter than this in t or s are left to the search (as in find_overlaps).
 constexpr double kShortestOverlap = 0x1p-30;
 /// How far the approximations of h, p and q (about 1e-10 of the curves' size for the
@@ -255,7 +255,7 @@ Monomial refined_on_curve(const WorkingCurve& c, Monomial p, int d) {
   std::optional<std::vector<double>> r = misfit_of(p);
   if (!r) return p;
   double size = max_abs(*r);
-  for (int iteration = 0; iteration < 3 && size > kU; ++iteration) {
+  for (int iteration = 0; iteration < 3 && size > kUnitRoundoff; ++iteration) {
     std::vector<std::vector<double>> jacobian(unknowns);
     for (std::size_t u = 0; u < unknowns; ++u) {
       Monomial q = p;

@@ -4,12 +4,12 @@
 
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/base/multiversion.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
 namespace {
 
-constexpr double kU = bernstein::kU;
 /// Relative slack on every bound assembled from rounded sums and products of nonnegative
 /// terms (a handful of roundings of at most u each, far below 2^-40).
 constexpr double kSlack = 1 + 0x1p-40;
@@ -77,7 +77,7 @@ PointAndDerivative casteljau(const WorkingCurve& c, double t) noexcept {
 /// the hi parts are within frame_error of it, and each of the n levels of lerps rounds by at
 /// most 3.01 u of the magnitude (bernstein::lerp).
 double value_error(const WorkingCurve& c) noexcept {
-  return c.frame_error + 3.02 * c.degree * kU * c.magnitude + 0x1p-1000;
+  return c.frame_error + 3.02 * c.degree * kUnitRoundoff * c.magnitude + 0x1p-1000;
 }
 
 /// Ranges holding df/dt over the piece's domain [a, b], per coordinate: the hodograph's
@@ -98,8 +98,8 @@ bool derivative_ranges(const Piece& p, double a, double b, Range& rx, Range& ry)
     const double big = max2(std::fabs(lo), std::fabs(hi));
     const double mid = 0.5 * (lo + hi);
     // Error of each difference, then the rounding of mid and of the half width.
-    const double rad = 0.5 * (hi - lo) + 2 * p.error + 3 * kU * big;
-    return Range{q * mid, (q * rad + 4 * kU * q * (std::fabs(mid) + rad)) * kSlack};
+    const double rad = 0.5 * (hi - lo) + 2 * p.error + 3 * kUnitRoundoff * big;
+    return Range{q * mid, (q * rad + 4 * kUnitRoundoff * q * (std::fabs(mid) + rad)) * kSlack};
   };
   rx = range(p.x);
   ry = range(p.y);
@@ -160,7 +160,7 @@ BEZIER_FMA_CLONES KrawczykResult krawczyk(const WorkingCurve& f, const WorkingCu
       const double delta = i == j ? 1.0 : 0.0;
       const double p0 = C[i][0] * M[0][j], p1 = C[i][1] * M[1][j];
       const double e = delta - (p0 + p1);
-      B[i][j] = (std::fabs(e) + 4 * kU * (delta + std::fabs(p0) + std::fabs(p1)) +
+      B[i][j] = (std::fabs(e) + 4 * kUnitRoundoff * (delta + std::fabs(p0) + std::fabs(p1)) +
                  std::fabs(C[i][0]) * R[0][j] + std::fabs(C[i][1]) * R[1][j]) *
                 kSlack;
     }
@@ -174,14 +174,14 @@ BEZIER_FMA_CLONES KrawczykResult krawczyk(const WorkingCurve& f, const WorkingCu
   for (int iteration = 0; iteration < kNewtonIterations; ++iteration) {
     const PointAndDerivative a = casteljau(f, y[0]), b = casteljau(g, y[1]);
     const double F[2] = {a.x - b.x, a.y - b.y};
-    const double eF[2] = {(ef + eg + kU * std::fabs(F[0])) * kSlack,
-                          (ef + eg + kU * std::fabs(F[1])) * kSlack};
+    const double eF[2] = {(ef + eg + kUnitRoundoff * std::fabs(F[0])) * kSlack,
+                          (ef + eg + kUnitRoundoff * std::fabs(F[1])) * kSlack};
     // C F(y) and how far it can be from C times the exact F(y).
     double step[2], step_error[2];
     for (int i = 0; i < 2; ++i) {
       const double p0 = C[i][0] * F[0], p1 = C[i][1] * F[1];
       step[i] = p0 + p1;
-      step_error[i] = (2.01 * kU * (std::fabs(p0) + std::fabs(p1)) + std::fabs(C[i][0]) * eF[0] +
+      step_error[i] = (2.01 * kUnitRoundoff * (std::fabs(p0) + std::fabs(p1)) + std::fabs(C[i][0]) * eF[0] +
                        std::fabs(C[i][1]) * eF[1]) *
                       kSlack;
     }
@@ -189,12 +189,12 @@ BEZIER_FMA_CLONES KrawczykResult krawczyk(const WorkingCurve& f, const WorkingCu
     if (iteration == 0) {
       // K(X, y) with y the start (any point of X will do): a root of X would lie in it.
       const ParamInterval X[2] = {t, s};
-      const double h[2] = {max2(std::fabs(y[0] - t.lo), std::fabs(t.hi - y[0])) * (1 + 4 * kU),
-                           max2(std::fabs(y[1] - s.lo), std::fabs(s.hi - y[1])) * (1 + 4 * kU)};
+      const double h[2] = {max2(std::fabs(y[0] - t.lo), std::fabs(t.hi - y[0])) * (1 + 4 * kUnitRoundoff),
+                           max2(std::fabs(y[1] - s.lo), std::fabs(s.hi - y[1])) * (1 + 4 * kUnitRoundoff)};
       for (int i = 0; i < 2; ++i) {
         const double centre = y[i] - step[i];
         const double spread =
-            (step_error[i] + B[i][0] * h[0] + B[i][1] * h[1]) * kSlack + 4 * kU * std::fabs(centre);
+            (step_error[i] + B[i][0] * h[0] + B[i][1] * h[1]) * kSlack + 4 * kUnitRoundoff * std::fabs(centre);
         if (centre + spread < X[i].lo || centre - spread > X[i].hi) {
           out.verdict = KrawczykResult::Verdict::no_root;
           return out;

@@ -11,12 +11,12 @@
 #include "core/intersect/gauss_newton.hpp"
 #include "core/bernstein/monomial.hpp"
 #include "core/numeric/power_of_two.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
 namespace {
 
-constexpr double kU = bernstein::kU;
 /// Overlaps shorter than this (in s) are left to the search.
 constexpr double kShortestOverlap = 0x1p-30;
 
@@ -25,7 +25,7 @@ constexpr double kShortestOverlap = 0x1p-30;
 /// distance (a_k is C(n, k) times a k-th forward difference), plus the rounding of the
 /// conversion and of the working frame (as in true_degree).
 double coefficient_error(const WorkingCurve& c, int k, int degree) {
-  const double points = overlap_tolerance(degree) + 64 * kU * c.magnitude + c.frame_error;
+  const double points = overlap_tolerance(degree) + 64 * kUnitRoundoff * c.magnitude + c.frame_error;
   return binomial(c.degree, k) * power_of_two(k) * points;
 }
 
@@ -146,7 +146,7 @@ double coincidence_tolerance_at(const WorkingCurve& f, const WorkingCurve& g,
                                 double smaller) noexcept {
   const int degree = std::max(f.degree, g.degree);
   return overlap_tolerance(degree) * smaller +
-         64 * degree * kU * bernstein::max2(f.magnitude, g.magnitude) + f.frame_error +
+         64 * degree * kUnitRoundoff * bernstein::max2(f.magnitude, g.magnitude) + f.frame_error +
          g.frame_error;
 }
 
@@ -334,7 +334,7 @@ bool injective_on(std::span<const double> x, std::span<const double> y, double m
   // Extrapolated pieces (reaching outside [0, 1]) are larger; bound their rounding by the
   // largest control point.
   const double q_max = bernstein::max2(bernstein::max_abs(qx), bernstein::max_abs(qy));
-  const double err = 8 * (n + 1) * kU * bernstein::max2(q_max, magnitude) + 0x1p-40 * h_max;
+  const double err = 8 * (n + 1) * kUnitRoundoff * bernstein::max2(q_max, magnitude) + 0x1p-40 * h_max;
   const std::size_t last = hx.size() - 1;
   const double n0 = std::hypot(hx[0], hy[0]), n1 = std::hypot(hx[last], hy[last]);
   const Point2 candidates[] = {
@@ -372,7 +372,7 @@ CoincidenceTest coincide_at_precision(const WorkingCurve& f, const WorkingCurve&
   double size = 0.0;
   for (std::size_t i = 0; i < fp.x.size(); ++i)
     size = bernstein::max2(size, bernstein::max2(std::fabs(fp.x[i]), std::fabs(fp.y[i])));
-  const double floor = 16.0 * std::max(f.degree, g.degree) * (kU * size + fp.error);
+  const double floor = 16.0 * std::max(f.degree, g.degree) * (kUnitRoundoff * size + fp.error);
   const Point2 fchord = {fp.x.back() - fp.x[0], fp.y.back() - fp.y[0]};
   const Point2 gchord = evaluate_with_tangent(g, s.hi).point - evaluate_with_tangent(g, s.lo).point;
   const bool forward = dot(fchord, gchord) >= 0;

@@ -1,7 +1,6 @@
 #include "core/intersect/search.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cassert>
 #include <cmath>
 #include <cstdint>
@@ -17,6 +16,7 @@
 #include "core/intersect/overlap.hpp"
 #include "core/intersect/clip/subdivision.hpp"
 #include "core/intersect/work_cost.hpp"
+#include "core/numeric/power_of_two.hpp"
 
 namespace bezier::core {
 
@@ -32,15 +32,6 @@ struct Box {
   /// The box's larger width when the Krawczyk test last failed on it (or an ancestor).
   double krawczyk_failed_at = INFINITY;
 };
-
-/// 2^ilogb(x), i.e. std::ldexp(1.0, std::ilogb(x)): for a positive normal x its bits with
-/// the significand cleared, without the two library calls (every search pays them once).
-double power_of_two_at_most(double x) noexcept {
-  constexpr std::uint64_t kExponentBits = 0x7ff0000000000000;
-  const std::uint64_t exponent = std::bit_cast<std::uint64_t>(x) & kExponentBits;
-  if (x > 0 && exponent != 0 && exponent != kExponentBits) return std::bit_cast<double>(exponent);
-  return std::ldexp(1.0, std::ilogb(x));
-}
 
 /// The two halves of an interval, or nothing when it is too narrow to split in doubles.
 struct Halves {

@@ -1,7 +1,6 @@
 #include "core/intersect/working_curve.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -10,12 +9,12 @@
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
 #include "core/numeric/power_of_two.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
 namespace {
 
-constexpr double kU = bernstein::kU;
 /// The exponent of the smallest subnormal double, 2^-1074.
 constexpr int kSmallestExponent = -1074;
 
@@ -31,28 +30,12 @@ double grid_point(double x, double grid) noexcept {
   return std::isfinite(nearest) ? nearest : std::trunc(x / grid) * grid;
 }
 
-/// std::ilogb(x) for finite nonzero x, without the library call for normal x.
-int exponent_of(double x) noexcept {
-  const int biased = static_cast<int>((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff);
-  if (biased == 0 || biased == 0x7ff) return std::ilogb(x);
-  return biased - 1023;
-}
-
 /// max(|p.x|, |p.y|) as max_abs_coordinate (std::fmax), without the library call: the
 /// same value, NaN included (fmax returns the other argument).
 double largest_coordinate(Point2 p) noexcept {
   const double a = std::fabs(p.x), b = std::fabs(p.y);
   return b > a || a != a ? b : a;
 }
-
-/// Multiplication by 2^e as two factors (2^e itself may be beyond the double range): exact
-/// whenever the result is a normal double.
-struct PowerOfTwo {
-  double first, second;
-  explicit PowerOfTwo(int e) noexcept
-      : first(power_of_two(e / 2)), second(power_of_two(e - e / 2)) {}
-  [[nodiscard]] double times(double x) const noexcept { return x * first * second; }
-};
 
 /// hi + lo as double-doubles: built where needed (compensated pieces, Newton residuals)
 /// rather than held by every working curve, which most pairs never ask for.
@@ -161,7 +144,7 @@ BEZIER_FMA_CLONES void fast_piece_into(const WorkingCurve& f, double a, double b
   }
   bernstein::portion_into<double>(f.x, a, b, out.x.data());
   bernstein::portion_into<double>(f.y, a, b, out.y.data());
-  out.error = f.frame_error + 3.02 * f.degree * kU * f.magnitude + 0x1p-1000;
+  out.error = f.frame_error + 3.02 * f.degree * kUnitRoundoff * f.magnitude + 0x1p-1000;
 }
 
 Piece compensated_piece(const WorkingCurve& f, double a, double b, Point2 center) {
@@ -178,7 +161,7 @@ Piece compensated_piece(const WorkingCurve& f, double a, double b, Point2 center
     p.y[i] = dd::to_double(dd::sub(ys[i], dd::from(center.y)));
     local = bernstein::max2(local, bernstein::max2(std::fabs(p.x[i]), std::fabs(p.y[i])));
   }
-  p.error = 1.01 * kU * local + (12.0 * f.degree + 4.0) * kU * kU * f.magnitude + 0x1p-1000;
+  p.error = 1.01 * kUnitRoundoff * local + (12.0 * f.degree + 4.0) * kUnitRoundoff * kUnitRoundoff * f.magnitude + 0x1p-1000;
   return p;
 }
 

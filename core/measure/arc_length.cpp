@@ -12,12 +12,11 @@
 #include "core/measure/bernstein_product.hpp"
 #include "core/measure/interval_roots.hpp"
 #include "core/measure/normalised.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
 namespace {
-
-constexpr double kU = bernstein::kU;
 
 double norm1(Point2 p) noexcept { return std::fabs(p.x) + std::fabs(p.y); }
 double norm1(Point3 p) noexcept { return std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z); }
@@ -187,7 +186,7 @@ ArcLength measure(const BasicCurve<P>& curve, double a, double b, const ArcLengt
   const Speed<P> speed(curve);
   const double n = curve.degree();
   const double integrand_rounding =
-      2 * (3.01 * n + 1) * kU * integrated_condition(speed.hodograph(), a, b);
+      2 * (3.01 * n + 1) * kUnitRoundoff * integrated_condition(speed.hodograph(), a, b);
 
   std::vector<Piece> heap;  // a max-heap on the error estimate
   const auto by_error = [](const Piece& x, const Piece& y) {
@@ -207,7 +206,7 @@ ArcLength measure(const BasicCurve<P>& curve, double a, double b, const ArcLengt
     }
     // Each rule's weighted sum of 15 positive terms rounds within 16 u of its value; the
     // compensated total within 2 u (and u more for the error sum itself).
-    const double sums_rounding = 20 * kU * sum.value();
+    const double sums_rounding = 20 * kUnitRoundoff * sum.value();
     return std::pair{sum.value(), error.value() + integrand_rounding + sums_rounding};
   };
   double total = 0.0, error = 0.0;
@@ -275,7 +274,7 @@ double invert(const BasicCurve<P>& curve, const ArcLength& measured, double targ
     if (!(slope > 0.0) || !(lo < next && next < hi)) next = lo + (hi - lo) / 2;
     if (next == t || !(lo < next && next < hi)) break;
     // Converged when the step is within a few ulps of t.
-    const bool tiny = std::fabs(next - t) <= 4 * kU * std::fabs(t);
+    const bool tiny = std::fabs(next - t) <= 4 * kUnitRoundoff * std::fabs(t);
     t = next;
     if (tiny) break;
   }

@@ -10,12 +10,12 @@
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/measure/interval_roots.hpp"
 #include "core/measure/normalised.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
 namespace {
 
-constexpr double kU = bernstein::kU;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 double& axis(Point2& p, std::size_t k) noexcept { return k == 0 ? p.x : p.y; }
@@ -45,7 +45,7 @@ Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
   for (std::size_t k = 0; k < kAxes; ++k) {
     // The compensated evaluation's second-order term, with room for its constant.
     const double evaluation_error =
-        2 * (n + 1) * (n + 1) * kU * kU * bernstein::max_abs(coordinate(curve.points(), k));
+        2 * (n + 1) * (n + 1) * kUnitRoundoff * kUnitRoundoff * bernstein::max_abs(coordinate(curve.points(), k));
     // A coordinate at t = 0 or 1 is a control point's, exact; elsewhere it is moved outward
     // by the evaluation's bound and one more rounding.
     double lo = kInfinity, hi = -kInfinity;

@@ -6,12 +6,11 @@
 #include "core/curve/derivative.hpp"
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/measure/normalised.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
 namespace {
-
-constexpr double kU = bernstein::kU;
 
 /// Largest |P^(k)_i| over the control points of the k-th hodograph: a bound on |B^(k)(t)|
 /// on [0, 1] by the convex hull property (per coordinate; the length adds at most a factor
@@ -24,7 +23,7 @@ double hodograph_bound(const BasicCurve<P>& curve, int k) {
 /// |B'| below which B'(t) is numerically zero (see frame.hpp).
 template <class P>
 double stationary_threshold(const BasicCurve<P>& curve) {
-  return 16 * kU * (hodograph_bound(curve, 1) + hodograph_bound(curve, 2));
+  return 16 * kUnitRoundoff * (hodograph_bound(curve, 1) + hodograph_bound(curve, 2));
 }
 
 std::optional<Frame<Point2>> unit_frame(const Curve& curve, double t) {
@@ -51,7 +50,7 @@ std::optional<Frame<Point3>> unit_frame(const Curve3& curve, double t) {
   f.curvature = bend / (speed * speed * speed);
   // Each component of B' × B'' rounds with an error up to about 2 u |B'| |B''|: below a few
   // times that the osculating plane is rounding noise.
-  if (bend > 8 * kU * speed * length(d[1])) {
+  if (bend > 8 * kUnitRoundoff * speed * length(d[1])) {
     const Point3 normal_direction = cross(binormal_direction, d[0]);  // (B' × B'') × B'
     const double size = length(normal_direction);
     if (size > 0.0) f.normal = normal_direction / size;

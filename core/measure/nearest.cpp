@@ -11,12 +11,11 @@
 #include "core/measure/interval_roots.hpp"
 #include "core/measure/normalised.hpp"
 #include "core/numeric/small_array.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
 namespace {
-
-constexpr double kU = bernstein::kU;
 
 template <class P>
 struct Candidate {
@@ -96,7 +95,7 @@ NearestPoint<P> closest(const BasicCurve<P>& curve, P target, double a, double b
   }
   double least = candidates.front().distance;
   for (const Candidate<P>& c : candidates) least = std::min(least, c.distance);
-  const double tolerance = std::max(1e-12 * least, 8 * kU * coordinate_scale);
+  const double tolerance = std::max(1e-12 * least, 8 * kUnitRoundoff * coordinate_scale);
 
   std::vector<Candidate<P>> tied;
   for (const Candidate<P>& c : candidates) {

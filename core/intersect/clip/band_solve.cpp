@@ -8,12 +8,12 @@
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
 namespace {
 
-constexpr double kU = bernstein::kU;
 /// Widening of the closed-form interval before it is certified: well above the error of a
 /// polished simple root (a few ulps), small enough to keep quadratic convergence (a clip can
 /// still shrink an interval by a factor 2^31).
@@ -40,7 +40,7 @@ int quadratic(double c0, double c1, double c2, double out[2]) noexcept {
   const double disc = c1 * c1 - 4 * c2 * c0;
   if (disc < 0) {
     // Keep a nearly double root: rounding may have pushed the discriminant below zero.
-    if (disc > -16 * kU * (c1 * c1 + std::fabs(4 * c2 * c0))) {
+    if (disc > -16 * kUnitRoundoff * (c1 * c1 + std::fabs(4 * c2 * c0))) {
       out[0] = -c1 / (2 * c2);
       return 1;
     }
@@ -145,7 +145,7 @@ template <std::size_t E>
 std::optional<ParamInterval> kept_interval_by_hulls_of(std::span<const double, E> p, double lo,
                                                        double hi) {
   const int k = static_cast<int>(p.size()) - 1;
-  const double e = 3.02 * k * kU * bernstein::max_abs(p) + 0x1p-1000;
+  const double e = 3.02 * k * kUnitRoundoff * bernstein::max_abs(p) + 0x1p-1000;
   CoefficientBuffer<E> piece(p.size());
   ParamInterval range{0.0, 1.0};
   for (int iteration = 0; iteration < 3; ++iteration) {
@@ -161,8 +161,8 @@ std::optional<ParamInterval> kept_interval_by_hulls_of(std::span<const double, E
     if (!clip) return std::nullopt;
     const double w = range.hi - range.lo;
     ParamInterval next = range;
-    if (clip->lo > 0.0) next.lo = bernstein::max2(range.lo, range.lo + w * clip->lo - 4 * kU);
-    if (clip->hi < 1.0) next.hi = bernstein::min2(range.hi, range.lo + w * clip->hi + 4 * kU);
+    if (clip->lo > 0.0) next.lo = bernstein::max2(range.lo, range.lo + w * clip->lo - 4 * kUnitRoundoff);
+    if (clip->hi < 1.0) next.hi = bernstein::min2(range.hi, range.lo + w * clip->hi + 4 * kUnitRoundoff);
     const bool shrank_enough = next.hi - next.lo < 0.8 * w;
     range = next;
     if (!shrank_enough) break;
@@ -296,7 +296,7 @@ std::optional<ParamInterval> kept_interval_of(std::span<const double, E> p, doub
     c[2] = 3 * (p[0] - 2 * p[1] + p[2]);
     c[3] = (p[3] - p[0]) + 3 * (p[1] - p[2]);
   }
-  const double e = 3.02 * k * kU * bernstein::max_abs(p) + 0x1p-1000;
+  const double e = 3.02 * k * kUnitRoundoff * bernstein::max_abs(p) + 0x1p-1000;
   // Monotone p (monotone Bernstein coefficients, so p' has constant sign): the set is one
   // interval between the crossings of lo and hi, and a single value outside each end
   // certifies it. This is the common case once the pieces are small.

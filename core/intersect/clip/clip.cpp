@@ -7,6 +7,7 @@
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
@@ -71,11 +72,10 @@ BEZIER_FMA_CLONES bool bounding_boxes_disjoint(const Piece& f, const Piece& g) n
 }
 
 ParamInterval map_to_domain(ParamInterval domain, ParamInterval local) noexcept {
-  constexpr double kU = bernstein::kU;
   const double w = domain.hi - domain.lo;
   ParamInterval out = domain;
-  if (local.lo > 0.0) out.lo = bernstein::max2(domain.lo, domain.lo + w * local.lo - 4 * kU);
-  if (local.hi < 1.0) out.hi = bernstein::min2(domain.hi, domain.lo + w * local.hi + 4 * kU);
+  if (local.lo > 0.0) out.lo = bernstein::max2(domain.lo, domain.lo + w * local.lo - 4 * kUnitRoundoff);
+  if (local.hi < 1.0) out.hi = bernstein::min2(domain.hi, domain.lo + w * local.hi + 4 * kUnitRoundoff);
   if (out.hi < out.lo) out.hi = out.lo;
   return out;
 }

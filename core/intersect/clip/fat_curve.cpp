@@ -6,6 +6,7 @@
 
 #include "core/intersect/clip/band_solve.hpp"
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
@@ -53,7 +54,7 @@ FatCurve fat_curve(const FatCurveOperator& op, std::span<const double> a) {
   }
   // E's entries carry one rounding each and the sum k + 1 more; the rows of E are convex
   // combinations, so |fl(E p) - E p| <= (k + 3) u max|p|; the difference rounds once more.
-  const double u = bernstein::kU;
+  const double u = kUnitRoundoff;
   out.delta = delta * (1 + 2 * u) + (k + 5) * u * bernstein::max_abs(out.p) + 0x1p-1000;
   return out;
 }

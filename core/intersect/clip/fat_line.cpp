@@ -5,12 +5,11 @@
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
 namespace {
-
-constexpr double kU = bernstein::kU;
 
 /// Largest |coordinate - origin| over a piece's control points x, y.
 template <std::size_t E>
@@ -73,7 +72,7 @@ FatLine fat_line_of(std::span<const double, E> gx, std::span<const double, E> gy
   const double n1 = std::fabs(line.normal.x) + std::fabs(line.normal.y);
   // Every exact distance is within e of the computed one: the piece's error moves a point
   // by g.error per coordinate, and the difference, two products and the sum round once each.
-  const double e = n1 * (g_error + 3.01 * kU * reach(gx, gy, origin));
+  const double e = n1 * (g_error + 3.01 * kUnitRoundoff * reach(gx, gy, origin));
   double lo = 0.0, hi = 0.0;
   const auto distance = [&](std::size_t j) {
     return line.normal.x * (gx[j] - origin.x) + line.normal.y * (gy[j] - origin.y);
@@ -101,7 +100,7 @@ FatLine fat_line_of(std::span<const double, E> gx, std::span<const double, E> gy
   lo -= e;
   hi += e;
   // The products c (d +- e) and the sums above round too: a relative hair more.
-  const double slack = 4 * kU * (std::fabs(lo) + std::fabs(hi));
+  const double slack = 4 * kUnitRoundoff * (std::fabs(lo) + std::fabs(hi));
   line.d_min = lo - slack;
   line.d_max = hi + slack;
   line.margin = e + slack;
@@ -119,7 +118,7 @@ DistanceCoefficients distance_coefficients_of(const FatLine& line, std::span<con
     a[i] = line.normal.x * (x[i] - line.origin.x) + line.normal.y * (y[i] - line.origin.y);
   }
   const double n1 = std::fabs(line.normal.x) + std::fabs(line.normal.y);
-  out.error = n1 * (f_error + 3.01 * kU * reach(x, y, line.origin));
+  out.error = n1 * (f_error + 3.01 * kUnitRoundoff * reach(x, y, line.origin));
   return out;
 }
 

@@ -5,12 +5,11 @@
 
 #include "core/numeric/binomial.hpp"
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
 namespace {
-
-constexpr double kU = bernstein::kU;
 
 struct Parabola {
   Point2 q[3];
@@ -20,7 +19,7 @@ struct Parabola {
 Parabola fit_parabola(const Piece& g, const FatCurveOperator& op2) {
   Parabola out;
   const int m = g.degree();
-  const double root2 = std::sqrt(2.0) * (1 + kU);
+  const double root2 = std::sqrt(2.0) * (1 + kUnitRoundoff);
   if (m == 2) {
     for (int i = 0; i < 3; ++i)
       out.q[i] = {g.x[static_cast<std::size_t>(i)], g.y[static_cast<std::size_t>(i)]};
@@ -32,7 +31,7 @@ Parabola fit_parabola(const Piece& g, const FatCurveOperator& op2) {
     out.q[i] = {fx.p[static_cast<std::size_t>(i)], fy.p[static_cast<std::size_t>(i)]};
   // Per coordinate, the difference of the Bernstein polynomials is bounded by delta_x,
   // delta_y (fat_curve includes the rounding of the elevation).
-  out.delta = std::sqrt(fx.delta * fx.delta + fy.delta * fy.delta) * (1 + 4 * kU) + root2 * g.error;
+  out.delta = std::sqrt(fx.delta * fx.delta + fy.delta * fy.delta) * (1 + 4 * kUnitRoundoff) + root2 * g.error;
   return out;
 }
 
@@ -61,9 +60,9 @@ Clip implicit_clip(const Piece& x, const Piece& other, const FatCurveOperator& o
   const double area = cross(q1 - q0, q2 - q0);  // D, twice the signed area
   // Working-frame coordinates (|x| <= ~1): the squares neither overflow nor underflow
   // harmfully, so sqrt(dot) replaces hypot.
-  const auto norm = [](Point2 v) { return std::sqrt(dot(v, v)) * (1 + 4 * kU); };
+  const auto norm = [](Point2 v) { return std::sqrt(dot(v, v)) * (1 + 4 * kUnitRoundoff); };
   const double l0 = norm(q2 - q1), l1 = norm(q2 - q0), l2 = norm(q1 - q0);  // |grad D_i|
-  if (!(std::fabs(area) > 64 * kU * bernstein::max2(l0, bernstein::max2(l1, l2)) *
+  if (!(std::fabs(area) > 64 * kUnitRoundoff * bernstein::max2(l0, bernstein::max2(l1, l2)) *
                               bernstein::max2(l0, bernstein::max2(l1, l2)))) {
     return no_information;  // Q is (nearly) straight: its implicit form degenerates
   }
@@ -84,7 +83,7 @@ Clip implicit_clip(const Piece& x, const Piece& other, const FatCurveOperator& o
   // gradient of length <= max l_i; the two differences, two products and the difference of
   // the cross product round with relative error <= 4 u of |a| |b| <= reach^2.
   const double l_max = bernstein::max2(l0, bernstein::max2(l1, l2));
-  const double e = l_max * std::sqrt(2.0) * x.error * (1 + kU) + 5 * kU * reach * reach;
+  const double e = l_max * std::sqrt(2.0) * x.error * (1 + kUnitRoundoff) + 5 * kUnitRoundoff * reach * reach;
   const Coeffs sq = product(d1, d1), pr = product(d0, d2);
   Coeffs j(sq.size());
   for (std::size_t k = 0; k < j.size(); ++k) j[k] = sq[k] - 4 * pr[k];
@@ -92,12 +91,12 @@ Clip implicit_clip(const Piece& x, const Piece& other, const FatCurveOperator& o
   const double a = big + e;
   // |J_exact - J| <= 10 a e + 5 e^2 (perturbed products) plus the rounding of the product
   // formula (weights exact to one rounding, n + 4 roundings per sum) on 5 a^2.
-  const double e_j = 10 * a * e + 5 * e * e + (2 * n + 8) * kU * 5 * a * a;
+  const double e_j = 10 * a * e + 5 * e * e + (2 * n + 8) * kUnitRoundoff * 5 * a * a;
   // Points of `other`: |I| <= |D| Gamma delta + ||H|| delta^2 / 2.
   const double gamma = 2 * l1 + 4 * l0 + 4 * l2;
   const double hessian = 2 * l1 * l1 + 8 * l0 * l2;
   const auto band_of = [&](double delta) {
-    return (std::fabs(area) * gamma * delta + 0.5 * hessian * delta * delta) * (1 + 16 * kU);
+    return (std::fabs(area) * gamma * delta + 0.5 * hessian * delta * delta) * (1 + 16 * kUnitRoundoff);
   };
   const double beta = band_of(par.delta);
   const double band = beta + e_j;

@@ -21,6 +21,7 @@
 #include "tests/support/exact.hpp"
 #include "tests/support/exact_bezier.hpp"
 #include "tests/support/mulberry32.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 namespace {
@@ -163,7 +164,7 @@ TEST(ClipComponents, KeptIntervalContainsEveryParameterInTheBand) {
     if (kept) {
       // Not empty: some coefficient is in the band, or some below and some above it.
       const auto [hull_lo, hull_hi] = exact_hull_clip(p, Rational(lo), Rational(hi));
-      const Rational pad(0x1p-32 + 16 * bernstein::kU);
+      const Rational pad(0x1p-32 + 16 * kUnitRoundoff);
       EXPECT_GE(Rational(kept->lo), hull_lo - pad) << "trial " << trial;
       EXPECT_LE(Rational(kept->hi), hull_hi + pad) << "trial " << trial;
     }
@@ -239,7 +240,7 @@ TEST(ClipComponents, KeptIntervalOfANonMonotoneCubicIsWithinItsConvexHullClip) {
   ASSERT_TRUE(kept.has_value());
   EXPECT_LE(kept->lo, r1_lo);
   EXPECT_GE(kept->hi, r2_hi);
-  const Rational pad(16 * bernstein::kU);
+  const Rational pad(16 * kUnitRoundoff);
   EXPECT_GE(Rational(kept->lo), hull_lo - pad);
   EXPECT_LE(Rational(kept->hi), hull_hi + pad);
   // A band holding every value of p: the whole domain.
@@ -267,7 +268,7 @@ TEST(ClipComponents, HullClipMatchesTheHullComputedInRationals) {
   // and bands inside, below, above and across the coefficients. The clip must contain the
   // exact hull and exceed it by at most its pad (8 u) plus the rounding of a crossing.
   test::Mulberry32 rng(11);
-  const Rational slack(16 * bernstein::kU);
+  const Rational slack(16 * kUnitRoundoff);
   int empty = 0, clipped = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     const int k = 1 + trial % 7;
