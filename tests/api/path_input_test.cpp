@@ -208,5 +208,20 @@ TEST(PathInput, WorkCapCoversTheWholePathRequest) {
   EXPECT_EQ(json::parse(capped.body)["type"], "urn:bezier-service:problem:work-cap");
 }
 
+TEST(PathInput, LengthOfAPathIsChargedToTheWorkCap) {
+  // 100 cubic arches: each quadrature is charged by its pieces, at least 15 points of a
+  // degree-4 polynomial (10 updates each): at least 15000 units in all.
+  std::string body = R"({"path":"M0 0)";
+  for (int k = 0; k < 100; ++k) body += " c1 1 2 1 3 0";
+  body += R"("})";
+  EXPECT_EQ(handle("/length", body, Limits{}).status, 200);
+  Limits limits;
+  limits.max_work = 14999;
+  const Reply capped = handle("/length", body, limits);
+  EXPECT_EQ(capped.status, 422);
+  EXPECT_TRUE(capped.limit_reached);
+  EXPECT_EQ(json::parse(capped.body)["type"], "urn:bezier-service:problem:work-cap");
+}
+
 }  // namespace
 }  // namespace bezier::api
