@@ -5,6 +5,7 @@
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/base/multiversion.hpp"
 #include "core/numeric/unit_roundoff.hpp"
+#include "core/intersect/tuning.hpp"
 
 namespace bezier::core {
 
@@ -15,10 +16,7 @@ namespace {
 constexpr double kSlack = 1 + 0x1p-40;
 /// The degree up to which curves are evaluated on the stack (SmallArray's inline size).
 constexpr std::size_t kMaxDegree = 23;
-/// rho above this leaves the box to the clipping: the certificate needs rho < 1, and a
-/// contraction this strong makes Newton's iterates and the tight box reliable.
-constexpr double kMaxRho = 0.5;
-constexpr int kNewtonIterations = 4;
+using namespace intersect_tuning;
 
 using bernstein::max2;
 using bernstein::min2;

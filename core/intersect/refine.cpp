@@ -6,15 +6,13 @@
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/intersect/compensated_point.hpp"
 #include "core/intersect/kind.hpp"
+#include "core/intersect/tuning.hpp"
 
 namespace bezier::core {
 
 namespace {
 
-/// Steps below this (in parameter) end the iteration: a few ulps of 1/2.
-constexpr double kConverged = 0x1p-54;
-constexpr int kTransversalIterations = 40;
-constexpr int kTangencyIterations = 20;
+using namespace intersect_tuning;
 
 Point2 residual(const WorkingCurve& f, const WorkingCurve& g, double t, double s) {
   const PointDD a = evaluate_dd(f, t), b = evaluate_dd(g, s);

@@ -16,11 +16,14 @@
 #include "core/intersect/overlap.hpp"
 #include "core/intersect/clip/subdivision.hpp"
 #include "core/intersect/work_cost.hpp"
+#include "core/intersect/tuning.hpp"
 #include "core/numeric/power_of_two.hpp"
 
 namespace bezier::core {
 
 namespace {
+
+using namespace intersect_tuning;
 
 struct Box {
   ParamInterval t{0.0, 1.0};
@@ -45,48 +48,11 @@ Halves halves(ParamInterval iv) noexcept {
   return {{{iv.lo, m}, {m, iv.hi}}, 2};
 }
 
-/// Boxes wider than this are never declared "coincident to within rounding": a contact of
-/// order 3 reaches its precision floor near 1e-8 (double-precision local coordinates hold
-/// the curves' gap c d^3 down to about u |f'| d), while wider coincident boxes are
-/// near-coincidences along an arc (improper overlaps, the same point set traced along a
-/// non-linear reparametrisation, are found before the search: common_arc.hpp), which the
-/// search must not report as one contact; they run into the work cap instead.
-constexpr double kFloorWidth = 0x1p-20;
-
-/// The sine of the angle between two pieces' chords is below this: they run nearly parallel,
-/// and the implicit clip is worth its cost (a few hundred flops for cubics).
-constexpr double kParallelSine = 1.0 / 16;
-
-/// In the hybrid method the implicit clip waits until the box is at most this wide: on the
-/// first, large boxes nearly parallel chords are common and mean little (halving separates
-/// such pieces for a fraction of the clip's cost), while the tube it prevents only forms
-/// around a contact. (Bézier clipping, which halves only one interval at a time, still
-/// needs it on wide boxes to resolve a tangency.)
-constexpr double kImplicitClipWidth = 0.25;
-
 bool nearly_parallel(const Piece& a, const Piece& b) noexcept {
   const Point2 ca = {a.x.back() - a.x[0], a.y.back() - a.y[0]};
   const Point2 cb = {b.x.back() - b.x[0], b.y.back() - b.y[0]};
   return sine_between(ca, cb) <= kParallelSine;
 }
-
-/// A clip that keeps more than this fraction of its interval has not done enough: the box
-/// is split instead of clipped again. The hybrid method halves both intervals once a clip
-/// keeps more than half (halving then gains more than the clip); Bézier clipping halves the
-/// wider interval once a clip removes less than 20 % of it (Sederberg & Nishita 1990, §4).
-constexpr double kHybridKeptFraction = 0.5;
-constexpr double kBezierClipKeptFraction = 0.8;
-
-/// When rounding decides even on compensated pieces and one piece is more than this many
-/// times longer than the other, the longer one is halved: its fat line is the blunt one.
-constexpr double kUnevenPieces = 8;
-
-/// Boxes narrower than this in t and s (hybrid, fast pieces) try the Krawczyk test
-/// (krawczyk.hpp) before they are clipped: at a transversal crossing the Jacobian varies by
-/// O(width) over the box, so the test usually succeeds and replaces the last few clips.
-/// (Newton's method starts from where the chords cross, from which it converges on boxes
-/// this wide.)
-constexpr double kKrawczykWidth = 0x1p-4;
 
 /// The intersection of two kept intervals (both contain every root), or nothing.
 std::optional<ParamInterval> intersect_kept(std::optional<ParamInterval> a,
