@@ -13,6 +13,8 @@
 #include "core/cubic/double_point.hpp"
 #include "core/cubic/predicates.hpp"
 #include "core/numeric/error_free.hpp"
+#include "core/numeric/power_of_two.hpp"
+#include "core/numeric/unit_roundoff.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/intersect/common_arc.hpp"
 #include "core/intersect/working_curve.hpp"
@@ -25,7 +27,6 @@ namespace bezier::core {
 
 namespace {
 
-constexpr double kUnitRoundoff = 0x1p-53;
 // Pairs found twice (from neighbouring boxes) agree to a few ulps; distinct transversal
 // pairs this close in both parameters do not occur above the resolution of the search.
 constexpr double kMergeCrossings = 1e-10;
@@ -552,19 +553,12 @@ SelfIntersectionResult self_intersections(const Curve& curve,
   // method scales with it, so parameters come out the same either way.
   const double original_scale = scale(curve);
   const bool moderate = 0x1p-300 <= original_scale && original_scale <= 0x1p300;
-  const int k = moderate || original_scale == 0.0 ? 0 : -std::ilogb(original_scale);
-  // 2^k as two normal factors (k reaches 1074 for subnormal input).
-  const double f1 = std::ldexp(1.0, k / 2), f2 = std::ldexp(1.0, k - k / 2);
+  const int k = moderate || original_scale == 0.0 ? 0 : -exponent_of(original_scale);
   std::optional<Curve> rescaled;
-  if (k != 0) {
-    std::vector<Point2> scaled;
-    scaled.reserve(curve.points().size());
-    for (const Point2 p : curve.points()) scaled.push_back((p * f1) * f2);
-    rescaled.emplace(std::move(scaled));
-  }
+  if (k != 0) rescaled.emplace(scaled_by_power_of_two(curve.points(), k));
   const Curve& work_curve = rescaled ? *rescaled : curve;
   const std::span<const Point2> points = work_curve.points();
-  const double s = k != 0 ? (original_scale * f1) * f2 : original_scale;
+  const double s = k != 0 ? PowerOfTwo(k).times(original_scale) : original_scale;
   const double rounding = 4.0 * static_cast<double>(points.size()) * kUnitRoundoff * s;
   const CurveFacts facts{work_curve,           points,   s,
                          options.dist_rel * s, rounding, curve.front() == curve.back()};
@@ -611,7 +605,8 @@ SelfIntersectionResult self_intersections(const Curve& curve,
     if (capped) result.status = IntersectStatus::work_cap_reached;
   }
   if (k != 0) {
-    for (SelfIntersection& pair : result.pairs) pair.point = (pair.point / f1) / f2;
+    const PowerOfTwo back(-k);
+    for (SelfIntersection& pair : result.pairs) pair.point = back.times(pair.point);
   }
   for (Overlap& o : result.overlaps) o.reversed = runs_backwards(curve, o);
   result.stats.work_units = result.stats.work * self_intersection_box_cost(curve.degree());
