@@ -44,7 +44,7 @@ CurveJet jet_in(double* x, double* y, std::size_t count, double t) {
 }
 
 bool inside(double u, double v, const ParameterBox& box) {
-  return box.u_lo <= u && u <= box.u_hi && box.v_lo <= v && v <= box.v_hi;
+  return box.u.contains(u) && box.v.contains(v);
 }
 
 }  // namespace
@@ -128,7 +128,7 @@ PairRefinement refine_contact(std::span<const Point2> points, double u0, double 
                               ParameterBox box, int max_iterations) {
   PairRefinement best;
   best.residual = std::numeric_limits<double>::infinity();
-  double u = std::clamp(u0, box.u_lo, box.u_hi), v = std::clamp(v0, box.v_lo, box.v_hi);
+  double u = std::clamp(u0, box.u.lo, box.u.hi), v = std::clamp(v0, box.v.lo, box.v.hi);
   bool done = false;
   for (int it = 0; it <= max_iterations; ++it) {
     const CurveJet ju = curve_jet(points, u);
@@ -153,8 +153,8 @@ PairRefinement refine_contact(std::span<const Point2> points, double u0, double 
     const double du = (-g1 * j22 + g2 * j12) / det;
     const double dv = (-g2 * j11 + g1 * j21) / det;
     if (!(std::isfinite(du) && std::isfinite(dv))) return best;
-    const double nu = std::clamp(u + du, box.u_lo, box.u_hi);
-    const double nv = std::clamp(v + dv, box.v_lo, box.v_hi);
+    const double nu = std::clamp(u + du, box.u.lo, box.u.hi);
+    const double nv = std::clamp(v + dv, box.v.lo, box.v.hi);
     const bool tiny = std::fabs(nu - u) <= kConvergedStep && std::fabs(nv - v) <= kConvergedStep;
     u = nu;
     v = nv;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <span>
 
+#include "core/base/interval.hpp"
 #include "core/base/point.hpp"
 
 namespace bezier::core {
@@ -31,12 +32,10 @@ struct CurveJet {
 /// bit for bit the plain de Casteljau value. Any finite t.
 [[nodiscard]] CurveJet curve_jet(std::span<const Point2> points, double t);
 
-/// A closed parameter box [u_lo, u_hi] x [v_lo, v_hi] for a refinement to stay in.
+/// A closed parameter box u x v for a refinement to stay in.
 struct ParameterBox {
-  double u_lo;
-  double u_hi;
-  double v_lo;
-  double v_hi;
+  ParamInterval u;
+  ParamInterval v;
 };
 
 /// Outcome of refining a parameter pair (u, v) with B(u) = B(v) in mind.

@@ -241,7 +241,7 @@ class Search {
     const bool flat =
         flatness(pi, m_) <= settings_.dist_tol && flatness(pj, m_) <= settings_.dist_tol;
     if (flat || box.depth >= settings_.max_depth) {
-      out_.contact_boxes.push_back({box.a, box.b, box.c, box.d});
+      out_.contact_boxes.push_back({{box.a, box.b}, {box.c, box.d}});
       ++out_.stats.contact_candidates;
       return true;
     }
@@ -257,7 +257,7 @@ class Search {
     const double u0 = box.a + alpha * (box.b - box.a), v0 = box.c + beta * (box.d - box.c);
     // Iterates may wander one box width beyond the box; the root must be inside it.
     const double wu = box.b - box.a, wv = box.d - box.c;
-    const ParameterBox region{box.a - wu, box.b + wu, box.c - wv, box.d + wv};
+    const ParameterBox region{{box.a - wu, box.b + wu}, {box.c - wv, box.d + wv}};
     const PairRefinement root = refine_double_point(points_, u0, v0, region, settings_.rounding);
     ++out_.stats.newton_runs;
     out_.stats.newton_iterations += root.iterations;

@@ -27,7 +27,7 @@ struct SelfIntersectionSearchSettings {
 struct SelfIntersectionSearchOutcome {
   /// Newton results that converged inside a box whose pieces have disjoint tangent cones.
   std::vector<PairRefinement> crossings;
-  /// Boxes [u_lo, u_hi] x [v_lo, v_hi] that could neither be discarded nor resolved before
+  /// Boxes u x v that could neither be discarded nor resolved before
   /// both pieces became flat to within dist_tol: tangential contacts or near misses.
   std::vector<ParameterBox> contact_boxes;
   bool work_cap_reached = false;

@@ -281,17 +281,17 @@ struct Clusters {
 /// box of its members; nullopt when the comparisons exceed `budget` work units.
 std::optional<Clusters> cluster(std::vector<ParameterBox> boxes, std::int64_t budget) {
   std::sort(boxes.begin(), boxes.end(),
-            [](const ParameterBox& a, const ParameterBox& b) { return a.u_lo < b.u_lo; });
+            [](const ParameterBox& a, const ParameterBox& b) { return a.u.lo < b.u.lo; });
   std::int64_t comparisons = 0;
   std::vector<ParameterBox> clusters;
   for (const ParameterBox& b : boxes) {
-    const double w = std::max(b.u_hi - b.u_lo, b.v_hi - b.v_lo);
+    const double w = std::max(b.u.width(), b.v.width());
     bool joined = false;
     for (auto it = clusters.rbegin(); it != clusters.rend(); ++it) {
       if (++comparisons > budget * kComparisonsPerWork) return std::nullopt;
-      if (b.v_lo <= it->v_hi + w && it->v_lo <= b.v_hi + w && b.u_lo <= it->u_hi + w) {
-        *it = {std::min(it->u_lo, b.u_lo), std::max(it->u_hi, b.u_hi), std::min(it->v_lo, b.v_lo),
-               std::max(it->v_hi, b.v_hi)};
+      if (b.v.lo <= it->v.hi + w && it->v.lo <= b.v.hi + w && b.u.lo <= it->u.hi + w) {
+        *it = {{std::min(it->u.lo, b.u.lo), std::max(it->u.hi, b.u.hi)},
+               {std::min(it->v.lo, b.v.lo), std::max(it->v.hi, b.v.hi)}};
         joined = true;
         break;
       }
@@ -327,16 +327,16 @@ ContactResolution resolve_contacts(const std::vector<ParameterBox>& boxes, const
   }
   out.work = clusters->work;
   double width = 0.0;
-  for (const ParameterBox& b : boxes) width = std::max({width, b.u_hi - b.u_lo, b.v_hi - b.v_lo});
+  for (const ParameterBox& b : boxes) width = std::max({width, b.u.width(), b.v.width()});
   for (const ParameterBox& c : clusters->boxes) {
     if (out.work + kRefinementWork > budget) {
       out.work_cap_reached = true;
       break;
     }
     out.work += kRefinementWork;
-    const ParameterBox region{std::max(0.0, c.u_lo - width), std::min(1.0, c.u_hi + width),
-                              std::max(0.0, c.v_lo - width), std::min(1.0, c.v_hi + width)};
-    const double u0 = 0.5 * (c.u_lo + c.u_hi), v0 = 0.5 * (c.v_lo + c.v_hi);
+    const ParameterBox region{{std::max(0.0, c.u.lo - width), std::min(1.0, c.u.hi + width)},
+                              {std::max(0.0, c.v.lo - width), std::min(1.0, c.v.hi + width)}};
+    const double u0 = 0.5 * (c.u.lo + c.u.hi), v0 = 0.5 * (c.v.lo + c.v.hi);
     PairRefinement r = refine_double_point(facts.points, u0, v0, region, facts.rounding);
     // At a tangency Newton on F stalls, or lands on the double root with a singular
     // Jacobian (an exact start does): then locate the touching point instead.
@@ -503,7 +503,7 @@ ClosedFormAnswer closed_form_cubic(const CurveFacts& facts) {
   if (!(dp->t1 < dp->t2)) return no_loop;  // a loop of width zero is no pair (t < s)
   double u = dp->t1, v = dp->t2;
   const PairRefinement polished =
-      refine_double_point(facts.points, u, v, {0.0, 1.0, 0.0, 1.0}, facts.rounding, 8);
+      refine_double_point(facts.points, u, v, {{0.0, 1.0}, {0.0, 1.0}}, facts.rounding, 8);
   if (polished.converged && polished.u < polished.v) {
     // Ends decided exactly stay exact. The polish is kept only when it does not increase
     // the compensated residual |B(v) - B(u)|: on an ill-conditioned (nearly collinear)
