@@ -124,8 +124,8 @@ bool is_resolved_double_point(std::span<const Point2> points, double u, double v
          0x1p-10 * parameter_separation(u, v, closed);
 }
 
-PairRefinement refine_contact(std::span<const Point2> points, double u0, double v0,
-                              ParameterBox box, int max_iterations) {
+PairRefinement refine_self_contact(std::span<const Point2> points, double u0, double v0,
+                                   ParameterBox box, int max_iterations) {
   PairRefinement best;
   best.residual = std::numeric_limits<double>::infinity();
   double u = std::clamp(u0, box.u.lo, box.u.hi), v = std::clamp(v0, box.v.lo, box.v.hi);

@@ -104,7 +104,8 @@ struct PairRefinement {
 /// is then regular, so convergence is quadratic. At a near miss it converges to the closest
 /// approach instead, and the residual |F| tells the two apart. Iterates are clamped to
 /// `box`; stops after `max_iterations`.
-[[nodiscard]] PairRefinement refine_contact(std::span<const Point2> points, double u0, double v0,
-                                            ParameterBox box, int max_iterations = 40);
+[[nodiscard]] PairRefinement refine_self_contact(std::span<const Point2> points, double u0,
+                                                 double v0, ParameterBox box,
+                                                 int max_iterations = 40);
 
 }  // namespace bezier::core

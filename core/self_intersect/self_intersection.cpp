@@ -341,7 +341,7 @@ ContactResolution resolve_contacts(const std::vector<ParameterBox>& boxes, const
     // At a tangency Newton on F stalls, or lands on the double root with a singular
     // Jacobian (an exact start does): then locate the touching point instead.
     const bool contact = !(r.converged && resolved(facts, r.u, r.v));
-    if (contact) r = refine_contact(facts.points, u0, v0, region);
+    if (contact) r = refine_self_contact(facts.points, u0, v0, region);
     ++out.newton_runs;
     out.newton_iterations += r.iterations;
     if (r.residual <= facts.dist_tol &&

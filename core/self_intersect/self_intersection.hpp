@@ -121,7 +121,7 @@ struct SelfIntersectionOptions {
 ///    one pair (a second one would give a chord direction in both cones); Newton's method
 ///    on F from the chords' crossing finds it, and a result inside the box is final.
 ///    Otherwise split; pieces flat to within the distance tolerance that still cannot be
-///    separated are tangential-contact candidates, refined by refine_contact.
+///    separated are tangential-contact candidates, refined by refine_self_contact.
 /// Results are refined to full double precision (Newton with quadratic convergence, then
 /// Newton steps on a compensated residual B(s) - B(t)), moved to exactly t = 0 or s = 1
 /// when the end point satisfies B(t) = B(s) as well (a root found just outside [0, 1] that
@@ -142,7 +142,7 @@ struct SelfIntersectionOptions {
 /// s - t replaced by 1 - (s - t)): loops next to it that small count as the trivial pair.
 /// The exact cubic closed form has no such limit. Distinct pairs closer than 1e-10 in both t
 /// and s are merged.
-/// Tangential contacts are located by refine_contact (to full precision when the branches'
+/// Tangential contacts are located by refine_self_contact (to full precision when the branches'
 /// curvatures differ, to about half the digits when they agree). Every stage counts against
 /// options.max_work; running out gives status work_cap_reached, never a long run. Other curves that
 /// retrace part of themselves (improper parametrisations C(p(t)) with p not symmetric about 1/2,
