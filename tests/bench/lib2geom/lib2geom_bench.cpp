@@ -42,7 +42,8 @@
 //     at most 8 levels deep (256 pieces), so asking below its reach costs the full 511
 //     nodes. Counters max_rel_err and median_rel_err: |result - reference| / reference over
 //     the 1024 curves, the reference being adaptive Gauss-Legendre in long double
-//     (reference_length below), checked against ours at 1e-14 (counter ref_vs_ours_1e14).
+//     (ReferenceLength below); for ours, bound_violations counts the curves whose
+//     reference lies outside the error_bound reported.
 //   * nearest, one target: ours core::nearest; lib2geom's nearest_time(Point, D2<Bezier>),
 //     the roots of (B - q) · B' by its Bézier root finder. Counters: farther_than_other
 //     (curves where the returned point is farther than the other library's by more than
