@@ -12,7 +12,6 @@
 namespace bezier::core {
 
 namespace {
-
 constexpr int kMaxDepth = 40;
 
 // The fixed-size de Casteljau rounds below are chains of scalar lerps; GCC's straight-line
@@ -142,6 +141,22 @@ double refine(ValueAndSlopeAt p_at, double e, double lo, double hi, double p_lo,
   return t;
 }
 
+/// The two halves of the piece q (on [lo, hi]) on [lo, middle] and [middle, hi], by de
+/// Casteljau's subdivision at 1/2: every entry is the average of two, (x + y) / 2 with
+/// exact halvings, so each rounds once and a half's coefficients are within n u max|q| of
+/// the piece's own halves.
+BEZIER_SCALAR_ROUNDS void halves(std::span<const double> q, double* left, double* right) {
+  const std::size_t n = q.size() - 1;
+  SmallArray<double> row(q);
+  left[0] = row[0];
+  right[n] = row[n];
+  for (std::size_t level = 1; level <= n; ++level) {
+    for (std::size_t k = 0; k + level <= n; ++k) row[k] = bernstein::lerp(row[k], row[k + 1], 0.5);
+    left[level] = row[0];
+    right[n - level] = row[n - level];
+  }
+}
+
 /// Evaluation and refinement for E = n + 1 coefficients fixed at compile time, so that
 /// each Newton step's evaluation is inlined into the loop.
 template <std::size_t E>
@@ -224,12 +239,26 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
   std::size_t pending = 0;
   if (a < b) stack[pending++] = {a, b, 0, p_a == 0.0, p_b == 0.0};
   Coeffs piece(n + 1, Coeffs::Uninitialized{});
+  // On [0, 1] every split point is a dyadic rational, exactly the middle of its piece, so
+  // the pieces of the first kHalvedDepth levels come from their parent's coefficients by
+  // one subdivision at 1/2 (halves(), n + 1 entries per stack slot), cheaper than
+  // portion_into from c. Their rounding grows by at most n u max|c| a level (the pieces are
+  // convex combinations of c), so down to that depth they are within e too; deeper pieces
+  // and those of other intervals are portion_into's, as are all pieces of degree 3 or less
+  // (straight-line code whose end coefficients are p at the ends, no evaluation needed).
+  constexpr int kHalvedDepth = 2;
+  const bool halving = a == 0.0 && b == 1.0 && n > 3;
+  std::vector<double> slots;
+  const auto slot = [&](std::size_t i) { return slots.data() + i * (n + 1); };
   while (pending > 0) {
     const Job job = stack[--pending];
     // On [0, 1] the piece is c itself (de Casteljau steps at 0 and 1 are exact).
     const bool whole = job.lo == 0.0 && job.hi == 1.0;
-    if (!whole) p_at.portion(job.lo, job.hi, piece.data());
-    const std::span<const double> q = whole ? c : std::span<const double>(piece);
+    const bool halved = halving && !whole && job.depth <= kHalvedDepth;
+    if (!whole && !halved) p_at.portion(job.lo, job.hi, piece.data());
+    const std::span<const double> q = whole    ? c
+                                      : halved ? std::span<const double>(slot(pending), n + 1)
+                                               : std::span<const double>(piece);
     // Descartes' rule on the coefficients that are clearly nonzero; an end that is an exact
     // zero is left out (p = (t - end) r(t), and r's coefficients have the others' signs).
     const std::size_t first = job.zero_lo ? 1 : 0, last_index = job.zero_hi ? n - 1 : n;
@@ -253,9 +282,10 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
       continue;
     }
     if (changes == 0 && !any_small) continue;
-    // The piece's end coefficients are p at its ends: the same de Casteljau rounds (and
-    // exact on [0, 1]).
-    const double p_lo = q[0], p_hi = q[n];
+    // A piece's end coefficients from portion_into are p at its ends: the same de
+    // Casteljau rounds (and exact on [0, 1]); halves' are only near them.
+    const double p_lo = halved ? p_at.value(job.lo) : q[0];
+    const double p_hi = halved ? p_at.value(job.hi) : q[n];
     if (changes == 1 && !any_small && p_lo != 0.0 && p_hi != 0.0 && (p_lo < 0) != (p_hi < 0)) {
       if (wanted == Crossings::any || p_lo < 0) found.push_back(p_at.root(e, job.lo, job.hi, p_lo, p_hi));
       continue;
@@ -273,6 +303,17 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
     const bool zero_middle = p_at.value(middle) == 0.0;
     if (zero_middle) found.push_back(middle);
     assert(pending + 2 <= stack.size());
+    if (halving && job.depth + 1 <= kHalvedDepth) {
+      // pending <= job.depth (one sibling a level), so the halves' slots are within
+      // kHalvedDepth + 1.
+      if (slots.empty()) slots.resize((kHalvedDepth + 2) * (n + 1));
+      assert(pending + 1 < kHalvedDepth + 2);
+      // The right half goes to this piece's slot, after the left one has been taken out.
+      Coeffs left(n + 1, Coeffs::Uninitialized{}), right(n + 1, Coeffs::Uninitialized{});
+      halves(q, left.data(), right.data());
+      std::copy(right.begin(), right.end(), slot(pending));
+      std::copy(left.begin(), left.end(), slot(pending + 1));
+    }
     stack[pending++] = {middle, job.hi, job.depth + 1, zero_middle, job.zero_hi};
     stack[pending++] = {job.lo, middle, job.depth + 1, job.zero_lo, zero_middle};
   }
