@@ -21,7 +21,7 @@
 // kFixedUnits standing for what every request costs whatever its budget: the JSON, the
 // phases bounded by the degrees (factorisations of improper curves, up to about a
 // millisecond at degree 20), and the page faults of a first execution. The multiple leaves room for the cost
-// model's spread between paths (BENCHMARKS.md §4b) and for a noisy machine; a path whose
+// model's spread between paths (docs/WORK_CAPS.md) and for a noisy machine; a path whose
 // time the work units do not bound exceeds it by orders of magnitude.
 // Also checked: the answer is 200 or 422 (never a 500).
 //

@@ -4,7 +4,7 @@
 
 namespace bezier::test {
 
-/// mulberry32, the 32-bit generator of DESIGN.md §5 (shared benchmark input), so
+/// mulberry32, the 32-bit generator of the shared benchmark input (BENCHMARKS.md), so
 /// random inputs are reproducible here and comparable with other libraries' runs.
 /// All arithmetic is mod 2^32.
 class Mulberry32 {

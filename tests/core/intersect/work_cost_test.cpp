@@ -1,6 +1,7 @@
 // The work cost model (core/intersect/work_cost.hpp, core/self_intersect/work_cost.hpp):
 // higher degrees and compensated arithmetic cost more, and a budget in units buys fewer
-// steps the costlier they are. No timing here: BENCHMARKS.md §4 has the calibration.
+// steps the costlier they are. No timing here: BENCHMARKS.md, "Worst requests at the default
+// limits", has the times.
 
 #include <gtest/gtest.h>
 

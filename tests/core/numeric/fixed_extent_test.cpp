@@ -1,8 +1,8 @@
 // with_fixed_extent: the sizes of lines, quadratics and cubics become compile-time constants,
 // every other size takes the dynamic extent (the generic path), and the span it builds views
 // the same values. (That the fixed-extent bodies compute bit for bit what the generic ones
-// did is checked on the shared benchmark's 20000 pairs by dumping every result, BENCHMARKS.md
-// §2b; here, what the dispatch itself promises.)
+// did is checked on the shared benchmark's 20000 pairs by dumping every result with
+// bezier_intersection_dump; here, what the dispatch itself promises.)
 
 #include "core/numeric/fixed_extent.hpp"
 
