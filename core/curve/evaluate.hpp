@@ -6,6 +6,25 @@
 
 namespace bezier::core {
 
+// The point evaluators of the kernel, and why each exists. All are de Casteljau's
+// algorithm; they differ in what they evaluate and how much accuracy they buy:
+//  - evaluate() here: a user's curve (Point2 or Point3), compensated, within one rounding
+//    of B(t) at any degree: what the API answers.
+//  - bernstein::evaluate (bernstein/bernstein1d.hpp): one scalar polynomial in doubles, about
+//    2 n u of its largest coefficient: the reparametrisations and distance functions the
+//    intersection tests compare against tolerances far above that.
+//  - evaluate_with_tangent (intersect/working_curve.hpp): a working curve's point and
+//    tangent in doubles from one pass (the tangent is n (b_1 - b_0) of the last level):
+//    frames, Gauss-Newton and the search, where the tangent is needed with the point.
+//  - evaluate_compensated (intersect/compensated_point.hpp): a working curve's exact
+//    coordinates (hi + lo) to O(n u^2) with the same tangent: Newton's method where the
+//    curves agree to within the rounding of doubles.
+//  - evaluate_dd (intersect/working_curve.hpp): the same accuracy in double-double
+//    arithmetic throughout, about twice the operations: where a double-double point itself
+//    is the result (residuals carried on in double-doubles, overlap ends).
+// derivatives_at (derivative.hpp) and polar (polar.hpp) evaluate hodographs and blossoms
+// with the same compensated rows as evaluate().
+
 /// B(t) = Σ C(n,i) (1-t)^(n-i) t^i P_i by de Casteljau's algorithm, n rounds of
 /// P_i <- (1-t) P_i + t P_{i+1} (Farin, §4.1), compensated (see CasteljauRow): within one
 /// rounding of the exact value plus O(n^2 u^2) Σ |P_i| |b_i(t)|, for any degree.
