@@ -18,7 +18,7 @@ inline constexpr std::string_view kBatchPath = "/batch";
 /// client sent it) and its answer: what the service needs for its per-item metrics.
 using BatchItemObserver = std::function<void(std::string_view path, const Reply& reply)>;
 
-/// POST /batch (DESIGN §7): {"requests": [{"path": "/classify", "body": {...}}, ...]} is
+/// POST /batch (api/openapi.yaml): {"requests": [{"path": "/classify", "body": {...}}, ...]} is
 /// answered {"responses": [{"body": ..., "status": 200}, ...]}, one response per item in
 /// the same order, each the status and the very bytes the route answers when the item's
 /// body is sent to it alone (its problems' pointers point into the item's body). An item

@@ -1,4 +1,4 @@
-// POST /bounds (DESIGN §6): the tight axis-aligned box of a planar or space curve of any
+// POST /bounds (api/openapi.yaml): the tight axis-aligned box of a planar or space curve of any
 // degree on a parameter interval, and the parameters where its coordinates turn.
 //
 // Request:  {"points": [[x, y], ...] or [[x, y, z], ...], "interval": [a, b]}
@@ -8,7 +8,7 @@
 //              exact extreme rounded outward (core/measure/bounds.hpp).
 //   critical   per axis, increasing: the t in (a, b) where that coordinate's derivative
 //              vanishes, a double root once.
-// With {"path": SVG path data} instead of points (DESIGN §7; no interval): the box of the
+// With {"path": SVG path data} instead of points (no interval): the box of the
 // whole path, the union of its segments' tight boxes,
 //   {"critical": [[{"segment", "t"}, ...] per axis], "max", "min", "segment_count"}
 //   critical   per axis, by segment then t: each segment's critical t in (0, 1).

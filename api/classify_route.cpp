@@ -9,7 +9,7 @@ namespace bezier::api {
 
 namespace {
 
-// The answer of DESIGN §3, plus the Loop–Blinn class of the unbounded curve:
+// The answer (api/openapi.yaml), plus the Loop–Blinn class of the unbounded curve:
 // {"type", "canonical_point": [x, y] | null, "inflections": [t...], "cusp": t | null,
 //  "self_intersection": {"t": [t1, t2], "point": [x, y]} | null, "loop_blinn"},
 // written with members in key order (the text a document of the answer would dump to).

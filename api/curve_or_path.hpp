@@ -10,7 +10,7 @@
 
 namespace bezier::api {
 
-/// What a route takes where DESIGN §7 lets a path stand for a curve: control points
+/// What a route takes where the API lets a path stand for a curve: control points
 /// {"points": [[x, y], ...]} or SVG path data {"path": "M0 0 C..."}.
 using CurveOrPath = std::variant<core::Curve, path::Path>;
 

@@ -1,10 +1,10 @@
-// POST /intersections (DESIGN §3): every intersection of two planar curves of any degree,
+// POST /intersections (api/openapi.yaml): every intersection of two planar curves of any degree,
 // as guaranteed parameter intervals, or, with one curve, its self-intersections.
 //
 // Request:  {"curves": [{"points": [[x, y], ...]}, {"points": ...}],
 //            "tolerance": 1e-12, "method": "hybrid", "fat_curve_degree": 2}
 //   curves            1 or 2 objects {"points"}: 2 to max_degree + 1 finite points each, or
-//                     {"path": SVG path data} (DESIGN §7, api/curve_or_path.hpp).
+//                     {"path": SVG path data} (api/curve_or_path.hpp).
 //   tolerance         optional, default 1e-12: every reported interval is narrower than
 //                     this; at least 2^-46 (about 1.42e-14, what doubles can guarantee) and at
 //                     most 1.

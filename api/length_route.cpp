@@ -1,4 +1,4 @@
-// POST /length (DESIGN §6): the arc length of a planar or space curve of any degree on a
+// POST /length (api/openapi.yaml): the arc length of a planar or space curve of any degree on a
 // parameter interval, and the parameters at given lengths.
 //
 // Request:  {"points": [[x, y], ...] or [[x, y, z], ...], "interval": [a, b],
@@ -11,7 +11,7 @@
 //   length       ∫_a^b |B'(t)| dt within 1e-12 relative; error_bound the bound it met
 //                (core/measure/arc_length.hpp).
 //   parameters   the t in [a, b] with length(a, t) = l, and B(t).
-// With {"path": SVG path data} instead of points (DESIGN §7; no interval): the length of the
+// With {"path": SVG path data} instead of points (no interval): the length of the
 // whole path, the sum of its segments' (each measured as above),
 //   {"error_bound": Σ, "length": Σ, "parameters": [{"length", "point", "segment", "t"}],
 //    "segment_count", "segment_lengths": [...]}

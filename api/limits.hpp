@@ -12,7 +12,7 @@ struct Limits {
   int max_degree = 20;
   /// Most parameter values in one request: length of a `t` array, or `samples`.
   int max_t_values = 10000;
-  /// Most segments in one SVG path (DESIGN §7: {"path": ...} wherever a curve is taken).
+  /// Most segments in one SVG path ({"path": ...} wherever a curve is taken, api/curve_or_path.hpp).
   /// A path costs memory and time per segment before any work is charged (parsing, boxes);
   /// the work cap bounds everything after.
   int max_path_segments = 10000;
@@ -27,7 +27,7 @@ struct Limits {
   /// core/self_intersect/work_cost.hpp), so that units are proportional to time and the
   /// cap bounds a request's CPU time whatever its method. The default is what the heaviest
   /// legitimate request we know needs with a margin (two degree-20 curves crossing 400
-  /// times, the most possible, by the default method). BENCHMARKS.md §4e has the worst
+  /// times, the most possible, by the default method). BENCHMARKS.md ("Worst requests at the default limits") has the worst
   /// request of every method at this cap and the command that measures it; hitting it
   /// answers 422, never a hang.
   std::int64_t max_work = 22000000;

@@ -1,4 +1,4 @@
-// POST /loop-area (DESIGN §3): every loop of a planar curve of any degree with its area,
+// POST /loop-area (api/openapi.yaml): every loop of a planar curve of any degree with its area,
 // the closed curve's area, or the area enclosed by one parameter interval and its chord.
 //
 // Request:  {"points": [[x, y], ...], "interval": [t1, t2]}   (interval optional)
@@ -14,7 +14,7 @@
 // Answer with interval (no loop search):
 //   {"degree", "interval": [t1, t2], "area": |A|, "signed_area": A, "chord": [B(t1), B(t2)],
 //    "closed", "closed_area"}
-// With {"path": SVG path data} instead of points (DESIGN §7; no interval):
+// With {"path": SVG path data} instead of points (no interval):
 //   {"area": Σ loop areas, "closed": every subpath closed, "closed_area": the signed area
 //    the closed subpaths enclose (Green's theorem, core/path/path_area.hpp) or null when
 //    none is closed, "loops": [{"area", "kind", "point", "segments": [i, j],

@@ -1,4 +1,4 @@
-// POST /nearest (DESIGN §6): for each target, the point of a planar or space curve of any
+// POST /nearest (api/openapi.yaml): for each target, the point of a planar or space curve of any
 // degree nearest to it on a parameter interval (the global minimum of the distance).
 //
 // Request:  {"points": [[x, y], ...] or [[x, y, z], ...], "targets": [[x, y], ...],
@@ -10,7 +10,7 @@
 //   one result per target, in order: t the smallest parameter attaining the least distance
 //   over [a, b] (ends included), B(t), the distance, and the other parameters that tie with
 //   it to 1e-12 relative (core/measure/nearest.hpp).
-// With {"path": SVG path data} instead of points (DESIGN §7; 2-D targets, no interval): the
+// With {"path": SVG path data} instead of points (2-D targets, no interval): the
 // nearest point of the whole path,
 //   {"results": [{"distance", "point", "segment", "t", "target",
 //                 "ties": [{"segment", "t"}, ...]}], "segment_count"}

@@ -33,7 +33,7 @@ struct Reply {
 };
 
 /// The kinds of problem the API reports. Each has a stable `type` URI, a `title` and an
-/// HTTP status (DESIGN §3).
+/// HTTP status (api/openapi.yaml).
 enum class ProblemKind {
   malformed_json,           ///< 400: body is not JSON, or not an object
   validation,               ///< 422: wrong types, missing fields, out of range, limits

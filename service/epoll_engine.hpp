@@ -15,8 +15,8 @@ namespace bezier::service {
 /// The service's HTTP/1.1 front end: the Router behind one EventLoop per I/O thread
 /// (--io-threads; 0 sizes them from the CPUs the process may use, service/cpu_budget.hpp)
 /// and one ComputePool (--threads) for the requests that are not cheap. Why this shape:
-/// BENCHMARKS.md §3 (thread per connection costs ~30 µs of kernel and scheduling per
-/// request; a loop that computes stalls its connections).
+/// BENCHMARKS.md ("HTTP"): a thread per connection pays kernel scheduling on every
+/// request, and a loop that computes stalls its connections.
 ///
 /// The loops share one listening socket, bound without SO_REUSEPORT, and wait on it with
 /// EPOLLEXCLUSIVE (nginx's default arrangement). One socket per loop with SO_REUSEPORT

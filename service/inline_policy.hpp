@@ -23,7 +23,7 @@ namespace bezier::service {
 /// is the one the full limits give too (each limit check refuses only what is above it),
 /// so a plain validation error is answered from the inline try, and the inline limits
 /// change where a request runs, never its answer.
-/// BENCHMARKS.md §3 has the measurements behind the numbers.
+/// BENCHMARKS.md ("HTTP") has the measurements behind the numbers.
 struct InlinePolicy {
   static constexpr std::size_t kMaxBodyBytes = 4096;
   static constexpr std::int64_t kWorkDivisor = 2000;

@@ -128,7 +128,7 @@ class Router {
 /// An api::Reply as a Response (same status, content type and body).
 [[nodiscard]] Response to_response(api::Reply reply);
 
-/// A problem+json Response of the API's kinds (DESIGN §3).
+/// A problem+json Response of the API's kinds (api/problem.hpp).
 [[nodiscard]] Response problem_response(api::ProblemKind kind, std::string detail);
 
 /// Whether the work cap decided a computed answer: a 422 work-cap problem, or a 200 the

@@ -43,7 +43,7 @@ namespace bezier::core {
 ///     y = (√(3(4x − x²)) − x) / 2 for 0 <= x <= 1 (closing at t = 1) -> loop / loop_at_end on it
 ///   elsewhere                                                      -> arch
 ///   q = (3, 0) (then P3 − 3 P2 + 3 P1 − P0 = 0)                      -> quadratic
-/// Corners follow DESIGN §1's precedence: (1, 1) (P3 = P2) is a cusp at t = 1, (0, 0)
+/// Corners follow CubicType's precedence: (1, 1) (P3 = P2) is a cusp at t = 1, (0, 0)
 /// (P3 = P0) is loop_at_start. This is a second, independent derivation of the same
 /// classification that classify() decides with the inflection-form predicates; the tests
 /// hold the two to agreement. Precondition: finite q.

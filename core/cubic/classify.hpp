@@ -23,7 +23,7 @@ struct Inflections {
 
 /// Everything classify() finds out about a cubic segment.
 struct CubicClassification {
-  /// The type on [0,1], with DESIGN §1's conventions (see CubicType).
+  /// The type on [0,1], with the conventions of CubicType (cubic_type.hpp).
   CubicType type = CubicType::point;
   /// The class of the unbounded curve (see LoopBlinnClass).
   LoopBlinnClass loop_blinn = LoopBlinnClass::point;
@@ -46,7 +46,7 @@ struct CubicClassification {
 
 /// Classifies the cubic Bézier segment p[0..3] on t in [0,1].
 ///
-/// Direct math, decided exactly (the precedence of DESIGN §1, top to bottom):
+/// Direct math, decided exactly (the precedence of CubicType, top to bottom):
 ///   - point: all control points equal; line: d1 = d2 = d3 = 0, i.e. all collinear;
 ///     quadratic: d2 = d3 = 0 and d1 != 0, i.e. c = P3 − 3 P2 + 3 P1 − P0 = 0
 ///     (d1, d2, d3: the inflection polynomial I(t) = d1 + d2 t + d3 t² ∝ B' × B'',

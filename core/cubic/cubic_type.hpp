@@ -4,7 +4,7 @@
 
 namespace bezier::core {
 
-/// The type of a cubic Bézier segment on the closed interval t in [0,1] (DESIGN §1). The
+/// The type of a cubic Bézier segment on the closed interval t in [0,1]. The
 /// first that applies, in this order:
 ///   point        all control points equal
 ///   line         all control points collinear

@@ -50,7 +50,7 @@ struct CubicDoublePoint {
 /// meet in a cusp, and lines (collinear control points; these can overlap themselves along
 /// whole intervals), quadratics (P3 − 3P2 + 3P1 − P0 = 0) and points have no isolated
 /// double point. A closed cubic (P0 = P3, not a line) returns (0, 1): the trivial pair of
-/// a closed curve, which self-intersection listings leave out (DESIGN §3).
+/// a closed curve, which self-intersection listings leave out.
 ///
 /// Accuracy: the parameters are as accurate as the data allow (the roots of a quadratic
 /// with coefficients accurate to a few ulps of their scale); the point is the mean of

@@ -51,7 +51,7 @@ namespace bezier::core {
 /// signed_area(curve, 0, 1).
 [[nodiscard]] double signed_area(const Curve& curve);
 
-/// Whether the curve is closed: P_0 = P_n exactly (bit for bit, as DESIGN §3 defines
+/// Whether the curve is closed: P_0 = P_n exactly (bit for bit, as the API defines
 /// `closed`). A curve that only nearly closes is open, and its chord is part of its area.
 [[nodiscard]] bool is_closed(const Curve& curve) noexcept;
 

@@ -10,8 +10,8 @@ namespace bezier::core {
 
 /// The frame the search works in: p -> (p - origin) * 2^exponent, so that the largest
 /// working coordinate is about 1. Translating or scaling both inputs by a power of two moves
-/// the frame with them, so the search sees the same numbers (DESIGN §1: answers do not
-/// change under translation and uniform scaling). The exponent spans the whole double range
+/// the frame with them, so the search sees the same numbers (answers do not change under
+/// translation and uniform scaling). The exponent spans the whole double range
 /// (about -1024 for coordinates next to the largest double, up to 1074 for subnormal ones),
 /// more than one double can scale by, so it is kept as an integer.
 struct WorkingFrame {

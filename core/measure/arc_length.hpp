@@ -7,7 +7,7 @@
 
 namespace bezier::core {
 
-/// Tuning of arc_length. The defaults are the API's contract (DESIGN §6).
+/// Tuning of arc_length. The defaults are the API's contract (POST /length in api/openapi.yaml).
 struct ArcLengthOptions {
   /// Target relative accuracy: the result's error_bound is at most this times the length.
   double relative_tolerance = 1e-12;

@@ -40,7 +40,7 @@ struct NearestPoint {
 /// and the candidates are compared by their distance, hypot(B(t) - q) from the compensated
 /// B(t).
 ///
-/// Ties (DESIGN §6): the candidates within max(1e-12 d_min, 8 u s) of the least distance
+/// Ties (as POST /nearest promises in api/openapi.yaml): the candidates within max(1e-12 d_min, 8 u s) of the least distance
 /// d_min, s the largest coordinate of the control points and the target (below 8 ulps of
 /// the coordinates the distances are rounding, so a target on a self-intersection ties its
 /// two parameters). Tied candidates with the distance at their midpoint also within the

@@ -10,7 +10,7 @@
 namespace bezier::core {
 
 /// One self-intersection: 0 <= t < s <= 1 with B(t) = B(s). The kind is that of two-curve
-/// intersections, from the cross product of the tangents B'(t) and B'(s) (DESIGN §1):
+/// intersections, from the cross product of the tangents B'(t) and B'(s) (kind.hpp):
 /// transversal where the curve crosses itself, tangent where it touches itself, degenerate
 /// where a tangent is zero (a cusp of one branch lies on the other).
 struct SelfIntersection {

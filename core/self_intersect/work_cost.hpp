@@ -13,7 +13,7 @@ namespace bezier::core {
 /// Work units per parameter box of a degree-n curve: a fixed part (the stack, the arena
 /// copies, classifying the box) and the halving of two pieces, (n + 1)^2 point updates in
 /// all, with the Newton runs that come with the boxes (each iteration is charged as one
-/// more box); measured (BENCHMARKS.md §4b) on the costliest curves known per box: a
+/// more box); measured (BENCHMARKS.md, "Worst requests at the default limits") on the costliest curves known per box: a
 /// degenerate degree-12 curve whose last nine control points coincide (a Newton run in
 /// most boxes next to the diagonal) and curves with many double points.
 [[nodiscard]] constexpr std::int64_t self_intersection_box_cost(int n) noexcept {

@@ -1,4 +1,4 @@
-// Tests of SVG path data where DESIGN §7 lets a path stand for a curve (/intersections,
+// Tests of SVG path data where the API lets a path stand for a curve (/intersections,
 // /loop-area, /length, /bounds, /nearest) at the handler level: answers located by segment
 // against exact values, the refusals with their pointers and offsets, and the limits.
 

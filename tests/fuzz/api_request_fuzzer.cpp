@@ -1,7 +1,7 @@
 // libFuzzer target: the whole request -> response path of the POST routes,
 // bezier::api::handle(path, body, limits), on arbitrary bodies.
 //
-// Input: byte 0 picks the route (bits 0-2, modulo the five routes of DESIGN §3) and the
+// Input: byte 0 picks the route (bits 0-2, modulo the five routes of api/openapi.yaml) and the
 // limits (bit 3: the documented defaults, or tight ones, so that every limit is hit at
 // small sizes); the remaining bytes are the body, as the service would pass it on.
 // Every answer is checked by check_reply() (reply_checks.hpp).

@@ -1,7 +1,7 @@
 // libFuzzer target: core::classify (cubic classification) on arbitrary finite control
 // points.
 //
-// Checks (core/cubic/classify.hpp, cubic_type.hpp and DESIGN §1 are the contract):
+// Checks (core/cubic/classify.hpp, and cubic_type.hpp are the contract):
 //  - the type equals the exact oracle's (tests/core/cubic/classify_oracle.hpp: the canonical
 //    point in rationals, sharing no code with core/) whenever classify() says its
 //    decisions were exact;

@@ -9,7 +9,7 @@
 //    close to g(s) (within what the interval widths allow: |f'| <= 2 n scale(f));
 //  - each overlap: intervals inside [0,1], sorted by t, end points matching;
 //  - end points equal bit for bit are roots, so they lie in a reported box;
-//  - swapping the curves swaps the answer (DESIGN §5), and scaling both by a power of two
+//  - swapping the curves swaps the answer, and scaling both by a power of two
 //    changes no parameter (the working frame is exact).
 // Only finite coordinates: intersect() asserts them (api/ rejects non-finite numbers).
 

@@ -1,7 +1,7 @@
 #pragma once
 
 // The invariants every answer of bezier::api::handle() must keep, whatever the body
-// (DESIGN §3): only the statuses the API documents for a POST body (a 500 is a bug), a
+// (api/openapi.yaml): only the statuses the API documents for a POST body (a 500 is a bug), a
 // body that is valid JSON, the content type that goes with the status, RFC 9457 problem
 // details with type/title/status/detail, error pointers that are JSON Pointers into the
 // request, and no NaN or infinity smuggled into a 200 answer (nlohmann writes those as
@@ -21,7 +21,7 @@ namespace bezier::fuzz {
 /// Whether `value` holds a null where no documented field may be null. nlohmann writes a
 /// NaN or an infinity as null, so a null elsewhere (inside a point, a t list, an area) is a
 /// non-finite result that leaked into a 200 answer (finding F1). The nullable fields
-/// (DESIGN §3, openapi.yaml): canonical_point, cusp, self_intersection (/classify),
+/// (api/openapi.yaml): canonical_point, cusp, self_intersection (/classify),
 /// closed_area (/loop-area).
 [[nodiscard]] inline bool has_undocumented_null(const nlohmann::json& value) {
   if (value.is_array()) {

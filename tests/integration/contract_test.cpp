@@ -1,4 +1,4 @@
-// The OpenAPI contract against the running service (issue 8): api/openapi.yaml is
+// The OpenAPI contract against the running service : api/openapi.yaml is
 // served byte for byte; every example in it is sent and answered as documented; every
 // constraint of every request schema, broken on purpose, is answered with the
 // documented 4xx problem; and every answer, errors included, matches the spec's

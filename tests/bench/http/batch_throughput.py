@@ -2,7 +2,7 @@
 """Wall time of N /classify requests sent one after another on one keep-alive connection,
 against one POST /batch of the same N items, on a freshly started bezier-service.
 
-The cubics are the shared benchmark stream's (DESIGN.md §5: mulberry32 seeded with 1; the
+The cubics are the shared benchmark stream's (BENCHMARKS.md, "Benchmark input": mulberry32 seeded with 1; the
 single cubics follow the 20000 intersection pairs). The client is a raw socket that sends
 prepared bytes and reads each answer by its Content-Length, so its own cost per request
 is a few microseconds and the keep-alive figure is the service's and the loopback's. Each
@@ -29,7 +29,7 @@ DEFAULT_BINARY = os.path.join(HERE, "..", "..", "..", "build", "test", "service"
 
 
 def mulberry32_draws(seed):
-    """The DESIGN.md §5 generator: each draw in [0, 1)."""
+    """The benchmark input's generator (BENCHMARKS.md): each draw in [0, 1)."""
     a = seed & 0xFFFFFFFF
     mask = 0xFFFFFFFF
     while True:

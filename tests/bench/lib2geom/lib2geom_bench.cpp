@@ -31,8 +31,8 @@
 // Counter max_err_ulps: the largest distance, in ulps, from the correctly rounded exact value
 // (rational de Casteljau, tests/support/exact_bezier.hpp) over the 1024 parameters.
 //
-// Measuring (issue 20): 1024 curves of degree 3 (the shared random cubics) or 7 from the
-// stream of DESIGN §5 after the 20000 intersection pairs, x and y of each control point in
+// Measuring: 1024 curves of degree 3 (the shared random cubics) or 7 from the
+// benchmark input stream (BENCHMARKS.md) after the 20000 intersection pairs, x and y of each control point in
 // turn, each followed by a /nearest target (the next two draws): the inputs of
 // tests/bench/measure_bench.cpp. Whole interval [0, 1]; time per curve.
 //   * length: ours core::arc_length at relative tolerance 1e-12 (the API's) and looser;
@@ -434,7 +434,7 @@ struct MeasureCase {
   double reference_length = 0.0;
 };
 
-// As tests/bench/measure_bench.cpp: the stream of DESIGN §5 after the 20000 pairs.
+// As tests/bench/measure_bench.cpp: the benchmark input stream (BENCHMARKS.md) after the 20000 pairs.
 const std::vector<MeasureCase>& measure_cases(int degree) {
   static std::vector<std::unique_ptr<std::vector<MeasureCase>>> cache(32);
   auto& slot = cache[static_cast<std::size_t>(degree)];

@@ -65,7 +65,7 @@ inline core::CubicType mirrored(core::CubicType t) {
   return t;
 }
 
-/// The exact type of the cubic p (DESIGN §1 precedence).
+/// The exact type of the cubic p (CubicType's precedence, core/cubic/cubic_type.hpp).
 inline core::CubicType exact_type(std::span<const core::Point2, 4> points) {
   using core::CubicType;
   std::array<RPoint2, 4> p;

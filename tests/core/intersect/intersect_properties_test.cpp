@@ -1,4 +1,4 @@
-// Properties of intersect() on seeded random curves (mulberry32, DESIGN §5; the seed is in
+// Properties of intersect() on seeded random curves (mulberry32 as BENCHMARKS.md's "Benchmark input"; the seed is in
 // every failure message): swapping the curves swaps t and s, reversing a curve maps t to
 // 1 - t, an affine map of both curves keeps the parameters, every reported point has
 // |f(t) - g(s)| within a few ulps, the three methods agree, and every interval contains

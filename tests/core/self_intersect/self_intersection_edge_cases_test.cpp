@@ -76,7 +76,7 @@ TEST(SelfIntersectionEdgeCases, PairsNextToAFlatEndAreDoublePoints) {
 
 // With coordinates spanning more than 2^400 the
 // classification is not exact, and the cubic with P2 = P3 (B'(1) = 0: a cusp at t = 1 by
-// DESIGN §1, whatever the other points) came out as loop-at-end with t1 = t2 = 1, which
+// CubicType's precedence, whatever the other points) came out as loop-at-end with t1 = t2 = 1, which
 // self_intersections() passed on as the pair (1, 1).
 TEST(SelfIntersectionEdgeCases, CuspAtTheEndIsNotALoopOfWidthZero) {
   const std::array<Point2, 4> p = {Point2{-8.0, 0x1.0000000d6fbfcp-895},
