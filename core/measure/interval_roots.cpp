@@ -23,10 +23,11 @@ constexpr int kMaxDepth = 40;
 #define BEZIER_SCALAR_ROUNDS
 #endif
 
-/// A piece [lo, hi] still to examine; an end flagged as a known root is an exact zero of p
-/// found when the parent was split there.
+/// A piece [lo, hi] still to examine, with p at its ends (Evaluator::value there); an end
+/// flagged as a known root is an exact zero of p found when the parent was split there.
 struct Job {
   double lo, hi;
+  double p_lo, p_hi;
   int depth;
   bool zero_lo, zero_hi;
 };
@@ -237,7 +238,7 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
   // Depth first: at most one pending sibling per depth below the piece split last.
   std::array<Job, kMaxDepth + 2> stack;
   std::size_t pending = 0;
-  if (a < b) stack[pending++] = {a, b, 0, p_a == 0.0, p_b == 0.0};
+  if (a < b) stack[pending++] = {a, b, p_a, p_b, 0, p_a == 0.0, p_b == 0.0};
   Coeffs piece(n + 1, Coeffs::Uninitialized{});
   // On [0, 1] every split point is a dyadic rational, exactly the middle of its piece, so
   // the pieces of the first kHalvedDepth levels come from their parent's coefficients by
@@ -283,9 +284,10 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
     }
     if (changes == 0 && !any_small) continue;
     // A piece's end coefficients from portion_into are p at its ends: the same de
-    // Casteljau rounds (and exact on [0, 1]); halves' are only near them.
-    const double p_lo = halved ? p_at.value(job.lo) : q[0];
-    const double p_hi = halved ? p_at.value(job.hi) : q[n];
+    // Casteljau rounds (and exact on [0, 1]); halves' are only near them, so a halved
+    // piece takes the values computed where its ends were split.
+    const double p_lo = halved ? job.p_lo : q[0];
+    const double p_hi = halved ? job.p_hi : q[n];
     if (changes == 1 && !any_small && p_lo != 0.0 && p_hi != 0.0 && (p_lo < 0) != (p_hi < 0)) {
       if (wanted == Crossings::any || p_lo < 0) found.push_back(p_at.root(e, job.lo, job.hi, p_lo, p_hi));
       continue;
@@ -300,7 +302,8 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
       }
       continue;
     }
-    const bool zero_middle = p_at.value(middle) == 0.0;
+    const double p_middle = p_at.value(middle);
+    const bool zero_middle = p_middle == 0.0;
     if (zero_middle) found.push_back(middle);
     assert(pending + 2 <= stack.size());
     if (halving && job.depth + 1 <= kHalvedDepth) {
@@ -314,8 +317,8 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
       std::copy(right.begin(), right.end(), slot(pending));
       std::copy(left.begin(), left.end(), slot(pending + 1));
     }
-    stack[pending++] = {middle, job.hi, job.depth + 1, zero_middle, job.zero_hi};
-    stack[pending++] = {job.lo, middle, job.depth + 1, job.zero_lo, zero_middle};
+    stack[pending++] = {middle, job.hi, p_middle, job.p_hi, job.depth + 1, zero_middle, job.zero_hi};
+    stack[pending++] = {job.lo, middle, job.p_lo, p_middle, job.depth + 1, job.zero_lo, zero_middle};
   }
   std::sort(found.begin(), found.end());
   std::size_t kept = 0;
