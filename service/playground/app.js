@@ -6,6 +6,8 @@
 // goes through edit(): it is recorded for undo, written to the URL fragment (the
 // permalink), and refused with a message beside the control that made it when it
 // would go past the service's degree limit (learnt from the service's first refusal).
+// A curve may instead be pasted SVG path data (path mode): it keeps the path, has no
+// control points to edit, and is drawn and intersected segment by segment.
 
 import {ApiError, apiToken, setApiToken} from './api.js';
 import {drawBernstein, renderBernsteinLegend} from './bernstein.js';
@@ -18,16 +20,16 @@ import {EditHistory} from './history.js';
 import {markAt, pointAt} from './hit.js';
 import {legendEntries, renderLegend} from './legend.js';
 import {NearestTracker} from './nearest.js';
-import {renderErrors, renderIntersections, renderLoops, renderTypes, renderValues} from './panels.js';
+import {renderErrors, renderIntersections, renderLoops, renderTypes, renderValues, segmentsText} from './panels.js';
 import {decodeFragment, encodeFragment} from './permalink.js';
 import {renderPointTable} from './pointtable.js';
-import {InputError, parseCurveText} from './svgpath.js';
+import {InputError, parseCurveText, pathInDrawing} from './svgpath.js';
 import {View, kWorld} from './view.js';
 
 const $ = (id) => document.getElementById(id);
 
 const state = {
-  curves: [{name: 'A', points: []}, {name: 'B', points: []}],
+  curves: [{name: 'A', points: [], path: null}, {name: 'B', points: [], path: null}],  // path: SVG path data as pasted
   second: false,
   active: 0,
   t0: 0.5,
@@ -73,7 +75,7 @@ function askNearest(sx, sy) {
 
 /** What the requests depend on: nothing else triggers a round. */
 function requestKey() {
-  return JSON.stringify([state.curves.map((c) => c.points), state.second, state.active, state.t0, state.show.casteljau]);
+  return JSON.stringify([state.curves.map((c) => [c.points, c.path]), state.second, state.active, state.t0, state.show.casteljau]);
 }
 
 function isIdle() {
@@ -132,11 +134,13 @@ function tooLong(snapshot) {
 // --- edits, undo, permalink -----------------------------------------------------------
 
 function snapshot() {
-  return structuredClone({points: state.curves.map((c) => c.points), second: state.second, active: state.active});
+  return structuredClone({points: state.curves.map((c) => c.points), paths: state.curves.map((c) => c.path),
+                          second: state.second, active: state.active});
 }
 
 function applySnapshot(s) {
   s.points.forEach((points, i) => { state.curves[i].points = structuredClone(points); });
+  s.paths.forEach((path, i) => { state.curves[i].path = path; });
   setSecond(s.second);
   setActive(s.active);
   if (state.selected && !(state.selected.index < state.curves[state.selected.curve].points.length &&
@@ -155,6 +159,12 @@ function edit(source, mutate, merge = null) {
   const next = structuredClone(before);
   mutate(next);
   if (JSON.stringify(next) === JSON.stringify(before)) return false;
+  const onPath = next.paths.findIndex((path, i) => path && next.points[i].length > 0);
+  if (onPath >= 0) {
+    showMessage(source, `Curve ${state.curves[onPath].name} is an SVG path: control-point editing is off in path mode ` +
+                        '("Points mode" beside the control points turns it back on).');
+    return false;
+  }
   const over = tooLong(next);
   if (over !== null) {
     showMessage(source, `${limitText(degreeLimit)}: curve ${state.curves[over].name} would have ` +
@@ -208,12 +218,13 @@ function readFragment(source, opening = false) {
   let decoded;
   try {
     decoded = decodeFragment(location.hash);
+    for (const path of decoded?.paths ?? []) if (path) pathInDrawing(path);
   } catch (e) {
     showMessage(source, `This link's drawing could not be read: ${e.message}`);
     return;
   }
   if (!decoded) return;
-  const next = {points: decoded.curves, second: decoded.second, active: decoded.active};
+  const next = {points: decoded.curves, paths: decoded.paths, second: decoded.second, active: decoded.active};
   if (opening) applySnapshot(next);  // the page opens on the link's drawing: nothing to undo yet
   else edit(source, (s) => Object.assign(s, next));
   setT0(decoded.t0);
@@ -275,7 +286,7 @@ function renderAll() {
 }
 
 function renderScene() {
-  $('hint').hidden = state.curves[0].points.length > 0 || state.curves[1].points.length > 0;
+  $('hint').hidden = state.curves.some((c) => c.points.length > 0 || c.path);
   labels = drawScene(view, state, answers, hover, hoverMark, currentNearest());
   const active = state.active;
   const points = state.curves[active].points;
@@ -298,6 +309,7 @@ function renderPanels() {
   renderBernsteinLegend($('bernstein-legend'), points.length - 1, state.t0, points, kPointNames[active]);
   renderLegend($('legend'), legendEntries(state, answers));
   $('points-caption').textContent = `curve ${state.curves[active].name}`;
+  renderPathNote();
   renderPointTable($('points-table').tBodies[0], active, points, state.selected, tableHandlers);
   const section = $('classify-section');
   section.hidden = !state.show.classify;
@@ -332,7 +344,7 @@ function showTooltip(sx, sy) {
     return;
   }
   const hit = answers.intersections.intersections[hoverMark];
-  tooltip.textContent = `${hit.kind} intersection\nt = ${formatNumber(hit.t)}, s = ${formatNumber(hit.s)}\n` +
+  tooltip.textContent = `${hit.kind} intersection\n${segmentsText(state, hit)}t = ${formatNumber(hit.t)}, s = ${formatNumber(hit.s)}\n` +
       `at (${formatNumber(hit.point[0])}, ${formatNumber(hit.point[1])})`;
   tooltip.dataset.kind = hit.kind;
   tooltip.hidden = false;
@@ -616,7 +628,10 @@ $('show-second').addEventListener('change', (event) => {
 $('clear').addEventListener('click', () => {
   hover = null;
   hoverMark = -1;
-  edit('canvas', (s) => { s.points[s.active] = []; });
+  edit('canvas', (s) => {
+    s.points[s.active] = [];
+    s.paths[s.active] = null;
+  });
 });
 
 $('examples').addEventListener('change', (event) => {
@@ -625,6 +640,7 @@ $('examples').addEventListener('change', (event) => {
   if (!example) return;
   edit('example', (s) => {
     s.points = [structuredClone(example.a), structuredClone(example.b ?? [])];
+    s.paths = [null, null];
     s.second = Boolean(example.b);
     s.active = 0;
   });
@@ -659,23 +675,63 @@ $('paste-form').addEventListener('submit', (event) => {
     return;
   }
   const {curves, source} = read;
+  const as = $('paste-as').value;
+  if (source === 'path' && (as === 'path' || (as === 'auto' && curves.length > 1))) {
+    const name = state.curves[state.active].name;
+    const text = $('paste-text').value.trim();
+    if (edit('paste', (s) => {
+      s.points[s.active] = [];
+      s.paths[s.active] = text;
+    })) {
+      showMessage('paste', `Curve ${name} is SVG path data of ${curves.length} segment${curves.length > 1 ? 's' : ''} ` +
+                           '(y flipped), drawn and intersected segment by segment; its control points are not editable ' +
+                           'in path mode.', 'info');
+    }
+    return;
+  }
   if (curves.length > 2) {
-    showMessage('paste', `The path has ${curves.length} segments: the playground takes one (the curve being edited) or two (A and B).`);
+    showMessage('paste', `The path has ${curves.length} segments: as points the playground takes one (the curve being edited) or two (A and B).`);
     return;
   }
   const made = edit('paste', (s) => {
     if (curves.length === 2) {
       s.points = curves;
+      s.paths = [null, null];
       s.second = true;
       s.active = 0;
     } else {
       s.points[s.active] = curves[0];
+      s.paths[s.active] = null;
     }
   });
   if (made) {
     const what = source === 'path' ? `SVG path data (${curves.length} segment${curves.length > 1 ? 's' : ''}, y flipped)` : 'the point list';
     showMessage('paste', `Read ${curves.map((c) => c.length).join(' + ')} control points from ${what}.`, 'info');
   }
+});
+
+// Path mode: the note saying what is off, and the way back to control points (the
+// path's first segment becomes the curve).
+function renderPathNote() {
+  const curve = state.curves[state.active];
+  $('path-note').hidden = !curve.path;
+  $('points-table').hidden = Boolean(curve.path);
+  $('add-point').hidden = Boolean(curve.path);
+  if (!curve.path) return;
+  const n = pathInDrawing(curve.path).segments.length;
+  $('path-note-text').textContent =
+      `Curve ${curve.name} is an SVG path of ${n} segment${n > 1 ? 's' : ''} (path mode): it is drawn and intersected ` +
+      'segment by segment. Its control points cannot be edited, and the panels that need one curve\'s control ' +
+      'points (polar, de Casteljau, Bernstein basis, values, frame, box, length, loops, type) are off for it.';
+}
+$('points-mode').addEventListener('click', () => {
+  const {path} = state.curves[state.active];
+  if (!path) return;
+  const first = pathInDrawing(path).segments[0];
+  edit('canvas', (s) => {
+    s.paths[s.active] = null;
+    s.points[s.active] = first;
+  });
 });
 
 // --- sharing and pictures ------------------------------------------------------------

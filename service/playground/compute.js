@@ -10,9 +10,11 @@
 // problem is collected and the rest is drawn.
 
 import {post} from './api.js';
+import {pathInDrawing} from './svgpath.js';
 
 export const kCurveSamples = 257;  // uniform samples of a curve (0 and 1 included)
 export const kPolarSamples = 129;
+const kSegmentSamples = 65;  // uniform samples of each segment of a path
 const kPieceSamples = 97;  // samples of a loop or an overlapping piece
 
 /** The curves a round works on: A always, B when the second curve is on. */
@@ -28,16 +30,30 @@ function piece(interval) {
   return ts;
 }
 
+/** How a curve is sent: its path (in drawing units) in path mode, else its control points. */
+function curveInput(curve) {
+  return curve.path ? {path: pathInDrawing(curve.path).data} : {points: curve.points};
+}
+
+/** Whether the service can take the curve: a path, or at least two control points. */
+export function drawable(curve) {
+  return Boolean(curve.path) || curve.points.length >= 2;
+}
+
 /**
  * Sends the requests for `state` and resolves to {answers, errors}; never rejects.
- * answers.curves[i]: {evaluate, loopArea, classify, loopPaths, overlapPaths, features}
+ * answers.curves[i]: {evaluate, loopArea, classify, loopPaths, overlapPaths, features,
+ * pathSegments (in path mode, each segment's samples from /evaluate)}
  * answers.polar: the /polar answer for the active curve (with .curve = its index);
  * answers.measure: for the active curve, {curve, frame (the /evaluate result at t0 with
  * frame), bounds (the /bounds answer), extremes ([{axis, t, point}] at its critical
  * parameters), length, lengthToT0 (the /length answers on [0, 1] and [0, t0])};
  * answers.casteljau: with state.show.casteljau, {curve, t0, levels} where levels[r] is
  * the list b_0^r .. b_{n-r}^r (levels[0] the control points, levels[n] [B(t0)]);
- * answers.intersections: the /intersections answer for A and B.
+ * answers.intersections: the /intersections answer for A and B (a curve in path mode
+ * sent as {path}, so each answer names its `segments`).
+ * A curve in path mode has no control points: only its segments are drawn and it takes
+ * part in the intersections.
  * errors: [{what, error}] with error an ApiError.
  */
 export async function computeRound(state) {
@@ -52,12 +68,22 @@ export async function computeRound(state) {
   };
   const used = usedCurves(state);
   const curves = state.curves.map(() => ({
-    evaluate: null, loopArea: null, classify: null, loopPaths: [], overlapPaths: [], features: [],
+    evaluate: null, loopArea: null, classify: null, loopPaths: [], overlapPaths: [], features: [], pathSegments: null,
   }));
   const answers = {curves, polar: null, measure: null, casteljau: null, intersections: null};
   const jobs = [];
   for (const i of used) {
-    const {name, points} = state.curves[i];
+    const {name, points, path} = state.curves[i];
+    if (path) {
+      const {segments} = pathInDrawing(path);
+      const samples = Array(segments.length).fill(null);
+      curves[i].pathSegments = samples;
+      segments.forEach((segment, k) => {
+        jobs.push(attempt(`segment ${k} of ${name}`, '/evaluate', {points: segment, samples: kSegmentSamples})
+            .then((a) => { samples[k] = a ? a.results.map((r) => r.point) : null; }));
+      });
+      continue;
+    }
     if (points.length < 2) continue;
     jobs.push(attempt(`curve ${name}`, '/evaluate', {points, samples: kCurveSamples})
         .then((a) => { curves[i].evaluate = a; }));
@@ -80,9 +106,9 @@ export async function computeRound(state) {
     if (state.show.casteljau) jobs.push(construction(state, active, answers, attempt, polar));
     jobs.push(measure(state, active, answers, attempt));
   }
-  if (state.second && state.curves[0].points.length >= 2 && state.curves[1].points.length >= 2) {
+  if (state.second && drawable(state.curves[0]) && drawable(state.curves[1])) {
     jobs.push(attempt('intersections of A and B', '/intersections',
-                      {curves: [{points: state.curves[0].points}, {points: state.curves[1].points}]})
+                      {curves: [curveInput(state.curves[0]), curveInput(state.curves[1])]})
         .then((a) => { answers.intersections = a; }));
   }
   await Promise.all(jobs);
@@ -138,7 +164,8 @@ async function pointsOnCurve(state, answers, i, attempt) {
   for (const loop of curve.loopArea?.loops ?? []) {
     wanted.push({kind: 'loop', ts: piece(loop.t), loop});
   }
-  const overlaps = answers.intersections?.overlaps ?? [];
+  // A path's overlaps are listed by segment, not drawn along the path.
+  const overlaps = state.curves[i].path ? [] : answers.intersections?.overlaps ?? [];
   for (const overlap of overlaps) {
     const interval = i === 0 ? overlap.t_interval : overlap.s_interval;
     if (Array.isArray(interval)) wanted.push({kind: 'overlap', ts: piece(interval)});

@@ -326,6 +326,16 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
       polyline(ctx, view, evaluated.results.map((r) => r.point));
       ctx.stroke();
     }
+    const segments = answers?.curves[i].pathSegments;
+    if (state.show.curve && segments) {
+      ctx.strokeStyle = kColors.curves[i];
+      ctx.lineWidth = i === state.active ? 3 : 2.25;
+      for (const samples of segments) {
+        if (!samples) continue;
+        polyline(ctx, view, samples);
+        ctx.stroke();
+      }
+    }
   }
 
   const polar = answers?.polar;

@@ -3,6 +3,7 @@
 // answers of the last round; numbers shown rounded, the full answers are on
 // window.playground for whoever needs every digit.
 
+import {drawable} from './compute.js';
 import {kColors, kPointNames, formatNumber, levelName, osculatingCircle} from './draw.js';
 
 const fmt = formatNumber;
@@ -32,8 +33,9 @@ export function renderValues(container, state, answers, nearest) {
   const active = state.active;
   const curve = state.curves[active];
   const name = kPointNames[active];
-  add('Editing', `curve ${curve.name}, ${curve.points.length} control point${curve.points.length === 1 ? '' : 's'}` +
-      (curve.points.length >= 2 ? `, degree ${curve.points.length - 1}` : ''), 'value-degree');
+  add('Editing', curve.path ? `curve ${curve.name}, an SVG path (path mode: no control points, so no values below)`
+                            : `curve ${curve.name}, ${curve.points.length} control point${curve.points.length === 1 ? '' : 's'}` +
+                              (curve.points.length >= 2 ? `, degree ${curve.points.length - 1}` : ''), 'value-degree');
   add('t0', state.t0.toFixed(2), 'value-t0');
   const polar = answers?.polar && answers.polar.curve === active ? answers.polar : null;
   add(`B(t0)`, polar ? pt(polar.curve_point) : '—', 'value-curve-point');
@@ -86,6 +88,12 @@ export function renderTypes(container, state, answers) {
   replace(container, items);
 }
 
+/** "A segment i × B segment j: " when a curve is a path (t is local to segment i, s to j), else "". */
+export function segmentsText(state, hit) {
+  if (!hit.segments || !(state.curves[0].path || state.curves[1].path)) return '';
+  return `A segment ${hit.segments[0]} × B segment ${hit.segments[1]}: `;
+}
+
 export function renderIntersections(container, state, answers) {
   if (!state.second) {
     replace(container, [el('li', {class: 'muted'}, 'Turn on "Second curve (B)" and add its points.')]);
@@ -93,16 +101,16 @@ export function renderIntersections(container, state, answers) {
   }
   const x = answers?.intersections;
   if (!x) {
-    const waiting = state.curves[0].points.length < 2 || state.curves[1].points.length < 2;
-    replace(container, [el('li', {class: 'muted'}, waiting ? 'Both curves need two control points.' : 'no answer (see the error above)')]);
+    const waiting = !drawable(state.curves[0]) || !drawable(state.curves[1]);
+    replace(container, [el('li', {class: 'muted'}, waiting ? 'Both curves need two control points (or a path).' : 'no answer (see the error above)')]);
     return;
   }
   const items = x.intersections.map((hit, k) => el('li', {'data-index': String(k), 'data-kind': hit.kind},
       el('span', {class: `kind kind-${hit.kind}`}, hit.kind),
-      `t = ${fmt(hit.t)}, s = ${fmt(hit.s)} at ${pt(hit.point)}`));
+      `${segmentsText(state, hit)}t = ${fmt(hit.t)}, s = ${fmt(hit.s)} at ${pt(hit.point)}`));
   for (const o of x.overlaps ?? []) {
     items.push(el('li', {'data-kind': 'overlap'}, el('span', {class: 'kind kind-overlap'}, 'overlap'),
-        `t ∈ [${o.t_interval.map(fmt).join(', ')}], s ∈ [${o.s_interval.map(fmt).join(', ')}]`));
+        `${segmentsText(state, o)}t ∈ [${o.t_interval.map(fmt).join(', ')}], s ∈ [${o.s_interval.map(fmt).join(', ')}]`));
   }
   if (items.length === 0) items.push(el('li', {class: 'muted'}, 'none: the curves do not meet'));
   if (x.stats) {

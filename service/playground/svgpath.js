@@ -138,3 +138,22 @@ export function pathData(points) {
   const [first, ...rest] = points.map(toSvg);
   return `M ${first.join(' ')} ${command} ${rest.map((p) => p.join(' ')).join(' ')}`;
 }
+
+const kSegmentCommand = {2: 'L', 3: 'Q', 4: 'C'};
+
+/**
+ * Pasted SVG path data (SVG units, y down) as a path of the drawing: {segments (control
+ * points in drawing units, y up, numbered as the service numbers them), data (the same
+ * path as SVG path data in drawing units, for the service)}. Throws InputError.
+ */
+export function pathInDrawing(text) {
+  const segments = parsePathData(text.trim()).map((segment) => segment.map(fromSvg));
+  const parts = [];
+  let end = null;
+  for (const [first, ...rest] of segments) {
+    if (!end || end[0] !== first[0] || end[1] !== first[1]) parts.push(`M ${first.join(' ')}`);
+    parts.push(`${kSegmentCommand[rest.length + 1]} ${rest.map((p) => p.join(' ')).join(' ')}`);
+    end = rest[rest.length - 1];
+  }
+  return {segments, data: parts.join(' ')};
+}

@@ -766,7 +766,8 @@ test('exact input: the table, pasted points and SVG path data, undo and redo, th
   // Relative SVG path data, y down in the 800 x 600 drawing.
   await paste('m 100 500 c 100 -300 300 -300 400 0');
   assert.deepEqual((await pageState()).curves[0].points, [[100, 100], [200, 400], [400, 400], [500, 100]]);
-  // Two segments: curves A and B.
+  // Two segments taken as points: curves A and B.
+  await page.locator('#paste-as').selectOption('points');
   assert.match(await paste('M100,500Q300 100 500 500L700-100'), /2 segments/);
   let state = await pageState();
   assert.deepEqual(state.curves.map((c) => c.points), [[[100, 100], [300, 500], [500, 100]], [[500, 100], [700, 700]]]);
@@ -777,6 +778,7 @@ test('exact input: the table, pasted points and SVG path data, undo and redo, th
     assert.match(await paste(text), pattern, text);
     assert.deepEqual((await pageState()).curves.map((c) => c.points), pasted, `${text} changes nothing`);
   }
+  await page.locator('#paste-as').selectOption('auto');
   await settle();
 
   // SVG export: exact path commands for degrees up to 3, in the same units as the paste.
@@ -823,6 +825,114 @@ test('exact input: the table, pasted points and SVG path data, undo and redo, th
   assertSameAnswer((await pageAnswers(other)).intersections,
                    await api('/intersections', {curves: pasted.map((points) => ({points}))}), 'the link\'s intersections');
   await other.close();
+});
+
+// Two squares (drawing units, y up), each four line segments back to its start; their
+// edges cross twice, away from every corner.
+const kSquareA = [[100, 500], [300, 500], [300, 300], [100, 300]];
+const kSquareB = [[200, 450], [450, 450], [450, 200], [200, 200]];
+const squareSegments = (corners) => corners.map((p, k) => [p, corners[(k + 1) % corners.length]]);
+
+/** Where two axis-aligned segments cross ({t, s, point}), or null: t and s as ratios of lengths. */
+function axisCrossing([p0, p1], [q0, q1]) {
+  const vertical = (a, b) => a[0] === b[0];
+  if (vertical(p0, p1) === vertical(q0, q1)) return null;
+  const [v0, v1, h0, h1] = vertical(p0, p1) ? [p0, p1, q0, q1] : [q0, q1, p0, p1];
+  const point = [v0[0], h0[1]];
+  const along = (a, b, k) => (point[k] - a[k]) / (b[k] - a[k]);
+  const tv = along(v0, v1, 1);
+  const th = along(h0, h1, 0);
+  if (!(tv > 0 && tv < 1 && th > 0 && th < 1)) return null;
+  return vertical(p0, p1) ? {t: tv, s: th, point} : {t: th, s: tv, point};
+}
+
+test('path mode: two pasted SVG paths intersected by segment, listed with t and s, marked; the link keeps them', async () => {
+  const expected = [];
+  squareSegments(kSquareA).forEach((a, i) => squareSegments(kSquareB).forEach((b, j) => {
+    const hit = axisCrossing(a, b);
+    if (hit) expected.push({segments: [i, j], ...hit});
+  }));
+  assert.equal(expected.length, 2);
+  const before = await pageState();
+  // Pasted as SVG data (y down): A absolute, B relative.
+  const svgA = `M${[...kSquareA, kSquareA[0]].map(([x, y]) => `${x} ${kWorld.height - y}`).join(' L')}`;
+  const closedB = [...kSquareB, kSquareB[0]];
+  const svgB = `m${closedB[0][0]} ${kWorld.height - closedB[0][1]}` +
+               closedB.slice(1).map((p, k) => ` l${p[0] - closedB[k][0]} ${closedB[k][1] - p[1]}`).join('');
+  if (!(await page.locator('#show-second').isChecked())) await page.locator('#show-second').check();
+  await page.locator('#editing input[value="0"]').check({force: true});
+  assert.match(await paste(svgA), /4 segments/);
+  await page.locator('#editing input[value="1"]').check({force: true});
+  assert.match(await paste(svgB), /4 segments/);
+  await settle();
+  let state = await pageState();
+  assert.deepEqual(state.curves.map((c) => c.path), [svgA, svgB]);
+  assert.deepEqual(state.curves.map((c) => c.points), [[], []]);
+  assert.ok(await page.locator('#path-note').isVisible());
+  assert.ok(await page.locator('#points-table').isHidden());
+
+  const worldPath = (corners) => `M${[...corners, corners[0]].map((p) => p.join(',')).join(' L')}`;
+  const exact = await api('/intersections', {curves: [{path: worldPath(kSquareA)}, {path: worldPath(kSquareB)}]});
+  assertSameAnswer((await pageAnswers()).intersections, exact, '/intersections of the paths');
+  assert.equal(exact.intersections.length, expected.length);
+  const items = page.locator('#intersections li[data-index]');
+  assert.equal(await items.count(), expected.length);
+  for (let k = 0; k < expected.length; ++k) {
+    const hit = exact.intersections[k];
+    const want = expected.find((e) => e.segments[0] === hit.segments[0] && e.segments[1] === hit.segments[1]);
+    assert.ok(want, `API segments ${hit.segments} are a crossing of the squares`);
+    assert.ok(Math.abs(hit.t - want.t) <= 1e-12 && Math.abs(hit.s - want.s) <= 1e-12, `t, s of ${hit.segments}`);
+    const text = await items.nth(k).textContent();
+    assert.match(text, new RegExp(`A segment ${want.segments[0]} × B segment ${want.segments[1]}: `));
+    const [, , t, s, x, y] = numbersIn(text);
+    assertClose(t, hit.t, `t of ${k}`);
+    assertClose(s, hit.s, `s of ${k}`);
+    assertClose(x, want.point[0], `x of ${k}`);
+    assertClose(y, want.point[1], `y of ${k}`);
+  }
+  await page.mouse.move(5, 5);
+  await settle();
+  for (const {point} of expected) {
+    assert.ok(near(await pixelAt(point), rgbOf('#c0392b')), `the crossing at (${point}) is marked`);
+  }
+  assert.deepEqual(await pageErrorsShown(), []);
+
+  // No control points to add in path mode.
+  await setMode('add');
+  await clickWorld([600, 100]);
+  assert.match(await page.locator('#canvas-message').textContent(), /Curve B is an SVG path: control-point editing is off/);
+  assert.deepEqual((await pageState()).curves[1].points, []);
+
+  // The link opens both paths.
+  await page.waitForFunction((d) => decodeURIComponent(location.hash).includes(`pb=${d}`), svgB);
+  const other = await context.newPage();
+  other.on('pageerror', (e) => pageErrors.push(e.message));
+  recordPolicyViolations(other);
+  await other.goto(page.url());
+  await settle(other);
+  assert.deepEqual((await pageState(other)).curves.map((c) => c.path), [svgA, svgB]);
+  assertSameAnswer((await pageAnswers(other)).intersections, exact, 'the link\'s path intersections');
+  await other.close();
+
+  // Points mode: B's first segment becomes its control points, editable again.
+  await page.locator('#points-mode').click();
+  await settle();
+  state = await pageState();
+  assert.equal(state.curves[1].path, null);
+  assert.deepEqual(state.curves[1].points, squareSegments(kSquareB)[0]);
+  assert.ok(await page.locator('#points-table').isVisible());
+  await clickWorld([600, 100]);
+  assert.deepEqual((await pageState()).curves[1].points, [...squareSegments(kSquareB)[0], [600, 100]]);
+
+  // Undo goes back through path mode to the drawing before the paths.
+  for (let k = 0; k < 8 && JSON.stringify((await pageState()).curves) !== JSON.stringify(before.curves); ++k) {
+    await page.locator('#undo').click();
+  }
+  state = await pageState();
+  assert.deepEqual(state.curves, before.curves);
+  assert.equal(state.active, before.active);
+  await page.mouse.move(5, 5);
+  await settle();
 });
 
 test('keyboard: the canvas takes focus, [ ] select, arrows move, + adds, Delete removes', async () => {
