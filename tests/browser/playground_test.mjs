@@ -1030,6 +1030,12 @@ test('phone width: no sideways scrolling, and a tap adds a point', async () => {
   // No two labels overlap, on the canvas (the crowded construction of a loop crossed by
   // a second curve) or on the page.
   await phone.goto(`${baseUrl}/#a=250,100;750,560;50,560;550,100&b=${kCrossing.map((p) => p.join(',')).join(';')}&t0=0.37`);
+  // A new fragment on the same page is a same-document navigation: the page is idle until
+  // it has read the fragment, so wait for the state first, then for its answers.
+  await phone.waitForFunction(() => {
+    const state = window.playground.state();
+    return state.curves.length >= 2 && state.curves[0].points.length === 4 && state.curves[0].points[0][0] === 250;
+  }, null, {timeout: kTimeout});
   await settle(phone);
   const {placed} = await phone.evaluate(() => window.playground.labels());
   const canvasBox = await phone.locator('#scene').boundingBox();
