@@ -46,19 +46,8 @@ BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth) {
     const Job job = stack.back();
     stack.pop_back();
     const Coeffs q = bernstein::portion<double>(c, job.a, job.b);
-    // Sign changes among the coefficients that are clearly nonzero.
-    int changes = 0, last = 0;
-    bool any_small = false;
-    for (const double v : q) {
-      if (std::fabs(v) <= e) {
-        any_small = true;
-        continue;
-      }
-      const int sign = v > 0 ? 1 : -1;
-      if (last != 0 && sign != last) ++changes;
-      last = sign;
-    }
-    if (last == 0) {
+    const auto [changes, any_small, all_small] = sign_changes(q, e);
+    if (all_small) {
       // Zero to within rounding on the whole interval.
       out.isolated = false;
       out.roots.push_back(job.a + (job.b - job.a) / 2);

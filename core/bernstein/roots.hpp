@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -13,6 +14,31 @@ struct BernsteinRoots {
   /// subdivision reached its depth limit around a cluster of roots.
   bool isolated = true;
 };
+
+/// Descartes' rule of signs on Bernstein coefficients, counting only the coefficients
+/// that are clearly nonzero: those within the rounding bound e of zero may have either
+/// sign, so they neither count nor separate a change.
+struct SignChanges {
+  int changes = 0;          ///< sign changes among the coefficients with |c_i| > e
+  bool any_small = false;   ///< some coefficient within e of zero
+  bool all_small = true;    ///< every coefficient within e of zero (p is zero to rounding)
+};
+
+[[nodiscard]] inline SignChanges sign_changes(std::span<const double> c, double e) noexcept {
+  SignChanges out;
+  int last = 0;
+  for (const double v : c) {
+    if (std::fabs(v) <= e) {
+      out.any_small = true;
+      continue;
+    }
+    const int sign = v > 0 ? 1 : -1;
+    if (last != 0 && sign != last) ++out.changes;
+    last = sign;
+  }
+  out.all_small = last == 0;
+  return out;
+}
 
 /// Roots of p(t) = Σ c_i C(n,i) (1-t)^(n-i) t^i on [0, 1] by subdivision with Descartes'
 /// rule of signs on the Bernstein coefficients (Lane & Riesenfeld, "Bounds on a polynomial",

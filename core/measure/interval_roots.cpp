@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/bernstein/roots.hpp"
 #include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
@@ -262,21 +263,11 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
                                                : std::span<const double>(piece);
     // Descartes' rule on the coefficients that are clearly nonzero; an end that is an exact
     // zero is left out (p = (t - end) r(t), and r's coefficients have the others' signs).
-    const std::size_t first = job.zero_lo ? 1 : 0, last_index = job.zero_hi ? n - 1 : n;
-    int changes = 0, last = 0;
-    bool any_small = false;
-    for (std::size_t i = first; i <= last_index && i <= n; ++i) {
-      const double v = q[i];
-      if (std::fabs(v) <= e) {
-        any_small = true;
-        continue;
-      }
-      const int sign = v > 0 ? 1 : -1;
-      if (last != 0 && sign != last) ++changes;
-      last = sign;
-    }
+    const std::size_t first = job.zero_lo ? 1 : 0, end = job.zero_hi ? n : n + 1;
+    const auto [changes, any_small, all_small] =
+        sign_changes(q.subspan(first, end > first ? end - first : 0), e);
     const double middle = job.lo + (job.hi - job.lo) / 2;
-    if (last == 0) {
+    if (all_small) {
       // Zero to within rounding on the whole piece.
       out.isolated = false;
       found.push_back(middle);
