@@ -63,7 +63,8 @@ std::optional<CurveOrPath> read_curve_or_path(RequestReader& reader, const Json&
   if (path != nullptr) {
     auto read = read_path(reader, *path, pointer_to(pointer, "path"));
     if (!read) return std::nullopt;
-    return CurveOrPath(std::move(*read));
+    return std::optional<CurveOrPath>(std::in_place, std::in_place_type<path::Path>,
+                                      std::move(*read));
   }
   if (points == nullptr) {
     reader.fail(pointer_to(pointer, "points"),
@@ -72,7 +73,8 @@ std::optional<CurveOrPath> read_curve_or_path(RequestReader& reader, const Json&
   }
   auto curve = reader.curve2(*points, pointer_to(pointer, "points"));
   if (!curve) return std::nullopt;
-  return CurveOrPath(std::move(*curve));
+  return std::optional<CurveOrPath>(std::in_place, std::in_place_type<core::Curve>,
+                                    std::move(*curve));
 }
 
 std::optional<path::Path> read_request_path(RequestReader& reader, const Json& request) {
