@@ -122,6 +122,10 @@ void write_overlap(JsonWriter& w, bool reversed, double s_lo, double s_hi, doubl
   w.end_object();
 }
 
+Reply tolerance_too_small_reply() {
+  return validation_reply({{"/tolerance", "below what doubles can guarantee"}});
+}
+
 Reply work_cap_reply(std::int64_t steps, const Limits& limits) {
   return problem_reply(ProblemKind::work_cap,
                        "the intersection search took " + std::to_string(steps) +
@@ -138,7 +142,7 @@ Reply two_curves_answer(const IntersectionsRequest& request, const Limits& limit
   if (r.status == core::IntersectStatus::work_cap_reached)
     return work_cap_reply(r.stats.iterations, limits);
   if (r.status == core::IntersectStatus::tolerance_too_small) {
-    return validation_reply({{"/tolerance", "below what doubles can guarantee"}});
+    return tolerance_too_small_reply();
   }
   JsonWriter w;
   w.begin_object();
@@ -253,7 +257,7 @@ Reply two_paths_answer(const IntersectionsRequest& request, const Limits& limits
   const path::PathIntersectionResult r = path::intersect(a, b, request.options);
   if (r.status == core::IntersectStatus::work_cap_reached) return path_work_cap_reply(r.stats, limits);
   if (r.status == core::IntersectStatus::tolerance_too_small) {
-    return validation_reply({{"/tolerance", "below what doubles can guarantee"}});
+    return tolerance_too_small_reply();
   }
   JsonWriter w;
   w.begin_object();
@@ -278,7 +282,7 @@ Reply one_path_answer(const IntersectionsRequest& request, const Limits& limits)
   const path::PathSelfIntersectionResult r = path::self_intersections(p, request.options);
   if (r.status == core::IntersectStatus::work_cap_reached) return path_work_cap_reply(r.stats, limits);
   if (r.status == core::IntersectStatus::tolerance_too_small) {
-    return validation_reply({{"/tolerance", "below what doubles can guarantee"}});
+    return tolerance_too_small_reply();
   }
   // The pairs within segments are certified as one curve's are, with what the search left.
   std::vector<path::PathContact> contacts = r.intersections;

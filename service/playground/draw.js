@@ -31,6 +31,21 @@ export const kColors = Object.freeze({
 });
 
 /** The colour of control point i (and of B_{i,n}). */
+/** The mark of a cubic's feature at screen point (x, y): a diagonal cross for a cusp, an
+ * upright one for an inflection (the canvas and the legend draw the same mark). */
+export function drawFeatureMark(ctx, x, y, cusp) {
+  ctx.save();
+  ctx.strokeStyle = '#1b1f24';
+  ctx.lineWidth = 1.5;
+  ctx.beginPath();
+  for (const [dx, dy] of cusp ? [[6, 6], [6, -6]] : [[6, 0], [0, 6]]) {
+    ctx.moveTo(x - dx, y - dy);
+    ctx.lineTo(x + dx, y + dy);
+  }
+  ctx.stroke();
+  ctx.restore();
+}
+
 export const pointColor = (i) => kColors.points[i % kColors.points.length];
 /** The colour of de Casteljau level r >= 1. */
 export const levelColor = (r) => kColors.levels[(r - 1) % kColors.levels.length];
@@ -373,23 +388,7 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
     for (const i of used) {
       for (const f of answers.curves[i].features) {
         const [x, y] = view.toScreen(f.point);
-        ctx.save();
-        ctx.strokeStyle = '#1b1f24';
-        ctx.lineWidth = 1.5;
-        ctx.beginPath();
-        if (f.kind === 'cusp') {
-          ctx.moveTo(x - 6, y - 6);
-          ctx.lineTo(x + 6, y + 6);
-          ctx.moveTo(x + 6, y - 6);
-          ctx.lineTo(x - 6, y + 6);
-        } else {
-          ctx.moveTo(x - 6, y);
-          ctx.lineTo(x + 6, y);
-          ctx.moveTo(x, y - 6);
-          ctx.lineTo(x, y + 6);
-        }
-        ctx.stroke();
-        ctx.restore();
+        drawFeatureMark(ctx, x, y, f.kind === 'cusp');
         if (state.show.labels) label(labels, view, f.point, f.kind, '#1b1f24', kRank.feature);
       }
     }

@@ -2,7 +2,7 @@
 // small drawing of the mark and a line saying what it is. The same entries are drawn
 // into the side panel (a small canvas each) and under the drawing in the PNG export.
 
-import {drawKindMarker, kColors, levelColor, pointColor} from './draw.js';
+import {drawFeatureMark, drawKindMarker, kColors, levelColor, pointColor} from './draw.js';
 
 const line = (color, width, dash = []) => (ctx, w, h) => {
   ctx.strokeStyle = color;
@@ -25,24 +25,7 @@ const disc = (fill, stroke, radius) => (ctx, w, h) => {
   ctx.stroke();
 };
 
-const cross = (rotated) => (ctx, w, h) => {
-  const [x, y] = [w / 2, h / 2];
-  ctx.strokeStyle = '#1b1f24';
-  ctx.lineWidth = 1.5;
-  ctx.beginPath();
-  if (rotated) {
-    ctx.moveTo(x - 5, y - 5);
-    ctx.lineTo(x + 5, y + 5);
-    ctx.moveTo(x + 5, y - 5);
-    ctx.lineTo(x - 5, y + 5);
-  } else {
-    ctx.moveTo(x - 6, y);
-    ctx.lineTo(x + 6, y);
-    ctx.moveTo(x, y - 6);
-    ctx.lineTo(x, y + 6);
-  }
-  ctx.stroke();
-};
+const cross = (rotated) => (ctx, w, h) => drawFeatureMark(ctx, w / 2, h / 2, rotated);
 
 /** The entries for what `state` shows, given the last `answers` (may be null). */
 export function legendEntries(state, answers) {
