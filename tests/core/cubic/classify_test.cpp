@@ -403,8 +403,8 @@ TEST(Classify, InvariantUnderExactAffineMapsAndScaling) {
 // Coordinates at the ends of the double range: the type is the exact oracle's, the double
 // point finite and ordered.
 // a loop whose double point sits within two ulps of t = 1
-// on a cubic with coordinates 2^250 apart. The exact signs say 0 < t1 < t2 < 1; t1 rounded to
-// 1 and t2 was clamped below 1, so the pair came out reversed (t1 = 1 > t2). The type is the
+// on a cubic with coordinates 2^250 apart. The exact signs say 0 < t1 < t2 < 1; t1 rounds to
+// 1, and clamping t2 below 1 alone would reverse the pair (t1 = 1 > t2). The type is the
 // exact rational oracle's; the pair must keep its order and stay strictly inside (0, 1).
 TEST(ClassifyExtremes, LoopNextToAnEndKeepsItsParametersOrdered) {
   const std::array<Point2, 4> p{
@@ -430,7 +430,7 @@ TEST(ClassifyExtremes, LoopNextToAnEndKeepsItsParametersOrdered) {
 TEST(ClassifyExtremes, CoordinatesFartherApartThanTheLargestDoubleAreClassified) {
   const std::array<std::array<Point2, 4>, 4> cubics{{
       {Point2{1.5e308, -1.5e308}, Point2{-1.5e308, 1.5e308}, Point2{-1e308, -1e308},
-       Point2{1e308, 1e308}},  // differences -inf and +inf: their sum was NaN
+       Point2{1e308, 1e308}},  // differences -inf and +inf: their sum is NaN
       {Point2{-1.5e308, 0.0}, Point2{1.5e308, 1e300}, Point2{0.0, 1e308}, Point2{1e300, -1e308}},
       {Point2{-1.7e308, -1.7e308}, Point2{1.7e308, 1.7e308}, Point2{1.7e308, -1.7e308},
        Point2{-1.7e308, 1.7e308}},
@@ -444,8 +444,8 @@ TEST(ClassifyExtremes, CoordinatesFartherApartThanTheLargestDoubleAreClassified)
 }
 
 // A loop on a cubic with coordinates near the largest double.
-// The double point, the mean of B(t1) and B(t2), was computed as half their sum, which
-// overflowed to -inf. Both points lie in the control points' convex hull, so their mean does:
+// The double point is the mean of B(t1) and B(t2); half their sum would overflow to
+// -inf. Both points lie in the control points' convex hull, so their mean does:
 // it must be finite and inside the control points' bounding box.
 TEST(ClassifyExtremes, DoublePointNearTheLargestDoubleIsFinite) {
   const std::array<Point2, 4> p{Point2{0.0, -0x1.7000001f00108p+1023},

@@ -73,8 +73,8 @@ TEST(Collinear, PointAtAnEndIsAnExactRoot) {
 // (−1/2, 1/2) with P1 = P2 = P3 (f'(1) = 0) and g from (−1/2, 1/2) to (0, 0). g lies on f:
 // the overlap is t in [t0, 1] (f(t0) = (0, 0): f(t) = P0 + (1 − (1 − t)^3)(P3 − P0), so
 // 1 − t0 = 3^(-1/3)) with s in [0, 1] reversed, and f(1) = g(0) bit for bit. The double root of
-// f's derivative at t = 1, found 5e-8 inside, cut f there: the overlap stopped 5e-8 short of
-// t = 1 and a cloud of three zero-width contacts sat next to it; (1, 0) was in none of them.
+// f's derivative at t = 1 is found only to about 5e-8 inside; cutting f there would stop the
+// overlap short of t = 1 with stray zero-width contacts beside it, none holding (1, 0).
 // The answer: the one overlap, ending exactly at (1, 0), and nothing else, in both orders.
 TEST(Collinear, OverlapReachesAFlatEnd) {
   const Curve f({{1.0, -1.0}, {-0.5, 0.5}, {-0.5, 0.5}, {-0.5, 0.5}});
@@ -98,10 +98,10 @@ TEST(Collinear, OverlapReachesAFlatEnd) {
 
 // An estimate one subnormal step outside its
 // zero-width interval. f, 2^-900 long, lies on the segment g(s) = (0, 2^64 s), from s = 3 2^-1074
-// to s = 2^-964; in the working frame f's positions along the line are one number, so the pair
-// came as a touch with s in [3 2^-1074, 3 2^-1074] and the estimate s/2 + s/2 = 4 2^-1074 (and
-// t = s = 0, no root, in the other order). Now f touches with all of its parameters: a contact
-// holding every (t, s) of the coincidence, in both orders.
+// to s = 2^-964; in the working frame f's positions along the line are one number, and a midpoint
+// estimate s/2 + s/2 rounds to 4 2^-1074, outside a zero-width interval at 3 2^-1074. The
+// answer: f touches with all of its parameters, a contact holding every (t, s) of the
+// coincidence, in both orders.
 TEST(Collinear, SubnormalEstimateInsideItsInterval) {
   const Curve f({{0.0, 0x3p-1010}, {0.0, 0x1p-900}});
   const Curve g({{0.0, 0.0}, {0.0, 0x1p64}});

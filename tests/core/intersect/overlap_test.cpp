@@ -28,10 +28,10 @@ using test::on_parabola;
 using test::RationalPoint;
 
 // The curve g starts on the segment f, at
-// x = 0x1.3p-23, and leaves it at an angle of 2^-22 (g's slope 2^-19 / (8 + 0x1.3p-23)). In
-// the order (f, g) the answer was an overlap t in [0, 2.2e-9], s in [0, 1.8e-8]; in the order
-// (g, f) the single crossing. Two distinct lines cross once: at f(t) = g(0), t = 0x1.3p-29
-// exactly, transversally (the overlap test's tolerance on the lines' directions was 2^-20).
+// x = 0x1.3p-23, and leaves it at an angle of 2^-22 (g's slope 2^-19 / (8 + 0x1.3p-23)). A
+// direction tolerance coarser than that angle would call the start an overlap in one order
+// and a crossing in the other. Two distinct lines cross once: at f(t) = g(0), t = 0x1.3p-29
+// exactly, transversally, in both orders.
 TEST(Overlap, SwappingTheCurvesGivesTheSameKindOfAnswer) {
   const Curve f({{0.0, 0.0}, {64.0, 0.0}});
   const Curve g({{0x1.3p-23, 0.0}, {-8.0, 0x1p-19}});
@@ -103,9 +103,9 @@ TEST(Overlap, ACurveComingWithin2eMinus9OfAnotherDoesNotMeetIt) {
 TEST(Overlap, AnOverlapReachesTheEndPointTheCurvesShare) {
   // Two quartics with the same first four control points, the last one's y differing by
   // 2^-38 (1e-13 of their size): one overlap of the whole curves, to within the tolerance.
-  // They start at (0, 0) bit for bit, so the answer must contain (0, 0); the overlap's end,
-  // pinned by Newton's method, stopped at t = 3e-27 in one order and the exact end root
-  // was dropped as lying on the overlap.
+  // They start at (0, 0) bit for bit, so the answer must contain (0, 0); an overlap end pinned
+  // by Newton's method alone can stop just short of it, and the exact end root must then
+  // not be dropped as lying on the overlap.
   std::vector<Point2> points = {{0x0p+0, 0x0p+0},
                                 {0x0p+0, 0x1.801090201027fp-31},
                                 {-0x1p+0, 0x1.801090201027fp-31},
@@ -129,11 +129,11 @@ TEST(Overlap, AnOverlapWithinRoundingOfAPointHidesNoCrossing) {
   // orders report that as an overlap (f on [0, 9.5e-10] with g on [0, 5.4e-6]). f crosses g's
   // parabola between t_lo and t_hi (a sign change of its implicit equation at f's exact
   // points). There f's x is positive and below 32, and f's y below g's first point y0: on g,
-  // x = 32 s^2 and y = y0 (1 - s)^2, so the crossing has 0 < s < 1 (about 0.0047). The
-  // overlap's map, verified only on its tiny pieces, was taken to hold on the whole square
-  // and hid that crossing in the order (g, f). Subdivision runs into the work cap in
-  // both orders (in the order (f, g) it did before too): halving cannot separate the two
-  // starts, within rounding of each other, outside the overlap's own box.
+  // x = 32 s^2 and y = y0 (1 - s)^2, so the crossing has 0 < s < 1 (about 0.0047). An
+  // overlap's map verified only on tiny pieces must not be taken to hold on the whole
+  // square, or it hides that crossing in the order (g, f). Subdivision runs into the work
+  // cap in both orders: halving cannot separate the two starts, within rounding of each
+  // other, outside the overlap's own box.
   using bezier::test::Rational;
   const Curve f({{0x0p+0, 0x0p+0}, {-0x1.fc03ff92e794p-1, 0x1.6540001p-26},
                  {0x1.f0000ed34f583p+29, 0x1.dcp+14}});

@@ -64,9 +64,8 @@ TEST(WorkingCurve, SegmentFourSubnormalStepsLong) {
 }
 
 // Coordinates next to the largest double. The working
-// frame's origin, rounded to its grid, was beyond the largest double, so the offsets were infinite
-// and `std::ilogb(m) + 1` overflowed an int (undefined behaviour; in release the search spent the
-// whole work budget). The answer: f(t) = (1.79e308 t, -1.79e308) ends where g (a point) is, t = 1,
+// frame's origin, rounded to its grid, must stay within the double range, or the offsets are
+// infinite and `std::ilogb(m) + 1` overflows an int. The answer: f(t) = (1.79e308 t, -1.79e308) ends where g (a point) is, t = 1,
 // s free.
 TEST(WorkingCurve, CoordinatesNextToTheLargestDouble) {
   const Curve f({{0.0, -1.79e308}, {1.79e308, -1.79e308}});

@@ -118,7 +118,7 @@ TEST(SelfIntersectionEdgeCases, GeneralMethodFindsTheLoopTheClosedFormFinds) {
 }
 
 // Coordinates spanning more than 2^400: the cubic's
-// closed form is not exact (CubicPredicates::exact false), and the pair it gave was no double
+// closed form is not exact (CubicPredicates::exact false), and the pair it would give is no double
 // point: (0, 1) on an open curve, |B(0) − B(1)| = 0.027 on a curve of size 8. The exact double
 // point (rational elimination of s + t and s t, done off-line) is at t = 1.3e-6, s = 1.0011: off
 // the segment, so there is no pair (the general method finds the curve collinear to within its
