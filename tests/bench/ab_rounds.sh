@@ -1,8 +1,8 @@
 #!/bin/bash
 # Alternating A/B timing for a noisy machine: per round, every benchmark matching FILTER
 # runs in A's binary, then in B's; the report gives, per benchmark, the minimum and median
-# of each side's time per pair and the ratio of the minima and the median of the per-round
-# ratios.
+# of each side's time per pair (its time_per_pair counter, else its CPU time per
+# iteration) and the ratio of the minima and the median of the per-round ratios.
 #
 #   tests/bench/ab_rounds.sh 5 IntersectCubicPairs A/tests/bezier_bench B/tests/bezier_bench
 set -euo pipefail
@@ -16,9 +16,10 @@ for _ in $(seq "$rounds"); do
     bin=$a
     [ "$side" = B ] && bin=$b
     "$bin" --benchmark_filter="$filter" --benchmark_min_time=0.2 2>/dev/null | grep '^BM' |
-      while read -r name rest; do
-        time=$(grep -o 'time_per_pair=[0-9.]*[un]s' <<<"$rest" | sed 's/time_per_pair=//')
-        steps=$(grep -o 'steps_per_pair=[0-9.]*' <<<"$rest" | sed 's/steps_per_pair=//')
+      while read -r name _ _ cpu unit rest; do
+        time=$(grep -o 'time_per_pair=[0-9.]*[unm]s' <<<"$rest" | sed 's/time_per_pair=//' || true)
+        [ -n "$time" ] || time=$cpu$unit
+        steps=$(grep -o 'steps_per_pair=[0-9.]*' <<<"$rest" | sed 's/steps_per_pair=//' || true)
         echo "$side $name $time ${steps:--}"
       done
   done
@@ -27,7 +28,8 @@ import statistics, sys
 times, steps = {}, {}
 for line in sys.stdin:
     side, name, t, s = line.split()
-    us = float(t[:-2]) / (1000 if t.endswith("ns") else 1)
+    scale = {"ns": 1e-3, "us": 1.0, "ms": 1e3}[t[-2:]]
+    us = float(t[:-2]) * scale
     times.setdefault(name, {"A": [], "B": []})[side].append(us)
     steps.setdefault(name, {})[side] = s
 for name, d in times.items():
