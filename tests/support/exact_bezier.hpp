@@ -86,6 +86,11 @@ template <class RP>
 /// A scalar polynomial by its Bernstein coefficients on [0, 1]: b_i of B_i^m, m = size - 1.
 using BernsteinPoly = std::vector<Rational>;
 
+/// p(t) exactly, for p given by its double Bernstein coefficients c on [0, 1].
+[[nodiscard]] inline Rational exact_bernstein_value(const std::vector<double>& c, const Rational& t) {
+  return exact_evaluate(BernsteinPoly(c.begin(), c.end()), t);
+}
+
 /// The product of two polynomials in Bernstein form, exactly: degree m + n, coefficients
 /// (A B)_i = Σ_j C(m,j) C(n,i-j) / C(m+n,i) A_j B_(i-j) (Farouki & Rajan, "Algorithms for
 /// polynomials in Bernstein form", CAGD 5, 1988).

@@ -9,14 +9,13 @@
 #include <cmath>
 #include <vector>
 
+#include "core/numeric/binomial.hpp"
+#include "tests/support/exact.hpp"
+
 namespace bezier::core {
 namespace {
 
-double binomial(int n, int k) {
-  double c = 1.0;
-  for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;
-  return c;
-}
+using test::Rational;
 
 /// Bernstein coefficients of the product of two polynomials in Bernstein form.
 std::vector<double> product(const std::vector<double>& a, const std::vector<double>& b) {
@@ -118,6 +117,39 @@ TEST(BernsteinRoots, TheZeroPolynomialIsNotIsolated) {
     EXPECT_GE(t, 0.0);
     EXPECT_LE(t, 1.0);
   }
+}
+
+TEST(BernsteinRoots, RootsOfAPolynomialBuiltFromThem) {
+  // p(t) = (t - 1/8)(t - 1/2)(t - 3/4)(t - 1), converted to Bernstein form exactly.
+  const Rational r[] = {Rational(1, 8), Rational(1, 2), Rational(3, 4), Rational(1)};
+  std::vector<Rational> power = {Rational(1)};
+  for (const Rational& root : r) {
+    std::vector<Rational> next(power.size() + 1, Rational(0));
+    for (std::size_t i = 0; i < power.size(); ++i) {
+      next[i + 1] += power[i];
+      next[i] -= root * power[i];
+    }
+    power = next;
+  }
+  const int n = 4;
+  std::vector<double> b;
+  for (int i = 0; i <= n; ++i) {
+    Rational sum(0);
+    for (int j = 0; j <= i; ++j) {
+      sum += Rational(static_cast<long long>(binomial(i, j))) /
+             Rational(static_cast<long long>(binomial(n, j))) * power[static_cast<std::size_t>(j)];
+    }
+    b.push_back(sum.to_double());
+  }
+  const BernsteinRoots found = bernstein_roots(b);
+  ASSERT_EQ(found.roots.size(), 4u);
+  EXPECT_NEAR(found.roots[0], 0.125, 1e-14);
+  EXPECT_NEAR(found.roots[1], 0.5, 1e-14);
+  EXPECT_NEAR(found.roots[2], 0.75, 1e-14);
+  EXPECT_EQ(found.roots[3], 1.0);
+  // No roots: a positive polynomial.
+  const double positive[] = {1.0, -0.5, 1.0};
+  EXPECT_TRUE(bernstein_roots(positive).roots.empty());
 }
 
 }  // namespace

@@ -6,25 +6,18 @@
 #include <limits>
 #include <string>
 
-#include "core/path/path_intersections.hpp"
-#include "core/path/path_loops.hpp"
-#include "core/path/svg_path_data.hpp"
 #include "tests/support/exact.hpp"
 #include "tests/support/exact_polynomial.hpp"
 #include "tests/support/mulberry32.hpp"
+#include "tests/support/parsed_path.hpp"
 
 namespace bezier::path {
 namespace {
 
+using test::parsed_path;
 using test::Rational;
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-
-Path parsed(const std::string& data) {
-  PathDataParse parse = parse_svg_path_data(data, 1000);
-  EXPECT_FALSE(parse.error) << data;
-  return std::move(parse.path);
-}
 
 /// Σ over the closed subpaths of 1/2 ∫ (x y' - x' y) dt of every segment, in rationals
 /// through the power form (Green's theorem over a closed chain needs no chords).
@@ -41,25 +34,25 @@ Rational exact_closed_area(const Path& path) {
 }
 
 TEST(PathArea, UnitSquareCounterClockwiseIsOne) {
-  EXPECT_EQ(closed_area(parsed("M0 0 H1 V1 H0 Z")), 1.0);
-  EXPECT_EQ(closed_area(parsed("M0 0 V1 H1 V0 Z")), -1.0);
+  EXPECT_EQ(closed_area(parsed_path("M0 0 H1 V1 H0 Z")), 1.0);
+  EXPECT_EQ(closed_area(parsed_path("M0 0 V1 H1 V0 Z")), -1.0);
 }
 
 TEST(PathArea, HoleOfOppositeOrientationIsSubtracted) {
   // 4x4 square counter-clockwise, 2x2 hole clockwise: 16 - 4.
-  EXPECT_EQ(closed_area(parsed("M0 0 H4 V4 H0 Z M1 1 V3 H3 V1 Z")), 12.0);
+  EXPECT_EQ(closed_area(parsed_path("M0 0 H4 V4 H0 Z M1 1 V3 H3 V1 Z")), 12.0);
 }
 
 TEST(PathArea, OpenSubpathsEncloseNothing) {
-  EXPECT_FALSE(closed_area(parsed("M0 0 L1 0 L1 1")).has_value());
-  EXPECT_EQ(closed_area(parsed("M0 0 L1 0 L1 1 M5 5 h2 v2 h-2 z")), 4.0);
+  EXPECT_FALSE(closed_area(parsed_path("M0 0 L1 0 L1 1")).has_value());
+  EXPECT_EQ(closed_area(parsed_path("M0 0 L1 0 L1 1 M5 5 h2 v2 h-2 z")), 4.0);
 }
 
 TEST(PathArea, ParabolicSegmentIsTwoThirdsOfItsBoundingRectangle) {
   // Archimedes: the parabola from (0,0) through its apex (1,1) to (2,0) (control point (1,2))
   // and its chord bound 2/3 of base x height = 4/3; drawn clockwise (up, then back along
   // the x axis), so -4/3.
-  const std::optional<double> a = closed_area(parsed("M0 0 Q1 2 2 0 Z"));
+  const std::optional<double> a = closed_area(parsed_path("M0 0 Q1 2 2 0 Z"));
   ASSERT_TRUE(a);
   EXPECT_NEAR(*a, -4.0 / 3.0, 4 * kEps);
 }
@@ -87,7 +80,7 @@ TEST(PathArea, RandomPolygonsMatchTheExactShoelace) {
       twice = twice + (p.x * q.y - p.y * q.x);
     }
     const Rational exact = twice / Rational(2);
-    const std::optional<double> a = closed_area(parsed(data));
+    const std::optional<double> a = closed_area(parsed_path(data));
     ASSERT_TRUE(a);
     // Every corner is a multiple of 1/16 below 64 in magnitude, so every difference, cross
     // product and partial sum of the shoelace formula is a multiple of 2^-8 far below 2^45:
@@ -115,37 +108,13 @@ TEST(PathArea, RandomClosedCurvePathsMatchTheExactGreenIntegral) {
       for (int i = 0; i < degree; ++i) point(data);
     }
     data += round % 3 == 0 ? " Z M1 1 l2 0 q1 1 -1 2 z" : " Z";
-    const Path path = parsed(data);
+    const Path path = parsed_path(data);
     const double exact = exact_closed_area(path).to_double();
     const std::optional<double> a = closed_area(path);
     ASSERT_TRUE(a);
     // Each term is at most a few times 8^2 and carries a few roundings.
     EXPECT_NEAR(*a, exact, 64 * 8 * 8 * kEps * segments) << data;
   }
-}
-
-TEST(PathLoops, BowTieLoopIsTheTriangleBetweenTheCrossingAndTheFarSide) {
-  // Segment 0 (0,0)->(2,2) crosses segment 2 (2,0)->(0,2) at (1,1), t = s = 1/2. The loop
-  // from there runs (1,1) -> (2,2) -> (2,0) -> (1,1): a clockwise triangle of area 1.
-  const Path path = parsed("M0 0 L2 2 L2 0 L0 2 Z");
-  const PathSelfIntersectionResult self = self_intersections(path, {});
-  const std::vector<PathLoop> found = loops(path, self);
-  ASSERT_EQ(found.size(), 1u);
-  EXPECT_EQ(found[0].segment_t, 0u);
-  EXPECT_EQ(found[0].segment_s, 2u);
-  EXPECT_NEAR(found[0].signed_area, -1.0, 8 * kEps);
-  EXPECT_NEAR(found[0].area, 1.0, 8 * kEps);
-  // Green's theorem: the figure eight's whole area is its two lobes with their signs,
-  // +1 for the lower one and -1 for the loop: 0.
-  EXPECT_NEAR(*closed_area(path), 0.0, 8 * kEps);
-}
-
-TEST(PathLoops, LoopsBetweenSubpathsAreNotLoops) {
-  // Two crossing open strokes: one intersection, no loop.
-  const Path path = parsed("M0 0 L2 2 M0 2 L2 0");
-  const PathSelfIntersectionResult self = self_intersections(path, {});
-  EXPECT_EQ(self.intersections.size(), 1u);
-  EXPECT_TRUE(loops(path, self).empty());
 }
 
 }  // namespace

@@ -9,19 +9,15 @@
 
 #include "core/curve/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
-#include "core/path/svg_path_data.hpp"
 #include "tests/support/mulberry32.hpp"
+#include "tests/support/parsed_path.hpp"
 
 namespace bezier::path {
 namespace {
 
-constexpr double kTol = 1e-12;
+using test::parsed_path;
 
-Path parsed(const std::string& data) {
-  PathDataParse parse = parse_svg_path_data(data, 1000);
-  EXPECT_FALSE(parse.error) << data;
-  return std::move(parse.path);
-}
+constexpr double kTol = 1e-12;
 
 bool meet(core::ParamInterval a, core::ParamInterval b) { return a.lo <= b.hi && b.lo <= a.hi; }
 
@@ -30,7 +26,7 @@ TEST(PathIntersections, TwoOverlappingSquaresCrossTwice) {
   // B's bottom (segment 0) at (2, 1), A's top (segment 2, drawn right to left) crosses B's
   // left side (segment 3, drawn downwards) at (1, 2); each at the middle of both segments.
   const PathIntersectionResult r =
-      intersect(parsed("M0 0 H2 V2 H0 Z"), parsed("M1 1 H3 V3 H1 Z"), {});
+      intersect(parsed_path("M0 0 H2 V2 H0 Z"), parsed_path("M1 1 H3 V3 H1 Z"), {});
   ASSERT_EQ(r.status, core::IntersectStatus::ok);
   ASSERT_EQ(r.intersections.size(), 2u);
   EXPECT_EQ(r.intersections[0].segment_t, 1u);
@@ -47,7 +43,7 @@ TEST(PathIntersections, TwoOverlappingSquaresCrossTwice) {
 TEST(PathIntersections, ALineThroughAJointCountsOnce) {
   // A's joint (1, 1) lies on B: found on A's segments 0 (t = 1) and 1 (t = 0), kept once,
   // on the lower segment.
-  const PathIntersectionResult r = intersect(parsed("M0 0 L1 1 L2 0"), parsed("M1 0 L1 2"), {});
+  const PathIntersectionResult r = intersect(parsed_path("M0 0 L1 1 L2 0"), parsed_path("M1 0 L1 2"), {});
   ASSERT_EQ(r.intersections.size(), 1u);
   EXPECT_EQ(r.intersections[0].segment_t, 0u);
   EXPECT_EQ(r.intersections[0].segment_s, 0u);
@@ -55,7 +51,7 @@ TEST(PathIntersections, ALineThroughAJointCountsOnce) {
   EXPECT_NEAR(r.intersections[0].intersection.s, 0.5, kTol);
   // The same with the roles swapped: the joint is then on the second path's side.
   const PathIntersectionResult swapped =
-      intersect(parsed("M1 0 L1 2"), parsed("M0 0 L1 1 L2 0"), {});
+      intersect(parsed_path("M1 0 L1 2"), parsed_path("M0 0 L1 1 L2 0"), {});
   ASSERT_EQ(swapped.intersections.size(), 1u);
   EXPECT_EQ(swapped.intersections[0].segment_s, 0u);
   EXPECT_EQ(swapped.intersections[0].intersection.s, 1.0);
@@ -64,7 +60,7 @@ TEST(PathIntersections, ALineThroughAJointCountsOnce) {
 TEST(PathIntersections, TwoJointsAtOnePointCountOnce) {
   // A V and an inverted V touching at their corners (1, 1): four segment pairs find it.
   const PathIntersectionResult r =
-      intersect(parsed("M0 0 L1 1 L2 0"), parsed("M0 2 L1 1 L2 2"), {});
+      intersect(parsed_path("M0 0 L1 1 L2 0"), parsed_path("M0 2 L1 1 L2 2"), {});
   ASSERT_EQ(r.intersections.size(), 1u);
   EXPECT_EQ(r.intersections[0].segment_t, 0u);
   EXPECT_EQ(r.intersections[0].segment_s, 0u);
@@ -76,7 +72,7 @@ TEST(PathIntersections, ClosingJointOfAClosedSubpathKeepsTheLowerSegment) {
   // Triangle A's start (0, 0), where its last segment (the closing line) ends and its
   // first starts, lies on B.
   const PathIntersectionResult r =
-      intersect(parsed("M0 0 L2 1 L2 -1 Z"), parsed("M0 -1 L0 1"), {});
+      intersect(parsed_path("M0 0 L2 1 L2 -1 Z"), parsed_path("M0 -1 L0 1"), {});
   ASSERT_EQ(r.intersections.size(), 1u);
   EXPECT_EQ(r.intersections[0].segment_t, 0u);
   EXPECT_EQ(r.intersections[0].intersection.t, 0.0);
@@ -110,8 +106,8 @@ TEST(PathIntersections, RandomPathsAgreeWithEverySegmentPairSearchedAlone) {
   test::Mulberry32 rng(2121);
   std::size_t all_rounds = 0;
   for (int round = 0; round < 60; ++round) {
-    const Path a = parsed(random_path(rng, 2 + static_cast<int>(rng.next() * 10)));
-    const Path b = parsed(random_path(rng, 2 + static_cast<int>(rng.next() * 10)));
+    const Path a = parsed_path(random_path(rng, 2 + static_cast<int>(rng.next() * 10)));
+    const Path b = parsed_path(random_path(rng, 2 + static_cast<int>(rng.next() * 10)));
     const PathIntersectionResult r = intersect(a, b, {});
     ASSERT_EQ(r.status, core::IntersectStatus::ok);
     // Every pair, no culling.
@@ -165,7 +161,7 @@ TEST(PathSelfIntersections, ConvexPolygonsAndTheirJointsDoNotIntersect) {
       closed += ' ';
       closed += std::to_string(std::sin(angle));
     }
-    const PathSelfIntersectionResult r = self_intersections(parsed(closed + " Z"), {});
+    const PathSelfIntersectionResult r = self_intersections(parsed_path(closed + " Z"), {});
     EXPECT_EQ(r.status, core::IntersectStatus::ok);
     EXPECT_TRUE(r.intersections.empty()) << closed;
     EXPECT_TRUE(r.overlaps.empty()) << closed;
@@ -176,7 +172,7 @@ TEST(PathSelfIntersections, SmoothClosedOutlineOfCubicsHasNone) {
   // A circle of four cubic arcs (kappa = 0.5523): tangent-continuous joints, and the seam
   // where the last arc ends at the first one's start.
   const PathSelfIntersectionResult r = self_intersections(
-      parsed("M1 0 C1 .5523 .5523 1 0 1 C-.5523 1 -1 .5523 -1 0 C-1 -.5523 -.5523 -1 0 -1 "
+      parsed_path("M1 0 C1 .5523 .5523 1 0 1 C-.5523 1 -1 .5523 -1 0 C-1 -.5523 -.5523 -1 0 -1 "
              "C.5523 -1 1 -.5523 1 0 Z"),
       {});
   EXPECT_EQ(r.status, core::IntersectStatus::ok);
@@ -185,7 +181,7 @@ TEST(PathSelfIntersections, SmoothClosedOutlineOfCubicsHasNone) {
 }
 
 TEST(PathSelfIntersections, BowTieCrossesOnceAtItsCentre) {
-  const PathSelfIntersectionResult r = self_intersections(parsed("M0 0 L2 2 L2 0 L0 2 Z"), {});
+  const PathSelfIntersectionResult r = self_intersections(parsed_path("M0 0 L2 2 L2 0 L0 2 Z"), {});
   ASSERT_EQ(r.intersections.size(), 1u);
   EXPECT_EQ(r.intersections[0].segment_t, 0u);
   EXPECT_EQ(r.intersections[0].segment_s, 2u);
@@ -197,7 +193,7 @@ TEST(PathSelfIntersections, ConsecutiveSegmentsMeetingAwayFromTheirJointIntersec
   // Segment 0 is y = 0 from (0, 0) to (4, 0); segment 1, the cubic (4,0) (4,4) (0,4)
   // (2,-2), has y(s) = 12 s (1 - s) - 2 s^3, which is 0 again at s^2 + 6 s - 6 = 0,
   // s = sqrt(15) - 3, where it crosses segment 0 at t = x(s) / 4.
-  const Path path = parsed("M0 0 L4 0 C4 4 0 4 2 -2");
+  const Path path = parsed_path("M0 0 L4 0 C4 4 0 4 2 -2");
   const PathSelfIntersectionResult r = self_intersections(path, {});
   ASSERT_EQ(r.intersections.size(), 1u);
   const double s = std::sqrt(15.0) - 3;
@@ -210,7 +206,7 @@ TEST(PathSelfIntersections, ConsecutiveSegmentsMeetingAwayFromTheirJointIntersec
 TEST(PathSelfIntersections, AJointOnAnotherSegmentCountsOnce) {
   // The joint (2, 0) of segments 1 and 2 lies on segment 0... of the same path: the path
   // runs right along y = 0 to (4, 0), up to (2, 2), down to (2, -2) through (2, 0).
-  const PathSelfIntersectionResult r = self_intersections(parsed("M0 0 L4 0 L2 2 L2 -2"), {});
+  const PathSelfIntersectionResult r = self_intersections(parsed_path("M0 0 L4 0 L2 2 L2 -2"), {});
   ASSERT_EQ(r.intersections.size(), 1u);
   EXPECT_EQ(r.intersections[0].segment_t, 0u);
   EXPECT_EQ(r.intersections[0].segment_s, 2u);
@@ -221,7 +217,7 @@ TEST(PathSelfIntersections, AJointOnAnotherSegmentCountsOnce) {
 TEST(PathSelfIntersections, RandomPathsNeverReportTheirJoints) {
   test::Mulberry32 rng(77);
   for (int round = 0; round < 60; ++round) {
-    const Path path = parsed(random_path(rng, 2 + static_cast<int>(rng.next() * 10)));
+    const Path path = parsed_path(random_path(rng, 2 + static_cast<int>(rng.next() * 10)));
     const PathSelfIntersectionResult r = self_intersections(path, {});
     ASSERT_EQ(r.status, core::IntersectStatus::ok);
     for (const PathContact& c : r.intersections) {
@@ -250,10 +246,10 @@ TEST(PathIntersections, WorkCapIsSharedByThePairs) {
     b += k % 2 ? " 0.5" : " 0.25";
   }
   core::IntersectOptions options;
-  const PathIntersectionResult full = intersect(parsed(a), parsed(b), options);
+  const PathIntersectionResult full = intersect(parsed_path(a), parsed_path(b), options);
   ASSERT_EQ(full.status, core::IntersectStatus::ok);
   options.max_work = full.stats.work / 2;
-  const PathIntersectionResult capped = intersect(parsed(a), parsed(b), options);
+  const PathIntersectionResult capped = intersect(parsed_path(a), parsed_path(b), options);
   EXPECT_EQ(capped.status, core::IntersectStatus::work_cap_reached);
   EXPECT_LE(capped.stats.work, options.max_work + full.stats.work / 40);
 }
