@@ -4,7 +4,9 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <span>
 #include <tuple>
+#include <type_traits>
 
 #include "core/numeric/binomial.hpp"
 #include "core/curve/derivative.hpp"
@@ -21,70 +23,174 @@ namespace {
 double norm1(Point2 p) noexcept { return std::fabs(p.x) + std::fabs(p.y); }
 double norm1(Point3 p) noexcept { return std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z); }
 
-// The 7-point Gauss / 15-point Kronrod pair on [-1, 1] (QUADPACK qk15, Piessens et al. 1983):
-// abscissae x_k > 0 (the rule is symmetric) and the centre, with their weights. The Gauss
-// nodes are the odd-indexed Kronrod nodes and the centre.
-constexpr std::array<double, 8> kKronrodNodes = {
-    0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
-    0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
-    0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
-    0.207784955007898467600689403773245, 0.0};
-constexpr std::array<double, 8> kKronrodWeights = {
-    0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
-    0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
-    0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
-    0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
-constexpr std::array<double, 4> kGaussWeights = {
-    0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
-    0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
+// The nested rules on [-1, 1], each symmetric: abscissae x_k > 0 and the centre, with their
+// weights. Gauss's 3-point rule (exact for polynomials of degree 5); its Kronrod extension
+// K7, which adds 4 nodes (exact to degree 11; Kronrod 1965); and Patterson's extension P15 of
+// K7, which adds 8 more (exact to degree 23; Patterson, "The optimum addition of points to
+// quadrature formulae", Math. Comp. 22, 1968). Each rule reuses every node of the one before.
+// The values are the roots of the Stieltjes polynomials of those papers and the weights that
+// make each rule exact to its degree, to 36 digits.
+constexpr std::array<double, 8> kPattersonNodes = {
+    0.993831963212755022208512841307951444, 0.960491268708020283423507092629079963,
+    0.888459232872256998890420167258502893, 0.774596669241483377035853079956479922,
+    0.621102946737226402940687443816594795, 0.434243749346802558002071502844627817,
+    0.223386686428966881628203986843998040, 0.0};
+constexpr std::array<double, 8> kPattersonWeights = {
+    0.0170017196299402603390274174026535252, 0.0516032829970797396969201205678609837,
+    0.0929271953151245376858942226541688264, 0.134415255243784220359968764802491521,
+    0.171511909136391380787353165019717218,  0.200628529376989021033931873331359306,
+    0.219156858401587496403693161643773748,  0.225510499798206687386422549155949745};
+// K7 on kPattersonNodes[1], [3], [5] and the centre; G3 on kPattersonNodes[3] = sqrt(3/5) and
+// the centre.
+constexpr std::array<double, 4> kKronrodWeights = {
+    0.104656226026467265193823857192073038, 0.268488089868333440728569280666709625,
+    0.401397414775962222905051818618431879, 0.450916538658474142345110087045570917};
+constexpr std::array<double, 2> kGaussWeights = {5.0 / 9.0, 8.0 / 9.0};
 
-/// |B'(t)| from the hodograph's control points by de Casteljau (plain: the rounding is
-/// bounded in arc_length's error term).
+/// |B'(t)| from the hodograph's control points by de Casteljau and the square root of the
+/// sum of squares (plain: the rounding is bounded in arc_length's error term), at up to
+/// kBatch parameters at once: the de Casteljau rounds run across the parameters, one
+/// coordinate at a time, the same operations in the same order as one parameter at a time.
+/// The curve is normalised (coordinates below 1), so the squares cannot overflow; where they
+/// would underflow (|B'| below 2^-480) hypot takes over.
 template <class P>
 class Speed {
  public:
+  static constexpr std::size_t kBatch = 8;
+
   explicit Speed(const BasicCurve<P>& curve) : hodograph_(derivative(curve)) {}
 
-  double operator()(double t) const {
+  /// out[j] = |B'(ts[j])| for j < ts.size() <= kBatch.
+  void operator()(std::span<const double> ts, double* out) const {
+    assert(ts.size() <= kBatch);
     const auto h = hodograph_.points();
-    std::array<P, 24> inline_row;
-    std::vector<P> heap_row;
-    P* row = inline_row.data();
-    if (h.size() > inline_row.size()) {
-      heap_row.assign(h.begin(), h.end());
+    const std::size_t m = h.size();
+    constexpr std::size_t kInlinePoints = 24;
+    std::array<double, kInlinePoints * kBatch> inline_row;
+    std::vector<double> heap_row;
+    double* row = inline_row.data();
+    if (m > kInlinePoints) {
+      heap_row.resize(m * kBatch);
       row = heap_row.data();
-    } else {
-      std::copy(h.begin(), h.end(), row);
     }
-    for (std::size_t level = h.size() - 1; level > 0; --level) {
-      for (std::size_t k = 0; k < level; ++k) row[k] = lerp(row[k], row[k + 1], t);
+    std::array<double, kBatch> t{}, s{}, squared{};
+    std::array<std::array<double, kBatch>, kDimension> component;
+    std::copy(ts.begin(), ts.end(), t.begin());
+    for (std::size_t j = 0; j < kBatch; ++j) s[j] = 1.0 - t[j];
+    for (std::size_t d = 0; d < kDimension; ++d) {
+      for (std::size_t i = 0; i < m; ++i) {
+        const double c = coordinate(h[i], d);
+        for (std::size_t j = 0; j < kBatch; ++j) row[i * kBatch + j] = c;
+      }
+      for (std::size_t level = m - 1; level > 0; --level) {
+        for (std::size_t i = 0; i < level; ++i) {
+          std::array<double, kBatch> next;
+          for (std::size_t j = 0; j < kBatch; ++j) next[j] = s[j] * row[i * kBatch + j] + t[j] * row[(i + 1) * kBatch + j];
+          std::copy(next.begin(), next.end(), row + i * kBatch);
+        }
+      }
+      for (std::size_t j = 0; j < kBatch; ++j) {
+        component[d][j] = row[j];
+        squared[j] += row[j] * row[j];
+      }
     }
-    return length(row[0]);
+    for (std::size_t j = 0; j < ts.size(); ++j) {
+      if (squared[j] >= 0x1p-960) {
+        out[j] = std::sqrt(squared[j]);
+      } else {
+        P at;
+        at.x = component[0][j];
+        at.y = component[1][j];
+        if constexpr (kDimension == 3) at.z = component[2][j];
+        out[j] = length(at);
+      }
+    }
+  }
+
+  double operator()(double t) const {
+    double value = 0.0;
+    (*this)(std::span<const double>(&t, 1), &value);
+    return value;
   }
 
   [[nodiscard]] const BasicCurve<P>& hodograph() const noexcept { return hodograph_; }
 
  private:
+  static constexpr std::size_t kDimension = std::is_same_v<P, Point3> ? 3 : 2;
+  static double coordinate(const P& p, std::size_t d) noexcept {
+    if (d == 0) return p.x;
+    if constexpr (kDimension == 3) {
+      if (d == 2) return p.z;
+    }
+    return p.y;
+  }
+
   BasicCurve<P> hodograph_;
 };
 
-struct RulePair {
-  double kronrod = 0.0;
-  double gauss_error = 0.0;  // |K15 - G7|
+/// One piece of [a, b] under the nested rules: its length by K7, or by P15 once extended,
+/// and the estimate of that value's error, |K7 - G3| or |P15 - K7|.
+struct Piece {
+  double a = 0.0;
+  double b = 0.0;
+  double length = 0.0;
+  double error = 0.0;
+  bool extended = false;
+  /// f at the centre and f(c - h x_k) + f(c + h x_k) at K7's three abscissae, kept so that
+  /// the extension to P15 evaluates only its 8 new nodes.
+  std::array<double, 4> kronrod_values{};
 };
 
+/// The piece [a, b] by K7, with |K7 - G3| as its error: 7 evaluations of |B'|.
 template <class P>
-RulePair gauss_kronrod(const Speed<P>& speed, double a, double b) {
+Piece kronrod7(const Speed<P>& speed, double a, double b) {
   const double centre = a + (b - a) / 2, half = (b - a) / 2;
-  const double f_centre = speed(centre);
-  double kronrod = kKronrodWeights[7] * f_centre, gauss = kGaussWeights[3] * f_centre;
-  for (std::size_t k = 0; k < 7; ++k) {
-    const double dx = half * kKronrodNodes[k];
-    const double pair = speed(centre - dx) + speed(centre + dx);
-    kronrod += kKronrodWeights[k] * pair;
-    if (k % 2 == 1) gauss += kGaussWeights[k / 2] * pair;
+  std::array<double, 7> ts, f;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double dx = half * kPattersonNodes[2 * k + 1];
+    ts[2 * k] = centre - dx;
+    ts[2 * k + 1] = centre + dx;
   }
-  return {kronrod * half, std::fabs((kronrod - gauss) * half)};
+  ts[6] = centre;
+  speed(ts, f.data());
+  Piece piece{a, b};
+  for (std::size_t k = 0; k < 3; ++k) piece.kronrod_values[k] = f[2 * k] + f[2 * k + 1];
+  piece.kronrod_values[3] = f[6];
+  double kronrod = 0.0;
+  for (std::size_t k = 0; k < 4; ++k) kronrod += kKronrodWeights[k] * piece.kronrod_values[k];
+  const double gauss = kGaussWeights[0] * piece.kronrod_values[1] + kGaussWeights[1] * piece.kronrod_values[3];
+  piece.length = kronrod * half;
+  piece.error = std::fabs((kronrod - gauss) * half);
+  return piece;
+}
+
+/// The piece by P15, with |P15 - K7| as its error: the 8 nodes K7 lacks.
+template <class P>
+void extend(const Speed<P>& speed, Piece& piece) {
+  const double centre = piece.a + (piece.b - piece.a) / 2, half = (piece.b - piece.a) / 2;
+  std::array<double, 8> ts, f;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const double dx = half * kPattersonNodes[2 * k];
+    ts[2 * k] = centre - dx;
+    ts[2 * k + 1] = centre + dx;
+  }
+  speed(ts, f.data());
+  double patterson = kPattersonWeights[7] * piece.kronrod_values[3];
+  for (std::size_t k = 0; k < 7; ++k) {
+    const double pair = k % 2 == 1 ? piece.kronrod_values[k / 2] : f[k] + f[k + 1];
+    patterson += kPattersonWeights[k] * pair;
+  }
+  patterson *= half;
+  piece.error = std::fabs(patterson - piece.length);
+  piece.length = patterson;
+  piece.extended = true;
+}
+
+template <class P>
+Piece patterson15(const Speed<P>& speed, double a, double b) {
+  Piece piece = kronrod7(speed, a, b);
+  extend(speed, piece);
+  return piece;
 }
 
 /// Σ x_i by Neumaier's compensated summation: within 2 u |Σ x_i| + O(N u^2) Σ |x_i| for
@@ -117,6 +223,11 @@ double integrated_condition(const BasicCurve<P>& hodograph, double a, double b) 
   const int m = static_cast<int>(h.size()) - 1;
   const auto antiderivative = [&](double x) {
     double sum = 0.0, prefix = 0.0;
+    if (x == 0.0) return 0.0;
+    if (x == 1.0) {  // b_{j,m+1}(1) is 1 for j = m + 1, else 0
+      for (const P& p : h) prefix += norm1(p);
+      return prefix / (m + 1);
+    }
     for (int j = 1; j <= m + 1; ++j) {
       const P p = h[static_cast<std::size_t>(j - 1)];
       prefix += norm1(p);
@@ -127,20 +238,15 @@ double integrated_condition(const BasicCurve<P>& hodograph, double a, double b) 
   return std::fabs(antiderivative(b) - antiderivative(a));
 }
 
-struct Piece {
-  double a, b;
-  RulePair rule;
-};
-
 /// Where a minimum t0 of S = |B'|^2 is small, S(t) ~ S(t0) + S''(t0) (t - t0)^2 / 2 has its
 /// complex zeros at t0 ± i w, w = sqrt(2 S(t0) / S''(t0)): |B'| is a kink smoothed over a
-/// width w. A Gauss rule on a piece [t0, t0 + h] with w << h converges slowly, and its G7 and
-/// K15 can agree far better than either is right (the kink is not resolved by either). The
+/// width w. A Gauss rule on a piece [t0, t0 + h] with w << h converges slowly, and two nested
+/// rules can agree far better than either is right (the kink is resolved by neither). The
 /// piece is therefore cut at t0 + w 4^k, k = 0, 1, ..., so that each cut piece is at most
-/// four times as far from the complex zeros as it is wide, the regime where |K15 - G7|
-/// tracks the error. Below w = 1e-8 h the smoothing changes the integral by about
-/// (w / h)^2 log(h / w) < 1e-14 of it relative to the kink |t - t0| that the split at t0
-/// already makes exact: no grading then.
+/// four times as far from the complex zeros as it is wide, the regime where the difference
+/// of the nested rules tracks the error. Below w = 1e-8 h the smoothing changes the integral
+/// by about (w / h)^2 log(h / w) < 1e-14 of it relative to the kink |t - t0| that the split
+/// at t0 already makes exact: no grading then.
 void grade_toward(double t0, double w, double toward, std::vector<double>& cuts) {
   const double h = std::fabs(toward - t0);
   if (!(w > 1e-8 * h)) return;
@@ -148,30 +254,50 @@ void grade_toward(double t0, double w, double toward, std::vector<double>& cuts)
   for (double step = w; step < h / 2; step *= 4) cuts.push_back(t0 + direction * step);
 }
 
-/// The cuts of [a, b]: a, b, the critical points of |B'| in (a, b) (roots of (B' · B')'),
-/// and the grading around each small minimum (grade_toward), increasing.
+/// Whether p, in Bernstein form on [0, 1], may rise through zero in (0, 1): false when its
+/// coefficients, each taken with the rounding allowance e = 3.02 n u max|c_i| of
+/// interval_roots, are surely positive up to some index and surely negative after it (all
+/// positive and all negative included). Such a p has at most one sign change on (0, 1), by
+/// the variation-diminishing property of the Bernstein basis, and starts positive, so it
+/// never rises through zero there.
+bool may_rise_through_zero(std::span<const double> c) {
+  double largest = 0.0;
+  for (const double x : c) largest = std::fmax(largest, std::fabs(x));
+  const double e = 3.02 * static_cast<double>(c.size() - 1) * kUnitRoundoff * largest;
+  std::size_t i = 0;
+  while (i < c.size() && c[i] > e) ++i;
+  while (i < c.size() && c[i] < -e) ++i;
+  return i < c.size();
+}
+
+/// The cuts of [a, b]: a, b, the minima of |B'| in (a, b) (the roots of (B' · B')' where it
+/// rises through zero), and the grading around each small minimum (grade_toward),
+/// increasing. A maximum of |B'| needs no cut: S > 0 there, and |B'| is analytic around it.
 template <class P>
 std::vector<double> split_points(const Speed<P>& speed, double a, double b) {
-  std::vector<double> critical = {a};
+  std::vector<double> cuts;
+  cuts.reserve(16);
+  cuts.push_back(a);
   const auto h = speed.hodograph().points();
-  std::vector<double> squared_speed, second;
   if (h.size() >= 2) {
-    squared_speed = dot_product_polynomial<P>(h, h);
+    const std::vector<double> squared_speed = dot_product_polynomial<P>(h, h);
     const std::vector<double> slope = bernstein_derivative(squared_speed);
-    second = bernstein_derivative(slope);
-    for (const double t : interval_roots(slope, a, b, IntervalEnds::open).roots) critical.push_back(t);
+    IntervalRoots found;
+    if (may_rise_through_zero(slope)) found = interval_roots(slope, a, b, IntervalEnds::open, Crossings::rising);
+    const auto& minima = found.roots;
+    const std::vector<double> second = minima.empty() ? std::vector<double>{} : bernstein_derivative(slope);
+    for (std::size_t i = 0; i < minima.size(); ++i) {
+      const double t0 = minima[i];
+      cuts.push_back(t0);
+      const double value = std::max(bernstein::evaluate(squared_speed, t0), 0.0);
+      const double curvature = bernstein::evaluate(second, t0);
+      if (!(curvature > 0.0)) continue;  // a flat stretch reported as a root: no width to grade by
+      const double w = std::sqrt(2 * value / curvature);
+      grade_toward(t0, w, i > 0 ? minima[i - 1] : a, cuts);
+      grade_toward(t0, w, i + 1 < minima.size() ? minima[i + 1] : b, cuts);
+    }
   }
-  critical.push_back(b);
-  std::vector<double> cuts = critical;
-  for (std::size_t i = 1; i + 1 < critical.size(); ++i) {
-    const double t0 = critical[i];
-    const double value = std::max(bernstein::evaluate(squared_speed, t0), 0.0);
-    const double curvature = bernstein::evaluate(second, t0);
-    if (!(curvature > 0.0)) continue;  // a maximum of |B'|
-    const double w = std::sqrt(2 * value / curvature);
-    grade_toward(t0, w, critical[i - 1], cuts);
-    grade_toward(t0, w, critical[i + 1], cuts);
-  }
+  cuts.push_back(b);
   std::sort(cuts.begin(), cuts.end());
   return cuts;
 }
@@ -186,57 +312,61 @@ ArcLength measure(const BasicCurve<P>& curve, double a, double b, const ArcLengt
   const Speed<P> speed(curve);
   const double n = curve.degree();
   const double integrand_rounding =
-      2 * (3.01 * n + 1) * kUnitRoundoff * integrated_condition(speed.hodograph(), a, b);
+      2 * (3.01 * n + 3) * kUnitRoundoff * integrated_condition(speed.hodograph(), a, b);
 
   std::vector<Piece> heap;  // a max-heap on the error estimate
-  const auto by_error = [](const Piece& x, const Piece& y) {
-    return x.rule.gauss_error < y.rule.gauss_error;
-  };
+  const auto by_error = [](const Piece& x, const Piece& y) { return x.error < y.error; };
   const std::vector<double> cuts = split_points(speed, a, b);
-  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-    heap.push_back({cuts[i], cuts[i + 1], gauss_kronrod(speed, cuts[i], cuts[i + 1])});
-  }
+  heap.reserve(cuts.size() + 8);
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) heap.push_back(kronrod7(speed, cuts[i], cuts[i + 1]));
   std::make_heap(heap.begin(), heap.end(), by_error);
 
   const auto totals = [&] {
     CompensatedSum sum, error;
     for (const Piece& p : heap) {
-      sum.add(p.rule.kronrod);
-      error.add(p.rule.gauss_error);
+      sum.add(p.length);
+      error.add(p.error);
     }
-    // Each rule's weighted sum of 15 positive terms rounds within 16 u of its value; the
-    // compensated total within 2 u (and u more for the error sum itself).
+    // Each rule's weighted sum of at most 15 positive terms rounds within 16 u of its value;
+    // the compensated total within 2 u (and u more for the error sum itself).
     const double sums_rounding = 20 * kUnitRoundoff * sum.value();
     return std::pair{sum.value(), error.value() + integrand_rounding + sums_rounding};
   };
   double total = 0.0, error = 0.0;
   std::tie(total, error) = totals();
+  // The piece with the largest estimate is first extended from K7 to P15 (8 evaluations
+  // raise the degree of exactness from 11 to 23), then, if still the largest, halved; the
+  // halves of a piece that needed P15 start at P15.
   while (error > options.relative_tolerance * total) {
-    if (static_cast<int>(heap.size()) >= options.max_pieces) {
-      out.status = ArcLengthStatus::work_cap_reached;
-      break;
-    }
     std::pop_heap(heap.begin(), heap.end(), by_error);
-    const Piece worst = heap.back();
-    heap.pop_back();
+    Piece& worst = heap.back();
+    if (!worst.extended) {
+      extend(speed, worst);
+      std::push_heap(heap.begin(), heap.end(), by_error);
+      std::tie(total, error) = totals();
+      continue;
+    }
     const double middle = worst.a + (worst.b - worst.a) / 2;
-    if (!(worst.a < middle && middle < worst.b)) {
-      // Two adjacent doubles: nothing left to halve; its estimate stays in the bound.
+    if (static_cast<int>(heap.size()) >= options.max_pieces || !(worst.a < middle && middle < worst.b)) {
+      // The cap, or two adjacent doubles with nothing left to halve: the estimates stay in
+      // the bound.
+      std::push_heap(heap.begin(), heap.end(), by_error);
       out.status = ArcLengthStatus::work_cap_reached;
-      heap.push_back(worst);
       break;
     }
-    heap.push_back({worst.a, middle, gauss_kronrod(speed, worst.a, middle)});
+    const double start = worst.a, end = worst.b;
+    worst = patterson15(speed, start, middle);
     std::push_heap(heap.begin(), heap.end(), by_error);
-    heap.push_back({middle, worst.b, gauss_kronrod(speed, middle, worst.b)});
+    heap.push_back(patterson15(speed, middle, end));
     std::push_heap(heap.begin(), heap.end(), by_error);
     std::tie(total, error) = totals();
   }
   std::sort(heap.begin(), heap.end(), [](const Piece& x, const Piece& y) { return x.a < y.a; });
+  out.pieces.reserve(heap.size());
   CompensatedSum sum;
   for (const Piece& p : heap) {
-    out.pieces.push_back({p.a, p.b, p.rule.kronrod});
-    sum.add(p.rule.kronrod);
+    out.pieces.push_back({p.a, p.b, p.length});
+    sum.add(p.length);
   }
   out.length = sum.value();
   out.error_bound = error;
@@ -247,6 +377,7 @@ template <class P>
 double invert(const BasicCurve<P>& curve, const ArcLength& measured, double target) {
   assert(target >= 0.0);
   if (measured.pieces.empty() || target <= 0.0) return measured.a;
+  if (target >= measured.length) return measured.b;  // the pieces' running sum may round below it
   // The piece where the cumulative length reaches the target.
   double before = 0.0;
   std::size_t index = 0;
@@ -262,7 +393,7 @@ double invert(const BasicCurve<P>& curve, const ArcLength& measured, double targ
   double t = piece.length > 0.0 ? piece.a + (piece.b - piece.a) * std::clamp(wanted / piece.length, 0.0, 1.0)
                                 : piece.a;
   for (int iteration = 0; iteration < 200; ++iteration) {
-    const double excess = (t > piece.a ? gauss_kronrod(speed, piece.a, t).kronrod : 0.0) - wanted;
+    const double excess = (t > piece.a ? patterson15(speed, piece.a, t).length : 0.0) - wanted;
     if (excess == 0.0) return t;
     if (excess < 0.0) {
       lo = t;
@@ -298,6 +429,7 @@ template <class P>
 double scaled_invert(const BasicCurve<P>& curve, const ArcLength& measured, double length) {
   const Normalised<P> unit = normalised(curve);
   ArcLength unit_measured = measured;
+  unit_measured.length *= unit.factor;
   for (LengthPiece& piece : unit_measured.pieces) piece.length *= unit.factor;
   return invert(unit.curve, unit_measured, length * unit.factor);
 }
