@@ -10,9 +10,12 @@ namespace bezier::core {
 
 namespace {
 
+/// An interval still to examine; an end flagged as a zero is an exact zero of p found where
+/// the parent was split (or at 0 or 1).
 struct Job {
   double a, b;
   int depth;
+  bool zero_a, zero_b;
 };
 
 /// A root of p in (a, b), where p(a) and p(b) have opposite signs: bisection on the sign of
@@ -40,13 +43,19 @@ BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth) {
   const int n = static_cast<int>(c.size()) - 1;
   if (n < 0) return out;
   const double e = 3.02 * std::max(n, 1) * kUnitRoundoff * bernstein::max_abs(c);
-  if (c.front() == 0.0) out.roots.push_back(0.0);
-  std::vector<Job> stack = {{0.0, 1.0, 0}};
+  const bool zero_0 = c.front() == 0.0, zero_1 = c.back() == 0.0;
+  if (zero_0) out.roots.push_back(0.0);
+  if (zero_1) out.roots.push_back(1.0);
+  std::vector<Job> stack = {{0.0, 1.0, 0, zero_0, zero_1}};
   while (!stack.empty()) {
     const Job job = stack.back();
     stack.pop_back();
     const Coeffs q = bernstein::portion<double>(c, job.a, job.b);
-    const auto [changes, any_small, all_small] = sign_changes(q, e);
+    // An end that is an exact zero is left out of the count: p = (t - end) r(t) there, and
+    // r's coefficients on the interval have the other coefficients' signs.
+    const std::size_t first = job.zero_a ? 1 : 0, end = job.zero_b ? q.size() - 1 : q.size();
+    const auto [changes, any_small, all_small] =
+        sign_changes(std::span<const double>(q).subspan(first, end > first ? end - first : 0), e);
     if (all_small) {
       // Zero to within rounding on the whole interval.
       out.isolated = false;
@@ -61,16 +70,18 @@ BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth) {
     }
     const double m = job.a + (job.b - job.a) / 2;
     if (job.depth >= max_depth || !(job.a < m && m < job.b)) {
-      if (changes > 0 || (pa < 0) != (pb < 0) || std::fabs(bernstein::evaluate(c, m)) <= e) {
+      const bool signs_differ = pa != 0.0 && pb != 0.0 && (pa < 0) != (pb < 0);
+      if (changes > 0 || signs_differ || std::fabs(bernstein::evaluate(c, m)) <= e) {
         out.isolated = false;
         out.roots.push_back(m);
       }
       continue;
     }
-    stack.push_back({m, job.b, job.depth + 1});
-    stack.push_back({job.a, m, job.depth + 1});
+    const bool zero_m = bernstein::evaluate(c, m) == 0.0;
+    if (zero_m) out.roots.push_back(m);
+    stack.push_back({m, job.b, job.depth + 1, zero_m, job.zero_b});
+    stack.push_back({job.a, m, job.depth + 1, job.zero_a, zero_m});
   }
-  if (c.back() == 0.0) out.roots.push_back(1.0);
   // Roots reported at the depth limit (a root on a split point, a cluster) are polished by
   // Newton's method, kept only while |p| decreases and the step stays tiny.
   std::vector<double> derivative(static_cast<std::size_t>(std::max(n, 1)), 0.0);
@@ -91,16 +102,27 @@ BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth) {
     }
   }
   std::sort(out.roots.begin(), out.roots.end());
-  // The same root may come from two neighbouring intervals (a root on a split point): keep
-  // the one where |p| is smallest (an exact zero wins).
+  // Where p stays within e of zero (a multiple root, a cluster, a root where p rounds to a
+  // tiny nonzero value at a split point) several points a little apart may have been
+  // reported, each with a computed |p| <= e, so a true |p| <= 2e. Near a multiple root |p|
+  // is no larger between two such points, so its computed value at their midpoint is at most
+  // 3e: consecutive points with that are one flat stretch, as are points closer than
+  // 2^-30. A stretch is one root, the point where |p| is smallest (an exact zero wins).
   std::vector<double> unique;
+  double last = 0.0;  // the point before r, whether kept or not
   for (const double r : out.roots) {
-    if (!unique.empty() && r - unique.back() <= 0x1p-30) {
-      if (std::fabs(bernstein::evaluate(c, r)) < std::fabs(bernstein::evaluate(c, unique.back())))
-        unique.back() = r;
-      continue;
+    if (!unique.empty()) {
+      const bool flat = std::fabs(bernstein::evaluate(c, last + (r - last) / 2)) <= 3 * e;
+      if (flat || r - last <= 0x1p-30) {
+        if (std::fabs(bernstein::evaluate(c, r)) < std::fabs(bernstein::evaluate(c, unique.back())))
+          unique.back() = r;
+        if (flat && r != last) out.isolated = false;
+        last = r;
+        continue;
+      }
     }
     unique.push_back(r);
+    last = r;
   }
   out.roots = std::move(unique);
   return out;

@@ -33,10 +33,11 @@ int sign_of(double v) noexcept {
 }
 
 /// u cut into monotone pieces at its turning points: the roots of u' where u' changes sign.
-/// A root of even multiplicity is no turning point; at an end where the derivative vanishes
-/// (P0 = P1, say) bernstein_roots reports its double root a few 1e-8 inside the interval,
-/// and cutting there would leave a sliver of a piece whose range only touches the other
-/// curve's (Collinear.OverlapReachesAFlatEnd).
+/// A root of even multiplicity is no turning point; a double root that is not an exact zero
+/// of u' (as at an end where P0 and P1 nearly coincide) is known only to about the square
+/// root of u''s rounding, and bernstein_roots may report it a few 1e-8 inside the interval:
+/// cutting there would leave a sliver of a piece whose range only touches the other curve's
+/// (as at the flat end in Collinear.OverlapReachesAFlatEnd).
 std::vector<MonotonePiece> monotone_pieces(const std::vector<double>& u) {
   const std::size_t n = u.size() - 1;
   std::vector<double> breaks = {0.0};

@@ -93,20 +93,81 @@ TEST(BernsteinRoots, ARootAtASplitPointIsFoundExactly) {
   const BernsteinRoots r = bernstein_roots(from_roots({0.5}, 3.0));
   ASSERT_EQ(r.roots.size(), 1u);
   EXPECT_EQ(r.roots[0], 0.5);
+  EXPECT_TRUE(r.isolated);
 }
 
-TEST(BernsteinRoots, ADoubleRootIsFoundWithinTheSquareRootOfTheRounding) {
-  // (t - 0.3)^2 (t - 0.8): near 0.3, |p| stays below its rounding bound over a width of
-  // about the square root of the rounding, so the root is known only to that width; every
-  // root reported there lies within it, and the simple root is found to full precision.
-  const BernsteinRoots r = bernstein_roots(from_roots({0.3, 0.3, 0.8}));
+TEST(BernsteinRoots, AnExactZeroAtASplitPointIsOneIsolatedRoot) {
+  // Antisymmetric coefficients (c_i = -c_(n-i)) make p(1 - t) = -p(t), and de Casteljau at
+  // 1/2 keeps the symmetry exactly (each average of x and -y is minus that of -x and y), so
+  // p(1/2) evaluates to exactly zero. With roots near 1/3 and 2/3 too, [0, 1] has three sign
+  // changes and is split at 1/2: the zero there is a root, reported once and exactly, and the
+  // halves leave it out of their counts, so every root is isolated.
+  std::vector<double> c = from_roots({1.0 / 3, 0.5, 2.0 / 3}, 6.0);
+  for (std::size_t i = 0; i < c.size() / 2; ++i) c[c.size() - 1 - i] = -c[i];
+  const BernsteinRoots r = bernstein_roots(c);
+  ASSERT_EQ(r.roots.size(), 3u);
+  EXPECT_TRUE(r.isolated);
+  EXPECT_EQ(r.roots[1], 0.5);
+  EXPECT_NEAR(r.roots[0], 1.0 / 3, 1e-14);
+  EXPECT_NEAR(r.roots[2], 2.0 / 3, 1e-14);
+}
+
+/// The rounding bound of bernstein_roots for c: 3.02 n u max|c_i|.
+double rounding_bound(const std::vector<double>& c) {
+  double max_c = 0.0;
+  for (const double v : c) max_c = std::max(max_c, std::fabs(v));
+  return 3.02 * static_cast<double>(c.size() - 1) * 0x1p-53 * max_c;
+}
+
+TEST(BernsteinRoots, ADoubleRootIsReportedOnceWithinTheSquareRootOfTheRounding) {
+  // (t - 0.3)^2 (t - 0.8): near 0.3, |p| stays below its rounding bound e over a stretch of
+  // about sqrt(e / |p''|) each side (|p''(0.3)| = 2 |0.3 - 0.8| = 1), so the root is known
+  // only to that width: one root there, within it, and isolated = false; the simple root
+  // to full precision.
+  const std::vector<double> c = from_roots({0.3, 0.3, 0.8});
+  const BernsteinRoots r = bernstein_roots(c);
   EXPECT_FALSE(r.isolated);
-  ASSERT_FALSE(r.roots.empty());
-  for (const double t : r.roots) {
-    EXPECT_TRUE(std::fabs(t - 0.3) < 1e-7 || std::fabs(t - 0.8) < 1e-14) << t;
+  ASSERT_EQ(r.roots.size(), 2u);
+  EXPECT_NEAR(r.roots[0], 0.3, 4 * std::sqrt(rounding_bound(c) / 1.0));
+  EXPECT_NEAR(r.roots[1], 0.8, 1e-14);
+}
+
+TEST(BernsteinRoots, DoubleAndTripleRootsAnywhereAreReportedOnce) {
+  // (t - r)^m (t - s) with s 0.4 away, for r across (0, 1): two roots, the multiple one
+  // within a few times (m! e / |p^(m)(r)|)^(1/m) = (e / |r - s|)^(1/m) of r, where |p| stays
+  // within the rounding bound e.
+  for (int i = 1; i < 100; ++i) {
+    for (const int m : {2, 3}) {
+      const double r = i / 100.0 + 1e-4 / 3;
+      const double s = r < 0.5 ? r + 0.4 : r - 0.4;
+      std::vector<double> roots(static_cast<std::size_t>(m), r);
+      roots.push_back(s);
+      const std::vector<double> c = from_roots(roots);
+      const BernsteinRoots found = bernstein_roots(c);
+      ASSERT_EQ(found.roots.size(), 2u) << "r = " << r << ", multiplicity " << m;
+      EXPECT_FALSE(found.isolated);
+      const double multiple = r < s ? found.roots[0] : found.roots[1];
+      const double simple = r < s ? found.roots[1] : found.roots[0];
+      EXPECT_NEAR(multiple, r, 4 * std::pow(rounding_bound(c) / 0.4, 1.0 / m)) << "multiplicity " << m;
+      EXPECT_NEAR(simple, s, 1e-14);
+    }
   }
-  EXPECT_NEAR(r.roots.front(), 0.3, 1e-7);
-  EXPECT_NEAR(r.roots.back(), 0.8, 1e-14);
+}
+
+TEST(BernsteinRoots, AMultipleRootThatIsAnExactZeroIsReportedExactly) {
+  // (t - 1/2)^3 = ((t - (1 - t)) / 2)^3 = (-1/8, 1/8, -1/8, 1/8) in Bernstein form (here
+  // times 8): zero exactly at 1/2, and flat around it. One root, exactly 1/2, and not
+  // isolated (a triple root).
+  const BernsteinRoots triple = bernstein_roots(std::vector<double>{-1.0, 1.0, -1.0, 1.0});
+  EXPECT_EQ(triple.roots, (std::vector<double>{0.5}));
+  EXPECT_FALSE(triple.isolated);
+  // (t - 0.3)(1 - t)^2: the double root at 1 is an exact zero (the last coefficient is 0).
+  const std::vector<double> c = from_roots({0.3, 1.0, 1.0});
+  ASSERT_EQ(c.back(), 0.0);
+  const BernsteinRoots end = bernstein_roots(c);
+  ASSERT_EQ(end.roots.size(), 2u);
+  EXPECT_NEAR(end.roots[0], 0.3, 1e-14);
+  EXPECT_EQ(end.roots[1], 1.0);
 }
 
 TEST(BernsteinRoots, TheZeroPolynomialIsNotIsolated) {

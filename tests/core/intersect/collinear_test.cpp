@@ -72,8 +72,8 @@ TEST(Collinear, PointAtAnEndIsAnExactRoot) {
 // Two curves on the line y = −x, f from (1, −1) to
 // (−1/2, 1/2) with P1 = P2 = P3 (f'(1) = 0) and g from (−1/2, 1/2) to (0, 0). g lies on f:
 // the overlap is t in [t0, 1] (f(t0) = (0, 0): f(t) = P0 + (1 − (1 − t)^3)(P3 − P0), so
-// 1 − t0 = 3^(-1/3)) with s in [0, 1] reversed, and f(1) = g(0) bit for bit. The double root of
-// f's derivative at t = 1 is found only to about 5e-8 inside; cutting f there would stop the
+// 1 − t0 = 3^(-1/3)) with s in [0, 1] reversed, and f(1) = g(0) bit for bit. f's derivative
+// has a double root at t = 1, flat around it; cutting f a little inside would stop the
 // overlap short of t = 1 with stray zero-width contacts beside it, none holding (1, 0).
 // The answer: the one overlap, ending exactly at (1, 0), and nothing else, in both orders.
 TEST(Collinear, OverlapReachesAFlatEnd) {
