@@ -7,8 +7,10 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -16,6 +18,7 @@
 
 #include "core/base/curve.hpp"
 #include "core/base/point.hpp"
+#include "core/bernstein/bernstein1d.hpp"
 #include "tests/support/exact.hpp"
 #include "tests/support/mulberry32.hpp"
 
@@ -89,6 +92,25 @@ using BernsteinPoly = std::vector<Rational>;
 /// p(t) exactly, for p given by its double Bernstein coefficients c on [0, 1].
 [[nodiscard]] inline Rational exact_bernstein_value(const std::vector<double>& c, const Rational& t) {
   return exact_evaluate(BernsteinPoly(c.begin(), c.end()), t);
+}
+
+/// Whether lo <= p(t) <= hi exactly, for p given by its double Bernstein coefficients c on
+/// [0, 1]. p(t) in doubles (de Casteljau: n rounds of convex combinations) is within
+/// 3.02 n u max|c_i| of the exact value, far below the margin 2^-40 max(1, |c_i|, |lo|, |hi|)
+/// for any degree used here (the margin also covers rounding lo and hi to doubles): a value
+/// farther than that from both edges decides, and only one within it takes the exact value
+/// in rationals.
+[[nodiscard]] inline bool exactly_in_band(const std::vector<double>& c, double t, const Rational& lo,
+                                          const Rational& hi) {
+  const double lo_d = lo.to_double(), hi_d = hi.to_double();
+  double scale = std::max({1.0, std::fabs(lo_d), std::fabs(hi_d)});
+  for (const double v : c) scale = std::max(scale, std::fabs(v));
+  const double margin = 0x1p-40 * scale;
+  const double near = core::bernstein::evaluate(std::span<const double>(c), t);
+  if (near < lo_d - margin || near > hi_d + margin) return false;
+  if (near > lo_d + margin && near < hi_d - margin) return true;
+  const Rational v = exact_bernstein_value(c, Rational(t));
+  return lo <= v && v <= hi;
 }
 
 /// The product of two polynomials in Bernstein form, exactly: degree m + n, coefficients

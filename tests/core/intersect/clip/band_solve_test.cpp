@@ -71,8 +71,7 @@ TEST(BandSolve, KeptIntervalContainsEveryParameterInTheBand) {
     }
     for (int j = 0; j <= 128; ++j) {
       const double t = j / 128.0;
-      const Rational v = exact_bernstein_value(p, Rational(t));
-      if (Rational(lo) <= v && v <= Rational(hi)) {
+      if (test::exactly_in_band(p, t, Rational(lo), Rational(hi))) {
         ASSERT_TRUE(kept.has_value()) << "trial " << trial << " t " << t;
         EXPECT_TRUE(kept->contains(t))
             << "trial " << trial << " t " << t << " kept " << kept->lo << " " << kept->hi;
