@@ -95,10 +95,7 @@ Reply bounds_route(const nlohmann::json& request, const Limits& limits) {
     if (!reader.ok()) return reader.refusal();
     return path_bounds_answer(*p);
   }
-  std::optional<std::variant<core::Curve, core::Curve3>> curve;
-  if (const auto* points = reader.required(request, "points", "")) {
-    curve = reader.curve(*points, "/points");
-  }
+  const auto curve = reader.request_curve(request);
   const auto interval = read_parameter_interval(reader, request);
   if (!reader.ok()) return reader.refusal();
   return std::visit([&](const auto& c) { return bounds_answer(c, *interval); }, *curve);

@@ -71,10 +71,7 @@ Reply evaluate_answer(const core::BasicCurve<P>& curve, const EvaluateRequest& r
 Reply evaluate_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
   reader.reject_unknown_fields(request, {"points", "t", "samples", "derivatives", "frame", "split"}, "");
-  std::optional<std::variant<core::Curve, core::Curve3>> curve;
-  if (const auto* points = reader.required(request, "points", "")) {
-    curve = reader.curve(*points, "/points");
-  }
+  const auto curve = reader.request_curve(request);
   EvaluateRequest parsed;
   parsed.ts = reader.parameters(request, /*required=*/true);
   if (const auto* d = RequestReader::optional(request, "derivatives")) {

@@ -41,6 +41,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -49,6 +50,7 @@
 #include "api/curve_or_path.hpp"
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
+#include "api/write_contacts.hpp"
 #include "api/write_json.hpp"
 #include "core/intersect/intersect.hpp"
 #include "core/path/path_intersections.hpp"
@@ -74,51 +76,49 @@ struct IntersectionsRequest {
   }
 };
 
-// Members in key order, so the text is what a document of the same answer would dump to.
-void write_intersection(JsonWriter& w, const core::Intersection& x) {
+/// An intersection {"kind", "point", "resolved", "s", "s_interval", "segments"?, "t",
+/// "t_interval"}, members in key order (the text a document of the same answer would dump
+/// to); `segments` for a path's.
+void write_intersection(JsonWriter& w, const core::Intersection& x,
+                        std::optional<SegmentPair> segments = std::nullopt) {
   w.begin_object();
   w.key("kind").value(core::to_string(x.kind));
   w.key("point").pair(x.point.x, x.point.y);
   w.key("resolved").value(x.resolved);
   w.key("s").value(x.s);
   w.key("s_interval").pair(x.s_interval.lo, x.s_interval.hi);
+  if (segments) write_segments(w, *segments);
   w.key("t").value(x.t);
   w.key("t_interval").pair(x.t_interval.lo, x.t_interval.hi);
   w.end_object();
 }
 
-/// "segments": [i, j].
-void write_segments(JsonWriter& w, std::size_t i, std::size_t j) {
-  w.key("segments").begin_array();
-  w.value(static_cast<std::int64_t>(i)).value(static_cast<std::int64_t>(j));
-  w.end_array();
-}
-
-/// A path's intersection: the members of write_intersection and `segments`.
 void write_path_intersection(JsonWriter& w, const path::PathContact& c) {
-  const core::Intersection& x = c.intersection;
-  w.begin_object();
-  w.key("kind").value(core::to_string(x.kind));
-  w.key("point").pair(x.point.x, x.point.y);
-  w.key("resolved").value(x.resolved);
-  w.key("s").value(x.s);
-  w.key("s_interval").pair(x.s_interval.lo, x.s_interval.hi);
-  write_segments(w, c.segment_t, c.segment_s);
-  w.key("t").value(x.t);
-  w.key("t_interval").pair(x.t_interval.lo, x.t_interval.hi);
-  w.end_object();
+  write_intersection(w, c.intersection, SegmentPair{c.segment_t, c.segment_s});
 }
 
-/// An overlap; `segments` (i, j) for a path's, nullptr for two curves'.
-void write_overlap(JsonWriter& w, bool reversed, double s_lo, double s_hi, double t_lo, double t_hi,
-                   const std::pair<std::size_t, std::size_t>* segments = nullptr) {
-  w.begin_object();
-  w.key("reversed").value(reversed);
-  w.key("s_interval").pair(s_lo, s_hi);
-  if (segments != nullptr) {
-    write_segments(w, segments->first, segments->second);
+/// `stats` of a two-curve search, or of a path's pair searches summed (`stats`), with
+/// `work` every unit spent; for paths the segment pairs searched, and for one path the
+/// Newton steps that certified its segments' own self-intersections.
+void write_search_stats(JsonWriter& w, const core::IntersectStats& stats,
+                        const core::IntersectOptions& options, std::int64_t work,
+                        std::optional<std::int64_t> candidate_pairs = std::nullopt,
+                        std::optional<std::int64_t> certification_iterations = std::nullopt) {
+  w.key("stats").begin_object();
+  w.key("candidate_boxes").value(stats.candidate_boxes);
+  if (candidate_pairs) w.key("candidate_pairs").value(*candidate_pairs);
+  if (certification_iterations) w.key("certification_iterations").value(*certification_iterations);
+  w.key("clipping_steps").value(stats.clipping_steps);
+  w.key("compensated_steps").value(stats.compensated_steps);
+  if (options.method == core::IntersectMethod::hybrid) {
+    w.key("fat_curve_degree").value(options.fat_curve_degree);
   }
-  w.key("t_interval").pair(t_lo, t_hi);
+  w.key("iterations").value(stats.iterations);
+  w.key("max_depth").value(stats.max_depth);
+  w.key("method").value(core::to_string(options.method));
+  w.key("newton_iterations").value(stats.newton_iterations);
+  w.key("subdivisions").value(stats.subdivisions);
+  w.key("work").value(work);
   w.end_object();
 }
 
@@ -150,23 +150,9 @@ Reply two_curves_answer(const IntersectionsRequest& request, const Limits& limit
   for (const core::Intersection& x : r.intersections) write_intersection(w, x);
   w.end_array();
   w.key("overlaps").begin_array();
-  for (const core::Overlap& o : r.overlaps) {
-    write_overlap(w, o.reversed, o.s_interval.lo, o.s_interval.hi, o.t_interval.lo, o.t_interval.hi);
-  }
+  for (const core::Overlap& o : r.overlaps) write_overlap(w, o, OverlapDirection::written);
   w.end_array();
-  const core::IntersectStats& stats = r.stats;
-  w.key("stats").begin_object();
-  w.key("candidate_boxes").value(stats.candidate_boxes);
-  w.key("clipping_steps").value(stats.clipping_steps);
-  w.key("compensated_steps").value(stats.compensated_steps);
-  if (stats.method == core::IntersectMethod::hybrid) w.key("fat_curve_degree").value(request.options.fat_curve_degree);
-  w.key("iterations").value(stats.iterations);
-  w.key("max_depth").value(stats.max_depth);
-  w.key("method").value(core::to_string(stats.method));
-  w.key("newton_iterations").value(stats.newton_iterations);
-  w.key("subdivisions").value(stats.subdivisions);
-  w.key("work").value(stats.work);
-  w.end_object();
+  write_search_stats(w, r.stats, request.options, r.stats.work);
   w.key("tolerance").value(request.options.tolerance);
   w.end_object();
   return json_reply(std::move(w));
@@ -188,10 +174,7 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   for (const core::Intersection& x : certified.intersections) write_intersection(w, x);
   w.end_array();
   w.key("overlaps").begin_array();
-  for (const core::Overlap& o : r.overlaps) {
-    write_overlap(w, o.reversed, o.s_interval.lo, o.s_interval.hi, o.t_interval.lo,
-                  o.t_interval.hi);
-  }
+  for (const core::Overlap& o : r.overlaps) write_overlap(w, o, OverlapDirection::written);
   w.end_array();
   w.key("stats").begin_object();
   w.key("certification_iterations").value(certified.steps);
@@ -218,31 +201,6 @@ Reply path_work_cap_reply(const path::PathSearchStats& stats, const Limits& limi
                            "boxes meet, and each segment's own search)");
 }
 
-/// `stats` of a path answer: the pair searches' sums, the pairs searched, every unit spent.
-void write_path_stats(JsonWriter& w, const IntersectionsRequest& request,
-                      const path::PathSearchStats& path_stats,
-                      const std::int64_t* certification_iterations) {
-  const core::IntersectStats& stats = path_stats.pairs;
-  w.key("stats").begin_object();
-  w.key("candidate_boxes").value(stats.candidate_boxes);
-  w.key("candidate_pairs").value(path_stats.candidate_pairs);
-  if (certification_iterations != nullptr) {
-    w.key("certification_iterations").value(*certification_iterations);
-  }
-  w.key("clipping_steps").value(stats.clipping_steps);
-  w.key("compensated_steps").value(stats.compensated_steps);
-  if (request.options.method == core::IntersectMethod::hybrid) {
-    w.key("fat_curve_degree").value(request.options.fat_curve_degree);
-  }
-  w.key("iterations").value(stats.iterations);
-  w.key("max_depth").value(stats.max_depth);
-  w.key("method").value(core::to_string(request.options.method));
-  w.key("newton_iterations").value(stats.newton_iterations);
-  w.key("subdivisions").value(stats.subdivisions);
-  w.key("work").value(path_stats.work);
-  w.end_object();
-}
-
 void sort_contacts(std::vector<path::PathContact>& contacts) {
   std::sort(contacts.begin(), contacts.end(),
             [](const path::PathContact& p, const path::PathContact& q) {
@@ -265,13 +223,9 @@ Reply two_paths_answer(const IntersectionsRequest& request, const Limits& limits
   for (const path::PathContact& c : r.intersections) write_path_intersection(w, c);
   w.end_array();
   w.key("overlaps").begin_array();
-  for (const path::PathOverlap& o : r.overlaps) {
-    const std::pair segments{o.segment_t, o.segment_s};
-    write_overlap(w, o.overlap.reversed, o.overlap.s_interval.lo, o.overlap.s_interval.hi,
-                  o.overlap.t_interval.lo, o.overlap.t_interval.hi, &segments);
-  }
+  write_path_overlaps(w, r.overlaps, {}, OverlapDirection::written);
   w.end_array();
-  write_path_stats(w, request, r.stats, nullptr);
+  write_search_stats(w, r.stats.pairs, request.options, r.stats.work, r.stats.candidate_pairs);
   w.key("tolerance").value(request.options.tolerance);
   w.end_object();
   return json_reply(std::move(w));
@@ -306,22 +260,10 @@ Reply one_path_answer(const IntersectionsRequest& request, const Limits& limits)
   for (const path::PathContact& c : contacts) write_path_intersection(w, c);
   w.end_array();
   w.key("overlaps").begin_array();
-  for (const path::PathOverlap& o : r.overlaps) {
-    const std::pair segments{o.segment_t, o.segment_s};
-    write_overlap(w, o.overlap.reversed, o.overlap.s_interval.lo, o.overlap.s_interval.hi,
-                  o.overlap.t_interval.lo, o.overlap.t_interval.hi, &segments);
-  }
-  for (const path::SegmentSelfIntersections& within : r.within_segments) {
-    const std::pair segments{within.segment, within.segment};
-    for (const core::Overlap& o : within.result.overlaps) {
-      write_overlap(w, o.reversed, o.s_interval.lo, o.s_interval.hi, o.t_interval.lo,
-                    o.t_interval.hi, &segments);
-    }
-  }
+  write_path_overlaps(w, r.overlaps, r.within_segments, OverlapDirection::written);
   w.end_array();
-  path::PathSearchStats stats = r.stats;
-  stats.work += certification_work;
-  write_path_stats(w, request, stats, &certification_steps);
+  write_search_stats(w, r.stats.pairs, request.options, r.stats.work + certification_work,
+                     r.stats.candidate_pairs, certification_steps);
   w.key("tolerance").value(request.options.tolerance);
   w.end_object();
   Reply reply = json_reply(std::move(w));

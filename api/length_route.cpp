@@ -45,6 +45,19 @@ std::string format_number(double v) {
   return out;
 }
 
+/// Refuses, each at its pointer, every length of `at_lengths` beyond `length` by more than
+/// its error bound: up to there a length is the end (a client may send back the length it
+/// was given). `what` names what was measured.
+void refuse_lengths_beyond(RequestReader& reader, const std::vector<double>& at_lengths, double length,
+                           double error_bound, const char* what) {
+  for (std::size_t i = 0; i < at_lengths.size(); ++i) {
+    if (at_lengths[i] > length + error_bound) {
+      reader.fail(pointer_to("/at_lengths", i),
+                  std::string("beyond the length of ") + what + " (" + format_number(length) + ")");
+    }
+  }
+}
+
 template <class P>
 Reply length_answer(RequestReader& reader, const core::BasicCurve<P>& curve,
                     ParameterInterval interval, const std::optional<std::vector<double>>& at_lengths) {
@@ -58,15 +71,7 @@ Reply length_answer(RequestReader& reader, const core::BasicCurve<P>& curve,
                              " for length " + format_number(measured.length) + ")");
   }
   if (at_lengths) {
-    // Lengths up to the total plus its error bound are the end: a client may send back the
-    // length it was given.
-    const double most = measured.length + measured.error_bound;
-    for (std::size_t i = 0; i < at_lengths->size(); ++i) {
-      if ((*at_lengths)[i] > most) {
-        reader.fail(pointer_to("/at_lengths", i),
-                    "beyond the length of the curve on the interval (" + format_number(measured.length) + ")");
-      }
-    }
+    refuse_lengths_beyond(reader, *at_lengths, measured.length, measured.error_bound, "the curve on the interval");
     if (!reader.ok()) return reader.refusal();
   }
   // {"degree", "error_bound", "interval", "length", "parameters"?: [{"length", "point", "t"}]},
@@ -131,12 +136,7 @@ Reply path_length_answer(RequestReader& reader, const path::Path& p,
     error_bound += measured.back().error_bound;
   }
   if (at_lengths) {
-    for (std::size_t i = 0; i < at_lengths->size(); ++i) {
-      if ((*at_lengths)[i] > total + error_bound) {
-        reader.fail(pointer_to("/at_lengths", i),
-                    "beyond the length of the path (" + format_number(total) + ")");
-      }
-    }
+    refuse_lengths_beyond(reader, *at_lengths, total, error_bound, "the path");
     if (!reader.ok()) return reader.refusal();
   }
   // {"error_bound", "length", "parameters"?: [{"length", "point", "segment", "t"}],
@@ -193,10 +193,7 @@ Reply length_route(const nlohmann::json& request, const Limits& limits) {
     if (!reader.ok()) return reader.refusal();
     return path_length_answer(reader, *p, at_lengths);
   }
-  std::optional<std::variant<core::Curve, core::Curve3>> curve;
-  if (const auto* points = reader.required(request, "points", "")) {
-    curve = reader.curve(*points, "/points");
-  }
+  const auto curve = reader.request_curve(request);
   const auto interval = read_parameter_interval(reader, request);
   const auto at_lengths = read_at_lengths(reader, request);
   if (!reader.ok()) return reader.refusal();

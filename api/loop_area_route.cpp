@@ -34,8 +34,10 @@
 #include <vector>
 
 #include "api/curve_or_path.hpp"
+#include "api/parameter_interval.hpp"
 #include "api/read_json.hpp"
 #include "api/routes.hpp"
+#include "api/write_contacts.hpp"
 #include "api/write_json.hpp"
 #include "core/curve/area.hpp"
 #include "core/curve/evaluate.hpp"
@@ -61,25 +63,10 @@ JsonWriter& write_optional(JsonWriter& w, const std::optional<double>& number) {
   return number ? w.value(*number) : w.null();
 }
 
-/// `interval`: exactly two numbers in [0, 1], strictly increasing.
-std::optional<std::pair<double, double>> read_interval(RequestReader& reader, const Json& value) {
-  const auto ts = reader.numbers(value, "/interval", 0.0, 1.0);
-  if (!ts) return std::nullopt;
-  if (ts->size() != 2) {
-    reader.fail("/interval",
-                "expected exactly 2 numbers [t1, t2], got " + std::to_string(ts->size()));
-    return std::nullopt;
-  }
-  if (!((*ts)[0] < (*ts)[1])) {
-    reader.fail("/interval", "must be increasing: interval[0] < interval[1]");
-    return std::nullopt;
-  }
-  return std::pair{(*ts)[0], (*ts)[1]};
-}
-
 // {"area", "chord": [B(t1), B(t2)], "closed", "closed_area", "degree", "interval",
 //  "signed_area"}, members in key order (the text a document of the answer would dump to).
-Reply interval_answer(const core::Curve& curve, double t1, double t2) {
+Reply interval_answer(const core::Curve& curve, ParameterInterval interval) {
+  const double t1 = interval.a, t2 = interval.b;
   const double signed_area = core::enclosed_area(curve, t1, t2);
   const auto closed = core::closed_area(curve);
   if (!std::isfinite(signed_area) || (closed && !std::isfinite(*closed))) {
@@ -132,12 +119,7 @@ Reply loops_answer(const core::Curve& curve, const Limits& limits) {
   }
   w.end_array();
   w.key("overlaps").begin_array();
-  for (const core::Overlap& o : result.overlaps) {
-    w.begin_object();
-    w.key("s_interval").pair(o.s_interval.lo, o.s_interval.hi);
-    w.key("t_interval").pair(o.t_interval.lo, o.t_interval.hi);
-    w.end_object();
-  }
+  for (const core::Overlap& o : result.overlaps) write_overlap(w, o, OverlapDirection::left_out);
   w.end_array();
   w.key("stats").begin_object();
   w.key("max_depth").value(result.stats.max_depth);
@@ -147,12 +129,6 @@ Reply loops_answer(const core::Curve& curve, const Limits& limits) {
   w.end_object();
   w.end_object();
   return json_reply(std::move(w));
-}
-
-void write_segments(JsonWriter& w, std::size_t i, std::size_t j) {
-  w.key("segments").begin_array();
-  w.value(static_cast<std::int64_t>(i)).value(static_cast<std::int64_t>(j));
-  w.end_array();
 }
 
 Reply path_loops_answer(const path::Path& p, const Limits& limits) {
@@ -190,29 +166,14 @@ Reply path_loops_answer(const path::Path& p, const Limits& limits) {
     w.key("area").value(loop.area);
     w.key("kind").value(core::to_string(loop.kind));
     write_point(w.key("point"), loop.point);
-    write_segments(w, loop.segment_t, loop.segment_s);
+    write_segments(w, SegmentPair{loop.segment_t, loop.segment_s});
     w.key("signed_area").value(loop.signed_area);
     w.key("t").pair(loop.t, loop.s);
     w.end_object();
   }
   w.end_array();
   w.key("overlaps").begin_array();
-  for (const path::PathOverlap& o : self.overlaps) {
-    w.begin_object();
-    w.key("s_interval").pair(o.overlap.s_interval.lo, o.overlap.s_interval.hi);
-    write_segments(w, o.segment_t, o.segment_s);
-    w.key("t_interval").pair(o.overlap.t_interval.lo, o.overlap.t_interval.hi);
-    w.end_object();
-  }
-  for (const path::SegmentSelfIntersections& within : self.within_segments) {
-    for (const core::Overlap& o : within.result.overlaps) {
-      w.begin_object();
-      w.key("s_interval").pair(o.s_interval.lo, o.s_interval.hi);
-      write_segments(w, within.segment, within.segment);
-      w.key("t_interval").pair(o.t_interval.lo, o.t_interval.hi);
-      w.end_object();
-    }
-  }
+  write_path_overlaps(w, self.overlaps, self.within_segments, OverlapDirection::left_out);
   w.end_array();
   w.key("segment_count").value(static_cast<std::int64_t>(p.segments.size()));
   w.key("stats").begin_object();
@@ -229,18 +190,18 @@ Reply loop_area_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
   reader.reject_unknown_fields(request, {"points", "path", "interval"}, "");
   std::optional<CurveOrPath> input = read_curve_or_path(reader, request, "");
-  std::optional<std::pair<double, double>> interval;
+  std::optional<ParameterInterval> interval;
   if (const auto* value = RequestReader::optional(request, "interval")) {
     if (has_path(request)) {
       reader.fail("/interval", "applies to a curve given by \"points\", not to a path");
     } else {
-      interval = read_interval(reader, *value);
+      interval = read_interval(reader, *value, IntervalEnds::apart);
     }
   }
   if (!reader.ok()) return reader.refusal();
   if (const auto* p = std::get_if<path::Path>(&*input)) return path_loops_answer(*p, limits);
   const core::Curve& curve = std::get<core::Curve>(*input);
-  if (interval) return interval_answer(curve, interval->first, interval->second);
+  if (interval) return interval_answer(curve, *interval);
   return loops_answer(curve, limits);
 }
 

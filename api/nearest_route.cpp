@@ -236,10 +236,7 @@ Reply nearest_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
   reader.reject_unknown_fields(request, {"points", "path", "targets", "interval"}, "");
   if (has_path(request)) return read_path_and_answer(reader, request);
-  std::optional<std::variant<core::Curve, core::Curve3>> curve;
-  if (const auto* points = reader.required(request, "points", "")) {
-    curve = reader.curve(*points, "/points");
-  }
+  const auto curve = reader.request_curve(request);
   const auto interval = read_parameter_interval(reader, request);
   if (!curve) {
     // The targets' dimension is the curve's: without a curve, only their presence is checked.

@@ -4,21 +4,28 @@
 
 namespace bezier::api {
 
-std::optional<ParameterInterval> read_parameter_interval(RequestReader& reader,
-                                                         const Json& request) {
-  const Json* value = RequestReader::optional(request, "interval");
-  if (value == nullptr) return ParameterInterval{};
-  const auto ts = reader.numbers(*value, "/interval", 0.0, 1.0);
+std::optional<ParameterInterval> read_interval(RequestReader& reader, const Json& value, IntervalEnds ends) {
+  const bool apart = ends == IntervalEnds::apart;
+  const auto ts = reader.numbers(value, "/interval", 0.0, 1.0);
   if (!ts) return std::nullopt;
   if (ts->size() != 2) {
-    reader.fail("/interval", "expected exactly 2 numbers [a, b], got " + std::to_string(ts->size()));
+    reader.fail("/interval", std::string("expected exactly 2 numbers ") + (apart ? "[t1, t2]" : "[a, b]") +
+                                 ", got " + std::to_string(ts->size()));
     return std::nullopt;
   }
-  if (!((*ts)[0] <= (*ts)[1])) {
-    reader.fail("/interval", "must not be reversed: interval[0] <= interval[1]");
+  const double a = (*ts)[0], b = (*ts)[1];
+  if (apart ? !(a < b) : !(a <= b)) {
+    reader.fail("/interval", apart ? "must be increasing: interval[0] < interval[1]"
+                                   : "must not be reversed: interval[0] <= interval[1]");
     return std::nullopt;
   }
-  return ParameterInterval{(*ts)[0], (*ts)[1]};
+  return ParameterInterval{a, b};
+}
+
+std::optional<ParameterInterval> read_parameter_interval(RequestReader& reader, const Json& request) {
+  const Json* value = RequestReader::optional(request, "interval");
+  if (value == nullptr) return ParameterInterval{};
+  return read_interval(reader, *value, IntervalEnds::may_meet);
 }
 
 }  // namespace bezier::api

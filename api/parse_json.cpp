@@ -75,71 +75,65 @@ class Parser {
     }
   }
 
-  bool object(nlohmann::json& out, int depth) {
+  /// Past the opening bracket of a container at nesting level `depth` and the blanks after
+  /// it; false (an error) when it nests deeper than kMaxJsonDepth.
+  bool open(int depth) {
     if (depth > kMaxJsonDepth) {
       too_deep_ = true;
       return fail("nesting no deeper than 128 levels");
     }
     ++pos_;
-    out = nlohmann::json::object();
     skip_space();
-    if (peek() == '}') {
-      ++pos_;
-      return true;
-    }
+    return true;
+  }
+
+  /// Past `c` when it comes next.
+  bool take(char c) noexcept {
+    if (peek() != c) return false;
+    ++pos_;
+    return true;
+  }
+
+  /// The members or elements of a container, each read by `read_item`, separated by ','
+  /// and ended by `close` (nothing but blanks before it in an empty container).
+  template <class ReadItem>
+  bool items(char close, const char* expected, const ReadItem& read_item) {
+    if (take(close)) return true;
     while (true) {
+      if (!read_item()) return false;
+      skip_space();
+      if (take(close)) return true;
+      if (!take(',')) return fail(expected);
+      skip_space();
+    }
+  }
+
+  bool object(nlohmann::json& out, int depth) {
+    if (!open(depth)) return false;
+    out = nlohmann::json::object();
+    return items('}', "',' or '}' in an object", [&] {
       if (peek() != '"') return fail("a member name (a string)");
       std::string key;
       if (!string(key)) return false;
       skip_space();
-      if (peek() != ':') return fail("':' after a member name");
-      ++pos_;
+      if (!take(':')) return fail("':' after a member name");
       skip_space();
       nlohmann::json member;
       if (!value(member, depth)) return false;
       out[std::move(key)] = std::move(member);
-      skip_space();
-      if (peek() == ',') {
-        ++pos_;
-        skip_space();
-        continue;
-      }
-      if (peek() == '}') {
-        ++pos_;
-        return true;
-      }
-      return fail("',' or '}' in an object");
-    }
+      return true;
+    });
   }
 
   bool array(nlohmann::json& out, int depth) {
-    if (depth > kMaxJsonDepth) {
-      too_deep_ = true;
-      return fail("nesting no deeper than 128 levels");
-    }
-    ++pos_;
+    if (!open(depth)) return false;
     out = nlohmann::json::array();
-    skip_space();
-    if (peek() == ']') {
-      ++pos_;
-      return true;
-    }
-    while (true) {
+    return items(']', "',' or ']' in an array", [&] {
       nlohmann::json element;
       if (!value(element, depth)) return false;
       out.push_back(std::move(element));
-      skip_space();
-      if (peek() == ',') {
-        ++pos_;
-        skip_space();
-        continue;
-      }
-      if (peek() == ']') {
-        ++pos_;
-        return true;
-      }
-      return fail("',' or ']' in an array");
-    }
+      return true;
+    });
   }
 
   static bool is_digit(char c) noexcept { return c >= '0' && c <= '9'; }

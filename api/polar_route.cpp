@@ -47,10 +47,7 @@ Reply polar_answer(const core::BasicCurve<P>& curve, const PolarRequest& request
 Reply polar_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
   reader.reject_unknown_fields(request, {"points", "t0", "t", "samples"}, "");
-  std::optional<std::variant<core::Curve, core::Curve3>> curve;
-  if (const auto* points = reader.required(request, "points", "")) {
-    curve = reader.curve(*points, "/points");
-  }
+  const auto curve = reader.request_curve(request);
   PolarRequest parsed;
   if (const auto* t0 = reader.required(request, "t0", "")) {
     parsed.first_polar = !t0->is_array();

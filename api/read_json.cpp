@@ -294,4 +294,10 @@ std::optional<std::variant<core::Curve, core::Curve3>> RequestReader::curve(
   return read_curve(value, pointer, 0);
 }
 
+std::optional<std::variant<core::Curve, core::Curve3>> RequestReader::request_curve(const Json& request) {
+  const Json* points = required(request, "points", "");
+  if (points == nullptr) return std::nullopt;
+  return curve(*points, "/points");
+}
+
 }  // namespace bezier::api

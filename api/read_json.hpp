@@ -84,6 +84,8 @@ class RequestReader {
   /// Control points of a planar or space curve: every point [x, y] or every point [x, y, z].
   std::optional<std::variant<core::Curve, core::Curve3>> curve(const Json& value,
                                                                const std::string& pointer);
+  /// The required member `points` of the request object: curve() at /points.
+  std::optional<std::variant<core::Curve, core::Curve3>> request_curve(const Json& request);
 
  private:
   /// Shared by curve2 and curve: dimension 0 means "2 or 3, all alike".
