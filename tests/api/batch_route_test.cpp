@@ -11,25 +11,15 @@
 #include <vector>
 
 #include "api/handler.hpp"
+#include "tests/support/batch_body.hpp"
 
 namespace bezier::api {
 namespace {
 
 using nlohmann::json;
 
-struct Item {
-  std::string path;
-  std::string body;  // JSON text, put into the batch as it is
-};
-
-std::string batch_body(const std::vector<Item>& items) {
-  std::string text = R"({"requests":[)";
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    if (i > 0) text += ',';
-    text += R"({"path":")" + items[i].path + R"(","body":)" + items[i].body + '}';
-  }
-  return text + "]}";
-}
+using Item = test::BatchItem;
+using test::batch_body;
 
 // The batch answer built from the answers of the items sent alone, byte for byte.
 std::string expected_answer(const std::vector<Item>& items, const Limits& limits) {

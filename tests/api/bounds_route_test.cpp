@@ -8,6 +8,7 @@
 #include <string>
 
 #include "api/handler.hpp"
+#include "tests/support/route_answers.hpp"
 #include "api/write_json.hpp"
 
 namespace bezier::api {
@@ -16,19 +17,7 @@ namespace {
 using nlohmann::json;
 
 json call(const std::string& body, int expected_status, const Limits& limits = {}) {
-  const Reply reply = handle("/bounds", body, limits);
-  EXPECT_EQ(reply.status, expected_status) << reply.body;
-  EXPECT_EQ(reply.content_type, expected_status == 200 ? "application/json" : "application/problem+json");
-  if (reply.status == 200) {
-    EXPECT_EQ(dump_json(json::parse(reply.body)), reply.body);
-  }
-  return json::parse(reply.body);
-}
-
-std::vector<std::string> pointers(const json& problem) {
-  std::vector<std::string> out;
-  for (const auto& e : problem.at("errors")) out.push_back(e.at("pointer"));
-  return out;
+  return test::route_answer("/bounds", body, expected_status, limits);
 }
 
 TEST(BoundsRoute, ArchBoxIsTheCurvesNotThePolygons) {
@@ -55,11 +44,11 @@ TEST(BoundsRoute, SpaceCurveAndInterval) {
 }
 
 TEST(BoundsRoute, Validation) {
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"interval":[1,0]})", 422)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1]],"interval":[1,0]})", 422)),
             std::vector<std::string>{"/interval"});
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0]]})", 422)), std::vector<std::string>{"/points"});
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,"a"]]})", 422)), std::vector<std::string>{"/points/1/1"});
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":0})", 422)), std::vector<std::string>{"/t"});
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0]]})", 422)), std::vector<std::string>{"/points"});
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,"a"]]})", 422)), std::vector<std::string>{"/points/1/1"});
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1]],"t":0})", 422)), std::vector<std::string>{"/t"});
   EXPECT_EQ(call("[1,2]", 400)["status"], 400);
 }
 

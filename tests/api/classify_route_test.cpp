@@ -7,6 +7,7 @@
 
 #include "api/write_json.hpp"
 #include "api/handler.hpp"
+#include "tests/support/route_answers.hpp"
 #include "core/cubic/classify.hpp"
 
 namespace bezier::api {
@@ -15,22 +16,7 @@ namespace {
 using nlohmann::json;
 
 json call(const std::string& body, int expected_status) {
-  const Reply reply = handle("/classify", body, Limits{});
-  EXPECT_EQ(reply.status, expected_status) << reply.body;
-  EXPECT_EQ(reply.content_type,
-            expected_status == 200 ? "application/json" : "application/problem+json");
-  // Answers are written as text (JsonWriter), members in key order: exactly the text the
-  // same answer as a document would dump to.
-  if (reply.status == 200) {
-    EXPECT_EQ(dump_json(json::parse(reply.body)), reply.body);
-  }
-  return json::parse(reply.body);
-}
-
-std::vector<std::string> pointers(const json& problem) {
-  std::vector<std::string> out;
-  for (const auto& e : problem.at("errors")) out.push_back(e.at("pointer"));
-  return out;
+  return test::route_answer("/classify", body, expected_status);
 }
 
 // The cubic with P0, P1, P2 = (0,0), (0,1), (1,1) has canonical point P3 itself; its
@@ -144,32 +130,32 @@ TEST(ClassifyRoute, NumbersRoundTrip) {
 
 TEST(ClassifyRoute, ValidationErrorsCarryPointers) {
   json r = call("{}", 422);
-  EXPECT_EQ(pointers(r), std::vector<std::string>{"/points"});
+  EXPECT_EQ(test::error_pointers(r), std::vector<std::string>{"/points"});
   r = call(R"({"points":"cubic"})", 422);
-  EXPECT_EQ(pointers(r), std::vector<std::string>{"/points"});
+  EXPECT_EQ(test::error_pointers(r), std::vector<std::string>{"/points"});
   // Not a cubic: the route says exactly 4 points, whatever the count.
   for (const std::string pts :
        {"[]", "[[0,0],[1,1]]", "[[0,0],[1,1],[2,0]]", "[[0,0],[1,1],[2,0],[3,3],[4,0]]"}) {
     r = call("{\"points\":" + pts + "}", 422);
-    EXPECT_EQ(pointers(r), std::vector<std::string>{"/points"}) << pts;
+    EXPECT_EQ(test::error_pointers(r), std::vector<std::string>{"/points"}) << pts;
     EXPECT_NE(r["errors"][0]["message"].get<std::string>().find("exactly 4"), std::string::npos);
   }
   // Space points: classification is planar.
   r = call(R"({"points":[[0,0,0],[1,1,1],[2,0,2],[3,3,3]]})", 422);
-  EXPECT_EQ(pointers(r),
+  EXPECT_EQ(test::error_pointers(r),
             (std::vector<std::string>{"/points/0", "/points/1", "/points/2", "/points/3"}));
   // A ragged point and a string coordinate, both reported.
   r = call(R"({"points":[[0,0],[1],[2,"0"],[3,1]]})", 422);
-  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points/1", "/points/2/1"}));
+  EXPECT_EQ(test::error_pointers(r), (std::vector<std::string>{"/points/1", "/points/2/1"}));
   // A number beyond double range.
   r = call(R"({"points":[[0,0],[1,1],[2,0],[3,1e999]]})", 422);
-  EXPECT_EQ(pointers(r), std::vector<std::string>{"/points/3/1"});
+  EXPECT_EQ(test::error_pointers(r), std::vector<std::string>{"/points/3/1"});
   // Null coordinates are not numbers.
   r = call(R"({"points":[[0,0],[1,1],[2,0],[null,3]]})", 422);
-  EXPECT_EQ(pointers(r), std::vector<std::string>{"/points/3/0"});
+  EXPECT_EQ(test::error_pointers(r), std::vector<std::string>{"/points/3/0"});
   // Unknown fields are rejected next to the other problems, all reported at once.
   r = call(R"({"points":[[0,0],[1,1],[2,0]],"t":0.5})", 422);
-  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/t", "/points"}));
+  EXPECT_EQ(test::error_pointers(r), (std::vector<std::string>{"/t", "/points"}));
   EXPECT_EQ(r["status"], 422);
 }
 

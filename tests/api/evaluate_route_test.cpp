@@ -5,6 +5,7 @@
 
 #include "api/write_json.hpp"
 #include "api/handler.hpp"
+#include "tests/support/route_answers.hpp"
 #include "core/curve/derivative.hpp"
 #include "core/curve/evaluate.hpp"
 
@@ -14,22 +15,7 @@ namespace {
 using nlohmann::json;
 
 json call(const std::string& body, int expected_status, const Limits& limits = {}) {
-  const Reply reply = handle("/evaluate", body, limits);
-  EXPECT_EQ(reply.status, expected_status) << reply.body;
-  EXPECT_EQ(reply.content_type, expected_status == 200 ? "application/json" : "application/problem+json");
-  // Answers are written as text (JsonWriter), members in key order: exactly the text the
-  // same answer as a document would dump to.
-  if (reply.status == 200) {
-    EXPECT_EQ(dump_json(json::parse(reply.body)), reply.body);
-  }
-  return json::parse(reply.body);
-}
-
-// The pointers of a 422 answer, in order.
-std::vector<std::string> pointers(const json& problem) {
-  std::vector<std::string> out;
-  for (const auto& e : problem.at("errors")) out.push_back(e.at("pointer"));
-  return out;
+  return test::route_answer("/evaluate", body, expected_status, limits);
 }
 
 TEST(EvaluateRoute, PointsAtSeveralT) {
@@ -85,7 +71,7 @@ TEST(EvaluateRoute, ResultBeyondTheDoubleRangeNamesItsField) {
   // B(2) of the segment 0 -> 1e308 and B' of -1e308 -> 1e308 are 2e308: finite input, a
   // result JSON cannot carry. The detail names the first such number of the answer.
   json r = call(R"({"points":[[0,0],[1e308,0]],"t":[0.5,2]})", 422);
-  EXPECT_EQ(pointers(r), std::vector<std::string>{"/points"});
+  EXPECT_EQ(test::error_pointers(r), std::vector<std::string>{"/points"});
   EXPECT_EQ(r["detail"], "the result overflows the double range (answer field '/results/1/point/0')");
   r = call(R"({"points":[[-1e308,0],[1e308,0]],"t":0.5,"derivatives":1})", 422);
   EXPECT_EQ(r["detail"], "the result overflows the double range (answer field '/results/0/derivatives/0/0')");
@@ -122,34 +108,34 @@ TEST(EvaluateRoute, AnswersAreTheKernelsBitForBit) {
 
 TEST(EvaluateRoute, MissingFields) {
   const json r = call(R"({})", 422);
-  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points", "/t"}));
+  EXPECT_EQ(test::error_pointers(r), (std::vector<std::string>{"/points", "/t"}));
   EXPECT_EQ(r["type"], "urn:bezier-service:problem:validation");
 }
 
 TEST(EvaluateRoute, UnknownFieldIsRejected) {
   const json r = call(R"({"points":[[0,0],[1,1]],"t":0.5,"derivative":1})", 422);
-  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/derivative"}));
+  EXPECT_EQ(test::error_pointers(r), (std::vector<std::string>{"/derivative"}));
 }
 
 TEST(EvaluateRoute, WrongTypesPointAtTheField) {
   const json r = call(R"({"points":"abc","t":"x","derivatives":1.5,"split":[]})", 422);
-  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points", "/t", "/derivatives", "/split"}));
+  EXPECT_EQ(test::error_pointers(r), (std::vector<std::string>{"/points", "/t", "/derivatives", "/split"}));
 }
 
 TEST(EvaluateRoute, RaggedAndMixedDimensionPoints) {
   json r = call(R"({"points":[[0,0],[1],[2,2]],"t":0})", 422);
-  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points/1"}));
+  EXPECT_EQ(test::error_pointers(r), (std::vector<std::string>{"/points/1"}));
   r = call(R"({"points":[[0,0,0],[1,1],[2,2,2]],"t":0})", 422);
-  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points/1"}));
+  EXPECT_EQ(test::error_pointers(r), (std::vector<std::string>{"/points/1"}));
   r = call(R"({"points":[[0,0],[1,1,1,1]],"t":0})", 422);
-  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points/1"}));
+  EXPECT_EQ(test::error_pointers(r), (std::vector<std::string>{"/points/1"}));
   r = call(R"({"points":[[0,0],[true,1]],"t":0})", 422);
-  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points/1/0"}));
+  EXPECT_EQ(test::error_pointers(r), (std::vector<std::string>{"/points/1/0"}));
 }
 
 TEST(EvaluateRoute, TooFewPoints) {
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0]],"t":0})", 422)), (std::vector<std::string>{"/points"}));
-  EXPECT_EQ(pointers(call(R"({"points":[],"t":0})", 422)), (std::vector<std::string>{"/points"}));
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0]],"t":0})", 422)), (std::vector<std::string>{"/points"}));
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[],"t":0})", 422)), (std::vector<std::string>{"/points"}));
 }
 
 TEST(EvaluateRoute, DegreeLimit) {
@@ -157,20 +143,20 @@ TEST(EvaluateRoute, DegreeLimit) {
   limits.max_degree = 3;
   call(R"({"points":[[0,0],[1,1],[2,2],[3,3]],"t":0})", 200, limits);
   const json r = call(R"({"points":[[0,0],[1,1],[2,2],[3,3],[4,4]],"t":0})", 422, limits);
-  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points"}));
+  EXPECT_EQ(test::error_pointers(r), (std::vector<std::string>{"/points"}));
 }
 
 TEST(EvaluateRoute, TValueAndSampleLimits) {
   Limits limits;
   limits.max_t_values = 2;
   call(R"({"points":[[0,0],[1,1]],"t":[0,1]})", 200, limits);
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":[0,0.5,1]})", 422, limits)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1]],"t":[0,0.5,1]})", 422, limits)),
             (std::vector<std::string>{"/t"}));
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"samples":3})", 422, limits)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1]],"samples":3})", 422, limits)),
             (std::vector<std::string>{"/samples"}));
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"samples":0})", 422)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1]],"samples":0})", 422)),
             (std::vector<std::string>{"/samples"}));
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":[]})", 422)), (std::vector<std::string>{"/t"}));
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1]],"t":[]})", 422)), (std::vector<std::string>{"/t"}));
 }
 
 TEST(EvaluateRoute, AnswerPointsLimitCountsDerivatives) {
@@ -179,14 +165,14 @@ TEST(EvaluateRoute, AnswerPointsLimitCountsDerivatives) {
   // 2 t values x (2 derivatives + 1) = 6 points: at the limit.
   call(R"({"points":[[0,0],[1,1],[2,0]],"t":[0,1],"derivatives":2})", 200, limits);
   // 3 x 3 = 9 points: above it, reported at /derivatives.
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1],[2,0]],"t":[0,0.5,1],"derivatives":2})", 422, limits)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1],[2,0]],"t":[0,0.5,1],"derivatives":2})", 422, limits)),
             (std::vector<std::string>{"/derivatives"}));
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1],[2,0]],"samples":4,"derivatives":1})", 422, limits)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1],[2,0]],"samples":4,"derivatives":1})", 422, limits)),
             (std::vector<std::string>{"/derivatives"}));
 }
 
 TEST(EvaluateRoute, TAndSamplesAreExclusive) {
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":0,"samples":2})", 422)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1]],"t":0,"samples":2})", 422)),
             (std::vector<std::string>{"/samples"}));
 }
 
@@ -194,15 +180,15 @@ TEST(EvaluateRoute, DerivativeOrderLimit) {
   Limits limits;
   limits.max_degree = 4;
   call(R"({"points":[[0,0],[1,1]],"t":0,"derivatives":4})", 200, limits);
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":0,"derivatives":5})", 422, limits)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1]],"t":0,"derivatives":5})", 422, limits)),
             (std::vector<std::string>{"/derivatives"}));
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":0,"derivatives":-1})", 422)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1]],"t":0,"derivatives":-1})", 422)),
             (std::vector<std::string>{"/derivatives"}));
 }
 
 TEST(EvaluateRoute, NonFiniteNumbersPointAtTheField) {
   const json r = call(R"({"points":[[0,0],[1,-1e400]],"t":[0,1e999]})", 422);
-  EXPECT_EQ(pointers(r), (std::vector<std::string>{"/points/1/1", "/t/1"}));
+  EXPECT_EQ(test::error_pointers(r), (std::vector<std::string>{"/points/1/1", "/t/1"}));
 }
 
 TEST(EvaluateRoute, MalformedAndNonObjectBodiesAre400) {
@@ -217,7 +203,7 @@ TEST(EvaluateRoute, BodiesNestedTooDeeplyAre422) {
   const std::string deep = R"({"points":)" + std::string(200, '[') + std::string(200, ']') + R"(,"t":0})";
   const json r = call(deep, 422);
   EXPECT_EQ(r["type"], "urn:bezier-service:problem:validation");
-  EXPECT_EQ(pointers(r), (std::vector<std::string>{""}));
+  EXPECT_EQ(test::error_pointers(r), (std::vector<std::string>{""}));
 }
 
 TEST(EvaluateRoute, ErrorListIsBounded) {
@@ -275,7 +261,7 @@ TEST(EvaluateRoute, FrameInSpace) {
 }
 
 TEST(EvaluateRoute, FrameMustBeABoolean) {
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"t":0,"frame":1})", 422)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1]],"t":0,"frame":1})", 422)),
             std::vector<std::string>{"/frame"});
 }
 

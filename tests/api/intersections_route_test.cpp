@@ -12,6 +12,7 @@
 
 #include "api/write_json.hpp"
 #include "api/handler.hpp"
+#include "tests/support/route_answers.hpp"
 #include "core/intersect/intersect.hpp"
 #include "tests/core/intersect/python_bezier_fixtures.hpp"
 
@@ -20,32 +21,12 @@ namespace {
 
 using nlohmann::json;
 
-Reply post(const std::string& body, const Limits& limits = Limits{}) {
-  return handle("/intersections", body, limits);
-}
-
-json call(const std::string& body, int expected_status, const Limits& limits = Limits{}) {
-  const Reply reply = post(body, limits);
-  EXPECT_EQ(reply.status, expected_status) << reply.body;
-  EXPECT_EQ(reply.content_type,
-            expected_status == 200 ? "application/json" : "application/problem+json");
-  // Answers are written as text (JsonWriter), members in key order: exactly the text the
-  // same answer as a document would dump to.
-  if (reply.status == 200) {
-    EXPECT_EQ(dump_json(json::parse(reply.body)), reply.body);
-  }
-  return json::parse(reply.body);
+json call(const std::string& body, int expected_status, const Limits& limits = {}) {
+  return test::route_answer("/intersections", body, expected_status, limits);
 }
 
 std::vector<std::string> errors_of(const std::string& body, const Limits& limits = Limits{}) {
-  const json problem = call(body, 422, limits);
-  EXPECT_EQ(problem["type"], "urn:bezier-service:problem:validation");
-  std::vector<std::string> out;
-  for (const json& e : problem["errors"]) {
-    EXPECT_TRUE(e["message"].is_string());
-    out.push_back(e["pointer"]);
-  }
-  return out;
+  return test::error_pointers(call(body, 422, limits));
 }
 
 using Pointers = std::vector<std::string>;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "api/handler.hpp"
+#include "tests/support/route_answers.hpp"
 #include "api/write_json.hpp"
 
 namespace bezier::api {
@@ -16,20 +17,7 @@ namespace {
 using nlohmann::json;
 
 json call(const std::string& body, int expected_status, const Limits& limits = {}) {
-  const Reply reply = handle("/length", body, limits);
-  EXPECT_EQ(reply.status, expected_status) << reply.body;
-  EXPECT_EQ(reply.content_type, expected_status == 200 ? "application/json" : "application/problem+json");
-  if (reply.status == 200) {
-    EXPECT_EQ(dump_json(json::parse(reply.body)), reply.body);
-  }
-  return json::parse(reply.body);
-}
-
-std::vector<std::string> pointers(const json& problem) {
-  EXPECT_EQ(problem["type"], "urn:bezier-service:problem:validation");
-  std::vector<std::string> out;
-  for (const auto& e : problem.at("errors")) out.push_back(e.at("pointer"));
-  return out;
+  return test::route_answer("/length", body, expected_status, limits);
 }
 
 TEST(LengthRoute, LineAndCuspClosedForms) {
@@ -68,11 +56,11 @@ TEST(LengthRoute, ParametersAtLengths) {
 }
 
 TEST(LengthRoute, AtLengthsBeyondTheLengthOrNegative) {
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[3,4]],"at_lengths":[1,6,2]})", 422)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[3,4]],"at_lengths":[1,6,2]})", 422)),
             std::vector<std::string>{"/at_lengths/1"});
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[3,4]],"at_lengths":[-1]})", 422)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[3,4]],"at_lengths":[-1]})", 422)),
             std::vector<std::string>{"/at_lengths/0"});
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[3,4]],"at_lengths":[]})", 422)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[3,4]],"at_lengths":[]})", 422)),
             std::vector<std::string>{"/at_lengths"});
   // The length itself, sent back, is accepted.
   const json r = call(R"({"points":[[0,0],[1,1],[0,1],[1,0]]})", 200);
@@ -83,28 +71,28 @@ TEST(LengthRoute, AtLengthsBeyondTheLengthOrNegative) {
 
 TEST(LengthRoute, BadIntervals) {
   const std::string points = R"("points":[[0,0],[3,4]])";
-  EXPECT_EQ(pointers(call("{" + points + R"(,"interval":[0.5,0.25]})", 422)),
+  EXPECT_EQ(test::error_pointers(call("{" + points + R"(,"interval":[0.5,0.25]})", 422)),
             std::vector<std::string>{"/interval"});
-  EXPECT_EQ(pointers(call("{" + points + R"(,"interval":[-0.5,0.25]})", 422)),
+  EXPECT_EQ(test::error_pointers(call("{" + points + R"(,"interval":[-0.5,0.25]})", 422)),
             std::vector<std::string>{"/interval/0"});
-  EXPECT_EQ(pointers(call("{" + points + R"(,"interval":[0,1.5]})", 422)),
+  EXPECT_EQ(test::error_pointers(call("{" + points + R"(,"interval":[0,1.5]})", 422)),
             std::vector<std::string>{"/interval/1"});
-  EXPECT_EQ(pointers(call("{" + points + R"(,"interval":[0.5]})", 422)),
+  EXPECT_EQ(test::error_pointers(call("{" + points + R"(,"interval":[0.5]})", 422)),
             std::vector<std::string>{"/interval"});
-  EXPECT_EQ(pointers(call("{" + points + R"(,"interval":"all"})", 422)),
+  EXPECT_EQ(test::error_pointers(call("{" + points + R"(,"interval":"all"})", 422)),
             std::vector<std::string>{"/interval"});
 }
 
 TEST(LengthRoute, PointsAndFieldsValidated) {
-  EXPECT_EQ(pointers(call(R"({"interval":[0,1]})", 422)), std::vector<std::string>{"/points"});
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1,1]]})", 422)), std::vector<std::string>{"/points/1"});
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"lenght":1})", 422)), std::vector<std::string>{"/lenght"});
+  EXPECT_EQ(test::error_pointers(call(R"({"interval":[0,1]})", 422)), std::vector<std::string>{"/points"});
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1,1]]})", 422)), std::vector<std::string>{"/points/1"});
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1]],"lenght":1})", 422)), std::vector<std::string>{"/lenght"});
   Limits small;
   small.max_degree = 2;
   const json r = call(R"({"points":[[0,0],[1,1],[2,0],[3,3]]})", 422, small);
-  EXPECT_EQ(pointers(r), std::vector<std::string>{"/points"});
+  EXPECT_EQ(test::error_pointers(r), std::vector<std::string>{"/points"});
   small.max_t_values = 2;
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1,1]],"at_lengths":[0,0,0]})", 422, small)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1]],"at_lengths":[0,0,0]})", 422, small)),
             std::vector<std::string>{"/at_lengths"});
 }
 

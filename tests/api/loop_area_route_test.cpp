@@ -5,6 +5,7 @@
 
 #include "api/write_json.hpp"
 #include "api/handler.hpp"
+#include "tests/support/route_answers.hpp"
 #include "core/loop/loop_area.hpp"
 #include "core/self_intersect/work_cost.hpp"
 
@@ -19,33 +20,12 @@ Reply post(const std::string& body, const Limits& limits = Limits{}) {
   return handle("/loop-area", body, limits);
 }
 
-json call(const std::string& body, int expected_status, const Limits& limits = Limits{}) {
-  const Reply reply = post(body, limits);
-  EXPECT_EQ(reply.status, expected_status) << reply.body;
-  EXPECT_EQ(reply.content_type,
-            expected_status == 200 ? "application/json" : "application/problem+json");
-  // Answers are written as text (JsonWriter), members in key order: exactly the text the
-  // same answer as a document would dump to.
-  if (reply.status == 200) {
-    EXPECT_EQ(dump_json(json::parse(reply.body)), reply.body);
-  }
-  return json::parse(reply.body);
-}
-
-/// The pointers of a 422 validation problem, in order.
-std::vector<std::string> pointers(const json& problem) {
-  EXPECT_EQ(problem["status"], 422);
-  EXPECT_EQ(problem["type"], "urn:bezier-service:problem:validation");
-  std::vector<std::string> out;
-  for (const json& e : problem["errors"]) {
-    EXPECT_TRUE(e["message"].is_string());
-    out.push_back(e["pointer"]);
-  }
-  return out;
+json call(const std::string& body, int expected_status, const Limits& limits = {}) {
+  return test::route_answer("/loop-area", body, expected_status, limits);
 }
 
 std::vector<std::string> errors_of(const std::string& body, const Limits& limits = Limits{}) {
-  return pointers(call(body, 422, limits));
+  return test::error_pointers(call(body, 422, limits));
 }
 
 using Pointers = std::vector<std::string>;
@@ -163,11 +143,11 @@ TEST(LoopAreaRoute, ValidationErrorsPointAtTheField) {
 
 TEST(LoopAreaRoute, AreaBeyondTheDoubleRangeIsAProblemNotANull) {
   // A curve 1e200 wide has a finite description and an area of order 1e400.
-  EXPECT_EQ(pointers(call(
+  EXPECT_EQ(test::error_pointers(call(
                 R"({"points":[[0,0],[1e200,1e200],[0,1e200],[1e200,0]],"interval":[0,1]})", 422)),
             (Pointers{"/points"}));
   // A loop that size too (the cubic (0,0), (1,1), (-1/2,1), (1/2,0) crosses itself).
-  EXPECT_EQ(pointers(call(R"({"points":[[0,0],[1e200,1e200],[-5e199,1e200],[5e199,0]]})", 422)),
+  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1e200,1e200],[-5e199,1e200],[5e199,0]]})", 422)),
             (Pointers{"/points"}));
   // 1e150 is fine: areas of order 1e300.
   const json r =
@@ -179,7 +159,7 @@ TEST(LoopAreaRoute, DegreeAboveTheLimit) {
   Limits limits;
   limits.max_degree = 6;
   const json r = call(std::string(R"({"points":)") + kDegree7 + "}", 422, limits);
-  EXPECT_EQ(pointers(r), (Pointers{"/points"}));
+  EXPECT_EQ(test::error_pointers(r), (Pointers{"/points"}));
 }
 
 TEST(LoopAreaRoute, WorkCapIsA422Problem) {

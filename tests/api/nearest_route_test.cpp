@@ -8,6 +8,7 @@
 #include <string>
 
 #include "api/handler.hpp"
+#include "tests/support/route_answers.hpp"
 #include "api/write_json.hpp"
 
 namespace bezier::api {
@@ -16,19 +17,7 @@ namespace {
 using nlohmann::json;
 
 json call(const std::string& body, int expected_status, const Limits& limits = {}) {
-  const Reply reply = handle("/nearest", body, limits);
-  EXPECT_EQ(reply.status, expected_status) << reply.body;
-  EXPECT_EQ(reply.content_type, expected_status == 200 ? "application/json" : "application/problem+json");
-  if (reply.status == 200) {
-    EXPECT_EQ(dump_json(json::parse(reply.body)), reply.body);
-  }
-  return json::parse(reply.body);
-}
-
-std::vector<std::string> pointers(const json& problem) {
-  std::vector<std::string> out;
-  for (const auto& e : problem.at("errors")) out.push_back(e.at("pointer"));
-  return out;
+  return test::route_answer("/nearest", body, expected_status, limits);
 }
 
 TEST(NearestRoute, TiesAndGlobalMinimum) {
@@ -57,15 +46,15 @@ TEST(NearestRoute, SpaceCurveAndInterval) {
 
 TEST(NearestRoute, Validation) {
   const std::string points = R"("points":[[0,0],[1,1]])";
-  EXPECT_EQ(pointers(call("{" + points + "}", 422)), std::vector<std::string>{"/targets"});
-  EXPECT_EQ(pointers(call("{" + points + R"(,"targets":[]})", 422)), std::vector<std::string>{"/targets"});
-  EXPECT_EQ(pointers(call("{" + points + R"(,"targets":[[0,0,0]]})", 422)),
+  EXPECT_EQ(test::error_pointers(call("{" + points + "}", 422)), std::vector<std::string>{"/targets"});
+  EXPECT_EQ(test::error_pointers(call("{" + points + R"(,"targets":[]})", 422)), std::vector<std::string>{"/targets"});
+  EXPECT_EQ(test::error_pointers(call("{" + points + R"(,"targets":[[0,0,0]]})", 422)),
             std::vector<std::string>{"/targets/0"});
-  EXPECT_EQ(pointers(call("{" + points + R"(,"targets":[[0,0],[1,"x"]]})", 422)),
+  EXPECT_EQ(test::error_pointers(call("{" + points + R"(,"targets":[[0,0],[1,"x"]]})", 422)),
             std::vector<std::string>{"/targets/1/1"});
-  EXPECT_EQ(pointers(call("{" + points + R"(,"targets":[[0,0]],"interval":[0.75,0.5]})", 422)),
+  EXPECT_EQ(test::error_pointers(call("{" + points + R"(,"targets":[[0,0]],"interval":[0.75,0.5]})", 422)),
             std::vector<std::string>{"/interval"});
-  EXPECT_EQ(pointers(call(R"({"targets":[[0,0]]})", 422)), std::vector<std::string>{"/points"});
+  EXPECT_EQ(test::error_pointers(call(R"({"targets":[[0,0]]})", 422)), std::vector<std::string>{"/points"});
   Limits small;
   small.max_t_values = 1;
   const Reply many = handle("/nearest", "{" + points + R"(,"targets":[[0,0],[1,1]]})", small);

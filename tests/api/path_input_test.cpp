@@ -9,6 +9,7 @@
 #include <string>
 
 #include "api/handler.hpp"
+#include "tests/support/route_answers.hpp"
 #include "api/write_json.hpp"
 
 namespace bezier::api {
@@ -18,12 +19,7 @@ using nlohmann::json;
 
 json call(const std::string& route, const std::string& body, int expected_status,
           const Limits& limits = {}) {
-  const Reply reply = handle(route, body, limits);
-  EXPECT_EQ(reply.status, expected_status) << route << " " << body << "\n" << reply.body;
-  if (reply.status == 200) {
-    EXPECT_EQ(dump_json(json::parse(reply.body)), reply.body);
-  }
-  return json::parse(reply.body);
+  return test::route_answer(route, body, expected_status, limits);
 }
 
 /// The single error of a 422: its pointer and message.

@@ -3,6 +3,7 @@
 
 #include "api/write_json.hpp"
 #include "api/handler.hpp"
+#include "tests/support/route_answers.hpp"
 
 namespace bezier::api {
 namespace {
@@ -10,15 +11,7 @@ namespace {
 using nlohmann::json;
 
 json call(const std::string& body, int expected_status) {
-  const Reply reply = handle("/polar", body, Limits{});
-  EXPECT_EQ(reply.status, expected_status) << reply.body;
-  EXPECT_EQ(reply.content_type, expected_status == 200 ? "application/json" : "application/problem+json");
-  // Answers are written as text (JsonWriter), members in key order: exactly the text the
-  // same answer as a document would dump to.
-  if (reply.status == 200) {
-    EXPECT_EQ(dump_json(json::parse(reply.body)), reply.body);
-  }
-  return json::parse(reply.body);
+  return test::route_answer("/polar", body, expected_status);
 }
 
 TEST(PolarRoute, FirstPolarControlPointsAndCurvePoint) {

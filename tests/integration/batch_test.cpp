@@ -8,8 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "api/limits.hpp"
+#include "tests/support/batch_body.hpp"
 #include "tests/support/raw_http.hpp"
-#include "tests/support/service_process.hpp"
+#include "tests/support/service_suite.hpp"
 
 namespace bezier::test {
 namespace {
@@ -19,21 +20,14 @@ using nlohmann::json;
 constexpr int kMaxItems = 40;
 constexpr int kMaxBodyBytes = 65536;
 
-class BatchTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
+class BatchTest : public ServiceSuite<BatchTest> {
+ public:
+  static std::vector<std::string> service_args() {
     // The batch's work cap admits four items of work-capped routes at the default cap.
     const api::Limits defaults;
-    service_ = new ServiceProcess({"--max-batch-items", std::to_string(kMaxItems), "--max-body-bytes",
-                                   std::to_string(kMaxBodyBytes), "--max-batch-work",
-                                   std::to_string(4 * defaults.max_work)});
+    return {"--max-batch-items", std::to_string(kMaxItems), "--max-body-bytes", std::to_string(kMaxBodyBytes),
+            "--max-batch-work", std::to_string(4 * defaults.max_work)};
   }
-  static void TearDownTestSuite() {
-    delete service_;
-    service_ = nullptr;
-  }
-  static int port() { return service_->port(); }
-  static inline ServiceProcess* service_ = nullptr;
 };
 
 struct Answer {
@@ -55,19 +49,7 @@ Answer post(int port, const std::string& path, const std::string& body) {
   return answer;
 }
 
-struct Item {
-  std::string path;
-  std::string body;
-};
-
-std::string batch_body(const std::vector<Item>& items) {
-  std::string text = R"({"requests":[)";
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    if (i > 0) text += ',';
-    text += R"({"path":")" + items[i].path + R"(","body":)" + items[i].body + '}';
-  }
-  return text + "]}";
-}
+using Item = BatchItem;
 
 TEST_F(BatchTest, EveryItemIsTheRoutesHttpAnswerAloneByteForByte) {
   const std::vector<Item> items = {

@@ -25,7 +25,7 @@
 #include "core/intersect/result.hpp"
 #include "tests/contract/schema_violations.hpp"
 #include "tests/support/raw_http.hpp"
-#include "tests/support/service_process.hpp"
+#include "tests/support/service_suite.hpp"
 
 namespace bezier::test {
 namespace {
@@ -200,16 +200,10 @@ std::pair<int, std::string> response_example(const Operation& op, const std::str
   return {0, ""};
 }
 
-class ContractTest : public ::testing::Test {
- protected:
+class ContractTest : public ServiceSuite<ContractTest> {
+ public:
   // The service runs with its default limits: the spec's bounds are those defaults.
-  static void SetUpTestSuite() { service_ = new ServiceProcess(); }
-  static void TearDownTestSuite() {
-    delete service_;
-    service_ = nullptr;
-  }
-  static int port() { return service_->port(); }
-  static inline ServiceProcess* service_ = nullptr;
+  static std::vector<std::string> service_args() { return {}; }
 };
 
 TEST_F(ContractTest, TheServedSpecIsTheFile) {

@@ -10,7 +10,7 @@
 
 #include "tests/support/child_process.hpp"
 #include "tests/support/raw_http.hpp"
-#include "tests/support/service_process.hpp"
+#include "tests/support/service_suite.hpp"
 
 namespace bezier::test {
 namespace {
@@ -69,18 +69,11 @@ TEST(CorsOff, NoAnswerCarriesCorsHeaders) {
   }
 }
 
-class CorsListTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    service_ = new ServiceProcess(
-        {"--cors-origin", kAllowed, "--cors-origin", kAllowedWithPort, "--max-body-bytes", "8192"});
+class CorsListTest : public ServiceSuite<CorsListTest> {
+ public:
+  static std::vector<std::string> service_args() {
+    return {"--cors-origin", kAllowed, "--cors-origin", kAllowedWithPort, "--max-body-bytes", "8192"};
   }
-  static void TearDownTestSuite() {
-    delete service_;
-    service_ = nullptr;
-  }
-  static int port() { return service_->port(); }
-  static inline ServiceProcess* service_ = nullptr;
 };
 
 TEST_F(CorsListTest, APreflightFromAnAllowedOriginIsAnswered) {

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/raw_http.hpp"
-#include "tests/support/service_process.hpp"
+#include "tests/support/service_suite.hpp"
 
 namespace bezier::test {
 namespace {
@@ -21,19 +21,12 @@ std::string post(std::string_view path, std::string_view body, std::string_view 
   return post_request(path, body, extra_headers);
 }
 
-class EpollEngine : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    service_ = new ServiceProcess({"--http-engine", "epoll", "--io-threads", "2", "--threads", "2",
-                                   "--max-body-bytes", "100000", "--read-timeout", "1",
-                                   "--keep-alive-timeout", "2", "--keep-alive-max-requests", "5"});
+class EpollEngine : public ServiceSuite<EpollEngine> {
+ public:
+  static std::vector<std::string> service_args() {
+    return {"--http-engine", "epoll", "--io-threads", "2", "--threads", "2", "--max-body-bytes", "100000",
+            "--read-timeout", "1", "--keep-alive-timeout", "2", "--keep-alive-max-requests", "5"};
   }
-  static void TearDownTestSuite() {
-    delete service_;
-    service_ = nullptr;
-  }
-  static int port() { return service_->port(); }
-  static inline ServiceProcess* service_ = nullptr;
 };
 
 TEST_F(EpollEngine, PipelinedRequestsAreAnsweredInOrder) {

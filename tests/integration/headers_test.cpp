@@ -9,29 +9,24 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/raw_http.hpp"
-#include "tests/support/service_process.hpp"
+#include "tests/support/service_suite.hpp"
 
 namespace bezier::test {
 namespace {
 
-class SecurityHeadersTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { service_ = new ServiceProcess({"--max-body-bytes", "4096"}); }
-  static void TearDownTestSuite() {
-    delete service_;
-    service_ = nullptr;
-  }
+class SecurityHeadersTest : public ServiceSuite<SecurityHeadersTest> {
+ public:
+  static std::vector<std::string> service_args() { return {"--max-body-bytes", "4096"}; }
 
+ protected:
   static std::string get(const std::string& path) {
-    return raw_exchange(service_->port(), "GET " + path + " HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
+    return raw_exchange(port(), "GET " + path + " HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
   }
   static std::string post(const std::string& path, const std::string& type, const std::string& body) {
-    return raw_exchange(service_->port(), "POST " + path + " HTTP/1.1\r\nHost: x\r\nConnection: close\r\n" +
+    return raw_exchange(port(), "POST " + path + " HTTP/1.1\r\nHost: x\r\nConnection: close\r\n" +
                                               "Content-Type: " + type + "\r\nContent-Length: " +
                                               std::to_string(body.size()) + "\r\n\r\n" + body);
   }
-
-  static inline ServiceProcess* service_ = nullptr;
 };
 
 std::string status_line(const std::string& answer) { return answer.substr(0, answer.find("\r\n")); }
@@ -63,7 +58,7 @@ TEST_F(SecurityHeadersTest, EveryKindOfAnswerSaysNoSniff) {
       {"page", get("/")},
       {"script", get("/playground/app.js")},
       {"style", get("/playground/style.css")},
-      {"malformed request line", raw_exchange(service_->port(), "GARBAGE\r\n\r\n")},
+      {"malformed request line", raw_exchange(port(), "GARBAGE\r\n\r\n")},
   };
   const std::vector<std::string> statuses = {"200", "422", "400", "415", "413", "404", "405",
                                              "200", "200", "200", "200", "200", "200", "400"};
@@ -97,7 +92,7 @@ TEST_F(SecurityHeadersTest, PlaygroundPagesAdmitOnlyTheirOwnOriginAndNoFraming) 
 
 TEST_F(SecurityHeadersTest, HeadAnswersCarryTheSameHeaders) {
   const std::string answer =
-      raw_exchange(service_->port(), "HEAD / HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
+      raw_exchange(port(), "HEAD / HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
   EXPECT_EQ(header_of(answer, "X-Content-Type-Options").value, "nosniff");
   EXPECT_TRUE(header_of(answer, "Content-Security-Policy").found);
 }

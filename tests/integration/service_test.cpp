@@ -12,25 +12,20 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/child_process.hpp"
-#include "tests/support/service_process.hpp"
+#include "tests/support/service_suite.hpp"
 
 namespace bezier::test {
 namespace {
 
 using nlohmann::json;
 
-class ServiceTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    service_ = new ServiceProcess({"--threads", "2", "--max-body-bytes", "1000000"});
-  }
-  static void TearDownTestSuite() {
-    delete service_;
-    service_ = nullptr;
-  }
+class ServiceTest : public ServiceSuite<ServiceTest> {
+ public:
+  static std::vector<std::string> service_args() { return {"--threads", "2", "--max-body-bytes", "1000000"}; }
 
+ protected:
   static httplib::Client client() {
-    httplib::Client c("127.0.0.1", service_->port());
+    httplib::Client c("127.0.0.1", port());
     c.set_read_timeout(10, 0);
     return c;
   }
@@ -61,8 +56,6 @@ class ServiceTest : public ::testing::Test {
     EXPECT_TRUE(body.at("detail").is_string());
     return body;
   }
-
-  static inline ServiceProcess* service_ = nullptr;
 };
 
 TEST_F(ServiceTest, EvaluateAnswersExactDyadicValues) {
@@ -200,7 +193,7 @@ TEST_F(ServiceTest, RequestIdIsEchoedAndLogged) {
   std::string log;
   for (int i = 0; i < 500 && log.find("test-id-42") == std::string::npos; ++i) {
     usleep(10000);
-    log = service_->output();
+    log = service().output();
   }
   EXPECT_NE(log.find("GET /healthz 200"), std::string::npos);
   EXPECT_NE(log.find("id=test-id-42"), std::string::npos);
@@ -211,7 +204,7 @@ TEST_F(ServiceTest, IdleKeepAliveConnectionsBeyondThePoolDoNotStallOthers) {
   // connection after one request.
   std::vector<std::unique_ptr<httplib::Client>> idle;
   for (int i = 0; i < 20; ++i) {
-    auto c = std::make_unique<httplib::Client>("127.0.0.1", service_->port());
+    auto c = std::make_unique<httplib::Client>("127.0.0.1", port());
     c->set_keep_alive(true);
     ASSERT_TRUE(c->Get("/healthz"));
     idle.push_back(std::move(c));
