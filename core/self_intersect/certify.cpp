@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/intersect/intersect.hpp"
+#include "core/self_intersect/tuning.hpp"
 
 namespace bezier::core {
 
@@ -26,7 +27,7 @@ CertifiedPair certified_pair(const Curve& curve, const SelfIntersection& pair,
   x.point = pair.point;
   x.kind = pair.kind;
   x.resolved = false;
-  const double w = std::min(0x1p-20, (pair.s - pair.t) / 4);
+  const double w = std::min(self_intersect_tuning::kCertifyHalfWidth, (pair.s - pair.t) / 4);
   if (!(w > 0)) return {x, 0, 0, false};
   if (budget <= 0) return {x, 0, 0, true};
   IntersectOptions local = options;

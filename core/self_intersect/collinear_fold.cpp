@@ -4,6 +4,8 @@
 #include <cassert>
 #include <cmath>
 
+#include "core/self_intersect/tuning.hpp"
+
 namespace bezier::core {
 
 namespace {
@@ -27,9 +29,6 @@ struct SignRun {
   double hi;
   int sign;
 };
-
-// Intervals of x' narrower than this are left undecided: a root of x' lies there.
-constexpr double kNarrowest = 0x1p-40;
 
 /// Bisection for a sign change of f between lo (sign s_lo) and hi: stops when the midpoint
 /// is no longer strictly inside (adjacent doubles) or f vanishes.
@@ -108,7 +107,8 @@ CollinearOverlaps collinear_self_overlaps(std::span<const Point2> points,
       runs.push_back({node.lo, node.hi, positive ? 1 : -1});
       continue;
     }
-    if (node.hi - node.lo <= kNarrowest) continue;  // holds a root of x'
+    // Narrower than that: a root of x' lies in it.
+    if (node.hi - node.lo <= self_intersect_tuning::kNarrowestSignRun) continue;
     // Split the coefficients at 1/2: left gets the first entries of each round, the
     // working row ends as the right half.
     std::vector<double> left(node.c.size());

@@ -6,13 +6,13 @@
 #include <numbers>
 #include <vector>
 
+#include "core/self_intersect/tuning.hpp"
+
 namespace bezier::core {
 
 namespace {
 
-// Steps below this (in parameter units, t in [0, 1]) mean Newton has converged: it is a
-// few ulps of 1, and one more quadratic step then lands at rounding level.
-constexpr double kConvergedStep = 0x1p-50;
+using self_intersect_tuning::kConvergedStep;
 
 /// The jet from coordinate rows x, y (overwritten), count = n + 1 entries each. Rows of
 /// plain doubles rather than Point2 so that the inline buffers need no initialisation.
@@ -41,6 +41,35 @@ CurveJet jet_in(double* x, double* y, std::size_t count, double t) {
   jet.d1 = {dn * (x[1] - x[0]), dn * (y[1] - y[0])};
   jet.point = {s * x[0] + t * x[1], s * y[0] + t * y[1]};
   return jet;
+}
+
+/// What every iteration of both refinements starts from: the jets at u and v, F = B(v) -
+/// B(u) and |F|.
+struct PairJets {
+  CurveJet at_u;
+  CurveJet at_v;
+  Point2 f;
+  double residual;
+};
+
+[[gnu::always_inline]] inline PairJets pair_jets(std::span<const Point2> points, double u, double v) {
+  const CurveJet ju = curve_jet(points, u);
+  const CurveJet jv = curve_jet(points, v);
+  const Point2 f = jv.point - ju.point;
+  return {ju, jv, f, norm(f)};
+}
+
+/// The best iterate before the first: any residual beats it.
+PairRefinement no_iterate_yet() {
+  PairRefinement best;
+  best.residual = std::numeric_limits<double>::infinity();
+  return best;
+}
+
+/// Both refinements return, when they do not converge, the iterate with the smallest |F|
+/// (the later one on a tie).
+void keep_if_best(PairRefinement& best, double u, double v, double residual, int iteration) {
+  if (residual <= best.residual) best = {u, v, residual, false, iteration};
 }
 
 bool inside(double u, double v, const ParameterBox& box) {
@@ -79,15 +108,11 @@ CurveJet curve_jet(std::span<const Point2> points, double t) {
 
 PairRefinement refine_double_point(std::span<const Point2> points, double u0, double v0,
                                    ParameterBox box, double rounding, int max_iterations) {
-  PairRefinement best;
-  best.residual = std::numeric_limits<double>::infinity();
+  PairRefinement best = no_iterate_yet();
   double u = u0, v = v0;
   for (int it = 0; it <= max_iterations; ++it) {
-    const CurveJet ju = curve_jet(points, u);
-    const CurveJet jv = curve_jet(points, v);
-    const Point2 f = jv.point - ju.point;
-    const double residual = norm(f);
-    if (residual <= best.residual) best = {u, v, residual, false, it};
+    const auto [ju, jv, f, residual] = pair_jets(points, u, v);
+    keep_if_best(best, u, v, residual, it);
     if (residual == 0.0) return {u, v, 0.0, true, it};
     // -B'(u) du + B'(v) dv = -F, by Cramer's rule.
     const Point2 a = -ju.d1;
@@ -121,21 +146,17 @@ double double_point_uncertainty(std::span<const Point2> points, double u, double
 bool is_resolved_double_point(std::span<const Point2> points, double u, double v, double rounding,
                               bool closed) {
   return double_point_uncertainty(points, u, v, rounding) <
-         0x1p-10 * parameter_separation(u, v, closed);
+         self_intersect_tuning::kResolvedFraction * parameter_separation(u, v, closed);
 }
 
 PairRefinement refine_self_contact(std::span<const Point2> points, double u0, double v0,
                                    ParameterBox box, int max_iterations) {
-  PairRefinement best;
-  best.residual = std::numeric_limits<double>::infinity();
+  PairRefinement best = no_iterate_yet();
   double u = std::clamp(u0, box.u.lo, box.u.hi), v = std::clamp(v0, box.v.lo, box.v.hi);
   bool done = false;
   for (int it = 0; it <= max_iterations; ++it) {
-    const CurveJet ju = curve_jet(points, u);
-    const CurveJet jv = curve_jet(points, v);
-    const Point2 f = jv.point - ju.point;
-    const double residual = norm(f);
-    if (residual <= best.residual) best = {u, v, residual, false, it};
+    const auto [ju, jv, f, residual] = pair_jets(points, u, v);
+    keep_if_best(best, u, v, residual, it);
     if (done || residual == 0.0) {
       best.converged = true;
       best.iterations = it;

@@ -82,13 +82,9 @@ struct PairRefinement {
 }
 
 /// Whether a double point (u, v), u < v, is resolved: its uncertainty at rounding level
-/// `rounding` is below parameter_separation(u, v, closed) / 1024, so that rounding could not
-/// move it onto the diagonal (nor, on a closed curve, onto the seam's trivial pair (0, 1)).
-/// The linearised uncertainty underestimates how far the noise reaches near a cusp, where F
-/// grows only like (v - u)^3 along the anti-diagonal, so that noise "roots" there can have
-/// estimates within a small factor of v - u: hence the wide margin. Real loops of area 1e-12
-/// of their curve's size have v - u of order 1e-3 and estimates of order 1e-10, far inside
-/// it.
+/// `rounding` is below parameter_separation(u, v, closed) times kResolvedFraction (1/1024,
+/// tuning.hpp: why the margin is so wide), so that rounding could not move it onto the
+/// diagonal (nor, on a closed curve, onto the seam's trivial pair (0, 1)).
 [[nodiscard]] bool is_resolved_double_point(std::span<const Point2> points, double u, double v,
                                             double rounding, bool closed);
 

@@ -6,9 +6,14 @@
 #include <numbers>
 #include <optional>
 
+#include "core/self_intersect/tuning.hpp"
+
 namespace bezier::core {
 
 namespace {
+
+using self_intersect_tuning::kConeMargin;
+using self_intersect_tuning::kRootSlack;
 
 enum class BoxKind : std::uint8_t {
   diagonal,  ///< I = J
@@ -32,10 +37,6 @@ struct Cone {
   Point2 cw;
   Point2 ccw;
 };
-
-// Cone angles are compared with this margin (radians), so that rounding in the control
-// points cannot make two touching cones look disjoint.
-constexpr double kConeMargin = 1e-9;
 
 /// The smallest cone holding every non-zero vector, or nullopt when no open half-plane
 /// holds them all (or all are zero). Zero vectors (repeated control points) are skipped:
@@ -264,9 +265,8 @@ class Search {
     // An iteration evaluates the curve with its first two derivatives at both parameters,
     // about what halving the box's two pieces costs: charged as one box each.
     out_.stats.work += root.iterations;
-    constexpr double kSlack = 0x1p-50;
-    if (!root.converged || root.u < box.a - kSlack || root.u > box.b + kSlack ||
-        root.v < box.c - kSlack || root.v > box.d + kSlack) {
+    if (!root.converged || root.u < box.a - kRootSlack || root.u > box.b + kRootSlack ||
+        root.v < box.c - kRootSlack || root.v > box.d + kRootSlack) {
       return false;
     }
     // The box holds at most one pair and Newton found it, unless rounding could move it

@@ -20,6 +20,7 @@
 #include "core/intersect/working_curve.hpp"
 #include "core/self_intersect/refine.hpp"
 #include "core/self_intersect/search.hpp"
+#include "core/self_intersect/tuning.hpp"
 #include "core/self_intersect/work_cost.hpp"
 #include "core/curve/subdivide.hpp"
 
@@ -27,14 +28,7 @@ namespace bezier::core {
 
 namespace {
 
-// Pairs found twice (from neighbouring boxes) agree to a few ulps; distinct transversal
-// pairs this close in both parameters do not occur above the resolution of the search.
-constexpr double kMergeCrossings = 1e-10;
-// Tangential contacts are located less sharply (and from clusters of boxes).
-constexpr double kMergeContacts = 1e-7;
-// Sine of the angle between the tangents below which a pair counts as tangent: about
-// sqrt(u), the precision to which a double root's tangent directions can be matched.
-constexpr double kTangentSine = 1e-7;
+using namespace self_intersect_tuning;
 
 /// A candidate pair before clean-up.
 struct Candidate {
@@ -152,17 +146,18 @@ double exact_residual(const Curve& curve, double u, double v) {
 /// start, a few times its uncertainty: anything farther is another root, or none. An end
 /// parameter exactly 0 or 1 stays, and the other one takes the 1-D least-squares step.
 Candidate polished(Candidate c, const CurveFacts& facts) {
-  constexpr int kSteps = 6;
-  const double reach = std::min(
-      0x1p-20,
-      std::max(0x1p-40, 16.0 * double_point_uncertainty(facts.points, c.u, c.v, facts.rounding)));
+  const double reach =
+      std::min(kPolishReachMax,
+               std::max(kPolishReachMin,
+                        kPolishReachFactor *
+                            double_point_uncertainty(facts.points, c.u, c.v, facts.rounding)));
   const bool u_fixed = c.u == 0.0 || c.u == 1.0;
   const bool v_fixed = c.v == 0.0 || c.v == 1.0;
   if (u_fixed && v_fixed) return c;
   const double u0 = c.u, v0 = c.v;
   Point2 f = compensated_difference(facts.curve, c.u, c.v);
   double last_step = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < kSteps && !(f.x == 0.0 && f.y == 0.0); ++k) {
+  for (int k = 0; k < kPolishSteps && !(f.x == 0.0 && f.y == 0.0); ++k) {
     const Point2 tu = curve_jet(facts.points, c.u).d1, tv = curve_jet(facts.points, c.v).d1;
     double du = 0.0, dv = 0.0;
     if (u_fixed) {
@@ -195,7 +190,6 @@ Candidate polished(Candidate c, const CurveFacts& facts) {
 /// Either side of the end: a root a few ulps outside [0, 1] is such a loop in all but
 /// rounding; one that does not snap is a double point off the segment.
 Candidate snapped_to_ends(Candidate c, const CurveFacts& facts) {
-  constexpr double kNearEnd = 0x1p-20;
   const bool near_start = c.u != 0.0 && std::fabs(c.u) <= kNearEnd;
   const bool near_end = c.v != 1.0 && std::fabs(c.v - 1.0) <= kNearEnd;
   if (!near_start && !near_end) return c;
@@ -212,7 +206,7 @@ SelfIntersection finished_pair(const CurveFacts& facts, double u, double v, bool
   const CurveJet ju = curve_jet(facts.points, u);
   const CurveJet jv = curve_jet(facts.points, v);
   const double n = static_cast<double>(facts.points.size() - 1);
-  const double zero = 1e-12 * n * facts.scale;
+  const double zero = kZeroTangent * n * facts.scale;
   const double lu = norm(ju.d1), lv = norm(jv.d1);
   IntersectionKind kind = IntersectionKind::transversal;
   if (lu <= zero || lv <= zero) {
@@ -266,11 +260,6 @@ std::vector<SelfIntersection> clean_up(const std::vector<Candidate>& candidates,
   return pairs;
 }
 
-// Costs of the contact stage in units of the work budget (parameter boxes): a refinement
-// takes up to ~60 Newton steps, about what 8 boxes cost; 64 cluster comparisons one box.
-constexpr std::int64_t kRefinementWork = 8;
-constexpr std::int64_t kComparisonsPerWork = 64;
-
 /// Contact boxes grouped into clusters, and the work that took.
 struct Clusters {
   std::vector<ParameterBox> boxes;
@@ -288,7 +277,7 @@ std::optional<Clusters> cluster(std::vector<ParameterBox> boxes, std::int64_t bu
     const double w = std::max(b.u.width(), b.v.width());
     bool joined = false;
     for (auto it = clusters.rbegin(); it != clusters.rend(); ++it) {
-      if (++comparisons > budget * kComparisonsPerWork) return std::nullopt;
+      if (++comparisons > budget * kClusterComparisonsPerWork) return std::nullopt;
       if (b.v.lo <= it->v.hi + w && it->v.lo <= b.v.hi + w && b.u.lo <= it->u.hi + w) {
         *it = {{std::min(it->u.lo, b.u.lo), std::max(it->u.hi, b.u.hi)},
                {std::min(it->v.lo, b.v.lo), std::max(it->v.hi, b.v.hi)}};
@@ -298,7 +287,7 @@ std::optional<Clusters> cluster(std::vector<ParameterBox> boxes, std::int64_t bu
     }
     if (!joined) clusters.push_back(b);
   }
-  return Clusters{std::move(clusters), comparisons / kComparisonsPerWork};
+  return Clusters{std::move(clusters), comparisons / kClusterComparisonsPerWork};
 }
 
 /// What resolving the contact boxes gave, and cost.
@@ -329,11 +318,11 @@ ContactResolution resolve_contacts(const std::vector<ParameterBox>& boxes, const
   double width = 0.0;
   for (const ParameterBox& b : boxes) width = std::max({width, b.u.width(), b.v.width()});
   for (const ParameterBox& c : clusters->boxes) {
-    if (out.work + kRefinementWork > budget) {
+    if (out.work + kContactRefinementWork > budget) {
       out.work_cap_reached = true;
       break;
     }
-    out.work += kRefinementWork;
+    out.work += kContactRefinementWork;
     const ParameterBox region{{std::max(0.0, c.u.lo - width), std::min(1.0, c.u.hi + width)},
                               {std::max(0.0, c.v.lo - width), std::min(1.0, c.v.hi + width)}};
     const double u0 = 0.5 * (c.u.lo + c.u.hi), v0 = 0.5 * (c.v.lo + c.v.hi);
@@ -416,14 +405,15 @@ SelfIntersectionResult retracing_result(const CurveFacts& facts,
 /// an approximation of h (about 1e-10 off): an end of [0, 1] within 2^-30 of the level
 /// counts too (a root just outside, which the polish on B then settles).
 std::vector<double> level_set(const Coeffs& p, double u) {
-  constexpr double kEndSlack = 0x1p-30;
   std::vector<double> shifted(p.begin(), p.end());
   for (double& c : shifted) c -= u;
   std::vector<double> roots = bernstein_roots(shifted).roots;
-  if (std::fabs(shifted.front()) <= kEndSlack && (roots.empty() || roots.front() > kEndSlack)) {
+  if (std::fabs(shifted.front()) <= kLevelEndSlack &&
+      (roots.empty() || roots.front() > kLevelEndSlack)) {
     roots.insert(roots.begin(), 0.0);
   }
-  if (std::fabs(shifted.back()) <= kEndSlack && (roots.empty() || roots.back() < 1 - kEndSlack)) {
+  if (std::fabs(shifted.back()) <= kLevelEndSlack &&
+      (roots.empty() || roots.back() < 1 - kLevelEndSlack)) {
     roots.push_back(1.0);
   }
   return roots;

@@ -21,6 +21,12 @@ namespace bezier::core {
   return 24 + a * a / 2;
 }
 
+/// The contact stage, in parameter boxes: a refinement takes up to about 60 Newton steps,
+/// about what 8 boxes cost; 64 comparisons of contact boxes while clustering them cost one
+/// box.
+inline constexpr std::int64_t kContactRefinementWork = 8;
+inline constexpr std::int64_t kClusterComparisonsPerWork = 64;
+
 /// The parameter boxes a budget of `units` work units buys for a degree-n curve.
 [[nodiscard]] constexpr std::int64_t self_intersection_box_budget(std::int64_t units,
                                                                   int n) noexcept {
