@@ -109,6 +109,9 @@ Reply batch_route(const nlohmann::json& request, const Limits& limits, const Bat
   }
 
   std::string out = R"({"responses":[)";
+  // The answer's last bytes: the cap is on the whole answer, so the answers so far are
+  // measured as if closed after each item.
+  constexpr std::string_view kClosing = "]}";
   bool limit_reached = false;
   for (std::size_t i = 0; i < items.size(); ++i) {
     const Reply reply = item_answer(items[i], limits);
@@ -120,17 +123,18 @@ Reply batch_route(const nlohmann::json& request, const Limits& limits, const Bat
     out += R"(,"status":)";
     out += std::to_string(reply.status);
     out += '}';
-    if (out.size() > limits.max_batch_answer_bytes) {
+    if (out.size() + kClosing.size() > limits.max_batch_answer_bytes) {
       Reply refused = validation_reply(
           {{pointer_to("/requests", i), "the answers of items 0 to " + std::to_string(i) + " take " +
-                                            std::to_string(out.size()) + " bytes, above the batch's answer cap of " +
+                                            std::to_string(out.size() + kClosing.size()) +
+                                            " bytes, above the batch's answer cap of " +
                                             std::to_string(limits.max_batch_answer_bytes) +
                                             " bytes: send the items in smaller batches"}});
       refused.limit_reached = true;
       return refused;
     }
   }
-  out += "]}";
+  out += kClosing;
   Reply reply{200, "application/json", std::move(out)};
   reply.limit_reached = limit_reached;
   return reply;

@@ -213,19 +213,39 @@ TEST(BatchLimits, AnswersBeyondTheBatchAnswerCapRefuseTheBatchAtTheItemThatCross
   const std::vector<Item> items = classify_items(10);
   const Limits defaults;
   const std::string whole = expected_answer(items, defaults);
-  // The answer of k items is its first items' text: "{"responses":[" and k entries.
+  // The answer of k items: "{"responses":[", k entries and k - 1 commas, then "]}".
   const std::string item_text = R"({"body":)" + handle("/classify", items[0].body, defaults).body + R"(,"status":200})";
   const std::size_t prefix = std::string(R"({"responses":[)").size();
   ASSERT_EQ(whole.size(), prefix + 10 * item_text.size() + 9 + 2);
   Limits limits;
   // Room for exactly 6 items: the seventh crosses the cap.
-  limits.max_batch_answer_bytes = prefix + 6 * item_text.size() + 5;
+  limits.max_batch_answer_bytes = prefix + 6 * item_text.size() + 5 + 2;
   const Reply refused = handle("/batch", batch_body(items), limits);
   EXPECT_EQ(refused.status, 422);
   EXPECT_TRUE(refused.limit_reached);
   EXPECT_EQ(pointers_of(refused), std::vector<std::string>{"/requests/6"});
   limits.max_batch_answer_bytes = whole.size();
   EXPECT_EQ(handle("/batch", batch_body(items), limits).body, whole);
+}
+
+// The cap is on the whole answer, its closing "]}" included: an answer one or two bytes
+// longer than the cap is refused at its last item, not sent.
+TEST(BatchLimits, AnAnswerLongerThanTheCapByItsClosingBytesIsRefusedAtItsLastItem) {
+  const std::vector<Item> items = classify_items(3);
+  const std::string whole = expected_answer(items, Limits{});
+  Limits limits;
+  limits.max_batch_answer_bytes = whole.size();
+  const Reply sent = handle("/batch", batch_body(items), limits);
+  EXPECT_EQ(sent.status, 200);
+  EXPECT_EQ(sent.body, whole);
+  for (const std::size_t shorter : {1, 2}) {
+    limits.max_batch_answer_bytes = whole.size() - shorter;
+    const Reply refused = handle("/batch", batch_body(items), limits);
+    EXPECT_EQ(refused.status, 422) << shorter;
+    EXPECT_TRUE(refused.limit_reached);
+    EXPECT_EQ(pointers_of(refused), std::vector<std::string>{"/requests/2"}) << shorter;
+    EXPECT_NE(refused.body.find("take " + std::to_string(whole.size()) + " bytes"), std::string::npos) << refused.body;
+  }
 }
 
 TEST(BatchLimits, AMalformedBatchIsRefusedWholeWithPointersIntoIt) {
