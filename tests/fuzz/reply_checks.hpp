@@ -22,7 +22,8 @@ namespace bezier::fuzz {
 /// NaN or an infinity as null, so a null elsewhere (inside a point, a t list, an area) is a
 /// non-finite result that leaked into a 200 answer (finding F1). The nullable fields
 /// (api/openapi.yaml): canonical_point, cusp, self_intersection (/classify),
-/// closed_area (/loop-area).
+/// closed_area (/loop-area), and with `frame` curvature, normal, tangent (/evaluate,
+/// where B'(t) = 0).
 [[nodiscard]] inline bool has_undocumented_null(const nlohmann::json& value) {
   if (value.is_array()) {
     for (const auto& element : value) {
@@ -31,8 +32,8 @@ namespace bezier::fuzz {
   } else if (value.is_object()) {
     for (const auto& [key, member] : value.items()) {
       if (member.is_null()) {
-        constexpr std::array<std::string_view, 4> kNullable = {"canonical_point", "cusp",
-                                                               "self_intersection", "closed_area"};
+        constexpr std::array<std::string_view, 7> kNullable = {
+            "canonical_point", "cusp", "self_intersection", "closed_area", "curvature", "normal", "tangent"};
         bool nullable = false;
         for (const auto k : kNullable) nullable = nullable || key == k;
         if (!nullable) return true;
