@@ -2,6 +2,8 @@
 
 #include <string_view>
 
+#include "core/base/enum_names.hpp"
+
 namespace bezier::core {
 
 /// The type of a cubic Bézier segment on the closed interval t in [0,1]. The
@@ -46,49 +48,20 @@ enum class LoopBlinnClass {
 
 /// The API spelling: "point", "line", "quadratic", "cusp", "loop", "loop-at-start",
 /// "loop-at-end", "double-inflection", "single-inflection", "arch".
+inline constexpr EnumNames<CubicType::arch> kCubicTypeNames{
+    "point", "line", "quadratic", "cusp", "loop", "loop-at-start", "loop-at-end",
+    "double-inflection", "single-inflection", "arch"};
+
 [[nodiscard]] constexpr std::string_view name(CubicType type) noexcept {
-  switch (type) {
-    case CubicType::point:
-      return "point";
-    case CubicType::line:
-      return "line";
-    case CubicType::quadratic:
-      return "quadratic";
-    case CubicType::cusp:
-      return "cusp";
-    case CubicType::loop:
-      return "loop";
-    case CubicType::loop_at_start:
-      return "loop-at-start";
-    case CubicType::loop_at_end:
-      return "loop-at-end";
-    case CubicType::double_inflection:
-      return "double-inflection";
-    case CubicType::single_inflection:
-      return "single-inflection";
-    case CubicType::arch:
-      return "arch";
-  }
-  return "arch";
+  return kCubicTypeNames(type);
 }
 
 /// "serpentine", "cusp", "loop", "quadratic", "line", "point".
+inline constexpr EnumNames<LoopBlinnClass::point> kLoopBlinnClassNames{
+    "serpentine", "cusp", "loop", "quadratic", "line", "point"};
+
 [[nodiscard]] constexpr std::string_view name(LoopBlinnClass c) noexcept {
-  switch (c) {
-    case LoopBlinnClass::serpentine:
-      return "serpentine";
-    case LoopBlinnClass::cusp:
-      return "cusp";
-    case LoopBlinnClass::loop:
-      return "loop";
-    case LoopBlinnClass::quadratic:
-      return "quadratic";
-    case LoopBlinnClass::line:
-      return "line";
-    case LoopBlinnClass::point:
-      return "point";
-  }
-  return "point";
+  return kLoopBlinnClassNames(c);
 }
 
 }  // namespace bezier::core

@@ -4,6 +4,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/base/enum_names.hpp"
 #include "core/base/interval.hpp"
 #include "core/base/point.hpp"
 
@@ -19,16 +20,11 @@ enum class IntersectionKind {
 };
 
 /// "transversal", "tangent", "degenerate".
+inline constexpr EnumNames<IntersectionKind::degenerate> kIntersectionKindNames{
+    "transversal", "tangent", "degenerate"};
+
 [[nodiscard]] constexpr std::string_view to_string(IntersectionKind kind) noexcept {
-  switch (kind) {
-    case IntersectionKind::transversal:
-      return "transversal";
-    case IntersectionKind::tangent:
-      return "tangent";
-    case IntersectionKind::degenerate:
-      break;
-  }
-  return "degenerate";
+  return kIntersectionKindNames(kind);
 }
 
 /// One intersection (one contact: a tangency is reported once, never as a cloud).
@@ -68,16 +64,11 @@ enum class IntersectMethod {
 };
 
 /// "hybrid", "bezier-clipping", "subdivision" (the API spelling).
+inline constexpr EnumNames<IntersectMethod::subdivision> kIntersectMethodNames{
+    "hybrid", "bezier-clipping", "subdivision"};
+
 [[nodiscard]] constexpr std::string_view to_string(IntersectMethod method) noexcept {
-  switch (method) {
-    case IntersectMethod::hybrid:
-      return "hybrid";
-    case IntersectMethod::bezier_clipping:
-      return "bezier-clipping";
-    case IntersectMethod::subdivision:
-      break;
-  }
-  return "subdivision";
+  return kIntersectMethodNames(method);
 }
 
 /// The outcome of a call.

@@ -1,9 +1,11 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "core/base/curve.hpp"
+#include "core/base/enum_names.hpp"
 #include "core/base/point.hpp"
 #include "core/intersect/result.hpp"
 
@@ -28,16 +30,11 @@ enum class SelfIntersectionMethod {
 };
 
 /// The method's name as the API writes it: "closed-form-cubic", "subdivision", "collinear".
-[[nodiscard]] constexpr const char* method_name(SelfIntersectionMethod method) noexcept {
-  switch (method) {
-    case SelfIntersectionMethod::closed_form_cubic:
-      return "closed-form-cubic";
-    case SelfIntersectionMethod::collinear:
-      return "collinear";
-    case SelfIntersectionMethod::subdivision:
-      break;
-  }
-  return "subdivision";
+inline constexpr EnumNames<SelfIntersectionMethod::collinear> kSelfIntersectionMethodNames{
+    "closed-form-cubic", "subdivision", "collinear"};
+
+[[nodiscard]] constexpr std::string_view method_name(SelfIntersectionMethod method) noexcept {
+  return kSelfIntersectionMethodNames(method);
 }
 
 /// What the search cost; for benchmarks and the API's `stats`.
