@@ -48,6 +48,44 @@ void sort_results(std::vector<PathContact>& contacts, std::vector<PathOverlap>& 
   });
 }
 
+/// The start of both searches: the segment pairs whose control boxes meet (found by
+/// `sweep`), the stats with the method asked and the sweep's work, and the status that ends
+/// the search before any pair when not ok: tolerance_too_small (checked first, nothing is
+/// swept) or work_cap_reached (the sweep stopped at its limit).
+struct SweptPairs {
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  PathSearchStats stats;
+  core::IntersectStatus status = core::IntersectStatus::ok;
+
+  /// A result (PathIntersectionResult, PathSelfIntersectionResult) that starts from these
+  /// stats and status.
+  template <class Result>
+  [[nodiscard]] Result start() const {
+    Result out;
+    out.stats = stats;
+    out.status = status;
+    return out;
+  }
+};
+
+template <class Sweep>
+SweptPairs swept_pairs(const core::IntersectOptions& options, Sweep&& sweep) {
+  SweptPairs out;
+  out.stats.pairs.method = options.method;
+  if (!(options.tolerance >= core::kMinTolerance)) {
+    out.status = core::IntersectStatus::tolerance_too_small;
+    return out;
+  }
+  MeetingBoxes meeting = sweep();
+  out.stats.work = meeting.work;
+  if (!meeting.complete) {
+    out.status = core::IntersectStatus::work_cap_reached;
+    return out;
+  }
+  out.pairs = std::move(meeting.pairs);
+  return out;
+}
+
 /// The two-curve searches of the pairs (first segment of path_t, second of path_s) that
 /// shares one budget, adding what they find and cost to the lists and stats.
 core::IntersectStatus search_pairs(const Path& path_t, const Path& path_s,
@@ -79,19 +117,11 @@ core::IntersectStatus search_pairs(const Path& path_t, const Path& path_s,
 
 PathIntersectionResult intersect(const Path& a, const Path& b,
                                  const core::IntersectOptions& options) {
-  PathIntersectionResult out;
-  out.stats.pairs.method = options.method;
-  if (!(options.tolerance >= core::kMinTolerance)) {
-    out.status = core::IntersectStatus::tolerance_too_small;
-    return out;
-  }
-  const MeetingBoxes meeting = meeting_boxes(boxes_of(a), boxes_of(b), options.max_work);
-  out.stats.work = meeting.work;
-  if (!meeting.complete) {
-    out.status = core::IntersectStatus::work_cap_reached;
-    return out;
-  }
-  out.status = search_pairs(a, b, meeting.pairs, options, out.intersections, out.overlaps,
+  const SweptPairs swept = swept_pairs(
+      options, [&] { return meeting_boxes(boxes_of(a), boxes_of(b), options.max_work); });
+  auto out = swept.start<PathIntersectionResult>();
+  if (out.status != core::IntersectStatus::ok) return out;
+  out.status = search_pairs(a, b, swept.pairs, options, out.intersections, out.overlaps,
                             out.stats);
   out.intersections = without_joint_copies(std::move(out.intersections), a, b, false);
   sort_results(out.intersections, out.overlaps);
@@ -100,20 +130,12 @@ PathIntersectionResult intersect(const Path& a, const Path& b,
 
 PathSelfIntersectionResult self_intersections(const Path& path,
                                               const core::IntersectOptions& options) {
-  PathSelfIntersectionResult out;
-  out.stats.pairs.method = options.method;
-  if (!(options.tolerance >= core::kMinTolerance)) {
-    out.status = core::IntersectStatus::tolerance_too_small;
-    return out;
-  }
-  const MeetingBoxes meeting = meeting_boxes(boxes_of(path), options.max_work);
-  out.stats.work = meeting.work;
-  if (!meeting.complete) {
-    out.status = core::IntersectStatus::work_cap_reached;
-    return out;
-  }
+  const SweptPairs swept =
+      swept_pairs(options, [&] { return meeting_boxes(boxes_of(path), options.max_work); });
+  auto out = swept.start<PathSelfIntersectionResult>();
+  if (out.status != core::IntersectStatus::ok) return out;
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  for (const auto& [i, j] : meeting.pairs) {
+  for (const auto& [i, j] : swept.pairs) {
     if (!is_point(path.segments[i]) && !is_point(path.segments[j])) pairs.emplace_back(i, j);
   }
   out.status = search_pairs(path, path, pairs, options, out.intersections, out.overlaps,
