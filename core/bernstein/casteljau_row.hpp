@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/numeric/error_free.hpp"
+#include "core/numeric/tuning.hpp"
 #include "core/base/point.hpp"
 
 namespace bezier::core {
@@ -113,10 +114,10 @@ class CasteljauRow {
 
  private:
   using Entry = TwoTerm<P>;  ///< hi: the rounded value, lo: its rounding error
-  /// Rows up to degree 23 live inline: a heap allocation per evaluation cost more than the
-  /// compensated arithmetic of a cubic. The inline entries are left unconstructed (a
-  /// variant member is not initialised) so a short row does not zero all of them.
-  static constexpr std::size_t kInline = 24;
+  /// Rows of up to numeric_tuning::kInlineEntries entries live inline. The inline entries
+  /// are left unconstructed (a variant member is not initialised) so a short row does not
+  /// zero all of them.
+  static constexpr std::size_t kInline = numeric_tuning::kInlineEntries;
 
   [[nodiscard]] Entry* entries() noexcept { return on_heap_ ? heap_.data() : inline_; }
   [[nodiscard]] const Entry* entries() const noexcept { return on_heap_ ? heap_.data() : inline_; }

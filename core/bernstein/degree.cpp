@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "core/numeric/binomial.hpp"
+#include "core/bernstein/tuning.hpp"
 #include "core/numeric/linear_solve.hpp"
 
 namespace bezier::core {
@@ -39,9 +40,10 @@ constexpr DenseMatrix<long double> reduction_in_long_double(int n, int k) {
   return *x;
 }
 
-/// L2 reduction matrices for the fat curves (k = 2, 3) of every degree up to 20, computed
-/// at compile time, so that building a fat curve operator costs no elimination per request.
-constexpr int kTableDegree = 20;
+/// L2 reduction matrices for the fat curves (k = 2, 3) of every degree up to kTableDegree,
+/// computed at compile time, so that building a fat curve operator costs no elimination per
+/// request.
+using bernstein_tuning::kTableDegree;
 
 struct ReductionTable {
   // [k - 2][n] -> (k + 1) x (n + 1) entries, row-major.

@@ -8,6 +8,7 @@
 
 #include "core/numeric/binomial.hpp"
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/bernstein/tuning.hpp"
 #include "core/numeric/small_array.hpp"
 #include "core/numeric/fixed_extent.hpp"
 #include "core/numeric/power_of_two.hpp"
@@ -84,10 +85,12 @@ double top_forward_difference(std::span<const double, E> d) noexcept {
 }
 
 /// Whether monomial coefficient k = (ax_k, ay_k) of a degree-n curve is above the rounding
-/// of the conversion (C(n,k) 2^k u magnitude, with a safety factor of 64).
+/// of the conversion (C(n,k) 2^k u magnitude, with the safety factor
+/// bernstein_tuning::kSignificantCoefficientFactor).
 [[nodiscard]] inline bool significant_coefficient(int n, int k, double ax_k, double ay_k,
                                                   double magnitude) {
-  const double tol = 64 * binomial(n, k) * power_of_two(k) * kUnitRoundoff * magnitude;
+  const double tol = bernstein_tuning::kSignificantCoefficientFactor * binomial(n, k) *
+                     power_of_two(k) * kUnitRoundoff * magnitude;
   return bernstein::max2(std::fabs(ax_k), std::fabs(ay_k)) > tol;
 }
 

@@ -4,9 +4,12 @@
 #include <cmath>
 
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/bernstein/tuning.hpp"
 #include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
+
+using namespace bernstein_tuning;
 
 namespace {
 
@@ -21,7 +24,7 @@ struct Job {
 /// A root of p in (a, b), where p(a) and p(b) have opposite signs: bisection on the sign of
 /// p evaluated from the original coefficients, until the bracket is one ulp wide.
 double bisect(std::span<const double> c, double a, double b, double pa) {
-  for (int i = 0; i < 200; ++i) {
+  for (int i = 0; i < kBisectionSteps; ++i) {
     const double m = a + (b - a) / 2;
     if (!(a < m && m < b)) break;
     const double pm = bernstein::evaluate(c, m);
@@ -90,11 +93,11 @@ BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth) {
         n * (c[static_cast<std::size_t>(i) + 1] - c[static_cast<std::size_t>(i)]);
   for (double& r : out.roots) {
     if (n == 0) break;
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < kPolishSteps; ++i) {
       const double v = bernstein::evaluate(c, r), d = bernstein::evaluate(derivative, r);
       if (v == 0.0 || !(d != 0.0)) break;
       const double next = r - v / d;
-      if (!(next >= 0.0 && next <= 1.0) || std::fabs(next - r) > 0x1p-30 ||
+      if (!(next >= 0.0 && next <= 1.0) || std::fabs(next - r) > kPolishLargestStep ||
           !(std::fabs(bernstein::evaluate(c, next)) < std::fabs(v))) {
         break;
       }
@@ -107,13 +110,13 @@ BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth) {
   // reported, each with a computed |p| <= e, so a true |p| <= 2e. Near a multiple root |p|
   // is no larger between two such points, so its computed value at their midpoint is at most
   // 3e: consecutive points with that are one flat stretch, as are points closer than
-  // 2^-30. A stretch is one root, the point where |p| is smallest (an exact zero wins).
+  // kSameRoot. A stretch is one root, the point where |p| is smallest (an exact zero wins).
   std::vector<double> unique;
   double last = 0.0;  // the point before r, whether kept or not
   for (const double r : out.roots) {
     if (!unique.empty()) {
       const bool flat = std::fabs(bernstein::evaluate(c, last + (r - last) / 2)) <= 3 * e;
-      if (flat || r - last <= 0x1p-30) {
+      if (flat || r - last <= kSameRoot) {
         if (std::fabs(bernstein::evaluate(c, r)) < std::fabs(bernstein::evaluate(c, unique.back())))
           unique.back() = r;
         if (flat && r != last) out.isolated = false;

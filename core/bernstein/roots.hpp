@@ -4,6 +4,8 @@
 #include <span>
 #include <vector>
 
+#include "core/bernstein/tuning.hpp"
+
 namespace bezier::core {
 
 /// The roots in [0, 1] of a scalar polynomial in Bernstein form, ascending.
@@ -58,6 +60,7 @@ struct SignChanges {
 /// sqrt(2e / |p''|) of it, a root of multiplicity m within about (m! e / |p^(m)|)^(1/m));
 /// roots closer than 2^-30 are one root too. Bounded: at most 2^max_depth intervals, in
 /// practice a few per root.
-[[nodiscard]] BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth = 40);
+[[nodiscard]] BernsteinRoots bernstein_roots(std::span<const double> c,
+                                            int max_depth = bernstein_tuning::kRootDepth);
 
 }  // namespace bezier::core

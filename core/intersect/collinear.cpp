@@ -5,15 +5,15 @@
 
 #include "core/bernstein/roots.hpp"
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/bernstein/tuning.hpp"
 #include "core/intersect/overlap.hpp"
+#include "core/intersect/tuning.hpp"
 
 namespace bezier::core {
 
-namespace {
+using intersect_tuning::kTouch;
 
-/// Ranges closer than this (in units of the line's parameter, about 1 over the common
-/// extent) touch rather than overlap.
-constexpr double kTouch = 0x1p-40;
+namespace {
 
 struct MonotonePiece {
   double t0, t1;  ///< parameter interval
@@ -86,7 +86,7 @@ double invert(const std::vector<double>& u, const MonotonePiece& p, double w) {
   if (increasing ? w <= p.u0 : w >= p.u0) return p.t0;
   if (increasing ? w >= p.u1 : w <= p.u1) return p.t1;
   double a = p.t0, b = p.t1;
-  for (int i = 0; i < 200; ++i) {
+  for (int i = 0; i < bernstein_tuning::kBisectionSteps; ++i) {
     const double m = a + (b - a) / 2;
     if (!(a < m && m < b)) break;
     const double v = bernstein::evaluate(u, m);

@@ -13,36 +13,13 @@
 #include "core/bernstein/monomial.hpp"
 #include "core/numeric/linear_solve.hpp"
 #include "core/numeric/unit_roundoff.hpp"
+#include "core/intersect/tuning.hpp"
 
 namespace bezier::core {
 
-namespace {
+using namespace intersect_tuning;
 
-/// Overlaps shorter than this in t or s are left to the search (as in find_overlaps).
-constexpr double kShortestOverlap = 0x1p-30;
-/// How far the approximations of h, p and q (about 1e-10 of the curves' size for the
-/// degrees accepted) may put a point of u, h's parameter: the coverage test widens the
-/// ranges of p and q by this much.
-constexpr double kArcSlack = 0x1p-24;
-/// The candidate filters' relative tolerance: far above the rounding of monomial
-/// coefficients of degree 20 (2^20 u), far below any curve that is not improper.
-constexpr double kFilter = 1e-6;
-/// The division filter's tolerance (is_polynomial_in): a factor of a degree-20 curve whose
-/// power form cancels a lot leaves remainders near 2e-5 of its coefficients, generic curves
-/// of degree 20 at least 2e-4 (2000 random ones), of lower degree more.
-constexpr double kDivisionFilter = 1e-4;
-/// A factor whose interpolated h misses the curve by more than this (relative) is wrong,
-/// not inaccurate: it is not refined.
-constexpr double kRefineBelow = 1e-2;
-/// Factors of higher degree than this are not refined (a degree-20 curve through a factor
-/// of degree 10 would take ten interpolations per Gauss-Newton step).
-constexpr std::size_t kRefineDegree = 5;
-/// How well h(p) must fit the curve (relative to its magnitude) for a factorisation: a
-/// true factor, refined, fits to the interpolation's rounding (about 1e-12 at degree 20);
-/// a curve within 1e-6 of an improper one (say a wave 1e-6 wide on it) is not one.
-constexpr double kFactorFit = 1e-9;
-/// Changes of p or q (whose ranges are about [0, 1]) below this are rounding, not turns.
-constexpr double kTurnNoise = 0x1p-40;
+namespace {
 
 /// Monomial coefficients, constant first.
 using Monomial = std::vector<double>;
@@ -147,7 +124,8 @@ std::vector<ParamInterval> monotone_pieces(const Coeffs& c) {
     Coeffs d(c.size() - 1);
     for (std::size_t i = 0; i + 1 < c.size(); ++i) d[i] = c[i + 1] - c[i];
     for (const double r : bernstein_roots(d.span()).roots) {
-      if (r > 0x1p-40 && r < 1 - 0x1p-40 && r - breaks.back() > 0x1p-40) breaks.push_back(r);
+      if (r > kTurnSeparation && r < 1 - kTurnSeparation && r - breaks.back() > kTurnSeparation)
+        breaks.push_back(r);
     }
   }
   breaks.push_back(1.0);
@@ -201,8 +179,8 @@ std::optional<Factorisation> interpolated(const WorkingCurve& c, const Monomial&
   DenseMatrix<double> m(size, size), rhs(size, 2);
   for (std::size_t j = 0; j < size; ++j) {
     const double u = 0.5 * (1 - std::cos(std::numbers::pi * static_cast<double>(j) / d));
-    // The nodes' t to 2^-44: h interpolated through them is as good as p.
-    const double t = j == 0 ? t_lo : j + 1 == size ? t_hi : crossing(p, t_lo, t_hi, u, 0x1p-44);
+    const double t =
+        j == 0 ? t_lo : j + 1 == size ? t_hi : crossing(p, t_lo, t_hi, u, kNodeAccuracy);
     const double uj = j == 0 ? 0.0 : j + 1 == size ? 1.0 : value(p, t);
     for (int i = 0; i <= d; ++i)
       m(j, static_cast<std::size_t>(i)) =
@@ -255,7 +233,7 @@ Monomial refined_on_curve(const WorkingCurve& c, Monomial p, int d) {
   std::optional<std::vector<double>> r = misfit_of(p);
   if (!r) return p;
   double size = max_abs(*r);
-  for (int iteration = 0; iteration < 3 && size > kUnitRoundoff; ++iteration) {
+  for (int iteration = 0; iteration < kFactorRefineSteps && size > kUnitRoundoff; ++iteration) {
     std::vector<std::vector<double>> jacobian(unknowns);
     for (std::size_t u = 0; u < unknowns; ++u) {
       Monomial q = p;
@@ -319,7 +297,8 @@ Factorisation identity(const WorkingCurve& c) {
 }
 
 /// Newton's method for a turning point of c's parametrisation (c'(t) = 0 where the curve
-/// retraces itself): t minimising |c'|, from a guess close to it. Steps above 2^-20 end it.
+/// retraces itself): t minimising |c'|, from a guess close to it. Steps above
+/// kGaussNewtonLargestStep end it.
 double refine_turn(const WorkingCurve& c, double t) {
   const int n = c.degree;
   if (n < 2) return t;
@@ -333,7 +312,7 @@ double refine_turn(const WorkingCurve& c, double t) {
     d2x[i] = (n - 1) * (d1x[i + 1] - d1x[i]);
     d2y[i] = (n - 1) * (d1y[i + 1] - d1y[i]);
   }
-  return gauss_newton(t, 8, 0x1p-60, [&](double u) {
+  return gauss_newton(t, kArcNewtonSteps, kProjectionConverged, [&](double u) {
     return ResidualAndSlope{{value(d1x, u), value(d1y, u)}, {value(d2x, u), value(d2y, u)}};
   });
 }
@@ -343,8 +322,7 @@ double preimage(const Coeffs& c, ParamInterval piece, double u) {
   const double a = value(c, piece.lo), b = value(c, piece.hi);
   if (u <= bernstein::min2(a, b)) return a <= b ? piece.lo : piece.hi;
   if (u >= bernstein::max2(a, b)) return a <= b ? piece.hi : piece.lo;
-  // A starting point for Newton's method on the curves: 2^-32 is well inside its reach.
-  return crossing(c, piece.lo, piece.hi, u, 0x1p-32);
+  return crossing(c, piece.lo, piece.hi, u, kPreimageAccuracy);
 }
 
 /// True when f on [t0, t1] lies on g: at 2 (m + n) + 1 points of it, f's point projected
@@ -362,7 +340,8 @@ bool piece_lies_on(const WorkingCurve& f, const WorkingCurve& g, const Coeffs& p
       const PointAndTangent e = evaluate_with_tangent(g, s);
       return ResidualAndSlope{e.point - pt, e.tangent};
     };
-    const double s = gauss_newton(preimage(q, s_piece, value(p, t)), 8, 0x1p-50, on_g);
+    const double s =
+        gauss_newton(preimage(q, s_piece, value(p, t)), kArcNewtonSteps, kArcSampleConverged, on_g);
     const Point2 r = on_g(s).r;
     if (!(std::fabs(r.x) <= floor && std::fabs(r.y) <= floor)) return false;
   }
@@ -553,8 +532,8 @@ std::vector<OverlapFinding> find_arc_overlaps(const WorkingCurve& f, const Worki
     bool same = true;
     for (int i = 0; i <= 4 && same; ++i) {
       const double v = i / 4.0, u = alpha + beta * v;
-      same = std::fabs(value(b.hx, v) - value(a.hx, u)) <= kFilter * b_size &&
-             std::fabs(value(b.hy, v) - value(a.hy, u)) <= kFilter * b_size;
+      same = std::fabs(value(b.hx, v) - value(a.hx, u)) <= kArcFilter * b_size &&
+             std::fabs(value(b.hy, v) - value(a.hy, u)) <= kArcFilter * b_size;
     }
     if (!same) continue;
     auto arc = std::make_shared<CommonArc>();
@@ -600,9 +579,10 @@ bool covered_by_arc(const CommonArc& arc, ParamInterval t, ParamInterval s) {
 }
 
 bool on_arc_overlap(const CommonArc& arc, const Overlap& overlap, double t, double s) {
-  constexpr double kSlack = 0x1p-30;
-  if (t < overlap.t_interval.lo - kSlack || t > overlap.t_interval.hi + kSlack) return false;
-  if (s < overlap.s_interval.lo - kSlack || s > overlap.s_interval.hi + kSlack) return false;
+  if (t < overlap.t_interval.lo - kOnOverlapSlack || t > overlap.t_interval.hi + kOnOverlapSlack)
+    return false;
+  if (s < overlap.s_interval.lo - kOnOverlapSlack || s > overlap.s_interval.hi + kOnOverlapSlack)
+    return false;
   // p and q are as good as h's interpolation (at degree 20, q(0) can be 1.5e-9 for 0).
   return std::fabs(value(arc.p, t) - value(arc.q, s)) <= kArcSlack;
 }

@@ -4,15 +4,16 @@
 
 #include "core/numeric/error_free.hpp"
 #include "core/numeric/fixed_extent.hpp"
+#include "core/numeric/tuning.hpp"
 #include "core/base/multiversion.hpp"
 
 namespace bezier::core {
 
 namespace {
 
-/// Degrees evaluated in stack rows (SmallArray's inline size); higher ones take the
+/// Degrees evaluated in stack rows (numeric_tuning::kInlineEntries); higher ones take the
 /// double-double path.
-constexpr std::size_t kMaxDegree = 23;
+constexpr std::size_t kMaxDegree = numeric_tuning::kInlineEntries - 1;
 
 /// One compensated de Casteljau step: from the entries (b0, e0) and (b1, e1) of a level
 /// (plain de Casteljau values b and their carried errors e), with 1 - t = r_hi + r_lo, the

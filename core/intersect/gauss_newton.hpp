@@ -4,6 +4,7 @@
 
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/base/point.hpp"
+#include "core/intersect/tuning.hpp"
 
 namespace bezier::core {
 
@@ -14,9 +15,9 @@ struct ResidualAndSlope {
 };
 
 /// Gauss-Newton for min |r(t)|^2 from a close guess: t -= (r . r') / |r'|^2 until a step is
-/// at most `converged` or after `max_steps`. A refinement, not a search: a step above 2^-20
-/// (or a vanishing r') means r' nearly vanishes here, where the iteration is unreliable, and
-/// ends it with the t reached. Clamped to [0, 1].
+/// at most `converged` or after `max_steps`. A refinement, not a search: a step above
+/// intersect_tuning::kGaussNewtonLargestStep (or a vanishing r') means r' nearly vanishes
+/// here, where the iteration is unreliable, and ends it with the t reached. Clamped to [0, 1].
 template <class Residual>
 [[nodiscard]] double gauss_newton(double t, int max_steps, double converged, Residual&& at) {
   for (int i = 0; i < max_steps; ++i) {
@@ -24,7 +25,7 @@ template <class Residual>
     const double d2 = e.slope.x * e.slope.x + e.slope.y * e.slope.y;
     if (!(d2 > 0)) break;
     const double step = (e.r.x * e.slope.x + e.r.y * e.slope.y) / d2;
-    if (!std::isfinite(step) || std::fabs(step) > 0x1p-20) break;
+    if (!std::isfinite(step) || std::fabs(step) > intersect_tuning::kGaussNewtonLargestStep) break;
     t -= step;
     if (std::fabs(step) <= converged) break;
   }

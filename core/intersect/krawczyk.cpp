@@ -4,6 +4,7 @@
 
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/base/multiversion.hpp"
+#include "core/numeric/tuning.hpp"
 #include "core/numeric/unit_roundoff.hpp"
 #include "core/intersect/tuning.hpp"
 
@@ -14,8 +15,8 @@ namespace {
 /// Relative slack on every bound assembled from rounded sums and products of nonnegative
 /// terms (a handful of roundings of at most u each, far below 2^-40).
 constexpr double kSlack = 1 + 0x1p-40;
-/// The degree up to which curves are evaluated on the stack (SmallArray's inline size).
-constexpr std::size_t kMaxDegree = 23;
+/// The degree up to which curves are evaluated on the stack.
+constexpr std::size_t kMaxDegree = numeric_tuning::kInlineEntries - 1;
 using namespace intersect_tuning;
 
 using bernstein::max2;

@@ -12,13 +12,13 @@
 #include "core/bernstein/monomial.hpp"
 #include "core/numeric/power_of_two.hpp"
 #include "core/numeric/unit_roundoff.hpp"
+#include "core/intersect/tuning.hpp"
 
 namespace bezier::core {
 
-namespace {
+using namespace intersect_tuning;
 
-/// Overlaps shorter than this (in s) are left to the search.
-constexpr double kShortestOverlap = 0x1p-30;
+namespace {
 
 /// How far the monomial coefficient a_k of a curve may be from that of a curve whose
 /// control points are within overlap_tolerance(degree) of its own: C(n, k) 2^k times that
@@ -163,7 +163,7 @@ double coincidence_tolerance_bound(const WorkingCurve& f, const WorkingCurve& g)
 }
 
 double locate_on_curve(const WorkingCurve& f, PointDD p, double start, double converged) {
-  return gauss_newton(start, 30, converged, [&](double t) {
+  return gauss_newton(start, kProjectionSteps, converged, [&](double t) {
     const Residual r = residual(f, t, p);
     return ResidualAndSlope{{r.x, r.y}, evaluate_with_tangent(f, t).tangent};
   });
@@ -356,12 +356,12 @@ bool injective_on(std::span<const double> x, std::span<const double> y, double m
 
 bool covered_by_overlap(const WorkingCurve& f, const OverlapFinding& o, ParamInterval t,
                         ParamInterval s) {
-  constexpr double kSlack = 0x1p-40;
   const CoincidenceMap& map = o.map;
   const double p0 = map.alpha + map.beta * s.lo, p1 = map.alpha + map.beta * s.hi;
   const double lo = bernstein::min2(p0, p1), hi = bernstein::max2(p0, p1);
-  if (hi < t.lo - kSlack || lo > t.hi + kSlack) return false;
-  const double u_lo = bernstein::min2(t.lo, lo) - kSlack, u_hi = bernstein::max2(t.hi, hi) + kSlack;
+  if (hi < t.lo - kCoverSlack || lo > t.hi + kCoverSlack) return false;
+  const double u_lo = bernstein::min2(t.lo, lo) - kCoverSlack;
+  const double u_hi = bernstein::max2(t.hi, hi) + kCoverSlack;
   return injective_on(f.x, f.y, f.magnitude, u_lo, u_hi);
 }
 
@@ -376,15 +376,14 @@ CoincidenceTest coincide_at_precision(const WorkingCurve& f, const WorkingCurve&
   const Point2 fchord = {fp.x.back() - fp.x[0], fp.y.back() - fp.y[0]};
   const Point2 gchord = evaluate_with_tangent(g, s.hi).point - evaluate_with_tangent(g, s.lo).point;
   const bool forward = dot(fchord, gchord) >= 0;
-  constexpr int kSamples = 5;
   CoincidenceTest test;
-  for (int k = 0; k < kSamples; ++k) {
-    const double tau = static_cast<double>(k) / (kSamples - 1);
+  for (int k = 0; k < kCoincidenceSamples; ++k) {
+    const double tau = static_cast<double>(k) / (kCoincidenceSamples - 1);
     const double tk = t.lo + (t.hi - t.lo) * tau;
     const double guess = forward ? s.lo + (s.hi - s.lo) * tau : s.hi - (s.hi - s.lo) * tau;
     const PointDD p = evaluate_dd(f, tk);
     // locate_on_curve, counting its evaluations.
-    const double sk = gauss_newton(guess, 30, 0x1p-60, [&](double u) {
+    const double sk = gauss_newton(guess, kProjectionSteps, kProjectionConverged, [&](double u) {
       ++test.evaluations;
       const Residual r = residual(g, u, p);
       return ResidualAndSlope{{r.x, r.y}, evaluate_with_tangent(g, u).tangent};
@@ -399,9 +398,9 @@ CoincidenceTest coincide_at_precision(const WorkingCurve& f, const WorkingCurve&
 
 bool on_overlap(const OverlapFinding& o, double t, double s) {
   if (o.arc) return on_arc_overlap(*o.arc, o.overlap, t, s);
-  constexpr double kSlack = 0x1p-30;
-  if (s < o.overlap.s_interval.lo - kSlack || s > o.overlap.s_interval.hi + kSlack) return false;
-  return std::fabs(t - (o.map.alpha + o.map.beta * s)) <= kSlack;
+  const ParamInterval s_range = o.overlap.s_interval;
+  if (s < s_range.lo - kOnOverlapSlack || s > s_range.hi + kOnOverlapSlack) return false;
+  return std::fabs(t - (o.map.alpha + o.map.beta * s)) <= kOnOverlapSlack;
 }
 
 }  // namespace bezier::core

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/intersect/result.hpp"
+#include "core/intersect/tuning.hpp"
 #include "core/intersect/working_curve.hpp"
 
 namespace bezier::core {
@@ -110,9 +111,11 @@ struct CoincidenceTest {
 
 /// Solves f(t) = p for t near `start` (Gauss-Newton on |f(t) - p|^2 with double-double
 /// residuals, gauss_newton.hpp): the parameter of a point known to lie on f, refined from a
-/// close guess, until a step is at most `converged` (or 30 steps). Steps larger than 2^-20
-/// end the iteration (f' nearly zero: the guess is kept). Result clamped to [0, 1].
-[[nodiscard]] double locate_on_curve(const WorkingCurve& f, PointDD p, double start,
-                                     double converged = 0x1p-60);
+/// close guess, until a step is at most `converged` (or after kProjectionSteps steps). Steps
+/// larger than kGaussNewtonLargestStep end the iteration (f' nearly zero: the guess is
+/// kept). Result clamped to [0, 1]. (Constants: intersect_tuning.)
+[[nodiscard]] double locate_on_curve(
+    const WorkingCurve& f, PointDD p, double start,
+    double converged = intersect_tuning::kProjectionConverged);
 
 }  // namespace bezier::core

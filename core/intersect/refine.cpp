@@ -79,15 +79,12 @@ Newton transversal(const WorkingCurve& f, const WorkingCurve& g, const Contact& 
     n.f_point = moved(a, df, n.t - t_before);
     n.g_point = moved(b, dg, n.s - s_before);
     const double step = bernstein::max2(std::fabs(dt), std::fabs(ds));
-    // At a well-conditioned root Newton's error after a step of size h is O(h^2): below
-    // 2^-40 the new iterate is already exact to the last bit, and one more residual would
-    // only confirm it.
-    if (step <= kConverged || (step <= 0x1p-40 && sine_between(df, dg) > 0x1p-10)) {
+    if (step <= kConverged || (step <= kEarlyConverged && sine_between(df, dg) > kSeparatedSine)) {
       n.converged = true;
       break;
     }
     // Stagnation (at the floor of the residual's accuracy, or a clamped step): stop.
-    if (step >= last_step && i > 8) break;
+    if (step >= last_step && i > kStagnationAfter) break;
     last_step = step;
   }
   return n;

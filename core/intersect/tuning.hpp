@@ -1,10 +1,14 @@
 #pragma once
 
-// The tuning constants of two-curve intersection, each with the reason for its value. They
-// steer how the search spends its work (when to clip, when to halve, when to switch
-// method); none of them changes what is certified: every test carries its own error bound.
-// The work each step is charged is in work_cost.hpp; tolerances that define an answer
-// (overlap, kind) are in overlap.hpp and kind.hpp.
+#include <cstddef>
+
+// The tuning constants of two-curve intersection, each with the reason for its value: the
+// search's, the clipping methods' (clip/), the refinement's, and the thresholds of the
+// degenerate cases (collinear curves, overlaps, common arcs). Most steer how the work is
+// spent (when to clip, when to halve, when to stop an iteration); none of them weakens what
+// is certified: every test carries its own error bound. The work each step is charged is in
+// work_cost.hpp; the tolerances a caller sets or that define an answer (the search width,
+// the overlap tolerance, the kind thresholds) are in options.hpp, overlap.hpp and kind.hpp.
 
 namespace bezier::core::intersect_tuning {
 
@@ -47,6 +51,44 @@ inline constexpr double kUnevenPieces = 8;
 /// this wide.)
 inline constexpr double kKrawczykWidth = 0x1p-4;
 
+// The clipping methods (clip/).
+
+/// A piece is a point for the search (is_point_like, and fat_line's choice of line) when
+/// all its control points lie within this many times its error bound of the first: its
+/// chord is then noise, and a line drawn along it would point anywhere.
+inline constexpr double kPointLikeErrors = 4;
+/// A clip is noise (is_noisy) when this many times its error margins exceed the spread of
+/// the distances they bound: the margins then take so much of the band that the clip tells
+/// more about rounding than about the curves, and compensated pieces (or halving) tell more.
+inline constexpr double kNoiseRatio = 4;
+/// The implicit clip's parabola is straight (no implicit form) when twice its signed area
+/// is below this many ulps of its squared size: the rounding of the area is a few ulps of
+/// it, so the form's coefficients would be rounding.
+inline constexpr double kStraightParabolaUlps = 64;
+/// The band solver's cubic degenerates to a quadratic (and that to a line) when its leading
+/// coefficient is below this fraction of the largest: the closed forms divide by it, and
+/// below 2^-40 the quotients lose more digits than the polishing restores.
+inline constexpr double kLeadingCoefficient = 0x1p-40;
+/// The band solver looks for roots of the distance polynomial this far outside [0, 1], so a
+/// root just outside, moved across the end by rounding, still splits the interval there.
+inline constexpr double kRootWindow = 0x1p-20;
+/// Widening of the closed-form interval before it is certified: well above the error of a
+/// polished simple root (a few ulps), small enough to keep quadratic convergence (a clip can
+/// still shrink an interval by a factor 2^31).
+inline constexpr double kRootPad = 0x1p-32;
+/// Halley steps on the distance cubic from where its control polygon crosses the level,
+/// and the step that ends them: the iteration converges cubically, so three steps from the
+/// polygon's crossing reach the rounding, and after a step below 2^-40 the error, of order
+/// its cube, is below the last bit.
+inline constexpr int kHalleySteps = 3;
+inline constexpr double kHalleyConverged = 0x1p-40;
+/// The band solver's hull clip (kept_interval_by_hulls) clips again while a pass keeps less
+/// than this fraction of the interval (the rule of kBezierClipKeptFraction, for the same
+/// reason), at most kBandClipPasses times: each pass portions the polynomial anew, and the
+/// search clips the box again anyway, with fresh pieces.
+inline constexpr double kBandClipKeptFraction = 0.8;
+inline constexpr int kBandClipPasses = 3;
+
 // Newton refinement of a contact (refine.hpp).
 
 /// Steps below this (in parameter) end the iteration: a few ulps of 1/2.
@@ -58,6 +100,15 @@ inline constexpr double kConverged = 0x1p-54;
 /// root of higher order, a start outside its basin).
 inline constexpr int kTransversalIterations = 40;
 inline constexpr int kTangencyIterations = 20;
+/// A step below this, with the curves' tangents at least kSeparatedSine apart, ends the
+/// refinement early: at such a well-conditioned root Newton's error after a step h is
+/// O(h^2), so the iterate is already exact to the last bit.
+inline constexpr double kEarlyConverged = 0x1p-40;
+inline constexpr double kSeparatedSine = 0x1p-10;
+/// Steps that grow again after this many iterations mean stagnation at the floor of the
+/// residual's accuracy (or a clamped step) and end the refinement; before it, a growing step
+/// is Newton's method still finding its basin.
+inline constexpr int kStagnationAfter = 8;
 
 // The Krawczyk test (krawczyk.hpp).
 
@@ -68,5 +119,87 @@ inline constexpr double kMaxRho = 0.5;
 /// box of at most kKrawczykWidth, quadratic convergence reaches the rounding in three or four
 /// steps. The test certifies whatever they reach: fewer steps only make it fail more often.
 inline constexpr int kNewtonIterations = 4;
+
+// Gauss-Newton on a curve's parameter (gauss_newton.hpp).
+
+/// A step larger than this ends the iteration: the callers start within about 1e-9 of the
+/// answer, so such a step means r' nearly vanishes here, where the iteration is unreliable.
+inline constexpr double kGaussNewtonLargestStep = 0x1p-20;
+
+// Two curves on one line (collinear.hpp).
+
+/// Ranges closer than this (in units of the line's parameter, about 1 over the common
+/// extent) touch rather than overlap: far above the rounding of the positions along the
+/// line, far below any overlap worth reporting.
+inline constexpr double kTouch = 0x1p-40;
+
+// Overlaps by linear reparametrisation (overlap.hpp) and along common arcs (common_arc.hpp).
+
+/// Overlaps shorter than this in t or s are left to the search, which reports such a piece
+/// as one contact. Far above the error of the refined end points, so a longer overlap is no
+/// artefact of rounding; the value decides when a very short overlap is reported as a
+/// contact instead.
+inline constexpr double kShortestOverlap = 0x1p-30;
+/// How far outside an overlap's intervals (and, linear, off its map) a pair (t, s) still
+/// lies on it (on_overlap): the overlap's ends are refined to well within this.
+inline constexpr double kOnOverlapSlack = 0x1p-30;
+/// How far beyond a box the map's image may reach and still cover it (covered_by_overlap):
+/// a few ulps of the parameters' rounding, with room.
+inline constexpr double kCoverSlack = 0x1p-40;
+/// Points of f projected onto g by coincide_at_precision (evenly spaced, both ends
+/// included): a polynomial piece of degree <= 4 that agrees at 5 points is the same piece,
+/// and beyond it the box is at the precision floor, where every piece is nearly straight.
+inline constexpr int kCoincidenceSamples = 5;
+/// Gauss-Newton's step limit and default convergence when a point known to lie on a curve
+/// is projected onto it (locate_on_curve, coincide_at_precision): quadratic convergence
+/// from a close guess reaches 2^-60, below the last bit of a parameter, in a handful of
+/// steps; the limit only bounds a projection that does not converge.
+inline constexpr int kProjectionSteps = 30;
+inline constexpr double kProjectionConverged = 0x1p-60;
+/// How far the approximations of h, p and q (about 1e-10 of the curves' size for the
+/// degrees accepted) may put a point of u, h's parameter: the coverage test widens the
+/// ranges of p and q by this much.
+inline constexpr double kArcSlack = 0x1p-24;
+/// The candidate filters' relative tolerance: far above the rounding of monomial
+/// coefficients of degree 20 (2^20 u), far below any curve that is not improper.
+inline constexpr double kArcFilter = 1e-6;
+/// The division filter's tolerance (is_polynomial_in): a factor of a degree-20 curve whose
+/// power form cancels a lot leaves remainders near 2e-5 of its coefficients, while generic
+/// curves of degree 20 leave at least 2e-4, and those of lower degree more.
+inline constexpr double kDivisionFilter = 1e-4;
+/// A factor whose interpolated h misses the curve by more than this (relative) is wrong,
+/// not inaccurate: it is not refined.
+inline constexpr double kRefineBelow = 1e-2;
+/// Factors of higher degree than this are not refined (a degree-20 curve through a factor
+/// of degree 10 would take ten interpolations per Gauss-Newton step).
+inline constexpr std::size_t kRefineDegree = 5;
+/// How well h(p) must fit the curve (relative to its magnitude) for a factorisation: a
+/// true factor, refined, fits to the interpolation's rounding (about 1e-12 at degree 20);
+/// a curve within 1e-6 of an improper one (say a wave 1e-6 wide on it) is not one.
+inline constexpr double kFactorFit = 1e-9;
+/// Gauss-Newton steps on a common arc (refine_turn's turning point, piece_lies_on's
+/// projections), from guesses within about 1e-9: two or three steps converge, so eight
+/// bound the work of the samples of a piece that does not lie on the other curve.
+inline constexpr int kArcNewtonSteps = 8;
+/// piece_lies_on's projections stop at steps of 2^-50: the residual is then compared with
+/// coincidence_tolerance, far above what the last few bits of the parameter change.
+inline constexpr double kArcSampleConverged = 0x1p-50;
+/// Changes of p or q (whose ranges are about [0, 1]) below this are rounding, not turns.
+inline constexpr double kTurnNoise = 0x1p-40;
+/// Roots of p' (or q') within this of 0, of 1 or of the previous turn do not split p into
+/// monotone pieces: a piece that short is far below the shortest overlap reported
+/// (kShortestOverlap), so splitting there would only add pieces.
+inline constexpr double kTurnSeparation = 0x1p-40;
+/// The interpolation nodes' parameters are found to this accuracy: h interpolated through
+/// them is then as good as p itself.
+inline constexpr double kNodeAccuracy = 0x1p-44;
+/// A preimage under p or q found to this accuracy starts Newton's method on the curves,
+/// well inside its reach; the curves' own Newton steps give the last bits.
+inline constexpr double kPreimageAccuracy = 0x1p-32;
+/// Gauss-Newton steps that refine a factor p on the curve (refined_on_curve): the right
+/// factor from the power form starts about 1e-5 off at degree 20, and quadratic convergence
+/// brings it to the rounding in two or three steps (a step that does not reduce the misfit
+/// ends it earlier).
+inline constexpr int kFactorRefineSteps = 3;
 
 }  // namespace bezier::core::intersect_tuning

@@ -7,16 +7,18 @@
 #include <utility>
 #include <vector>
 
+#include "core/numeric/tuning.hpp"
+
 namespace bezier::core {
 
 /// A short sequence of values (Bernstein coefficients of one coordinate of a piece), stored
-/// inline up to kInline entries (degree 23) and on the heap beyond, so the clipping loop
-/// allocates nothing for the degrees the API accepts by default. A value type: copies are
-/// deep.
+/// inline up to kInline entries (numeric_tuning::kInlineEntries) and on the heap beyond, so
+/// the clipping loop allocates nothing for the degrees the API accepts by default. A value
+/// type: copies are deep.
 template <class T>
 class SmallArray {
  public:
-  static constexpr std::size_t kInline = 24;
+  static constexpr std::size_t kInline = numeric_tuning::kInlineEntries;
 
   SmallArray() = default;
   SmallArray(const SmallArray& other) { *this = other; }

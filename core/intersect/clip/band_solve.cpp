@@ -9,15 +9,13 @@
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
 #include "core/numeric/unit_roundoff.hpp"
+#include "core/intersect/tuning.hpp"
 
 namespace bezier::core {
 
-namespace {
+using namespace intersect_tuning;
 
-/// Widening of the closed-form interval before it is certified: well above the error of a
-/// polished simple root (a few ulps), small enough to keep quadratic convergence (a clip can
-/// still shrink an interval by a factor 2^31).
-constexpr double kRootPad = 0x1p-32;
+namespace {
 
 double horner(double c0, double c1, double c2, double c3, double t) noexcept {
   return ((c3 * t + c2) * t + c1) * t + c0;
@@ -106,9 +104,9 @@ CubicRoots real_roots_up_to_cubic(double c0, double c1, double c2, double c3, do
   if (scale == 0.0) return out;
   double raw[3];
   int count = 0;
-  if (std::fabs(c3) > 0x1p-40 * scale) {
+  if (std::fabs(c3) > kLeadingCoefficient * scale) {
     count = monic_cubic(c2 / c3, c1 / c3, c0 / c3, raw);
-  } else if (std::fabs(c2) > 0x1p-40 * scale) {
+  } else if (std::fabs(c2) > kLeadingCoefficient * scale) {
     count = quadratic(c0, c1, c2, raw);
   } else if (c1 != 0.0) {
     raw[0] = -c0 / c1;
@@ -148,10 +146,10 @@ std::optional<ParamInterval> kept_interval_by_hulls_of(std::span<const double, E
   const double e = 3.02 * k * kUnitRoundoff * bernstein::max_abs(p) + 0x1p-1000;
   CoefficientBuffer<E> piece(p.size());
   ParamInterval range{0.0, 1.0};
-  for (int iteration = 0; iteration < 3; ++iteration) {
+  for (int pass = 0; pass < kBandClipPasses; ++pass) {
     // The first pass clips p itself (exact coefficients, no margin).
     std::optional<ParamInterval> clip;
-    if (iteration == 0) {
+    if (pass == 0) {
       clip = bernstein::hull_clip_of(p, lo, hi);
     } else {
       bernstein::portion_into(std::span<const double>(p), range.lo, range.hi, piece.data());
@@ -163,7 +161,7 @@ std::optional<ParamInterval> kept_interval_by_hulls_of(std::span<const double, E
     ParamInterval next = range;
     if (clip->lo > 0.0) next.lo = bernstein::max2(range.lo, range.lo + w * clip->lo - 4 * kUnitRoundoff);
     if (clip->hi < 1.0) next.hi = bernstein::min2(range.hi, range.lo + w * clip->hi + 4 * kUnitRoundoff);
-    const bool shrank_enough = next.hi - next.lo < 0.8 * w;
+    const bool shrank_enough = next.hi - next.lo < kBandClipKeptFraction * w;
     range = next;
     if (!shrank_enough) break;
   }
@@ -251,7 +249,7 @@ std::array<double, 2> monotone_roots(std::span<const double, E> p, const double*
     t[lane] = crosses ? (i + (v - a) / (b - a)) / k : 0.5;
     active[lane] = wanted[lane];
   }
-  for (int iteration = 0; iteration < 3; ++iteration) {
+  for (int iteration = 0; iteration < kHalleySteps; ++iteration) {
     for (int lane = 0; lane < 2; ++lane) {
       const double x = t[lane], x2 = x * x;
       // Estrin's halves: a shorter dependency chain than Horner's.
@@ -261,8 +259,7 @@ std::array<double, 2> monotone_roots(std::span<const double, E> p, const double*
       const double denominator = 2 * df * df - f * ddf;
       const double next = x - 2 * f * df / denominator;
       const bool step = active[lane] && denominator != 0.0 && next >= 0.0 && next <= 1.0;
-      // A step below 2^-40 leaves an error of order its cube: the root to the last bit.
-      const bool converged = std::fabs(next - x) <= 0x1p-40;
+      const bool converged = std::fabs(next - x) <= kHalleyConverged;
       t[lane] = step ? next : x;
       active[lane] = step && !converged;
     }
@@ -338,7 +335,7 @@ std::optional<ParamInterval> kept_interval_of(std::span<const double, E> p, doub
   breaks[nb++] = 0.0;
   for (const double level : {lo, hi}) {
     const CubicRoots r =
-        real_roots_up_to_cubic(c[0] - level, c[1], c[2], c[3], -0x1p-20, 1 + 0x1p-20);
+        real_roots_up_to_cubic(c[0] - level, c[1], c[2], c[3], -kRootWindow, 1 + kRootWindow);
     for (int i = 0; i < r.count; ++i)
       breaks[nb++] = r.t[i] < 0.0 ? 0.0 : (r.t[i] > 1.0 ? 1.0 : r.t[i]);
   }

@@ -8,6 +8,7 @@
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
 #include "core/numeric/unit_roundoff.hpp"
+#include "core/intersect/tuning.hpp"
 
 namespace bezier::core {
 
@@ -58,7 +59,7 @@ bool is_noisy(const FatLine& line, const DistanceCoefficients& d) noexcept {
       size, [&](auto e) { return value_range(fixed_span<decltype(e)::value>(d.a.data(), size)); });
   const double noise = line.margin + d.error;
   const double signal = (line.d_max - line.d_min - 2 * line.margin) + (hi - lo);
-  return 4 * noise > signal;
+  return intersect_tuning::kNoiseRatio * noise > signal;
 }
 
 BEZIER_FMA_CLONES bool bounding_boxes_disjoint(const Piece& f, const Piece& g) noexcept {

@@ -6,6 +6,7 @@
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
 #include "core/numeric/unit_roundoff.hpp"
+#include "core/intersect/tuning.hpp"
 
 namespace bezier::core {
 
@@ -28,7 +29,7 @@ Point2 chord(const Piece& p) noexcept {
 }  // namespace
 
 bool is_point_like(const Piece& p) noexcept {
-  const double limit = 4 * p.error;
+  const double limit = intersect_tuning::kPointLikeErrors * p.error;
   for (std::size_t i = 1; i < p.x.size(); ++i) {
     if (std::fabs(p.x[i] - p.x[0]) > limit || std::fabs(p.y[i] - p.y[0]) > limit) return false;
   }
@@ -44,7 +45,7 @@ FatLine fat_line_of(std::span<const double, E> gx, std::span<const double, E> gy
   const std::size_t m = gx.size() - 1;
   const Point2 origin = {gx[0], gy[0]};
   Point2 d = {gx[m] - gx[0], gy[m] - gy[0]};
-  const double limit = 4 * g_error;
+  const double limit = intersect_tuning::kPointLikeErrors * g_error;
   // The bounds for m = 2 and 3 below hold only for a line through both end points.
   bool through_ends = true;
   if (bernstein::max2(std::fabs(d.x), std::fabs(d.y)) <= limit) {

@@ -6,6 +6,7 @@
 #include "core/numeric/binomial.hpp"
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/numeric/unit_roundoff.hpp"
+#include "core/intersect/tuning.hpp"
 
 namespace bezier::core {
 
@@ -62,7 +63,8 @@ Clip implicit_clip(const Piece& x, const Piece& other, const FatCurveOperator& o
   // harmfully, so sqrt(dot) replaces hypot.
   const auto norm = [](Point2 v) { return std::sqrt(dot(v, v)) * (1 + 4 * kUnitRoundoff); };
   const double l0 = norm(q2 - q1), l1 = norm(q2 - q0), l2 = norm(q1 - q0);  // |grad D_i|
-  if (!(std::fabs(area) > 64 * kUnitRoundoff * bernstein::max2(l0, bernstein::max2(l1, l2)) *
+  if (!(std::fabs(area) > intersect_tuning::kStraightParabolaUlps * kUnitRoundoff *
+                              bernstein::max2(l0, bernstein::max2(l1, l2)) *
                               bernstein::max2(l0, bernstein::max2(l1, l2)))) {
     return no_information;  // Q is (nearly) straight: its implicit form degenerates
   }
