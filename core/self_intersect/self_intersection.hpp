@@ -131,6 +131,16 @@ struct SelfIntersectionOptions {
 /// collinear ones a 1-D analysis, palindromic control points (B(1 - t) = B(t)) the
 /// self-intersections of the outbound half and their mirror images.
 ///
+/// Why a search of its own rather than the two-curve search (intersect/search.hpp) run on
+/// the curve against itself away from the diagonal: that search narrows every box by
+/// clipping with error bounds down to the search width, and switches to double-double pieces
+/// where pieces run side by side (a nearly collinear curve does so everywhere); here a box
+/// whose tangent cones are disjoint holds at most one pair, so one Newton run settles it, and
+/// only the pairs found are certified afterwards (certify.hpp, by the two-curve search in a
+/// small box around each). The diagonal, the seam and the cusps, of which the two-curve
+/// search knows nothing, need the box classes above in any case. What the two share: the
+/// kinds, the overlaps, the status and the certification.
+///
 /// Resolution: next to a cusp, |B(s) - B(t)| stays at rounding level for s - t up to about
 /// 1e-5, so pairs there are accepted only when rounding could not move them onto the
 /// diagonal (is_resolved_double_point); loops closer to a cusp than that (s - t below
