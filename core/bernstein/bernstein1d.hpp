@@ -40,32 +40,33 @@ template <std::size_t E>
   }
 }
 
-/// The coefficients of the same polynomial restricted to [a, b] and reparametrised to
-/// [0, 1]: coefficient i is the blossom value b(a^(n-i), b^i) (Ramshaw 1987), computed from
-/// the triangle of de Casteljau rounds with a (for i <= n/2, finished with i rounds of b)
-/// and with b (for i > n/2, finished with n - i rounds of a). The parameters enter exactly,
-/// so the piece is exactly the polynomial on [a, b] up to the rounding of the arithmetic:
-/// each coefficient goes through n steps, so for a, b in [0, 1] its error is at most
-/// 3.01 n u max|c| in doubles, 10 n u^2 max|c| in double-doubles.
-/// Written into out[0..n], which must not alias c (callers refill a piece in place).
+// The fixed-size de Casteljau rounds below are chains of scalar lerps; GCC's straight-line
+// vectoriser pairs them through the stack (a pair stored, then an overlapping pair loaded),
+// which stalls store forwarding at every level. Code unrolled for a size fixed at compile
+// time stays scalar.
+#if defined(__GNUC__) && !defined(__clang__)
+#define BEZIER_SCALAR_ROUNDS __attribute__((optimize("no-tree-slp-vectorize", "no-tree-loop-vectorize")))
+#else
+#define BEZIER_SCALAR_ROUNDS
+#endif
+
+namespace detail {
+
+/// portion_into's blossom values for n = 1, 2, 3 in straight-line code (the same values as
+/// the rounds of portion_rounds).
 template <class T>
-void portion_into(std::span<const T> c, double a, double b, T* out) {
-  const std::size_t n = c.size() - 1;
-  // Straight-line code for the common low degrees: the same blossom values as below.
+[[gnu::always_inline]] inline void portion_low_degree(const T* c, std::size_t n, double a, double b,
+                                                      T* out) {
   if (n == 1) {
     out[0] = bernstein::lerp(c[0], c[1], a);
     out[1] = bernstein::lerp(c[0], c[1], b);
-    return;
-  }
-  if (n == 2) {
+  } else if (n == 2) {
     const T a0 = bernstein::lerp(c[0], c[1], a), a1 = bernstein::lerp(c[1], c[2], a);
     const T b0 = bernstein::lerp(c[0], c[1], b), b1 = bernstein::lerp(c[1], c[2], b);
     out[0] = bernstein::lerp(a0, a1, a);
     out[1] = bernstein::lerp(a0, a1, b);
     out[2] = bernstein::lerp(b0, b1, b);
-    return;
-  }
-  if (n == 3) {
+  } else {
     const T a10 = bernstein::lerp(c[0], c[1], a), a11 = bernstein::lerp(c[1], c[2], a),
             a12 = bernstein::lerp(c[2], c[3], a);
     const T a20 = bernstein::lerp(a10, a11, a), a21 = bernstein::lerp(a11, a12, a);
@@ -76,12 +77,15 @@ void portion_into(std::span<const T> c, double a, double b, T* out) {
     out[1] = bernstein::lerp(a20, a21, b);
     out[2] = bernstein::lerp(b20, b21, a);
     out[3] = bernstein::lerp(b20, b21, b);
-    return;
   }
-  SmallArray<T> row_storage(n + 1, typename SmallArray<T>::Uninitialized{});
-  SmallArray<T> work_storage(n + 1, typename SmallArray<T>::Uninitialized{});
-  T* row = row_storage.data();
-  T* work = work_storage.data();
+}
+
+/// portion_into's triangle of rounds for any n, in the buffers row and work (n + 1 entries
+/// each). Inlined into its callers so that, where n is a compile-time constant, the loops
+/// unroll.
+template <class T>
+[[gnu::always_inline]] inline void portion_rounds(const T* c, std::size_t n, double a, double b,
+                                                  T* row, T* work, T* out) {
   for (std::size_t k = 0; k <= n; ++k) row[k] = c[k];
   // Pass 1: rounds with a. After j rounds, row[0..n-j] is the level-j polygon; result
   // i = n - j <= n/2 is finished from it with i rounds of b.
@@ -109,6 +113,42 @@ void portion_into(std::span<const T> c, double a, double b, T* out) {
       }
       out[j] = work[0];
     }
+  }
+}
+
+}  // namespace detail
+
+/// The coefficients of the same polynomial restricted to [a, b] and reparametrised to
+/// [0, 1]: coefficient i is the blossom value b(a^(n-i), b^i) (Ramshaw 1987), computed from
+/// the triangle of de Casteljau rounds with a (for i <= n/2, finished with i rounds of b)
+/// and with b (for i > n/2, finished with n - i rounds of a). The parameters enter exactly,
+/// so the piece is exactly the polynomial on [a, b] up to the rounding of the arithmetic:
+/// each coefficient goes through n steps, so for a, b in [0, 1] its error is at most
+/// 3.01 n u max|c| in doubles, 10 n u^2 max|c| in double-doubles. Degrees 1 to 3 run as
+/// straight-line code (the same values).
+/// Written into out[0..n], which must not alias c (callers refill a piece in place).
+template <class T>
+void portion_into(std::span<const T> c, double a, double b, T* out) {
+  const std::size_t n = c.size() - 1;
+  if (1 <= n && n <= 3) {
+    detail::portion_low_degree(c.data(), n, a, b, out);
+    return;
+  }
+  SmallArray<T> row(n + 1, typename SmallArray<T>::Uninitialized{});
+  SmallArray<T> work(n + 1, typename SmallArray<T>::Uninitialized{});
+  detail::portion_rounds(c.data(), n, a, b, row.data(), work.data(), out);
+}
+
+/// portion_into for E = n + 1 >= 1 coefficients fixed at compile time: the same values,
+/// the rounds unrolled for the size and kept scalar (BEZIER_SCALAR_ROUNDS).
+template <std::size_t E, class T>
+BEZIER_SCALAR_ROUNDS void portion_into_fixed(const T* c, double a, double b, T* out) {
+  static_assert(E >= 1 && E != std::dynamic_extent);
+  if constexpr (2 <= E && E <= 4) {
+    detail::portion_low_degree(c, E - 1, a, b, out);
+  } else {
+    std::array<T, E> row, work;
+    detail::portion_rounds(c, E - 1, a, b, row.data(), work.data(), out);
   }
 }
 

@@ -1,14 +1,28 @@
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <span>
 #include <vector>
 
 #include "core/numeric/binomial.hpp"
-#include "core/numeric/small_array.hpp"
 #include "core/base/point.hpp"
 
 namespace bezier::core {
+
+/// C(N, k) for N < kBinomialRows (the products of polynomials of degree up to 23), computed
+/// at compile time by binomial().
+inline constexpr int kBinomialRows = 48;
+inline constexpr auto kBinomials = [] {
+  std::array<std::array<double, kBinomialRows>, kBinomialRows> table{};
+  for (int top = 0; top < kBinomialRows; ++top) {
+    for (int k = 0; k <= top; ++k) {
+      table[static_cast<std::size_t>(top)][static_cast<std::size_t>(k)] = binomial(top, k);
+    }
+  }
+  return table;
+}();
 
 /// The Bernstein coefficients of the scalar polynomial u(t) · v(t), where u and v are vector
 /// polynomials in Bernstein form of degrees m and n (coefficients u_0..u_m, v_0..v_n). The
@@ -18,25 +32,36 @@ namespace bezier::core {
 /// Every weight is in [0, 1] and the weights of one k sum to 1: w_k is a convex combination
 /// of the dot products, and its rounding error is at most (d + 3) u max_{i+j=k} |u_i| |v_j|
 /// for dimension d (the weight, the dot product and the sum each round). 2-D and 3-D share
-/// this code. Precondition: both spans non-empty. O(m n).
+/// this code. Written into w[0..m+n], u and v given by their points u(i), i = 0..m, and
+/// v(j), j = 0..n (so that neither has to be stored). O(m n).
+template <class U, class V>
+void dot_product_polynomial_into(int m, int n, U u, V v, double* w) {
+  std::fill(w, w + m + n + 1, 0.0);
+  // The binomials (exact integers: the same values from the table as computed).
+  const auto choose = [](int top, int k) {
+    return top < kBinomialRows ? kBinomials[static_cast<std::size_t>(top)][static_cast<std::size_t>(k)]
+                               : binomial(top, k);
+  };
+  for (int i = 0; i <= m; ++i) {
+    const auto ui = u(i);
+    const double ci = choose(m, i);
+    for (int j = 0; j <= n; ++j) {
+      const double weight = ci * choose(n, j) / choose(m + n, i + j);
+      w[i + j] += weight * dot(ui, v(j));
+    }
+  }
+}
+
+/// dot_product_polynomial_into as a new vector, u and v stored. Precondition: both spans
+/// non-empty.
 template <class P>
 [[nodiscard]] std::vector<double> dot_product_polynomial(std::span<const P> u,
                                                          std::span<const P> v) {
-  const int m = static_cast<int>(u.size()) - 1, n = static_cast<int>(v.size()) - 1;
-  std::vector<double> w(static_cast<std::size_t>(m + n + 1), 0.0);
-  // The binomials once each (exact integers, so the same values as computed per term).
-  SmallArray<double> cn(static_cast<std::size_t>(n + 1)), cmn(static_cast<std::size_t>(m + n + 1));
-  for (int j = 0; j <= n; ++j) cn[static_cast<std::size_t>(j)] = binomial(n, j);
-  for (int k = 0; k <= m + n; ++k) cmn[static_cast<std::size_t>(k)] = binomial(m + n, k);
-  for (int i = 0; i <= m; ++i) {
-    const double ci = binomial(m, i);
-    for (int j = 0; j <= n; ++j) {
-      const double weight =
-          ci * cn[static_cast<std::size_t>(j)] / cmn[static_cast<std::size_t>(i + j)];
-      w[static_cast<std::size_t>(i + j)] +=
-          weight * dot(u[static_cast<std::size_t>(i)], v[static_cast<std::size_t>(j)]);
-    }
-  }
+  std::vector<double> w(u.size() + v.size() - 1);
+  dot_product_polynomial_into(
+      static_cast<int>(u.size()) - 1, static_cast<int>(v.size()) - 1,
+      [u](int i) { return u[static_cast<std::size_t>(i)]; },
+      [v](int j) { return v[static_cast<std::size_t>(j)]; }, w.data());
   return w;
 }
 

@@ -8,6 +8,7 @@
 #include "core/curve/derivative.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/measure/axis.hpp"
 #include "core/measure/interval_roots.hpp"
 #include "core/measure/normalised.hpp"
 #include "core/numeric/unit_roundoff.hpp"
@@ -17,13 +18,6 @@ namespace bezier::core {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-double& axis(Point2& p, std::size_t k) noexcept { return k == 0 ? p.x : p.y; }
-double& axis(Point3& p, std::size_t k) noexcept { return k == 0 ? p.x : (k == 1 ? p.y : p.z); }
-double axis(const Point2& p, std::size_t k) noexcept { return k == 0 ? p.x : p.y; }
-double axis(const Point3& p, std::size_t k) noexcept {
-  return k == 0 ? p.x : (k == 1 ? p.y : p.z);
-}
 
 template <class P>
 Coeffs coordinate(std::span<const P> points, std::size_t k) {
@@ -58,7 +52,8 @@ Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
     include(b, axis(end, k));
     if (a < b) {
       const Coeffs slope = coordinate(hodograph.points(), k);
-      out.critical[k] = interval_roots(slope, a, b, IntervalEnds::open).roots;
+      const SmallArray<double> roots = interval_roots(slope, a, b, IntervalEnds::open).roots;
+      out.critical[k].assign(roots.begin(), roots.end());
       for (const double t : out.critical[k]) include(t, axis(evaluate(curve, t), k));
     }
     axis(out.min, k) = lo;

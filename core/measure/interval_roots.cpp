@@ -8,24 +8,20 @@
 
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/bernstein/roots.hpp"
+#include "core/measure/tuning.hpp"
 #include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
 
 namespace {
-constexpr int kMaxDepth = 40;
 
-// The fixed-size de Casteljau rounds below are chains of scalar lerps; GCC's straight-line
-// vectoriser pairs them through the stack (a pair stored, then an overlapping pair loaded),
-// which stalls store forwarding at every level. They stay scalar.
-#if defined(__GNUC__) && !defined(__clang__)
-#define BEZIER_SCALAR_ROUNDS __attribute__((optimize("no-tree-slp-vectorize", "no-tree-loop-vectorize")))
-#else
-#define BEZIER_SCALAR_ROUNDS
-#endif
+using measure_tuning::kHalvedDepth;
+using measure_tuning::kMaxDepth;
+using measure_tuning::kUnrolledSizes;
 
-/// A piece [lo, hi] still to examine, with p at its ends (Evaluator::value there); an end
-/// flagged as a known root is an exact zero of p found when the parent was split there.
+/// A piece [lo, hi] still to examine, with p at its ends (Evaluator::value there, or where
+/// a split took it from the halves, a value with the sign of p there); an end flagged as a
+/// known root is an exact zero of p found when the parent was split there.
 struct Job {
   double lo, hi;
   double p_lo, p_hi;
@@ -67,39 +63,6 @@ BEZIER_SCALAR_ROUNDS ValueAndSlope value_and_slope_of(const double* c, double t)
   }
 }
 
-/// bernstein::portion_into (the blossom values b(a^(n-i), b^i), the same rounds in the
-/// same order) for E = n + 1 coefficients fixed at compile time, so that the rounds unroll.
-template <std::size_t E>
-BEZIER_SCALAR_ROUNDS void portion_of(const double* c, double a, double b, double* out) {
-  constexpr std::size_t n = E - 1;
-  std::array<double, E> row, work;
-  for (std::size_t k = 0; k <= n; ++k) row[k] = c[k];
-  for (std::size_t j = 0;; ++j) {
-    const std::size_t i = n - j;
-    if (2 * i <= n) {
-      for (std::size_t k = 0; k <= i; ++k) work[k] = row[k];
-      for (std::size_t level = i; level > 0; --level) {
-        for (std::size_t k = 0; k < level; ++k) work[k] = bernstein::lerp(work[k], work[k + 1], b);
-      }
-      out[i] = work[0];
-    }
-    if (j == n) break;
-    for (std::size_t k = 0; k + j < n; ++k) row[k] = bernstein::lerp(row[k], row[k + 1], a);
-  }
-  for (std::size_t k = 0; k <= n; ++k) row[k] = c[k];
-  for (std::size_t j = 1; j <= n; ++j) {
-    for (std::size_t k = 0; k + j <= n; ++k) row[k] = bernstein::lerp(row[k], row[k + 1], b);
-    if (2 * j > n) {
-      const std::size_t m = n - j;
-      for (std::size_t k = 0; k <= m; ++k) work[k] = row[k];
-      for (std::size_t level = m; level > 0; --level) {
-        for (std::size_t k = 0; k < level; ++k) work[k] = bernstein::lerp(work[k], work[k + 1], a);
-      }
-      out[j] = work[0];
-    }
-  }
-}
-
 ValueAndSlope value_and_slope_any(std::span<const double> c, double t) {
   const std::size_t n = c.size() - 1;
   SmallArray<double> row(c);
@@ -123,7 +86,7 @@ template <class ValueAndSlopeAt>
 double refine(ValueAndSlopeAt p_at, double e, double lo, double hi, double p_lo, double p_hi) {
   double t = lo + (hi - lo) * (p_lo / (p_lo - p_hi));
   if (!(lo < t && t < hi)) t = lo + (hi - lo) / 2;
-  for (int iteration = 0; iteration < 200; ++iteration) {
+  for (int iteration = 0; iteration < measure_tuning::kRefineIterations; ++iteration) {
     const ValueAndSlope p = p_at(t);
     if (p.value == 0.0) return t;
     if ((p.value < 0) == (p_lo < 0)) {
@@ -146,7 +109,8 @@ double refine(ValueAndSlopeAt p_at, double e, double lo, double hi, double p_lo,
 /// The two halves of the piece q (on [lo, hi]) on [lo, middle] and [middle, hi], by de
 /// Casteljau's subdivision at 1/2: every entry is the average of two, (x + y) / 2 with
 /// exact halvings, so each rounds once and a half's coefficients are within n u max|q| of
-/// the piece's own halves.
+/// the piece's own halves. q is copied before anything is written, so either half may take
+/// its place.
 BEZIER_SCALAR_ROUNDS void halves(std::span<const double> q, double* left, double* right) {
   const std::size_t n = q.size() - 1;
   SmallArray<double> row(q);
@@ -165,11 +129,7 @@ template <std::size_t E>
 struct Unrolled {
   static ValueAndSlope at(const double* c, double t) { return value_and_slope_of<E>(c, t); }
   static void portion(const double* c, double a, double b, double* out) {
-    if constexpr (E <= 4) {
-      bernstein::portion_into(std::span<const double>(c, E), a, b, out);  // straight-line there
-    } else {
-      portion_of<E>(c, a, b, out);
-    }
+    bernstein::portion_into_fixed<E>(c, a, b, out);
   }
   static double root(const double* c, double e, double lo, double hi, double p_lo, double p_hi) {
     return refine([c](double t) { return value_and_slope_of<E>(c, t); }, e, lo, hi, p_lo, p_hi);
@@ -181,9 +141,6 @@ struct UnrolledFunctions {
   void (*portion)(const double*, double, double, double*) = nullptr;
   double (*root)(const double*, double, double, double, double, double) = nullptr;
 };
-
-/// Up to this many coefficients the evaluation is unrolled for the size.
-constexpr std::size_t kUnrolledSizes = 24;
 
 template <std::size_t... I>
 constexpr std::array<UnrolledFunctions, sizeof...(I)> unrolled(std::index_sequence<I...>) {
@@ -220,6 +177,21 @@ class Evaluator {
   UnrolledFunctions unrolled_;
 };
 
+/// The points found so far, in an inline store that doubles when it is full.
+struct Found {
+  SmallArray<double> values = SmallArray<double>(SmallArray<double>::kInline, SmallArray<double>::Uninitialized{});
+  std::size_t count = 0;
+
+  void add(double t) {
+    if (count == values.size()) {
+      SmallArray<double> larger(2 * count, SmallArray<double>::Uninitialized{});
+      std::copy(values.begin(), values.end(), larger.begin());
+      values = std::move(larger);
+    }
+    values[count++] = t;
+  }
+};
+
 }  // namespace
 
 IntervalRoots interval_roots(std::span<const double> c, double a, double b, IntervalEnds ends,
@@ -231,11 +203,13 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
   const double e = 3.02 * static_cast<double>(std::max<std::size_t>(n, 1)) * kUnitRoundoff * bernstein::max_abs(c);
   IntervalRoots out;
   // Roots and root-like points as found, sorted and merged in place below.
-  std::vector<double>& found = out.roots;
+  Found found;
   const Evaluator p_at(c);
-  const double p_a = p_at.value(a), p_b = p_at.value(b);
-  if (p_a == 0.0) found.push_back(a);
-  if (p_b == 0.0) found.push_back(b);
+  // De Casteljau's rounds at 0 and 1 are exact: p there is the end coefficient.
+  const double p_a = a == 0.0 ? c.front() : p_at.value(a);
+  const double p_b = b == 1.0 ? c.back() : p_at.value(b);
+  if (p_a == 0.0) found.add(a);
+  if (p_b == 0.0) found.add(b);
   // Depth first: at most one pending sibling per depth below the piece split last.
   std::array<Job, kMaxDepth + 2> stack;
   std::size_t pending = 0;
@@ -245,13 +219,20 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
   // the pieces of the first kHalvedDepth levels come from their parent's coefficients by
   // one subdivision at 1/2 (halves(), n + 1 entries per stack slot), cheaper than
   // portion_into from c. Their rounding grows by at most n u max|c| a level (the pieces are
-  // convex combinations of c), so down to that depth they are within e too; deeper pieces
-  // and those of other intervals are portion_into's, as are all pieces of degree 3 or less
-  // (straight-line code whose end coefficients are p at the ends, no evaluation needed).
-  constexpr int kHalvedDepth = 2;
+  // convex combinations of c), so a piece d levels down is within d n u max|c| of the exact
+  // one, and its sign test allows that much where it exceeds e (from depth 3 on). Deeper
+  // pieces and those of other intervals are portion_into's, as are all pieces of degree 3
+  // or less (straight-line code whose end coefficients are p at the ends, no evaluation
+  // needed). pending <= job.depth (one sibling a level), so the halved pieces need
+  // kHalvedDepth + 2 slots.
   const bool halving = a == 0.0 && b == 1.0 && n > 3;
-  std::vector<double> slots;
-  const auto slot = [&](std::size_t i) { return slots.data() + i * (n + 1); };
+  const double halving_error = 1.01 * static_cast<double>(n) * kUnitRoundoff * bernstein::max_abs(c);
+  constexpr std::size_t kSlots = kHalvedDepth + 2;
+  std::array<double, kSlots * kUnrolledSizes> slots_inline;
+  std::vector<double> slots_beyond;
+  if (halving && n + 1 > kUnrolledSizes) slots_beyond.resize(kSlots * (n + 1));
+  double* const slots = n + 1 > kUnrolledSizes ? slots_beyond.data() : slots_inline.data();
+  const auto slot = [&](std::size_t i) { return slots + i * (n + 1); };
   while (pending > 0) {
     const Job job = stack[--pending];
     // On [0, 1] the piece is c itself (de Casteljau steps at 0 and 1 are exact).
@@ -264,23 +245,24 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
     // Descartes' rule on the coefficients that are clearly nonzero; an end that is an exact
     // zero is left out (p = (t - end) r(t), and r's coefficients have the others' signs).
     const std::size_t first = job.zero_lo ? 1 : 0, end = job.zero_hi ? n : n + 1;
+    const double bound = halved ? std::max(e, halving_error * job.depth) : e;
     const auto [changes, any_small, all_small] =
-        sign_changes(q.subspan(first, end > first ? end - first : 0), e);
+        sign_changes(q.subspan(first, end > first ? end - first : 0), bound);
     const double middle = job.lo + (job.hi - job.lo) / 2;
     if (all_small) {
       // Zero to within rounding on the whole piece.
       out.isolated = false;
-      found.push_back(middle);
+      found.add(middle);
       continue;
     }
     if (changes == 0 && !any_small) continue;
     // A piece's end coefficients from portion_into are p at its ends: the same de
     // Casteljau rounds (and exact on [0, 1]); halves' are only near them, so a halved
-    // piece takes the values computed where its ends were split.
+    // piece takes the values found where its ends were split (below).
     const double p_lo = halved ? job.p_lo : q[0];
     const double p_hi = halved ? job.p_hi : q[n];
     if (changes == 1 && !any_small && p_lo != 0.0 && p_hi != 0.0 && (p_lo < 0) != (p_hi < 0)) {
-      if (wanted == Crossings::any || p_lo < 0) found.push_back(p_at.root(e, job.lo, job.hi, p_lo, p_hi));
+      if (wanted == Crossings::any || p_lo < 0) found.add(p_at.root(e, job.lo, job.hi, p_lo, p_hi));
       continue;
     }
     if (job.depth >= kMaxDepth || !(job.lo < middle && middle < job.hi)) {
@@ -289,47 +271,51 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
       const bool signs_differ = p_lo != 0.0 && p_hi != 0.0 && (p_lo < 0) != (p_hi < 0);
       if (changes > 0 || signs_differ || std::fabs(p_at.value(middle)) <= e) {
         out.isolated = false;
-        found.push_back(middle);
+        found.add(middle);
       }
       continue;
     }
-    const double p_middle = p_at.value(middle);
-    const bool zero_middle = p_middle == 0.0;
-    if (zero_middle) found.push_back(middle);
     assert(pending + 2 <= stack.size());
+    double p_middle = 0.0;
+    bool known_middle = false;
     if (halving && job.depth + 1 <= kHalvedDepth) {
-      // pending <= job.depth (one sibling a level), so the halves' slots are within
-      // kHalvedDepth + 1.
-      if (slots.empty()) slots.resize((kHalvedDepth + 2) * (n + 1));
-      assert(pending + 1 < kHalvedDepth + 2);
-      // The right half goes to this piece's slot, after the left one has been taken out.
-      Coeffs left(n + 1, Coeffs::Uninitialized{}), right(n + 1, Coeffs::Uninitialized{});
-      halves(q, left.data(), right.data());
-      std::copy(right.begin(), right.end(), slot(pending));
-      std::copy(left.begin(), left.end(), slot(pending + 1));
+      assert(pending + 1 < kSlots);
+      // The right half goes to this piece's slot (halves reads q before it writes).
+      halves(q, slot(pending + 1), slot(pending));
+      // The halves' shared coefficient at the middle is within their bound of p there:
+      // beyond that bound plus e, p and its evaluation have its sign and neither is zero,
+      // and the sign is all that the tests and the refinement take from a piece's end
+      // (beside the first point of the refinement, which may be anywhere in the bracket).
+      const double shared = slot(pending)[0];
+      known_middle = std::fabs(shared) > std::max(e, halving_error * (job.depth + 1)) + e;
+      if (known_middle) p_middle = shared;
     }
+    if (!known_middle) p_middle = p_at.value(middle);
+    const bool zero_middle = p_middle == 0.0;
+    if (zero_middle) found.add(middle);
     stack[pending++] = {middle, job.hi, p_middle, job.p_hi, job.depth + 1, zero_middle, job.zero_hi};
     stack[pending++] = {job.lo, middle, job.p_lo, p_middle, job.depth + 1, job.zero_lo, zero_middle};
   }
-  std::sort(found.begin(), found.end());
+  double* const roots = found.values.data();
+  std::sort(roots, roots + found.count);
   std::size_t kept = 0;
-  for (std::size_t i = 0; i < found.size(); ++i) {
-    const double r = found[i];
+  for (std::size_t i = 0; i < found.count; ++i) {
+    const double r = roots[i];
     const bool inside = ends == IntervalEnds::closed ? (a <= r && r <= b) : (a < r && r < b);
     if (!inside) continue;
     if (kept > 0) {
-      const double previous = found[kept - 1];
+      const double previous = roots[kept - 1];
       if (r == previous) continue;
       if (std::fabs(p_at.value(previous + (r - previous) / 2)) <= e) {
         // One flat stretch of p (a multiple root, a cluster): keep its best representative.
-        if (std::fabs(p_at.value(r)) < std::fabs(p_at.value(previous))) found[kept - 1] = r;
+        if (std::fabs(p_at.value(r)) < std::fabs(p_at.value(previous))) roots[kept - 1] = r;
         out.isolated = false;
         continue;
       }
     }
-    found[kept++] = r;
+    roots[kept++] = r;
   }
-  found.resize(kept);
+  out.roots = SmallArray<double>(std::span<const double>(roots, kept));
   return out;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 
 #include <span>
-#include <vector>
+
+#include "core/numeric/small_array.hpp"
 
 namespace bezier::core {
 
@@ -32,7 +33,7 @@ enum class IntervalEnds { open, closed };
 /// double root is then within about sqrt(e / |p''|) of the reported t, a root of
 /// multiplicity m within about (e / |p^(m)|)^(1/m)).
 struct IntervalRoots {
-  std::vector<double> roots;
+  SmallArray<double> roots;
   bool isolated = true;
 };
 

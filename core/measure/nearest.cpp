@@ -1,15 +1,20 @@
 #include "core/measure/nearest.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
+#include <span>
 
-#include "core/curve/derivative.hpp"
+#include "core/base/multiversion.hpp"
+#include "core/bernstein/casteljau_row.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/measure/axis.hpp"
 #include "core/measure/bernstein_product.hpp"
 #include "core/measure/interval_roots.hpp"
 #include "core/measure/normalised.hpp"
+#include "core/measure/tuning.hpp"
 #include "core/numeric/small_array.hpp"
 #include "core/numeric/unit_roundoff.hpp"
 
@@ -17,102 +22,199 @@ namespace bezier::core {
 
 namespace {
 
+/// B(t), B'(t) and B''(t).
+template <class P>
+struct Jet {
+  P point, first, second;
+};
+
+/// The Jet from one compensated de Casteljau triangle (CasteljauRow): B(t) is its last
+/// entry, bit for bit evaluate()'s; B' is n times the difference of the two entries of the
+/// level before and B'' n (n - 1) times the second difference of the three before that
+/// (Farin, §5.3), each difference taken on the entries' values and error parts apart, so
+/// that close entries lose nothing to cancellation: within a few roundings of the exact
+/// derivatives. Newton's method on (B - q) · B' needs all three at each iterate.
+template <class P>
+Jet<P> jet_of(std::span<const P> points, double t) {
+  const double n = static_cast<double>(points.size() - 1);
+  CasteljauRow<P> row(points);
+  Jet<P> out{};
+  while (row.size() > 3) row.casteljau_step(t);
+  if (row.size() == 3) {
+    const auto &g0 = row.entry(0), &g1 = row.entry(1), &g2 = row.entry(2);
+    out.second = (n * (n - 1)) * (((g2.hi - g1.hi) - (g1.hi - g0.hi)) + ((g2.lo - g1.lo) - (g1.lo - g0.lo)));
+    row.casteljau_step(t);
+  }
+  if (row.size() == 2) {
+    const auto &e0 = row.entry(0), &e1 = row.entry(1);
+    out.first = n * ((e1.hi - e0.hi) + (e1.lo - e0.lo));
+    row.casteljau_step(t);
+  }
+  out.point = row.point(0);
+  return out;
+}
+
+BEZIER_FMA_CLONES Jet<Point2> jet_at(std::span<const Point2> points, double t) { return jet_of(points, t); }
+BEZIER_FMA_CLONES Jet<Point3> jet_at(std::span<const Point3> points, double t) { return jet_of(points, t); }
+
+/// The Bernstein coefficients of f = (B - q) · B' into f[0..2n-1] (degree 2n - 1; f[0] = 0
+/// for a point, n = 0): the products (bernstein_product.hpp) of the offsets P_i - q with the
+/// hodograph's points, which are derivative()'s (each within one rounding of
+/// n (P_{i+1} - P_i)).
+template <class P>
+void distance_slope_of(std::span<const P> points, P target, double* f) {
+  CasteljauRow<P> hodograph(points);
+  hodograph.hodograph_step();
+  dot_product_polynomial_into(
+      static_cast<int>(points.size()) - 1, static_cast<int>(hodograph.size()) - 1,
+      [&](int i) { return points[static_cast<std::size_t>(i)] - target; },
+      [&](int j) { return hodograph.point(static_cast<std::size_t>(j)); }, f);
+}
+
+BEZIER_FMA_CLONES void distance_slope(std::span<const Point2> points, Point2 target, double* f) {
+  distance_slope_of(points, target, f);
+}
+BEZIER_FMA_CLONES void distance_slope(std::span<const Point3> points, Point3 target, double* f) {
+  distance_slope_of(points, target, f);
+}
+
+/// A candidate parameter, B(t) as its coordinates (an array of doubles, left unset in a
+/// store of candidates until written, where points would all be zeroed first).
 template <class P>
 struct Candidate {
   double t;
-  double distance;
-  P point;  // B(t)
+  double squared;  // |B(t) - q|^2 from the compensated B(t)
+  std::array<double, sizeof(P) / sizeof(double)> coordinates;
+
+  Candidate() = default;
+  Candidate(double t_, double squared_, P point) : t(t_), squared(squared_) {
+    for (std::size_t k = 0; k < coordinates.size(); ++k) coordinates[k] = axis(point, k);
+  }
+  [[nodiscard]] P point() const {
+    P p;
+    for (std::size_t k = 0; k < coordinates.size(); ++k) axis(p, k) = coordinates[k];
+    return p;
+  }
 };
 
 template <class P>
-Candidate<P> candidate_at(const BasicCurve<P>& curve, P target, double t) {
-  const P point = evaluate(curve, t);
-  return {t, length(point - target), point};
+double squared_length(P v) {
+  return dot(v, v);
 }
 
 /// The candidate at an end of [a, b]: at t = 0 or 1 the end control point (what evaluate
 /// returns there).
 template <class P>
 Candidate<P> end_candidate(const BasicCurve<P>& curve, P target, double t) {
-  if (t != 0.0 && t != 1.0) return candidate_at(curve, target, t);
-  const P point = t == 0.0 ? curve.points().front() : curve.points().back();
-  return {t, length(point - target), point};
+  const P point = t == 0.0   ? curve.points().front()
+                  : t == 1.0 ? curve.points().back()
+                             : evaluate(curve, t);
+  return Candidate<P>(t, squared_length(point - target), point);
 }
 
+/// The candidate at the root t of f, polished by Newton's method on f = (B - q) · B' with
+/// f' = |B'|^2 + (B - q) · B'' from the compensated jet, each step kept only while it stays
+/// in [a, b] and lowers the distance.
 template <class P>
-double distance_at(const BasicCurve<P>& curve, P target, double t) {
-  return length(evaluate(curve, t) - target);
-}
-
-/// Newton's method on f = (B - q) · B', each step kept only while it stays in [a, b] and
-/// lowers the distance.
-template <class P>
-Candidate<P> polish(const BasicCurve<P>& curve, P target, double a, double b, Candidate<P> best) {
-  for (int iteration = 0; iteration < 8; ++iteration) {
-    const P offset = best.point - target;
-    const auto d = derivatives_at(curve, best.t, 2);
-    const double f = dot(offset, d[0]);
-    const double slope = dot(d[0], d[0]) + dot(offset, d[1]);
+Candidate<P> polished(std::span<const P> points, P target, double a, double b, double t) {
+  Jet<P> jet = jet_at(points, t);
+  Candidate<P> best(t, squared_length(jet.point - target), jet.point);
+  P point = jet.point;
+  for (int iteration = 0; iteration < measure_tuning::kPolishIterations; ++iteration) {
+    const P offset = point - target;
+    const double f = dot(offset, jet.first);
+    const double slope = dot(jet.first, jet.first) + dot(offset, jet.second);
     if (f == 0.0 || !(slope != 0.0)) break;
     const double next = best.t - f / slope;
     if (!(a <= next && next <= b) || next == best.t) break;
-    const Candidate<P> moved = candidate_at(curve, target, next);
-    if (!(moved.distance < best.distance)) break;
-    best = moved;
+    const Jet<P> moved = jet_at(points, next);
+    const double squared = squared_length(moved.point - target);
+    if (!(squared < best.squared)) break;
+    best = Candidate<P>(next, squared, moved.point);
+    point = moved.point;
+    jet = moved;
   }
   return best;
 }
 
+/// The nearest point, coordinate_scale the largest coordinate of the control points and the
+/// target, which the caller has brought into [1/2, 1) (normalised.hpp): the squared
+/// distances cannot overflow, and only distances far below the tie tolerance underflow.
 template <class P>
-NearestPoint<P> closest(const BasicCurve<P>& curve, P target, double a, double b) {
+NearestPoint<P> closest(const BasicCurve<P>& curve, P target, double a, double b,
+                        double coordinate_scale) {
   assert(0.0 <= a && a <= b && b <= 1.0);
-  std::vector<Candidate<P>> candidates = {end_candidate(curve, target, a),
-                                          end_candidate(curve, target, b)};
+  constexpr std::size_t kDimension = sizeof(P) / sizeof(double);
+  const auto points = curve.points();
+  SmallArray<double> roots;
   if (a < b) {
-    const auto points = curve.points();
-    SmallArray<P> offsets(points.size(), typename SmallArray<P>::Uninitialized{});
-    for (std::size_t i = 0; i < points.size(); ++i) offsets[i] = points[i] - target;
-    const BasicCurve<P> hodograph = derivative(curve);
-    const std::vector<double> f = dot_product_polynomial<P>(offsets, hodograph.points());
+    const std::size_t n = points.size() - 1;
+    Coeffs f(std::max<std::size_t>(2 * n, 1), Coeffs::Uninitialized{});
+    distance_slope(points, target, f.data());
     // f = D' / 2 for D = |B - q|^2: a minimum of D inside (a, b) is where f rises through
     // zero; where it falls D has a maximum, never the answer.
-    for (const double t : interval_roots(f, a, b, IntervalEnds::closed, Crossings::rising).roots)
-      candidates.push_back(candidate_at(curve, target, t));
+    roots = interval_roots(f, a, b, IntervalEnds::closed, Crossings::rising).roots;
   }
-  const double coordinate_scale = std::max(scale(curve), max_abs_coordinate(target));
-  // Only the candidates near the least distance are polished. A root of the computed f is
-  // within a rounding-level stretch of the exact one (f's coefficients are within their
-  // bound e, about 1e-14 of the scale squared, of the exact ones), and along that stretch
-  // D = |B - q|^2 changes by 2 ∫ f, where |f| stays at rounding level: polishing lowers a
-  // distance by far less than 1e-6 of the coordinate scale, so a candidate further than
-  // that above the least is neither the minimum nor tied with it.
-  double rough_least = candidates.front().distance;
-  for (const Candidate<P>& c : candidates) rough_least = std::min(rough_least, c.distance);
-  const double polish_margin = 1e-6 * coordinate_scale;
-  for (std::size_t i = 2; i < candidates.size(); ++i) {
-    if (candidates[i].distance <= rough_least + polish_margin)
-      candidates[i] = polish(curve, target, a, b, candidates[i]);
+  // The ends, then the roots that can still be the minimum or tie with it, polished.
+  SmallArray<Candidate<P>> candidates(2 + roots.size(), typename SmallArray<Candidate<P>>::Uninitialized{});
+  candidates[0] = end_candidate(curve, target, a);
+  candidates[1] = end_candidate(curve, target, b);
+  std::size_t count = 2;
+  if (!roots.empty()) {
+    // A root of the computed f is within a rounding-level stretch of the exact one (f's
+    // coefficients are within their bound e, about 1e-14 of the scale squared, of the
+    // exact ones), and along that stretch D = |B - q|^2 changes by 2 ∫ f, where |f| stays
+    // at rounding level: polishing lowers a distance by far less than kPolishMargin of the
+    // coordinate scale, and the rough distances (B - q per coordinate by
+    // bernstein::evaluate) are within a few n u of the scale of the compensated ones, so a
+    // root whose rough distance is further than that above the least is neither the
+    // minimum nor tied with it.
+    std::array<Coeffs, kDimension> offsets;
+    for (std::size_t k = 0; k < kDimension; ++k) {
+      offsets[k] = Coeffs(points.size(), Coeffs::Uninitialized{});
+      for (std::size_t i = 0; i < points.size(); ++i) offsets[k][i] = axis(points[i], k) - axis(target, k);
+    }
+    SmallArray<double> rough(roots.size(), SmallArray<double>::Uninitialized{});
+    double least = std::min(candidates[0].squared, candidates[1].squared);
+    for (std::size_t i = 0; i < roots.size(); ++i) {
+      rough[i] = 0.0;
+      for (std::size_t k = 0; k < kDimension; ++k) {
+        const double offset = bernstein::evaluate(offsets[k], roots[i]);
+        rough[i] += offset * offset;
+      }
+      least = std::min(least, rough[i]);
+    }
+    const double limit = std::sqrt(least) + measure_tuning::kPolishMargin * coordinate_scale;
+    for (std::size_t i = 0; i < roots.size(); ++i) {
+      if (rough[i] <= limit * limit) candidates[count++] = polished(points, target, a, b, roots[i]);
+    }
   }
-  double least = candidates.front().distance;
-  for (const Candidate<P>& c : candidates) least = std::min(least, c.distance);
-  const double tolerance = std::max(1e-12 * least, 8 * kUnitRoundoff * coordinate_scale);
-
-  std::vector<Candidate<P>> tied;
-  for (const Candidate<P>& c : candidates) {
-    if (c.distance <= least + tolerance) tied.push_back(c);
-  }
-  std::sort(tied.begin(), tied.end(),
+  const std::span<Candidate<P>> kept(candidates.data(), count);
+  double least_squared = kept.front().squared;
+  for (const Candidate<P>& c : kept) least_squared = std::min(least_squared, c.squared);
+  // The tie tolerance on the distances, from the least squared one; a candidate's squared
+  // distance and its root agree with the distance to within rounding, far below it.
+  const double rough_least = std::sqrt(least_squared);
+  const double tolerance = std::max(1e-12 * rough_least, 8 * kUnitRoundoff * coordinate_scale);
+  const double tie_limit = (rough_least + tolerance) * (rough_least + tolerance);
+  const auto tied_end = std::partition(kept.begin(), kept.end(), [&](const Candidate<P>& c) {
+    return c.squared <= tie_limit;
+  });
+  std::sort(kept.begin(), tied_end,
             [](const Candidate<P>& x, const Candidate<P>& y) { return x.t < y.t; });
+  const std::span<const Candidate<P>> tied(kept.begin(), tied_end);
   NearestPoint<P> out;
   out.t = tied.front().t;
-  out.point = tied.front().point;
-  out.distance = least;
+  out.point = tied.front().point();
+  // The least distance, hypot(B(t) - q) over the tied candidates.
+  out.distance = length(out.point - target);
+  for (std::size_t i = 1; i < tied.size(); ++i) out.distance = std::min(out.distance, length(tied[i].point() - target));
   double previous = tied.front().t;
   for (std::size_t i = 1; i < tied.size(); ++i) {
     const double t = tied[i].t;
     const double middle = previous + (t - previous) / 2;
     const bool same_minimum =
-        t == previous || distance_at(curve, target, middle) <= least + tolerance;
+        t == previous || length(evaluate(curve, middle) - target) <= out.distance + tolerance;
     previous = t;
     if (!same_minimum) out.ties.push_back(t);
   }
@@ -123,9 +225,11 @@ NearestPoint<P> closest(const BasicCurve<P>& curve, P target, double a, double b
 /// point and distance scaled back.
 template <class P>
 NearestPoint<P> scaled_closest(const BasicCurve<P>& curve, P target, double a, double b) {
-  if (normalising_factor(curve, max_abs_coordinate(target)) == 1.0) return closest(curve, target, a, b);
+  const double largest = std::max(scale(curve), max_abs_coordinate(target));
+  const double factor = normalising_factor_of(largest);
+  if (factor == 1.0) return closest(curve, target, a, b, largest);
   const Normalised<P> unit = normalised(curve, max_abs_coordinate(target));
-  NearestPoint<P> out = closest(unit.curve, unit.factor * target, a, b);
+  NearestPoint<P> out = closest(unit.curve, unit.factor * target, a, b, factor * largest);
   out.point = out.point / unit.factor;
   out.distance /= unit.factor;
   return out;

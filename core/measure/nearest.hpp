@@ -33,12 +33,15 @@ struct NearestPoint {
 /// strict sign beyond their rounding bound, so no root is lost except where |f| stays at
 /// that bound, where D varies by no more than the bound times the width: such a loss moves
 /// the answer by a rounding-level amount, never to another local minimum. Each root whose
-/// distance is within 1e-6 of the coordinate scale of the least is then polished by
-/// Newton's method on f with f' = |B'|^2 + (B - q) · B'' from the compensated evaluations
-/// (kept only while it lowers the distance and stays in [a, b]; polishing moves a distance
-/// by a rounding-level amount, so the others are neither the minimum nor tied with it),
-/// and the candidates are compared by their distance, hypot(B(t) - q) from the compensated
-/// B(t).
+/// rough distance (B - q by de Casteljau in doubles) is within
+/// measure_tuning::kPolishMargin of the coordinate scale of the least is then polished by
+/// Newton's method on f with f' = |B'|^2 + (B - q) · B'' from one compensated de Casteljau
+/// triangle (kept only while it lowers the distance and stays in [a, b]; polishing moves a
+/// distance by a rounding-level amount, so the others are neither the minimum nor tied
+/// with it), and the ends and polished roots are compared by their squared distance
+/// |B(t) - q|^2 from the compensated B(t) (on the normalised curve, normalised.hpp, where
+/// squares neither overflow nor underflow above the tie tolerance); the distance reported
+/// is hypot(B(t) - q).
 ///
 /// Ties (as POST /nearest promises in api/openapi.yaml): the candidates within max(1e-12 d_min, 8 u s) of the least distance
 /// d_min, s the largest coordinate of the control points and the target (below 8 ulps of

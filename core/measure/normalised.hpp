@@ -17,6 +17,13 @@ struct Normalised {
   double factor = 1.0;
 };
 
+/// The power of two that brings `largest`, a largest coordinate, into [1/2, 1) (1 for zero
+/// or a value that is not finite).
+[[nodiscard]] inline double normalising_factor_of(double largest) {
+  if (!(largest > 0.0) || !std::isfinite(largest)) return 1.0;
+  return power_of_two(-(std::ilogb(largest) + 1));
+}
+
 /// The measuring kernels work on the normalised curve: hodographs (n (P_{i+1} - P_i)) and
 /// products of points (the Bernstein coefficients of |B'|^2 or (B - q) · B') overflow for
 /// coordinates near the double range, and a power-of-two scale is exact (except for
@@ -24,9 +31,7 @@ struct Normalised {
 /// result scales back exactly and the answers are those of the original curve.
 template <class P>
 [[nodiscard]] double normalising_factor(const BasicCurve<P>& curve, double extra = 0.0) {
-  const double largest = std::fmax(scale(curve), extra);
-  if (!(largest > 0.0) || !std::isfinite(largest)) return 1.0;
-  return power_of_two(-(std::ilogb(largest) + 1));
+  return normalising_factor_of(std::fmax(scale(curve), extra));
 }
 
 /// The curve times normalising_factor (a copy; a caller whose curve already has the factor

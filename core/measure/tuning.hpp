@@ -1,0 +1,62 @@
+#pragma once
+
+#include <cstddef>
+
+// The tuning constants of the measuring kernels' root isolation and nearest point, each with
+// the reason for its value. They steer how the work is spent; none of them changes what is
+// certified: every discarded piece and every compared distance carries its own rounding
+// bound. Tolerances that define an answer (the tie tolerance of /nearest, the accuracy of
+// /length) are in the headers that promise them (nearest.hpp, arc_length.hpp).
+
+namespace bezier::core::measure_tuning {
+
+// The Bernstein root isolation (interval_roots.hpp).
+
+/// Subdivision stops at pieces of width 2^-40 and reports a still unresolved cluster once, at
+/// the middle of its piece: 2^-40 is about 1e-12, below the 1e-10 to which /nearest and
+/// /length promise a well-conditioned parameter, while distinct simple roots closer than
+/// that are not separated by double-precision coefficients anyway (their p stays within its
+/// rounding bound between them). It bounds the work on a multiple root to 40 levels.
+inline constexpr int kMaxDepth = 40;
+
+/// On [0, 1] the pieces of the first this many levels are halves of their parent (one
+/// subdivision at 1/2, a third of the rounds of a portion from the coefficients, and no
+/// evaluation of p at the piece's ends beyond the one at the split). Each halving adds at
+/// most n u max|c| to a coefficient's rounding, which the sign test of a piece d levels
+/// down allows (d n u max|c|, where that exceeds the bound of a portion, 3.02 n u max|c|):
+/// down to this depth the test is at most four times looser than a portion's, and
+/// isolating the roots of the polynomials /nearest and /bounds meet takes fewer levels;
+/// deeper pieces (clusters of close roots) come from portions, whose tighter bound tells
+/// closer roots apart. Each level costs a stack slot of n + 1 coefficients.
+inline constexpr int kHalvedDepth = 12;
+
+/// Polynomials of up to this many coefficients are evaluated and cut into pieces by code
+/// unrolled for their size (one instantiation each): the (B - q) · B' of /nearest for
+/// curves up to degree 12 and the hodograph coordinates of /bounds up to degree 24; beyond,
+/// the loops run with the size known only at run time (the same values, slower).
+inline constexpr std::size_t kUnrolledSizes = 24;
+
+/// Iterations of the bracketed Newton refinement of one root, after which it returns its
+/// last iterate: Newton's steps reach the rounding of p in a few, and a step out of the
+/// bracket is a bisection, so even by bisection alone 200 iterations bring the bracket to
+/// one ulp of any root above 2^-148 (52 + log2(1/t) halvings of [0, 1]); the limit only
+/// bounds the work on roots closer to 0 than that.
+inline constexpr int kRefineIterations = 200;
+
+// The nearest point (nearest.hpp).
+
+/// Candidates whose rough distance is within this fraction of the coordinate scale of the
+/// least rough distance are polished and compared with compensated evaluations; the others
+/// cannot be the minimum nor tie with it. Polishing moves a root of the computed (B - q) · B'
+/// by a rounding-level stretch, along which the distance changes by far less than 1e-6 of
+/// the scale, and a rough distance (plain de Casteljau, within a few n u of the scale) is
+/// far closer than that to the compensated one; a larger margin only polishes more.
+inline constexpr double kPolishMargin = 1e-6;
+
+/// Newton steps of the polish on one candidate: each is kept only while it lowers the
+/// compensated distance, and from a root already refined to the rounding of the computed
+/// polynomial one or two steps reach the rounding of the compensated one; the limit only
+/// bounds the work where the steps keep lowering the distance by rounding-level amounts.
+inline constexpr int kPolishIterations = 8;
+
+}  // namespace bezier::core::measure_tuning
