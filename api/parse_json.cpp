@@ -102,8 +102,7 @@ class Parser {
     while (true) {
       if (!read_item()) return false;
       skip_space();
-      if (take(close)) return true;
-      if (!take(',')) return fail(expected);
+      if (!take(',')) return take(close) || fail(expected);
       skip_space();
     }
   }
