@@ -338,16 +338,25 @@ TEST_F(ContractTest, EveryExampleIsAnsweredAsDocumented) {
   }
 }
 
-TEST_F(ContractTest, EveryRequestConstraintIsEnforced) {
-  const ViolationGenerator generator(contract());
+/// Calls f(op, schema, examples) for each operation with a JSON request body: its request
+/// schema and the examples of that body, inside a trace that names the operation.
+template <class F>
+void for_each_request_body(const F& f) {
   for (const Operation& op : operations()) {
     const std::string schema = request_schema(op);
     if (schema.empty()) continue;
     SCOPED_TRACE(op.method + " " + op.path);
     const std::string media = contract().resolve(op.location + "/requestBody") + "/content/application~1json";
+    f(op, schema, contract().at(media).at("examples"));
+  }
+}
+
+TEST_F(ContractTest, EveryRequestConstraintIsEnforced) {
+  const ViolationGenerator generator(contract());
+  for_each_request_body([&](const Operation& op, const std::string& schema, const json& examples) {
     std::set<std::string> uncovered = generator.sites(schema);
     int sent = 0;
-    for (const auto& [name, example] : contract().at(media).at("examples").items()) {
+    for (const auto& [name, example] : examples.items()) {
       for (const SchemaViolation& v : generator.violations(schema, example.at("value"))) {
         SCOPED_TRACE(name + ": " + v.what + " (" + v.site + "): " + v.request.dump().substr(0, 300));
         const auto e = exchange(port(), "POST", op.path, "application/json", v.request.dump());
@@ -378,19 +387,15 @@ TEST_F(ContractTest, EveryRequestConstraintIsEnforced) {
     for (const auto& site : uncovered) ADD_FAILURE() << "no request example lets the test break " << site;
     std::printf("%s %s: %d requests, each breaking one of %zu constraints\n", upper(op.method).c_str(),
                 op.path.c_str(), sent, generator.sites(schema).size());
-  }
+  });
 }
 
 TEST_F(ContractTest, EveryBoundIsAccepted) {
   const ViolationGenerator generator(contract());
-  for (const Operation& op : operations()) {
-    const std::string schema = request_schema(op);
-    if (schema.empty()) continue;
-    SCOPED_TRACE(op.method + " " + op.path);
-    const std::string media = contract().resolve(op.location + "/requestBody") + "/content/application~1json";
+  for_each_request_body([&](const Operation& op, const std::string& schema, const json& examples) {
     std::set<std::string> unreached = generator.bound_sites(schema);
     std::map<std::string, std::string> refusals;
-    for (const auto& [name, example] : contract().at(media).at("examples").items()) {
+    for (const auto& [name, example] : examples.items()) {
       for (const SchemaViolation& b : generator.boundaries(schema, example.at("value"))) {
         const auto e = exchange(port(), "POST", op.path, "application/json", b.request.dump());
         if (e.status == 200) {
@@ -403,7 +408,7 @@ TEST_F(ContractTest, EveryBoundIsAccepted) {
     // A bound the service refuses from every example is a spec looser than the service
     // (or an example missing: each bound needs one example from which it is reachable).
     for (const auto& site : unreached) ADD_FAILURE() << "no example reaches the bound " << site << ": " << refusals[site];
-  }
+  });
 }
 
 TEST_F(ContractTest, ErrorsOutsideTheSchemasAreDocumented) {
