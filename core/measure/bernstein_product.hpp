@@ -24,6 +24,37 @@ inline constexpr auto kBinomials = [] {
   return table;
 }();
 
+/// C(N, k) from the table or, beyond it, from binomial().
+[[nodiscard]] constexpr double choose(int top, int k) {
+  return top < kBinomialRows ? kBinomials[static_cast<std::size_t>(top)][static_cast<std::size_t>(k)]
+                             : binomial(top, k);
+}
+
+/// The weight C(m, i) C(n, j) / C(m + n, i + j) of u_i · v_j in w_{i+j}, ci = C(m, i).
+[[nodiscard]] constexpr double product_weight(int m, int n, int i, int j, double ci) {
+  return ci * choose(n, j) / choose(m + n, i + j);
+}
+
+/// The weights of the product of a degree-m polynomial and a degree-(m - 1) one (a curve's
+/// offsets and its hodograph, as /nearest multiplies them), m < kCurveHodographRows,
+/// computed at compile time (the same values as product_weight: each is one correctly
+/// rounded quotient of exact integers), m + 1 rows of m each, the degrees one after the
+/// other from m = 1.
+inline constexpr int kCurveHodographRows = 13;
+[[nodiscard]] constexpr std::size_t curve_hodograph_offset(int m) {
+  return static_cast<std::size_t>((m - 1) * m * (m + 1) / 3);  // Σ_{k<m} (k + 1) k
+}
+inline constexpr auto kCurveHodographWeights = [] {
+  std::array<double, curve_hodograph_offset(kCurveHodographRows)> table{};
+  for (int m = 1; m < kCurveHodographRows; ++m) {
+    std::size_t next = curve_hodograph_offset(m);
+    for (int i = 0; i <= m; ++i) {
+      for (int j = 0; j < m; ++j) table[next++] = product_weight(m, m - 1, i, j, choose(m, i));
+    }
+  }
+  return table;
+}();
+
 /// The Bernstein coefficients of the scalar polynomial u(t) · v(t), where u and v are vector
 /// polynomials in Bernstein form of degrees m and n (coefficients u_0..u_m, v_0..v_n). The
 /// product of two Bernstein bases is b_{i,m} b_{j,n} = C(m,i) C(n,j) / C(m+n,i+j) b_{i+j,m+n}
@@ -37,18 +68,18 @@ inline constexpr auto kBinomials = [] {
 template <class U, class V>
 void dot_product_polynomial_into(int m, int n, U u, V v, double* w) {
   std::fill(w, w + m + n + 1, 0.0);
-  // The binomials (exact integers: the same values from the table as computed).
-  const auto choose = [](int top, int k) {
-    return top < kBinomialRows ? kBinomials[static_cast<std::size_t>(top)][static_cast<std::size_t>(k)]
-                               : binomial(top, k);
-  };
+  if (n == m - 1 && m < kCurveHodographRows) {
+    const double* weight = kCurveHodographWeights.data() + curve_hodograph_offset(m);
+    for (int i = 0; i <= m; ++i) {
+      const auto ui = u(i);
+      for (int j = 0; j <= n; ++j) w[i + j] += *weight++ * dot(ui, v(j));
+    }
+    return;
+  }
   for (int i = 0; i <= m; ++i) {
     const auto ui = u(i);
     const double ci = choose(m, i);
-    for (int j = 0; j <= n; ++j) {
-      const double weight = ci * choose(n, j) / choose(m + n, i + j);
-      w[i + j] += weight * dot(ui, v(j));
-    }
+    for (int j = 0; j <= n; ++j) w[i + j] += product_weight(m, n, i, j, ci) * dot(ui, v(j));
   }
 }
 
