@@ -15,33 +15,14 @@
 
 #include "api/handler.hpp"
 #include "api/limits.hpp"
+#include "tests/fuzz/api_limits.hpp"
 #include "tests/fuzz/reply_checks.hpp"
 
 namespace {
 
-// The spec's POST routes, in a fixed order so that a corpus keeps its meaning when the
-// route table grows; a route not registered (yet) rejects the input.
-constexpr std::array<std::string_view, 5> kPaths = {"/evaluate", "/polar", "/loop-area",
-                                                    "/intersections", "/classify"};
-
-// The documented defaults, except a tenth of the work cap: under ASan and coverage a
-// kernel step costs ten to fifty times what it does in a release build, and requests that
-// exhaust 200000 steps (curves retracing themselves, high-order contacts) would take
-// seconds each and starve the run. The cap's own path is the same at any value.
-bezier::api::Limits default_limits() {
-  bezier::api::Limits limits;
-  limits.max_work = 20000;
-  return limits;
-}
-
-bezier::api::Limits tight_limits() {
-  bezier::api::Limits limits;
-  limits.max_degree = 3;
-  limits.max_t_values = 4;
-  limits.max_body_bytes = 256;
-  limits.max_work = 64;
-  return limits;
-}
+using bezier::fuzz::default_limits;
+using bezier::fuzz::tight_limits;
+constexpr const auto& kPaths = bezier::fuzz::kApiPaths;
 
 }  // namespace
 

@@ -42,6 +42,7 @@
 #include "api/handler.hpp"
 #include "api/limits.hpp"
 #include "api/parse_json.hpp"
+#include "tests/fuzz/api_limits.hpp"
 #include "tests/fuzz/fuzz_support.hpp"
 #include "tests/fuzz/reply_checks.hpp"
 #include "tests/support/batch_body.hpp"
@@ -71,21 +72,18 @@ bool is_charged(std::string_view path) {
   return std::find(kChargedRoutes.begin(), kChargedRoutes.end(), path) != kChargedRoutes.end();
 }
 
-// A tenth of the default work cap and below, as in the other API targets: under ASan and
-// coverage a kernel step costs ten to fifty times what it does in a release build.
+// The other API targets' limits (api_limits.hpp) with a batch's: the defaults, with room
+// for 32 items of the work-capped routes; or at most 4 items, 2 of them charged, segments
+// and an answer cap that small requests reach.
 bezier::api::Limits default_limits() {
-  bezier::api::Limits limits;
-  limits.max_work = 20000;
+  bezier::api::Limits limits = bezier::fuzz::default_limits();
   limits.max_batch_work = 32 * limits.max_work;
   return limits;
 }
 
 bezier::api::Limits tight_limits(std::size_t answer_bytes) {
-  bezier::api::Limits limits;
-  limits.max_degree = 3;
-  limits.max_t_values = 4;
+  bezier::api::Limits limits = bezier::fuzz::tight_limits();
   limits.max_path_segments = 4;
-  limits.max_work = 64;
   limits.max_batch_items = 4;
   limits.max_batch_work = 2 * limits.max_work;
   limits.max_batch_answer_bytes = answer_bytes;
