@@ -298,22 +298,33 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
   }
   double* const roots = found.values.data();
   std::sort(roots, roots + found.count);
+  // One flat stretch a root (see the header): each point is compared with the point before
+  // it, kept or not, so that a stretch is one root however far apart its ends are.
   std::size_t kept = 0;
+  double last = 0.0;         // the point before r, kept or not
+  double kept_value = -1.0;  // |p| at the last point kept, once needed (-1 before)
   for (std::size_t i = 0; i < found.count; ++i) {
     const double r = roots[i];
     const bool inside = ends == IntervalEnds::closed ? (a <= r && r <= b) : (a < r && r < b);
     if (!inside) continue;
     if (kept > 0) {
-      const double previous = roots[kept - 1];
-      if (r == previous) continue;
-      if (std::fabs(p_at.value(previous + (r - previous) / 2)) <= e) {
+      if (r == last) continue;
+      if (std::fabs(p_at.value(last + (r - last) / 2)) <= 3 * e) {
         // One flat stretch of p (a multiple root, a cluster): keep its best representative.
-        if (std::fabs(p_at.value(r)) < std::fabs(p_at.value(previous))) roots[kept - 1] = r;
+        if (kept_value < 0) kept_value = std::fabs(p_at.value(roots[kept - 1]));
+        const double value = std::fabs(p_at.value(r));
+        if (value < kept_value) {
+          roots[kept - 1] = r;
+          kept_value = value;
+        }
         out.isolated = false;
+        last = r;
         continue;
       }
     }
     roots[kept++] = r;
+    kept_value = -1.0;
+    last = r;
   }
   out.roots = SmallArray<double>(std::span<const double>(roots, kept));
   return out;

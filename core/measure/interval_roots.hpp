@@ -27,9 +27,13 @@ enum class IntervalEnds { open, closed };
 /// point is a root, and the pieces on either side leave that end out of their count.
 /// A cluster still unresolved at width 2^-40 (a multiple root, a root where p rounds to
 /// a tiny nonzero value at a split point) is reported at the middle of its piece.
-/// Where p stays within e of zero the search may report several points a little apart:
-/// consecutive roots with |p| <= e at their midpoint are one root here, represented by
-/// the one with the smallest |p|. `isolated` is false when such a flat stretch was met (a
+/// Where p stays within e of zero the search may report several points a little apart,
+/// each with an exact |p| within 2e (its piece's coefficients are within e of zero, and
+/// within e of the exact ones). Near a multiple root |p| is no larger between two such
+/// points, so p evaluates within 3e at their midpoint: consecutive points with that are one
+/// flat stretch, chained (each point compared with the one before it, whether that one was
+/// kept or not), and a stretch is one root, represented by its point with the smallest
+/// computed |p|. `isolated` is false when such a flat stretch was met (a
 /// double root is then within about sqrt(e / |p''|) of the reported t, a root of
 /// multiplicity m within about (e / |p^(m)|)^(1/m)).
 struct IntervalRoots {

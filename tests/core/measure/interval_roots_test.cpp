@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -148,6 +149,102 @@ TEST(IntervalRoots, RisingCrossingsOnly) {
   const IntervalRoots falling = interval_roots(minus, 0.0, 1.0, IntervalEnds::closed, Crossings::rising);
   ASSERT_EQ(falling.roots.size(), 1u);
   EXPECT_NEAR(falling.roots[0], 0.45, accuracy(c, roots, 1, 1.0));
+}
+
+/// A root of p and its multiplicity.
+struct Root {
+  double at;
+  int multiplicity;
+};
+
+/// The roots with their multiplicities, one entry per factor (t - r), for from_roots.
+std::vector<double> factors(const std::vector<Root>& roots) {
+  std::vector<double> out;
+  for (const Root& r : roots) out.insert(out.end(), static_cast<std::size_t>(r.multiplicity), r.at);
+  return out;
+}
+
+/// How far the point reported for root i of multiplicity m may be from it: the contract puts
+/// it where the rounded polynomial's computed |p| is within e = 3.02 n u max|c|, so the exact
+/// |p| there is within 2e, and the coefficients' rounding (u max|c| at most) adds less than
+/// e more: |p(t)| <= 3e. Near the root p(t) = L (t - r_i)^m (1 + O(t - r_i)) with
+/// L = k Π_(j != i) (r_i - r_j)^(m_j), so |t - r_i| <= (3e / |L|)^(1/m), doubled for the
+/// higher terms, plus an ulp of t.
+double cluster_accuracy(const std::vector<double>& c, const std::vector<Root>& roots, std::size_t i, double k) {
+  double max_c = 0.0;
+  for (const double v : c) max_c = std::max(max_c, std::fabs(v));
+  const double e = 3.02 * static_cast<double>(c.size() - 1) * kUnitRoundoff * max_c;
+  double leading = std::fabs(k);
+  for (std::size_t j = 0; j < roots.size(); ++j) {
+    if (j != i) leading *= std::pow(std::fabs(roots[i].at - roots[j].at), roots[j].multiplicity);
+  }
+  return 2 * std::pow(3 * e / leading, 1.0 / roots[i].multiplicity) + 2 * kUnitRoundoff;
+}
+
+TEST(IntervalRoots, EveryMultipleRootOnce) {
+  // Double and triple roots on split points (1/2, 1/4, 3/8), off them (0.3, 0.7, 0.55) and
+  // near the ends, with simple roots beside them. Each is one flat stretch of p, reported
+  // once within its multiplicity's accuracy, whatever the crossings wanted and the ends
+  // counted: the roots are inside (0, 1), and a multiple root is a cluster, which `rising`
+  // keeps (a piece with one sign change holds at most one root counted with multiplicity).
+  const std::vector<std::vector<Root>> cases = {
+      {{0.3, 2}, {0.8, 1}},
+      {{0.5, 2}},
+      {{0.5, 3}},
+      {{0.25, 2}, {0.75, 1}},
+      {{0.25, 3}, {0.6, 1}},
+      {{0.375, 2}, {0.6, 1}, {0.875, 3}},
+      {{0.7, 3}, {0.2, 1}},
+      {{0.002, 2}, {0.55, 1}, {0.998, 3}},
+      {{0.001, 3}, {0.4, 2}, {0.999, 2}},
+      {{0.1, 1}, {0.3, 2}, {0.55, 3}, {0.8, 2}, {0.95, 1}},
+  };
+  for (const std::vector<Root>& roots : cases) {
+    for (const double k : {1.0, -3.0}) {
+      const std::vector<double> c = from_roots(factors(roots), k);
+      for (const Crossings wanted : {Crossings::any, Crossings::rising}) {
+        for (const IntervalEnds ends : {IntervalEnds::closed, IntervalEnds::open}) {
+          // The roots expected: all, or the multiple ones and the simple ones where p rises
+          // (p' = k Π_(j != i) (r_i - r_j)^(m_j) > 0 there).
+          std::vector<std::size_t> expected;
+          for (std::size_t i = 0; i < roots.size(); ++i) {
+            double slope = k;
+            for (std::size_t j = 0; j < roots.size(); ++j) {
+              if (j != i) slope *= std::pow(roots[i].at - roots[j].at, roots[j].multiplicity);
+            }
+            if (wanted == Crossings::any || roots[i].multiplicity > 1 || slope > 0) expected.push_back(i);
+          }
+          std::sort(expected.begin(), expected.end(), [&](std::size_t x, std::size_t y) { return roots[x].at < roots[y].at; });
+          SCOPED_TRACE(std::to_string(roots.size()) + " roots from " + std::to_string(roots[0].at) +
+                       ", k = " + std::to_string(k) + (wanted == Crossings::any ? ", any" : ", rising") +
+                       (ends == IntervalEnds::closed ? ", closed" : ", open"));
+          const IntervalRoots r = interval_roots(c, 0.0, 1.0, ends, wanted);
+          ASSERT_EQ(r.roots.size(), expected.size());
+          EXPECT_FALSE(r.isolated);
+          for (std::size_t i = 0; i < expected.size(); ++i) {
+            EXPECT_NEAR(r.roots[i], roots[expected[i]].at, cluster_accuracy(c, roots, expected[i], k)) << i;
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(IntervalRoots, MoreRootsThanTheInlineStore) {
+  // More simple roots than SmallArray holds inline: the points found and the roots returned
+  // move to the heap, every root still once, ascending and accurate. The roots are
+  // Chebyshev's nodes on [0, 1], (1 - cos((2i + 1) pi / 2n)) / 2 as doubles, where p is as
+  // large between its roots as anywhere (a multiple of T_n), so that they stay apart
+  // against the coefficients' rounding.
+  const std::size_t n = SmallArray<double>::kInline + 2;
+  std::vector<double> roots;
+  for (std::size_t i = 0; i < n; ++i) {
+    roots.push_back((1 - std::cos((2 * static_cast<double>(i) + 1) * std::numbers::pi / (2 * static_cast<double>(n)))) / 2);
+  }
+  const std::vector<double> c = from_roots(roots);
+  const IntervalRoots r = interval_roots(c, 0.0, 1.0, IntervalEnds::closed);
+  ASSERT_EQ(r.roots.size(), roots.size());
+  for (std::size_t i = 0; i < roots.size(); ++i) EXPECT_NEAR(r.roots[i], roots[i], accuracy(c, roots, i, 1.0)) << i;
 }
 
 TEST(IntervalRoots, NoRootsWhereThePolynomialKeepsItsSign) {
