@@ -1,10 +1,16 @@
 // bernstein::hull_clip (core/bernstein/bernstein1d.hpp): Sederberg and Nishita's convex-hull
-// clip of a Bernstein polynomial against a band, against the hull computed in exact rationals.
+// clip of a Bernstein polynomial against a band, against the hull computed in exact rationals;
+// bernstein::portion_into and portion_into_fixed (the piece of a polynomial on [a, b]) against
+// the blossom values in exact rationals.
 #include "core/bernstein/bernstein1d.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstddef>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include "core/numeric/unit_roundoff.hpp"
@@ -65,6 +71,55 @@ TEST(HullClip, MatchesTheHullComputedInRationals) {
   }
   EXPECT_GT(empty, 100);
   EXPECT_GT(clipped, 1000);
+}
+
+/// The blossom value b(a^(n-i), b^i) of c in exact rationals: n - i de Casteljau rounds
+/// with a, then i with b (a blossom is symmetric, so the order does not matter).
+Rational exact_blossom(const std::vector<double>& c, std::size_t i, double a, double b) {
+  std::vector<Rational> row(c.begin(), c.end());
+  const std::size_t n = c.size() - 1;
+  for (std::size_t round = 0; round < n; ++round) {
+    const Rational t(round < n - i ? a : b);
+    for (std::size_t k = 0; k + round < n; ++k) row[k] = (Rational(1) - t) * row[k] + t * row[k + 1];
+  }
+  return row[0];
+}
+
+template <std::size_t E>
+void expect_fixed_portion_is_portion(const std::vector<double>& c, double a, double b) {
+  std::array<double, E> fixed;
+  std::vector<double> any(E);
+  bernstein::portion_into_fixed<E>(c.data(), a, b, fixed.data());
+  bernstein::portion_into(std::span<const double>(c), a, b, any.data());
+  for (std::size_t i = 0; i < E; ++i) EXPECT_EQ(fixed[i], any[i]) << "size " << E << ", i " << i;
+}
+
+/// The check above for the size of c, among 1..sizeof...(I) coefficients.
+template <std::size_t... I>
+void expect_fixed_portions_are_portions(const std::vector<double>& c, double a, double b,
+                                        std::index_sequence<I...>) {
+  ((c.size() == I + 1 ? expect_fixed_portion_is_portion<I + 1>(c, a, b) : void()), ...);
+}
+
+TEST(Portion, IsTheExactPieceWithinItsBound) {
+  // Degrees 0-9 on random intervals: every coefficient within 3.01 n u max|c| of the exact
+  // blossom value, and the size fixed at compile time gives the same values bit for bit.
+  test::Mulberry32 rng(7);
+  for (int trial = 0; trial < 200; ++trial) {
+    const std::size_t n = static_cast<std::size_t>(trial % 10);
+    std::vector<double> c(n + 1);
+    for (double& v : c) v = rng.uniform(-1, 1);
+    double a = rng.next(), b = rng.next();
+    if (a > b) std::swap(a, b);
+    std::vector<double> piece(n + 1);
+    bernstein::portion_into(std::span<const double>(c), a, b, piece.data());
+    const double bound = 3.01 * static_cast<double>(n) * kUnitRoundoff * bernstein::max_abs(c);
+    for (std::size_t i = 0; i <= n; ++i) {
+      EXPECT_LE(abs(Rational(piece[i]) - exact_blossom(c, i, a, b)), Rational(bound))
+          << "degree " << n << ", i " << i;
+    }
+    expect_fixed_portions_are_portions(c, a, b, std::make_index_sequence<10>{});
+  }
 }
 
 }  // namespace
