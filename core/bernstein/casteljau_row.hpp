@@ -1,12 +1,10 @@
 #pragma once
 
-#include <algorithm>
 #include <cassert>
 #include <span>
-#include <vector>
 
 #include "core/numeric/error_free.hpp"
-#include "core/numeric/tuning.hpp"
+#include "core/numeric/small_array.hpp"
 #include "core/base/point.hpp"
 
 namespace bezier::core {
@@ -33,26 +31,11 @@ class CasteljauRow {
  public:
   /// The control points, taken as exact (zero error).
   explicit CasteljauRow(std::span<const P> points)
-      : size_(points.size()), on_heap_(points.size() > kInline) {
+      : entries_(points.size(), typename SmallArray<Entry>::Uninitialized{}), size_(points.size()) {
     assert(!points.empty());
-    if (on_heap_) heap_.resize(size_);
     Entry* e = entries();
     for (std::size_t i = 0; i < size_; ++i) e[i] = {points[i], P{}};
   }
-  CasteljauRow(const CasteljauRow& other)
-      : heap_(other.heap_), size_(other.size_), on_heap_(other.on_heap_) {
-    if (!on_heap_) std::copy(other.inline_, other.inline_ + size_, inline_);
-  }
-  CasteljauRow& operator=(const CasteljauRow& other) {
-    if (this != &other) {
-      heap_ = other.heap_;
-      size_ = other.size_;
-      on_heap_ = other.on_heap_;
-      if (!on_heap_) std::copy(other.inline_, other.inline_ + size_, inline_);
-    }
-    return *this;
-  }
-  ~CasteljauRow() = default;
 
   /// Number of entries: n + 1 for a degree-n curve, one fewer after each step.
   [[nodiscard]] std::size_t size() const noexcept { return size_; }
@@ -114,20 +97,14 @@ class CasteljauRow {
 
  private:
   using Entry = TwoTerm<P>;  ///< hi: the rounded value, lo: its rounding error
-  /// Rows of up to numeric_tuning::kInlineEntries entries live inline. The inline entries
-  /// are left unconstructed (a variant member is not initialised) so a short row does not
-  /// zero all of them.
-  static constexpr std::size_t kInline = numeric_tuning::kInlineEntries;
 
-  [[nodiscard]] Entry* entries() noexcept { return on_heap_ ? heap_.data() : inline_; }
-  [[nodiscard]] const Entry* entries() const noexcept { return on_heap_ ? heap_.data() : inline_; }
+  [[nodiscard]] Entry* entries() noexcept { return entries_.data(); }
+  [[nodiscard]] const Entry* entries() const noexcept { return entries_.data(); }
 
-  union {
-    Entry inline_[kInline];
-  };
-  std::vector<Entry> heap_;
+  /// The row's first n + 1 entries (inline for short rows, unset until the constructor
+  /// writes them); each step uses one fewer of them.
+  SmallArray<Entry> entries_;
   std::size_t size_;
-  bool on_heap_;
 };
 
 }  // namespace bezier::core

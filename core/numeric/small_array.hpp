@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cassert>
 #include <cstddef>
+#include <new>
 #include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -15,19 +17,27 @@ namespace bezier::core {
 /// inline up to kInline entries (numeric_tuning::kInlineEntries) and on the heap beyond, so
 /// the clipping loop allocates nothing for the degrees the API accepts by default. A value
 /// type: copies are deep.
+///
+/// The inline entries are bytes in which the entries exist without being initialised (T is
+/// trivially copyable and destructible, so creating the byte array creates them), so a
+/// short array, or one asked for Uninitialized entries, writes none of the kInline entries
+/// beyond what it is given, even where T's members have default initialisers.
 template <class T>
 class SmallArray {
+  static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>,
+                "the inline entries are created by their storage, without construction");
+
  public:
   static constexpr std::size_t kInline = numeric_tuning::kInlineEntries;
 
-  SmallArray() = default;
+  SmallArray() noexcept {}  // NOLINT(modernize-use-equals-default): leaves the entries unset
   SmallArray(const SmallArray& other) { *this = other; }
   SmallArray& operator=(const SmallArray& other) {
     if (this == &other) return *this;
     if (other.size_ > kInline)
       heap_ = other.heap_;
     else
-      std::copy(other.inline_, other.inline_ + other.size_, inline_);
+      std::copy(other.inline_entries(), other.inline_entries() + other.size_, inline_entries());
     size_ = other.size_;
     return *this;
   }
@@ -37,7 +47,7 @@ class SmallArray {
     if (other.size_ > kInline)
       heap_ = std::move(other.heap_);
     else
-      std::copy(other.inline_, other.inline_ + other.size_, inline_);
+      std::copy(other.inline_entries(), other.inline_entries() + other.size_, inline_entries());
     size_ = other.size_;
     return *this;
   }
@@ -61,14 +71,14 @@ class SmallArray {
     if (n > kInline)
       heap_.assign(n, value);
     else
-      std::fill(inline_, inline_ + n, value);
+      std::fill(inline_entries(), inline_entries() + n, value);
     size_ = n;
   }
 
   [[nodiscard]] std::size_t size() const noexcept { return size_; }
   [[nodiscard]] bool empty() const noexcept { return size_ == 0; }
-  [[nodiscard]] T* data() noexcept { return size_ > kInline ? heap_.data() : inline_; }
-  [[nodiscard]] const T* data() const noexcept { return size_ > kInline ? heap_.data() : inline_; }
+  [[nodiscard]] T* data() noexcept { return size_ > kInline ? heap_.data() : inline_entries(); }
+  [[nodiscard]] const T* data() const noexcept { return size_ > kInline ? heap_.data() : inline_entries(); }
   [[nodiscard]] T& operator[](std::size_t i) noexcept {
     assert(i < size_);
     return data()[i];
@@ -87,7 +97,12 @@ class SmallArray {
   [[nodiscard]] std::span<T> span() noexcept { return {data(), size_}; }
 
  private:
-  T inline_[kInline];  // not zeroed: resize() writes the first size_ entries
+  [[nodiscard]] T* inline_entries() noexcept { return std::launder(reinterpret_cast<T*>(inline_)); }
+  [[nodiscard]] const T* inline_entries() const noexcept {
+    return std::launder(reinterpret_cast<const T*>(inline_));
+  }
+
+  alignas(T) std::byte inline_[kInline * sizeof(T)];  // the entries, unset until written
   std::vector<T> heap_;
   std::size_t size_ = 0;
 };
