@@ -26,10 +26,12 @@ namespace bezier::core::bernstein {
 /// coefficients, E fixed at compile time: p(t) is lerp of them, p'(t) n times their
 /// difference. Each level goes into a fresh array. (Levels computed in place in one buffer
 /// made GCC's vectoriser reload overlapping pairs of entries just stored one by one, which
-/// stalls store forwarding; a fifth of the Krawczyk test's time.)
+/// stalls store forwarding; a fifth of the Krawczyk test's time.) Forced inline, so that
+/// the whole triangle stays in registers of the caller (which may ask for scalar code,
+/// BEZIER_SCALAR_ROUNDS below).
 template <std::size_t E>
-[[nodiscard]] std::array<double, 2> last_casteljau_level(std::span<const double, E> c,
-                                                         double t) noexcept {
+[[nodiscard, gnu::always_inline]] inline std::array<double, 2> last_casteljau_level(
+    std::span<const double, E> c, double t) noexcept {
   static_assert(E >= 2 && E != std::dynamic_extent);
   if constexpr (E == 2) {
     return {c[0], c[1]};

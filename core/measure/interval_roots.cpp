@@ -33,21 +33,6 @@ struct ValueAndSlope {
   double value, slope;
 };
 
-/// The two entries of the last level but one of de Casteljau's triangle at t, for E >= 2
-/// coefficients fixed at compile time, each level a fresh array (as
-/// bernstein::last_casteljau_level, the same lerps in the same order), forced inline so
-/// that the whole triangle stays in registers.
-template <std::size_t E>
-BEZIER_SCALAR_ROUNDS [[gnu::always_inline]] inline std::array<double, 2> last_level(const std::array<double, E>& c, double t) {
-  if constexpr (E == 2) {
-    return {c[0], c[1]};
-  } else {
-    std::array<double, E - 1> next;
-    for (std::size_t i = 0; i + 1 < E; ++i) next[i] = bernstein::lerp(c[i], c[i + 1], t);
-    return last_level<E - 1>(next, t);
-  }
-}
-
 /// p(t) and p'(t) from the last level of de Casteljau's triangle (p = lerp of its two
 /// entries, p' = n times their difference), for E = n + 1 coefficients fixed at compile
 /// time (the same value as bernstein::evaluate).
@@ -56,9 +41,7 @@ BEZIER_SCALAR_ROUNDS ValueAndSlope value_and_slope_of(const double* c, double t)
   if constexpr (E == 1) {
     return {c[0], 0.0};
   } else {
-    std::array<double, E> row;
-    for (std::size_t i = 0; i < E; ++i) row[i] = c[i];
-    const auto last = last_level<E>(row, t);
+    const auto last = bernstein::last_casteljau_level(std::span<const double, E>(c, E), t);
     return {bernstein::lerp(last[0], last[1], t), static_cast<double>(E - 1) * (last[1] - last[0])};
   }
 }
