@@ -78,23 +78,12 @@ BEZIER_FMA_CLONES void distance_slope(std::span<const Point3> points, Point3 tar
   distance_slope_of(points, target, f);
 }
 
-/// A candidate parameter, B(t) as its coordinates (an array of doubles, left unset in a
-/// store of candidates until written, where points would all be zeroed first).
+/// A candidate parameter and B(t) there.
 template <class P>
 struct Candidate {
   double t;
   double squared;  // |B(t) - q|^2 from the compensated B(t)
-  std::array<double, sizeof(P) / sizeof(double)> coordinates;
-
-  Candidate() = default;
-  Candidate(double t_, double squared_, P point) : t(t_), squared(squared_) {
-    for (std::size_t k = 0; k < coordinates.size(); ++k) coordinates[k] = axis(point, k);
-  }
-  [[nodiscard]] P point() const {
-    P p;
-    for (std::size_t k = 0; k < coordinates.size(); ++k) axis(p, k) = coordinates[k];
-    return p;
-  }
+  P point;
 };
 
 template <class P>
@@ -109,7 +98,7 @@ Candidate<P> end_candidate(const BasicCurve<P>& curve, P target, double t) {
   const P point = t == 0.0   ? curve.points().front()
                   : t == 1.0 ? curve.points().back()
                              : evaluate(curve, t);
-  return Candidate<P>(t, squared_length(point - target), point);
+  return {t, squared_length(point - target), point};
 }
 
 /// The candidate at the root t of f, polished by Newton's method on f = (B - q) · B' with
@@ -118,7 +107,7 @@ Candidate<P> end_candidate(const BasicCurve<P>& curve, P target, double t) {
 template <class P>
 Candidate<P> polished(std::span<const P> points, P target, double a, double b, double t) {
   Jet<P> jet = jet_at(points, t);
-  Candidate<P> best(t, squared_length(jet.point - target), jet.point);
+  Candidate<P> best{t, squared_length(jet.point - target), jet.point};
   P point = jet.point;
   for (int iteration = 0; iteration < measure_tuning::kPolishIterations; ++iteration) {
     const P offset = point - target;
@@ -130,7 +119,7 @@ Candidate<P> polished(std::span<const P> points, P target, double a, double b, d
     const Jet<P> moved = jet_at(points, next);
     const double squared = squared_length(moved.point - target);
     if (!(squared < best.squared)) break;
-    best = Candidate<P>(next, squared, moved.point);
+    best = {next, squared, moved.point};
     point = moved.point;
     jet = moved;
   }
@@ -205,10 +194,10 @@ NearestPoint<P> closest(const BasicCurve<P>& curve, P target, double a, double b
   const std::span<const Candidate<P>> tied(kept.begin(), tied_end);
   NearestPoint<P> out;
   out.t = tied.front().t;
-  out.point = tied.front().point();
+  out.point = tied.front().point;
   // The least distance, hypot(B(t) - q) over the tied candidates.
   out.distance = length(out.point - target);
-  for (std::size_t i = 1; i < tied.size(); ++i) out.distance = std::min(out.distance, length(tied[i].point() - target));
+  for (std::size_t i = 1; i < tied.size(); ++i) out.distance = std::min(out.distance, length(tied[i].point - target));
   double previous = tied.front().t;
   for (std::size_t i = 1; i < tied.size(); ++i) {
     const double t = tied[i].t;
