@@ -230,9 +230,10 @@ template <std::size_t E>
     const double level = c[0] < lo ? lo : hi, sign = c[0] < lo ? 1.0 : -1.0;
     t_min = 2.0;
     for (std::size_t i = 0; i < n; ++i) {
+      const double side_i = sign * (c[i] - level);
       for (std::size_t j = i + 1; j <= n; ++j) {
-        if ((sign * (c[i] - level) < 0) & (sign * (c[j] - level) >= 0))
-          t_min = min2(t_min, crossing(i, j, level));
+        const double side_j = sign * (c[j] - level);
+        if ((side_i < 0) & (side_j >= 0)) t_min = min2(t_min, crossing(i, j, level));
       }
     }
   }
@@ -240,9 +241,10 @@ template <std::size_t E>
     const double level = c[n] < lo ? lo : hi, sign = c[n] < lo ? 1.0 : -1.0;
     t_max = -1.0;
     for (std::size_t i = 0; i < n; ++i) {
+      const double side_i = sign * (c[i] - level);
       for (std::size_t j = i + 1; j <= n; ++j) {
-        if ((sign * (c[j] - level) < 0) & (sign * (c[i] - level) >= 0))
-          t_max = max2(t_max, crossing(i, j, level));
+        const double side_j = sign * (c[j] - level);
+        if ((side_j < 0) & (side_i >= 0)) t_max = max2(t_max, crossing(i, j, level));
       }
     }
   }
