@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/bernstein/horner_form.hpp"
 #include "core/bernstein/roots.hpp"
 #include "core/measure/tuning.hpp"
 #include "core/numeric/unit_roundoff.hpp"
@@ -29,9 +30,7 @@ struct Job {
   bool zero_lo, zero_hi;
 };
 
-struct ValueAndSlope {
-  double value, slope;
-};
+using bernstein::ValueAndSlope;
 
 /// p(t) and p'(t) from the last level of de Casteljau's triangle (p = lerp of its two
 /// entries, p' = n times their difference), for E = n + 1 coefficients fixed at compile
@@ -63,11 +62,11 @@ ValueAndSlope value_and_slope_any(std::span<const double> c, double t) {
 /// rounding, and the step from there is already within about e / |p'| of the root, which
 /// is as closely as p's rounding determines it (a step that rounds onto the bracket's end
 /// just set would otherwise turn the rest into bisection, about 15 steps per root). It
-/// stops too when the step or the bracket is one ulp. The first test is at the chord's zero (regula falsi from the end values), which
-/// the piece's single sign change puts near the root.
+/// stops too when the step or the bracket is one ulp. The first test is at `start` (the
+/// middle if that is not inside the bracket).
 template <class ValueAndSlopeAt>
-double refine(ValueAndSlopeAt p_at, double e, double lo, double hi, double p_lo, double p_hi) {
-  double t = lo + (hi - lo) * (p_lo / (p_lo - p_hi));
+double refine(ValueAndSlopeAt p_at, double e, double lo, double hi, double p_lo, double start) {
+  double t = start;
   if (!(lo < t && t < hi)) t = lo + (hi - lo) / 2;
   for (int iteration = 0; iteration < measure_tuning::kRefineIterations; ++iteration) {
     const ValueAndSlope p = p_at(t);
@@ -94,16 +93,46 @@ double refine(ValueAndSlopeAt p_at, double e, double lo, double hi, double p_lo,
 /// exact halvings, so each rounds once and a half's coefficients are within n u max|q| of
 /// the piece's own halves. q is copied before anything is written, so either half may take
 /// its place.
-BEZIER_SCALAR_ROUNDS void halves(std::span<const double> q, double* left, double* right) {
-  const std::size_t n = q.size() - 1;
-  SmallArray<double> row(q);
+/// The rounds in `row` (n + 1 entries, q's copy), inlined into the loop of each caller.
+template <class Row>
+[[gnu::always_inline]] inline void halves_of(Row& row, std::size_t n, double* left, double* right) {
   left[0] = row[0];
   right[n] = row[n];
+#pragma GCC unroll 24
   for (std::size_t level = 1; level <= n; ++level) {
+#pragma GCC unroll 24
     for (std::size_t k = 0; k + level <= n; ++k) row[k] = bernstein::lerp(row[k], row[k + 1], 0.5);
     left[level] = row[0];
     right[n - level] = row[n - level];
   }
+}
+
+BEZIER_SCALAR_ROUNDS void halves(std::span<const double> q, double* left, double* right) {
+  SmallArray<double> row(q);
+  halves_of(row, q.size() - 1, left, right);
+}
+
+/// halves() for E = n + 1 coefficients fixed at compile time: the triangle unrolled, in
+/// registers.
+template <std::size_t E>
+BEZIER_SCALAR_ROUNDS void halves_fixed(const double* q, double* left, double* right) {
+  std::array<double, E> row;
+  std::copy(q, q + E, row.begin());
+  halves_of(row, E - 1, left, right);
+}
+
+/// Where the control polygon of the piece q on [lo, hi] first crosses zero: with one sign
+/// change among q's coefficients, near the piece's root (the crossing converges to it
+/// quadratically under subdivision), the refinement's first point.
+double polygon_crossing(std::span<const double> q, double lo, double hi) {
+  const std::size_t n = q.size() - 1;
+  for (std::size_t j = 0; j < n; ++j) {
+    if ((q[j] < 0) != (q[j + 1] < 0)) {
+      const double local = (static_cast<double>(j) + q[j] / (q[j] - q[j + 1])) / static_cast<double>(n);
+      return lo + (hi - lo) * local;
+    }
+  }
+  return lo + (hi - lo) / 2;
 }
 
 /// Evaluation and refinement for E = n + 1 coefficients fixed at compile time, so that
@@ -114,20 +143,30 @@ struct Unrolled {
   static void portion(const double* c, double a, double b, double* out) {
     bernstein::portion_into_fixed<E>(c, a, b, out);
   }
-  static double root(const double* c, double e, double lo, double hi, double p_lo, double p_hi) {
-    return refine([c](double t) { return value_and_slope_of<E>(c, t); }, e, lo, hi, p_lo, p_hi);
+  static void halves(const double* q, double* left, double* right) { halves_fixed<E>(q, left, right); }
+  /// The refinement evaluates p by its Horner form (O(n) a step), stopping at that form's
+  /// own rounding bound; de Casteljau's where the coefficients are too large for it.
+  static double root(const double* c, double e, double lo, double hi, double p_lo, double start) {
+    const bernstein::HornerForm<E> form(c);
+    if (form.prepared()) {
+      return refine([&form](double t) { return form.value_and_slope(t); }, form.value_bound(), lo, hi,
+                    p_lo, start);
+    }
+    return refine([c](double t) { return value_and_slope_of<E>(c, t); }, e, lo, hi, p_lo, start);
   }
 };
 
 struct UnrolledFunctions {
   ValueAndSlope (*at)(const double*, double) = nullptr;
   void (*portion)(const double*, double, double, double*) = nullptr;
+  void (*halves)(const double*, double*, double*) = nullptr;
   double (*root)(const double*, double, double, double, double, double) = nullptr;
 };
 
 template <std::size_t... I>
 constexpr std::array<UnrolledFunctions, sizeof...(I)> unrolled(std::index_sequence<I...>) {
-  return {UnrolledFunctions{&Unrolled<I + 1>::at, &Unrolled<I + 1>::portion, &Unrolled<I + 1>::root}...};
+  return {UnrolledFunctions{&Unrolled<I + 1>::at, &Unrolled<I + 1>::portion, &Unrolled<I + 1>::halves,
+                            &Unrolled<I + 1>::root}...};
 }
 
 /// p and p' at t, and the root in a bracket, for one polynomial: chooses the code for its
@@ -149,10 +188,19 @@ class Evaluator {
       bernstein::portion_into(c_, lo, hi, out);
     }
   }
-  /// The root in (lo, hi) (see refine), e the rounding bound of p's evaluation.
-  [[nodiscard]] double root(double e, double lo, double hi, double p_lo, double p_hi) const {
-    if (unrolled_.root != nullptr) return unrolled_.root(c_.data(), e, lo, hi, p_lo, p_hi);
-    return refine([this](double t) { return value_and_slope_any(c_, t); }, e, lo, hi, p_lo, p_hi);
+  /// The halves of the piece q (see halves()).
+  void halves(std::span<const double> q, double* left, double* right) const {
+    if (unrolled_.halves != nullptr) {
+      unrolled_.halves(q.data(), left, right);
+    } else {
+      bezier::core::halves(q, left, right);
+    }
+  }
+  /// The root in (lo, hi) from `start` (see refine), e the rounding bound of p's
+  /// evaluation by de Casteljau.
+  [[nodiscard]] double root(double e, double lo, double hi, double p_lo, double start) const {
+    if (unrolled_.root != nullptr) return unrolled_.root(c_.data(), e, lo, hi, p_lo, start);
+    return refine([this](double t) { return value_and_slope_any(c_, t); }, e, lo, hi, p_lo, start);
   }
 
  private:
@@ -245,7 +293,9 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
     const double p_lo = halved ? job.p_lo : q[0];
     const double p_hi = halved ? job.p_hi : q[n];
     if (changes == 1 && !any_small && p_lo != 0.0 && p_hi != 0.0 && (p_lo < 0) != (p_hi < 0)) {
-      if (wanted == Crossings::any || p_lo < 0) found.add(p_at.root(e, job.lo, job.hi, p_lo, p_hi));
+      if (wanted == Crossings::any || p_lo < 0) {
+        found.add(p_at.root(e, job.lo, job.hi, p_lo, polygon_crossing(q, job.lo, job.hi)));
+      }
       continue;
     }
     if (job.depth >= kMaxDepth || !(job.lo < middle && middle < job.hi)) {
@@ -264,7 +314,7 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
     if (halving && job.depth + 1 <= kHalvedDepth) {
       assert(pending + 1 < kSlots);
       // The right half goes to this piece's slot (halves reads q before it writes).
-      halves(q, slot(pending + 1), slot(pending));
+      p_at.halves(q, slot(pending + 1), slot(pending));
       // The halves' shared coefficient at the middle is within their bound of p there:
       // beyond that bound plus e, p and its evaluation have its sign and neither is zero,
       // and the sign is all that the tests and the refinement take from a piece's end

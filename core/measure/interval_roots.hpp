@@ -20,10 +20,13 @@ enum class IntervalEnds { open, closed };
 /// the convex hull property), so no root of the polynomial with the given coefficients is
 /// lost except where |p| <= e throughout. A piece with exactly one sign change and p of
 /// opposite signs at its ends holds exactly one root, which is refined by Newton's method
-/// kept inside the sign bracket (a step out of it is a bisection) until |p| is within its
-/// evaluation bound e, then one more Newton step: within about e / |p'| of the root, as
-/// closely as the rounded p determines it (or until the bracket is one ulp). The same sign
-/// tests as bisection, a few instead of 55 per root. An exact zero of p at a split
+/// from where the piece's control polygon crosses zero, kept inside the sign bracket (a
+/// step out of it is a bisection), until |p| is within the rounding bound e' of the
+/// evaluation it uses, then one more Newton step: within about e' / |p'| of the root, as
+/// closely as the rounded p determines it (or until the bracket is one ulp). The
+/// evaluation is p's Horner form (core/bernstein/horner_form.hpp, O(n) a step, e' about
+/// twice e) for up to measure_tuning::kUnrolledSizes coefficients, de Casteljau's (e' = e)
+/// beyond. The same sign tests as bisection, a few instead of 55 per root. An exact zero of p at a split
 /// point is a root, and the pieces on either side leave that end out of their count.
 /// A cluster still unresolved at width 2^-40 (a multiple root, a root where p rounds to
 /// a tiny nonzero value at a split point) is reported at the middle of its piece.

@@ -33,7 +33,8 @@ inline constexpr int kHalvedDepth = 12;
 /// Polynomials of up to this many coefficients are evaluated and cut into pieces by code
 /// unrolled for their size (one instantiation each): the (B - q) · B' of /nearest for
 /// curves up to degree 12 and the hodograph coordinates of /bounds up to degree 24; beyond,
-/// the loops run with the size known only at run time (the same values, slower).
+/// the loops run with the size known only at run time (slower), and the refinement of a
+/// root evaluates by de Casteljau instead of the Horner form (interval_roots.hpp).
 inline constexpr std::size_t kUnrolledSizes = 24;
 
 /// Iterations of the bracketed Newton refinement of one root, after which it returns its
