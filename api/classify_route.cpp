@@ -31,7 +31,7 @@ Reply classification_answer(const core::CubicClassification& c) {
   w.key("inflections").begin_array();
   for (const double t : c.inflections.values()) w.value(t);
   w.end_array();
-  w.key("loop_blinn").value(core::name(c.loop_blinn));
+  w.key("loop_blinn").value(core::to_string(c.loop_blinn));
   w.key("self_intersection");
   if (c.self_intersection) {
     w.begin_object();
@@ -41,7 +41,7 @@ Reply classification_answer(const core::CubicClassification& c) {
   } else {
     w.null();
   }
-  w.key("type").value(core::name(c.type));
+  w.key("type").value(core::to_string(c.type));
   w.end_object();
   return json_reply(std::move(w));
 }

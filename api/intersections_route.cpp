@@ -179,7 +179,7 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   w.key("stats").begin_object();
   w.key("certification_iterations").value(certified.steps);
   w.key("max_depth").value(r.stats.max_depth);
-  w.key("method").value(core::method_name(r.stats.method));
+  w.key("method").value(core::to_string(r.stats.method));
   w.key("newton_iterations").value(r.stats.newton_iterations);
   w.key("work").value(r.stats.work);
   w.end_object();

@@ -123,7 +123,7 @@ Reply loops_answer(const core::Curve& curve, const Limits& limits) {
   w.end_array();
   w.key("stats").begin_object();
   w.key("max_depth").value(result.stats.max_depth);
-  w.key("method").value(core::method_name(result.stats.method));
+  w.key("method").value(core::to_string(result.stats.method));
   w.key("newton_iterations").value(result.stats.newton_iterations);
   w.key("work").value(result.stats.work);
   w.end_object();

@@ -52,7 +52,7 @@ inline constexpr EnumNames<CubicType::arch> kCubicTypeNames{
     "point", "line", "quadratic", "cusp", "loop", "loop-at-start", "loop-at-end",
     "double-inflection", "single-inflection", "arch"};
 
-[[nodiscard]] constexpr std::string_view name(CubicType type) noexcept {
+[[nodiscard]] constexpr std::string_view to_string(CubicType type) noexcept {
   return kCubicTypeNames(type);
 }
 
@@ -60,7 +60,7 @@ inline constexpr EnumNames<CubicType::arch> kCubicTypeNames{
 inline constexpr EnumNames<LoopBlinnClass::point> kLoopBlinnClassNames{
     "serpentine", "cusp", "loop", "quadratic", "line", "point"};
 
-[[nodiscard]] constexpr std::string_view name(LoopBlinnClass c) noexcept {
+[[nodiscard]] constexpr std::string_view to_string(LoopBlinnClass c) noexcept {
   return kLoopBlinnClassNames(c);
 }
 

@@ -33,7 +33,7 @@ enum class SelfIntersectionMethod {
 inline constexpr EnumNames<SelfIntersectionMethod::collinear> kSelfIntersectionMethodNames{
     "closed-form-cubic", "subdivision", "collinear"};
 
-[[nodiscard]] constexpr std::string_view method_name(SelfIntersectionMethod method) noexcept {
+[[nodiscard]] constexpr std::string_view to_string(SelfIntersectionMethod method) noexcept {
   return kSelfIntersectionMethodNames(method);
 }
 

@@ -117,7 +117,7 @@ TEST(ClassifyRoute, NumbersRoundTrip) {
   const json r = call(body, 200);
   const core::CubicClassification c =
       core::classify(core::Curve({{0.1, 0.2}, {1.3, 2.7}, {3.3, -0.7}, {0.4, 1.9}}));
-  EXPECT_EQ(r["type"], std::string(core::name(c.type)));
+  EXPECT_EQ(r["type"], std::string(core::to_string(c.type)));
   ASSERT_TRUE(c.canonical_point.has_value());
   EXPECT_EQ(r["canonical_point"][0].get<double>(), c.canonical_point->x);
   EXPECT_EQ(r["canonical_point"][1].get<double>(), c.canonical_point->y);

@@ -48,7 +48,7 @@ std::string describe(const Cubic& p) {
 }
 
 std::string type_name(CubicType t) {
-  return std::string(bezier::core::name(t));
+  return std::string(bezier::core::to_string(t));
 }
 
 bool is_loop(CubicType t) {

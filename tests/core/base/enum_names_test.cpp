@@ -8,6 +8,7 @@
 
 #include "core/cubic/cubic_type.hpp"
 #include "core/intersect/result.hpp"
+#include "core/self_intersect/self_intersection.hpp"
 
 namespace bezier::core {
 namespace {
@@ -23,25 +24,25 @@ TEST(EnumNames, NamesEachEnumeratorByItsPosition) {
 }
 
 TEST(EnumNames, CubicTypeIsSpelledAsTheContractSays) {
-  EXPECT_EQ(name(CubicType::point), "point");
-  EXPECT_EQ(name(CubicType::line), "line");
-  EXPECT_EQ(name(CubicType::quadratic), "quadratic");
-  EXPECT_EQ(name(CubicType::cusp), "cusp");
-  EXPECT_EQ(name(CubicType::loop), "loop");
-  EXPECT_EQ(name(CubicType::loop_at_start), "loop-at-start");
-  EXPECT_EQ(name(CubicType::loop_at_end), "loop-at-end");
-  EXPECT_EQ(name(CubicType::double_inflection), "double-inflection");
-  EXPECT_EQ(name(CubicType::single_inflection), "single-inflection");
-  EXPECT_EQ(name(CubicType::arch), "arch");
+  EXPECT_EQ(to_string(CubicType::point), "point");
+  EXPECT_EQ(to_string(CubicType::line), "line");
+  EXPECT_EQ(to_string(CubicType::quadratic), "quadratic");
+  EXPECT_EQ(to_string(CubicType::cusp), "cusp");
+  EXPECT_EQ(to_string(CubicType::loop), "loop");
+  EXPECT_EQ(to_string(CubicType::loop_at_start), "loop-at-start");
+  EXPECT_EQ(to_string(CubicType::loop_at_end), "loop-at-end");
+  EXPECT_EQ(to_string(CubicType::double_inflection), "double-inflection");
+  EXPECT_EQ(to_string(CubicType::single_inflection), "single-inflection");
+  EXPECT_EQ(to_string(CubicType::arch), "arch");
 }
 
 TEST(EnumNames, LoopBlinnClassIsSpelledAsTheContractSays) {
-  EXPECT_EQ(name(LoopBlinnClass::serpentine), "serpentine");
-  EXPECT_EQ(name(LoopBlinnClass::cusp), "cusp");
-  EXPECT_EQ(name(LoopBlinnClass::loop), "loop");
-  EXPECT_EQ(name(LoopBlinnClass::quadratic), "quadratic");
-  EXPECT_EQ(name(LoopBlinnClass::line), "line");
-  EXPECT_EQ(name(LoopBlinnClass::point), "point");
+  EXPECT_EQ(to_string(LoopBlinnClass::serpentine), "serpentine");
+  EXPECT_EQ(to_string(LoopBlinnClass::cusp), "cusp");
+  EXPECT_EQ(to_string(LoopBlinnClass::loop), "loop");
+  EXPECT_EQ(to_string(LoopBlinnClass::quadratic), "quadratic");
+  EXPECT_EQ(to_string(LoopBlinnClass::line), "line");
+  EXPECT_EQ(to_string(LoopBlinnClass::point), "point");
 }
 
 TEST(EnumNames, IntersectionVocabularyIsSpelledAsTheContractSays) {
@@ -51,6 +52,12 @@ TEST(EnumNames, IntersectionVocabularyIsSpelledAsTheContractSays) {
   EXPECT_EQ(to_string(IntersectMethod::hybrid), "hybrid");
   EXPECT_EQ(to_string(IntersectMethod::bezier_clipping), "bezier-clipping");
   EXPECT_EQ(to_string(IntersectMethod::subdivision), "subdivision");
+}
+
+TEST(EnumNames, SelfIntersectionMethodIsSpelledAsTheContractSays) {
+  EXPECT_EQ(to_string(SelfIntersectionMethod::closed_form_cubic), "closed-form-cubic");
+  EXPECT_EQ(to_string(SelfIntersectionMethod::subdivision), "subdivision");
+  EXPECT_EQ(to_string(SelfIntersectionMethod::collinear), "collinear");
 }
 
 }  // namespace

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <string>
 #include <vector>
 
 #include "core/numeric/binomial.hpp"
@@ -32,10 +31,6 @@ IntersectionResult run(const Curve& f, const Curve& g,
   return intersect(f, g, options);
 }
 
-std::string name(IntersectMethod m) {
-  return std::string(to_string(m));
-}
-
 /// f(t) = (t, (t - 1/2)^2) and the horizontal line y = h from x = 0 to x = 1.
 Curve parabola() {
   return Curve({{0.0, 0.25}, {0.5, -0.25}, {1.0, 0.25}});
@@ -49,7 +44,7 @@ Curve horizontal(double h) {
 TEST(IntersectHardCases, TangentContactFoundOnceWithKindTangent) {
   // y = (x - 1/2)^2 touches y = 0 at x = 1/2 only; both parameters are exactly 1/2.
   for (const IntersectMethod m : kMethods) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     const IntersectionResult r = run(parabola(), horizontal(0.0), m);
     ASSERT_EQ(r.status, IntersectStatus::ok);
     ASSERT_EQ(r.intersections.size(), 1u);
@@ -68,7 +63,7 @@ TEST(IntersectHardCases, TangentCurvesWithDifferentCurvatureTouchOnce) {
   const Curve f({{0.0, 0.5}, {0.5, -0.5}, {1.0, 0.5}});      // y = 2 (x - 1/2)^2
   const Curve g({{0.0, -0.25}, {0.5, 0.25}, {1.0, -0.25}});  // y = -(x - 1/2)^2
   for (const IntersectMethod m : kMethods) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     const IntersectionResult r = run(f, g, m);
     ASSERT_EQ(r.intersections.size(), 1u);
     EXPECT_EQ(r.intersections[0].kind, IntersectionKind::tangent);
@@ -85,7 +80,7 @@ TEST(IntersectHardCases, NearTangentPairTwoIntersectionsAboutOneE8ApartBothFound
   const double h = 0x1p-56;
   const double r0 = 0.5 - 0x1p-28, r1 = 0.5 + 0x1p-28;
   for (const IntersectMethod m : kMethods) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     const IntersectionResult r = run(parabola(), horizontal(h), m);
     ASSERT_EQ(r.status, IntersectStatus::ok);
     ASSERT_EQ(r.intersections.size(), 2u);
@@ -107,7 +102,7 @@ TEST(IntersectHardCases, NearMissBelowRoundingIsNotAnIntersection) {
   // y = -2^-56 passes below the parabola's vertex: no intersection, although the gap is
   // below the rounding of the coordinates.
   for (const IntersectMethod m : kMethods) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     EXPECT_TRUE(run(parabola(), horizontal(-0x1p-56), m).intersections.empty());
   }
 }
@@ -142,7 +137,7 @@ TEST(IntersectHardCases, SharedEndPointIsAnExactRoot) {
   const Curve f({{0.0, 0.0}, {0.25, 0.5}, {1.0, 1.0}});
   const Curve g({{1.0, 1.0}, {1.5, 0.25}, {2.0, 1.0}});
   for (const IntersectMethod m : kMethods) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     const IntersectionResult r = run(f, g, m);
     ASSERT_EQ(r.intersections.size(), 1u);
     const Intersection& x = r.intersections[0];
@@ -160,7 +155,7 @@ TEST(IntersectHardCases, TangentAtSharedEndPoint) {
   const Curve f({{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}});
   const Curve g({{0.0, 0.0}, {1.0, 0.0}, {1.0, -1.0}});
   for (const IntersectMethod m : kMethods) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     const IntersectionResult r = run(f, g, m);
     ASSERT_EQ(r.intersections.size(), 1u);
     EXPECT_EQ(r.intersections[0].t, 0.0);
@@ -195,7 +190,7 @@ TEST(IntersectHardCases, ACrossingOnAHalvingLineIsFoundOnce) {
   const Rational expected_t[2] = {Rational(0), Rational(1) / Rational(2)};
   const Rational expected_s[2] = {Rational(1) / Rational(6), Rational(17) / Rational(48)};
   for (const IntersectMethod m : kMethods) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     for (const bool swapped : {false, true}) {
       const IntersectionResult r = swapped ? run(g, f, m) : run(f, g, m);
       ASSERT_EQ(r.status, IntersectStatus::ok);

@@ -33,10 +33,6 @@ IntersectionResult run(const Curve& f, const Curve& g,
   return intersect(f, g, options);
 }
 
-std::string name(IntersectMethod m) {
-  return std::string(to_string(m));
-}
-
 /// f(t) = (t, (t - 1/2)^2) and the horizontal line y = h from x = 0 to x = 1.
 Curve parabola() {
   return Curve({{0.0, 0.25}, {0.5, -0.25}, {1.0, 0.25}});
@@ -81,14 +77,14 @@ void expect_single_overlap(const IntersectionResult& r, ParamInterval t, ParamIn
 
 TEST(IntersectHardCases, IdenticalCurvesOverlapWhole) {
   for (const IntersectMethod m : kMethods) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     expect_single_overlap(run(dyadic_cubic(), dyadic_cubic(), m), {0, 1}, {0, 1}, false);
   }
 }
 
 TEST(IntersectHardCases, ReversedCurveOverlapsReversed) {
   for (const IntersectMethod m : kMethods) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     expect_single_overlap(run(dyadic_cubic(), reversed(dyadic_cubic()), m), {0, 1}, {0, 1}, true);
   }
 }
@@ -96,7 +92,7 @@ TEST(IntersectHardCases, ReversedCurveOverlapsReversed) {
 TEST(IntersectHardCases, SubPieceOverlapsItsRange) {
   const Curve piece = exact_portion(dyadic_cubic(), 0.25, 0.75);
   for (const IntersectMethod m : kMethods) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     expect_single_overlap(run(dyadic_cubic(), piece, m), {0.25, 0.75}, {0, 1}, false);
     expect_single_overlap(run(piece, dyadic_cubic(), m), {0, 1}, {0.25, 0.75}, false);
   }
@@ -106,7 +102,7 @@ TEST(IntersectHardCases, ExtensionOverlapsOnTheSharedPart) {
   // g = f on [1/2, 3/2]: they share f on [1/2, 1], which is g on [0, 1/2].
   const Curve extension = exact_portion(dyadic_cubic(), 0.5, 1.5);
   for (const IntersectMethod m : kMethods) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     expect_single_overlap(run(dyadic_cubic(), extension, m), {0.5, 1.0}, {0.0, 0.5}, false);
   }
 }
@@ -116,7 +112,7 @@ TEST(IntersectHardCases, DegreeElevatedCopyOverlaps) {
   // tolerance absorbs it.
   const Curve elevated = elevate_degree(dyadic_cubic(), 5);
   for (const IntersectMethod m : kMethods) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     expect_single_overlap(run(dyadic_cubic(), elevated, m), {0, 1}, {0, 1}, false);
     expect_single_overlap(run(reversed(elevated), dyadic_cubic(), m), {0, 1}, {0, 1}, true);
   }
@@ -137,7 +133,7 @@ TEST(IntersectHardCases, CrossingSegmentsAtTheExactRationalPoint) {
   // (0,0)-(1,1) and (0,1)-(1,0) cross at t = s = 1/2; (0,0)-(3,1) and (1,0)-(1,1) at t =
   // 1/3, s = 1/3 (not dyadic: exact containment in rationals).
   for (const IntersectMethod m : kMethods) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     const IntersectionResult a = run(Curve({{0, 0}, {1, 1}}), Curve({{0, 1}, {1, 0}}), m);
     ASSERT_EQ(a.intersections.size(), 1u);
     EXPECT_EQ(a.intersections[0].t, 0.5);
@@ -191,7 +187,7 @@ TEST(IntersectHardCases, CurveCollapsedToAPoint) {
   const Curve point({{0.5, 0.5}, {0.5, 0.5}, {0.5, 0.5}});
   const Curve f({{0.0, 0.0}, {0.5, 1.0}, {1.0, 0.0}});  // through (1/2, 1/2) at t = 1/2
   for (const IntersectMethod m : kMethods) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     const IntersectionResult r = run(point, f, m);
     ASSERT_EQ(r.intersections.size(), 1u);
     const Intersection& x = r.intersections[0];
@@ -265,7 +261,7 @@ TEST(IntersectHardCases, TwoDegreeTenCurvesCrossingManyTimesAllFound) {
   }
   ASSERT_GE(sign_changes, 30);
   for (const IntersectMethod m : {IntersectMethod::hybrid, IntersectMethod::bezier_clipping}) {
-    SCOPED_TRACE(name(m));
+    SCOPED_TRACE(to_string(m));
     const IntersectionResult r = run(f, g, m);
     ASSERT_EQ(r.status, IntersectStatus::ok);
     EXPECT_EQ(static_cast<int>(r.intersections.size()), sign_changes);
@@ -313,7 +309,7 @@ TEST(IntersectHardCases, DecimalScalingsGiveTheSameParametersUpToRounding) {
   const IntersectionResult base = run(f, g);
   for (const double scale : {1e-8, 1e8}) {
     for (const IntersectMethod m : kMethods) {
-      SCOPED_TRACE(std::to_string(scale) + " " + name(m));
+      SCOPED_TRACE(std::to_string(scale) + " " + std::string(to_string(m)));
       const IntersectionResult r =
           run(transformed(f, scale, {0, 0}), transformed(g, scale, {0, 0}), m);
       ASSERT_EQ(r.intersections.size(), base.intersections.size());
