@@ -195,7 +195,7 @@ Reply loop_area_route(const nlohmann::json& request, const Limits& limits) {
     if (has_path(request)) {
       reader.fail("/interval", "applies to a curve given by \"points\", not to a path");
     } else {
-      interval = read_interval(reader, *value, IntervalEnds::apart);
+      interval = read_interval(reader, *value, SinglePointInterval::refused);
     }
   }
   if (!reader.ok()) return reader.refusal();

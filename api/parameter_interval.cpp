@@ -4,8 +4,9 @@
 
 namespace bezier::api {
 
-std::optional<ParameterInterval> read_interval(RequestReader& reader, const Json& value, IntervalEnds ends) {
-  const bool apart = ends == IntervalEnds::apart;
+std::optional<ParameterInterval> read_interval(RequestReader& reader, const Json& value,
+                                               SinglePointInterval single_point) {
+  const bool apart = single_point == SinglePointInterval::refused;
   const auto ts = reader.numbers(value, "/interval", 0.0, 1.0);
   if (!ts) return std::nullopt;
   if (ts->size() != 2) {
@@ -25,7 +26,7 @@ std::optional<ParameterInterval> read_interval(RequestReader& reader, const Json
 std::optional<ParameterInterval> read_parameter_interval(RequestReader& reader, const Json& request) {
   const Json* value = RequestReader::optional(request, "interval");
   if (value == nullptr) return ParameterInterval{};
-  return read_interval(reader, *value, IntervalEnds::may_meet);
+  return read_interval(reader, *value, SinglePointInterval::allowed);
 }
 
 }  // namespace bezier::api
