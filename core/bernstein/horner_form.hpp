@@ -1,10 +1,10 @@
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <span>
 
 #include "core/numeric/binomial.hpp"
 #include "core/numeric/unit_roundoff.hpp"
@@ -45,16 +45,14 @@ class HornerForm {
 
   /// The weights of c (c.size() == E).
   explicit HornerForm(const double* c) {
-    constexpr int n = static_cast<int>(kDegree);
     double largest = 0.0;
-    for (int k = 0; k <= n; ++k) {
-      const auto i = static_cast<std::size_t>(k);
-      value_weights_[i] = binomial(n, k) * c[i];
-      largest = std::fmax(largest, std::fabs(c[i]));
-      if (k < n) slope_weights_[i] = n * binomial(n - 1, k) * (c[i + 1] - c[i]);
+    for (std::size_t k = 0; k <= kDegree; ++k) {
+      value_weights_[k] = kValueBinomials[k] * c[k];
+      largest = std::max(largest, std::fabs(c[k]));
+      if (k < kDegree) slope_weights_[k] = kSlopeBinomials[k] * (c[k + 1] - c[k]);
     }
     value_bound_ = kValueRoundings * 1.01 * kUnitRoundoff * largest +
-                   (2.0 * n + 2.0) * std::numeric_limits<double>::denorm_min();
+                   (2.0 * kDegree + 2.0) * std::numeric_limits<double>::denorm_min();
     finite_ = largest <= 0x1p900;
   }
 
@@ -92,6 +90,19 @@ class HornerForm {
 
  private:
   static constexpr double kValueRoundings = 6.0 * static_cast<double>(kDegree) + 2.0;
+  /// C(n, k) and n C(n - 1, k), k = 0..n (the last slope entry unused), exact integers.
+  static constexpr std::array<double, E> kValueBinomials = [] {
+    std::array<double, E> out{};
+    for (std::size_t k = 0; k <= kDegree; ++k) out[k] = binomial(static_cast<int>(kDegree), static_cast<int>(k));
+    return out;
+  }();
+  static constexpr std::array<double, E> kSlopeBinomials = [] {
+    std::array<double, E> out{};
+    for (std::size_t k = 0; k < kDegree; ++k) {
+      out[k] = static_cast<double>(kDegree) * binomial(static_cast<int>(kDegree) - 1, static_cast<int>(k));
+    }
+    return out;
+  }();
   std::array<double, E> value_weights_{};
   std::array<double, E> slope_weights_{};
   double value_bound_ = 0.0;

@@ -1,7 +1,6 @@
 #include "core/measure/nearest.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cassert>
 #include <cmath>
 #include <span>
@@ -9,8 +8,6 @@
 #include "core/base/multiversion.hpp"
 #include "core/bernstein/casteljau_row.hpp"
 #include "core/curve/evaluate.hpp"
-#include "core/bernstein/bernstein1d.hpp"
-#include "core/measure/axis.hpp"
 #include "core/measure/bernstein_product.hpp"
 #include "core/measure/interval_roots.hpp"
 #include "core/measure/normalised.hpp"
@@ -63,12 +60,14 @@ BEZIER_FMA_CLONES Jet<Point3> jet_at(std::span<const Point3> points, double t) {
 /// n (P_{i+1} - P_i)).
 template <class P>
 void distance_slope_of(std::span<const P> points, P target, double* f) {
-  CasteljauRow<P> hodograph(points);
-  hodograph.hodograph_step();
+  CasteljauRow<P> row(points);
+  row.hodograph_step();
+  SmallArray<P> hodograph(row.size(), typename SmallArray<P>::Uninitialized{});
+  for (std::size_t j = 0; j < row.size(); ++j) hodograph[j] = row.point(j);
   dot_product_polynomial_into(
       static_cast<int>(points.size()) - 1, static_cast<int>(hodograph.size()) - 1,
       [&](int i) { return points[static_cast<std::size_t>(i)] - target; },
-      [&](int j) { return hodograph.point(static_cast<std::size_t>(j)); }, f);
+      [&](int j) { return hodograph[static_cast<std::size_t>(j)]; }, f);
 }
 
 BEZIER_FMA_CLONES void distance_slope(std::span<const Point2> points, Point2 target, double* f) {
@@ -89,6 +88,27 @@ struct Candidate {
 template <class P>
 double squared_length(P v) {
   return dot(v, v);
+}
+
+/// B(t) - q in plain doubles, O(n): the Bernstein sum Σ C(n, k) t^k (1 - t)^(n-k) (P_k - q)
+/// in Horner-like form, each partial sum times 1 - t before the next term, t^k and C(n, k)
+/// carried along (C(n, k) exact up to degree 50, within k roundings beyond). A term rounds
+/// at most 4n + 3 times (t^k, the binomial, its product, P_k - q, and per later step a sum,
+/// a product and 1 - t's own rounding), so the result is within (4n + 3) u of the
+/// coordinate scale: a rough distance, for the screen of the candidates only.
+template <class P>
+P rough_offset(std::span<const P> points, P target, double t) {
+  const std::size_t n = points.size() - 1;
+  if (n == 0) return points[0] - target;
+  const double s = 1.0 - t;
+  double power = 1.0, binomial = 1.0;
+  P sum = (points[0] - target) * s;
+  for (std::size_t k = 1; k < n; ++k) {
+    power *= t;
+    binomial = binomial * static_cast<double>(n - k + 1) / static_cast<double>(k);
+    sum = (sum + (power * binomial) * (points[k] - target)) * s;
+  }
+  return sum + (power * t) * (points[n] - target);
 }
 
 /// The candidate at an end of [a, b]: at t = 0 or 1 the end control point (what evaluate
@@ -133,7 +153,6 @@ template <class P>
 NearestPoint<P> closest(const BasicCurve<P>& curve, P target, double a, double b,
                         double coordinate_scale) {
   assert(0.0 <= a && a <= b && b <= 1.0);
-  constexpr std::size_t kDimension = sizeof(P) / sizeof(double);
   const auto points = curve.points();
   SmallArray<double> roots;
   if (a < b) {
@@ -154,23 +173,13 @@ NearestPoint<P> closest(const BasicCurve<P>& curve, P target, double a, double b
     // coefficients are within their bound e, about 1e-14 of the scale squared, of the
     // exact ones), and along that stretch D = |B - q|^2 changes by 2 ∫ f, where |f| stays
     // at rounding level: polishing lowers a distance by far less than kPolishMargin of the
-    // coordinate scale, and the rough distances (B - q per coordinate by
-    // bernstein::evaluate) are within a few n u of the scale of the compensated ones, so a
-    // root whose rough distance is further than that above the least is neither the
-    // minimum nor tied with it.
-    std::array<Coeffs, kDimension> offsets;
-    for (std::size_t k = 0; k < kDimension; ++k) {
-      offsets[k] = Coeffs(points.size(), Coeffs::Uninitialized{});
-      for (std::size_t i = 0; i < points.size(); ++i) offsets[k][i] = axis(points[i], k) - axis(target, k);
-    }
+    // coordinate scale, and the rough distances (rough_offset) are within a few n u of the
+    // scale of the compensated ones, so a root whose rough distance is further than that
+    // above the least is neither the minimum nor tied with it.
     SmallArray<double> rough(roots.size(), SmallArray<double>::Uninitialized{});
     double least = std::min(candidates[0].squared, candidates[1].squared);
     for (std::size_t i = 0; i < roots.size(); ++i) {
-      rough[i] = 0.0;
-      for (std::size_t k = 0; k < kDimension; ++k) {
-        const double offset = bernstein::evaluate(offsets[k], roots[i]);
-        rough[i] += offset * offset;
-      }
+      rough[i] = squared_length(rough_offset(points, target, roots[i]));
       least = std::min(least, rough[i]);
     }
     const double limit = std::sqrt(least) + measure_tuning::kPolishMargin * coordinate_scale;

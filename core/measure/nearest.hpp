@@ -33,7 +33,7 @@ struct NearestPoint {
 /// strict sign beyond their rounding bound, so no root is lost except where |f| stays at
 /// that bound, where D varies by no more than the bound times the width: such a loss moves
 /// the answer by a rounding-level amount, never to another local minimum. Each root whose
-/// rough distance (B - q by de Casteljau in doubles) is within
+/// rough distance (B - q by a Horner-like sum in doubles) is within
 /// measure_tuning::kPolishMargin of the coordinate scale of the least is then polished by
 /// Newton's method on f with f' = |B'|^2 + (B - q) · B'' from one compensated de Casteljau
 /// triangle (kept only while it lowers the distance and stays in [a, b]; polishing moves a

@@ -50,7 +50,7 @@ inline constexpr int kRefineIterations = 200;
 /// least rough distance are polished and compared with compensated evaluations; the others
 /// cannot be the minimum nor tie with it. Polishing moves a root of the computed (B - q) · B'
 /// by a rounding-level stretch, along which the distance changes by far less than 1e-6 of
-/// the scale, and a rough distance (plain de Casteljau, within a few n u of the scale) is
+/// the scale, and a rough distance (plain doubles, within a few n u of the scale) is
 /// far closer than that to the compensated one; a larger margin only polishes more.
 inline constexpr double kPolishMargin = 1e-6;
 
