@@ -144,15 +144,23 @@ struct Unrolled {
     bernstein::portion_into_fixed<E>(c, a, b, out);
   }
   static void halves(const double* q, double* left, double* right) { halves_fixed<E>(q, left, right); }
-  /// The refinement evaluates p by its Horner form (O(n) a step), stopping at that form's
-  /// own rounding bound; de Casteljau's where the coefficients are too large for it.
+  /// The refinement evaluates p by its Horner form (O(n) a step) until |p| is within that
+  /// form's own rounding bound, then takes one Newton step from de Casteljau's value and
+  /// slope there (kept if it stays in the bracket): de Casteljau's rounds are exact where
+  /// the Horner form's ratio t / (1 - t) is not (p(1/4) of small integer coefficients is
+  /// computed exactly), so a root that is a short binary fraction comes out exactly, as
+  /// from de Casteljau alone. De Casteljau's throughout where the coefficients are too
+  /// large for the Horner form.
   static double root(const double* c, double e, double lo, double hi, double p_lo, double start) {
+    const auto exact_rounds = [c](double t) { return value_and_slope_of<E>(c, t); };
     const bernstein::HornerForm<E> form(c);
-    if (form.prepared()) {
-      return refine([&form](double t) { return form.value_and_slope(t); }, form.value_bound(), lo, hi,
-                    p_lo, start);
-    }
-    return refine([c](double t) { return value_and_slope_of<E>(c, t); }, e, lo, hi, p_lo, start);
+    if (!form.prepared()) return refine(exact_rounds, e, lo, hi, p_lo, start);
+    const double t =
+        refine([&form](double u) { return form.value_and_slope(u); }, form.value_bound(), lo, hi, p_lo, start);
+    const ValueAndSlope p = exact_rounds(t);
+    if (p.value == 0.0 || !(p.slope != 0.0)) return t;
+    const double next = t - p.value / p.slope;
+    return lo < next && next < hi ? next : t;
   }
 };
 

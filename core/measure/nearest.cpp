@@ -123,7 +123,9 @@ Candidate<P> end_candidate(const BasicCurve<P>& curve, P target, double t) {
 
 /// The candidate at the root t of f, polished by Newton's method on f = (B - q) · B' with
 /// f' = |B'|^2 + (B - q) · B'' from the compensated jet, each step kept only while it stays
-/// in [a, b] and lowers the distance.
+/// in [a, b] and lowers the distance, or leaves it within a rounding and lowers |f| (near
+/// the minimum the distance is flat to rounding, and f, from the compensated jet, still
+/// tells the closer parameter).
 template <class P>
 Candidate<P> polished(std::span<const P> points, P target, double a, double b, double t) {
   Jet<P> jet = jet_at(points, t);
@@ -138,7 +140,12 @@ Candidate<P> polished(std::span<const P> points, P target, double a, double b, d
     if (!(a <= next && next <= b) || next == best.t) break;
     const Jet<P> moved = jet_at(points, next);
     const double squared = squared_length(moved.point - target);
-    if (!(squared < best.squared)) break;
+    // At the minimum the distance is flat: within a rounding of it, a smaller |f| is the
+    // closer parameter, which the distance no longer tells apart.
+    const bool lower = squared < best.squared;
+    const bool level_and_closer = squared <= best.squared * (1 + 4 * kUnitRoundoff) &&
+                                  std::fabs(dot(moved.point - target, moved.first)) < std::fabs(f);
+    if (!lower && !level_and_closer) break;
     best = {next, squared, moved.point};
     point = moved.point;
     jet = moved;

@@ -36,7 +36,8 @@ struct NearestPoint {
 /// rough distance (B - q by a Horner-like sum in doubles) is within
 /// measure_tuning::kPolishMargin of the coordinate scale of the least is then polished by
 /// Newton's method on f with f' = |B'|^2 + (B - q) · B'' from one compensated de Casteljau
-/// triangle (kept only while it lowers the distance and stays in [a, b]; polishing moves a
+/// triangle (kept only while it stays in [a, b] and lowers the distance, or keeps it within
+/// a rounding and lowers |f|; polishing moves a
 /// distance by a rounding-level amount, so the others are neither the minimum nor tied
 /// with it), and the ends and polished roots are compared by their squared distance
 /// |B(t) - q|^2 from the compensated B(t) (on the normalised curve, normalised.hpp, where

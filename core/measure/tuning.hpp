@@ -55,9 +55,10 @@ inline constexpr int kRefineIterations = 200;
 inline constexpr double kPolishMargin = 1e-6;
 
 /// Newton steps of the polish on one candidate: each is kept only while it lowers the
-/// compensated distance, and from a root already refined to the rounding of the computed
-/// polynomial one or two steps reach the rounding of the compensated one; the limit only
-/// bounds the work where the steps keep lowering the distance by rounding-level amounts.
+/// compensated distance (or keeps it within a rounding and lowers |(B - q) · B'|), and from
+/// a root already refined to the rounding of the computed polynomial one or two steps reach
+/// the rounding of the compensated one; the limit only bounds the work where the steps keep
+/// lowering by rounding-level amounts.
 inline constexpr int kPolishIterations = 8;
 
 }  // namespace bezier::core::measure_tuning
