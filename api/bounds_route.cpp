@@ -38,7 +38,7 @@ Reply bounds_answer(const core::BasicCurve<P>& curve, ParameterInterval interval
   JsonWriter w;
   w.begin_object();
   w.key("critical").begin_array();
-  for (const std::vector<double>& ts : box.critical) {
+  for (const auto& ts : box.critical) {
     w.begin_array();
     for (const double t : ts) w.value(t);
     w.end_array();

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <limits>
 
-#include "core/curve/derivative.hpp"
-#include "core/curve/evaluate.hpp"
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/bernstein/casteljau_row.hpp"
+#include "core/curve/evaluate.hpp"
 #include "core/measure/axis.hpp"
 #include "core/measure/interval_roots.hpp"
 #include "core/measure/normalised.hpp"
@@ -34,7 +34,10 @@ Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
   // At 0 and 1 the curve is its end control point (evaluate would return it too).
   const P start = a == 0.0 ? curve.points().front() : evaluate(curve, a);
   const P end = b == 1.0 ? curve.points().back() : evaluate(curve, b);
-  const BasicCurve<P> hodograph = derivative(curve);
+  // The hodograph as derivative() computes it (each point within one rounding of
+  // n (P_{i+1} - P_i)), kept in its row: no curve to allocate.
+  CasteljauRow<P> hodograph(curve.points());
+  hodograph.hodograph_step();
   const double n = curve.degree();
   for (std::size_t k = 0; k < kAxes; ++k) {
     // The compensated evaluation's second-order term, with room for its constant.
@@ -51,9 +54,9 @@ Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
     include(a, axis(start, k));
     include(b, axis(end, k));
     if (a < b) {
-      const Coeffs slope = coordinate(hodograph.points(), k);
-      const SmallArray<double> roots = interval_roots(slope, a, b, IntervalEnds::open).roots;
-      out.critical[k].assign(roots.begin(), roots.end());
+      Coeffs slope(hodograph.size(), Coeffs::Uninitialized{});
+      for (std::size_t i = 0; i < hodograph.size(); ++i) slope[i] = axis(hodograph.point(i), k);
+      out.critical[k] = interval_roots(slope, a, b, IntervalEnds::open).roots;
       for (const double t : out.critical[k]) include(t, axis(evaluate(curve, t), k));
     }
     axis(out.min, k) = lo;

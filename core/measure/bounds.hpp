@@ -1,9 +1,9 @@
 #pragma once
 
 #include <array>
-#include <vector>
 
 #include "core/base/curve.hpp"
+#include "core/numeric/small_array.hpp"
 
 namespace bezier::core {
 
@@ -17,7 +17,7 @@ struct Bounds {
   P max;
   /// Per axis, increasing: the t in (a, b) where that coordinate's derivative vanishes,
   /// each root once (a double root once).
-  std::array<std::vector<double>, kAxes> critical;
+  std::array<SmallArray<double>, kAxes> critical;
 };
 
 /// The box of B on [a, b]: per axis, the extreme coordinate is attained at a or b or at a
