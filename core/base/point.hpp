@@ -68,6 +68,7 @@ inline double max_abs_coordinate(Point3 p) noexcept {
 }
 
 /// All coordinates finite (neither infinite nor NaN).
+inline bool is_finite(double v) noexcept { return std::isfinite(v); }
 inline bool is_finite(Point2 p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
 inline bool is_finite(Point3 p) noexcept {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);

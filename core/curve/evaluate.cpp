@@ -10,16 +10,19 @@ namespace bezier::core {
 namespace {
 
 template <class P>
-P evaluate_row(const BasicCurve<P>& curve, double t) {
-  CasteljauRow<P> row(curve.points());
+P evaluate_row(std::span<const P> points, double t) {
+  CasteljauRow<P> row(points);
   while (row.size() > 1) row.casteljau_step(t);
   return row.point(0);
 }
 
 }  // namespace
 
-BEZIER_FMA_CLONES Point2 evaluate(const Curve& curve, double t) { return evaluate_row(curve, t); }
-BEZIER_FMA_CLONES Point3 evaluate(const Curve3& curve, double t) { return evaluate_row(curve, t); }
+BEZIER_FMA_CLONES Point2 evaluate(const Curve& curve, double t) { return evaluate_row(curve.points(), t); }
+BEZIER_FMA_CLONES Point3 evaluate(const Curve3& curve, double t) { return evaluate_row(curve.points(), t); }
+BEZIER_FMA_CLONES double evaluate_coordinate(std::span<const double> coordinate, double t) {
+  return evaluate_row(coordinate, t);
+}
 
 std::vector<double> uniform_parameters(int count) {
   assert(count >= 1);

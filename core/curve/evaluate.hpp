@@ -1,5 +1,6 @@
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "core/base/curve.hpp"
@@ -9,7 +10,7 @@ namespace bezier::core {
 // The point evaluators of the kernel, and why each exists. All are de Casteljau's
 // algorithm; they differ in what they evaluate and how much accuracy they buy:
 //  - evaluate() here: a user's curve (Point2 or Point3), compensated, within one rounding
-//    of B(t) at any degree: what the API answers.
+//    of B(t) at any degree: what the API answers; evaluate_coordinate() one axis of it.
 //  - bernstein::evaluate (bernstein/bernstein1d.hpp): one scalar polynomial in doubles, about
 //    2 n u of its largest coefficient: the reparametrisations and distance functions the
 //    intersection tests compare against tolerances far above that.
@@ -33,6 +34,11 @@ namespace bezier::core {
 /// P_n exactly at t = 1 (every error term is zero there).
 [[nodiscard]] Point2 evaluate(const Curve& curve, double t);
 [[nodiscard]] Point3 evaluate(const Curve3& curve, double t);
+
+/// One coordinate of B(t): the polynomial with the coefficients `coordinate` (the control
+/// points' coordinate on one axis) by the same compensated rounds as evaluate(), with its
+/// accuracy, at the cost of one axis instead of all.
+[[nodiscard]] double evaluate_coordinate(std::span<const double> coordinate, double t);
 
 /// The parameters of `count` uniform samples: t_i = i / (count - 1), so 0 and 1 are
 /// included exactly. count = 1 gives {0}. Precondition: count >= 1.

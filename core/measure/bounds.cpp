@@ -41,8 +41,8 @@ Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
   const double n = curve.degree();
   for (std::size_t k = 0; k < kAxes; ++k) {
     // The compensated evaluation's second-order term, with room for its constant.
-    const double evaluation_error =
-        2 * (n + 1) * (n + 1) * kUnitRoundoff * kUnitRoundoff * bernstein::max_abs(coordinate(curve.points(), k));
+    const Coeffs values = coordinate(curve.points(), k);
+    const double evaluation_error = 2 * (n + 1) * (n + 1) * kUnitRoundoff * kUnitRoundoff * bernstein::max_abs(values);
     // A coordinate at t = 0 or 1 is a control point's, exact; elsewhere it is moved outward
     // by the evaluation's bound and one more rounding.
     double lo = kInfinity, hi = -kInfinity;
@@ -57,7 +57,7 @@ Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
       Coeffs slope(hodograph.size(), Coeffs::Uninitialized{});
       for (std::size_t i = 0; i < hodograph.size(); ++i) slope[i] = axis(hodograph.point(i), k);
       out.critical[k] = interval_roots(slope, a, b, IntervalEnds::open).roots;
-      for (const double t : out.critical[k]) include(t, axis(evaluate(curve, t), k));
+      for (const double t : out.critical[k]) include(t, evaluate_coordinate(values, t));
     }
     axis(out.min, k) = lo;
     axis(out.max, k) = hi;

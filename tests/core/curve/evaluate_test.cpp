@@ -111,6 +111,27 @@ TEST(Evaluate, MatchesExactValueDegrees1To20In3D) {
   for (const std::uint32_t seed : {4u, 5u}) check_random_curves<Point3>(seed, -100.0, 100.0);
 }
 
+// evaluate_coordinate takes the same rounds on one axis, so it meets the same accuracy
+// contract: it is evaluate()'s coordinate bit for bit (the error parts stay finite here).
+TEST(EvaluateCoordinate, IsEvaluatesCoordinateDegrees1To20In3D) {
+  Mulberry32 rng(6);
+  for (int n = 1; n <= 20; ++n) {
+    const Curve3 c = random_curve<Point3>(rng, n, -100.0, 100.0);
+    std::vector<double> xs, ys, zs;
+    for (const Point3& p : c.points()) {
+      xs.push_back(p.x);
+      ys.push_back(p.y);
+      zs.push_back(p.z);
+    }
+    for (const double t : test_parameters(rng)) {
+      const Point3 b = evaluate(c, t);
+      EXPECT_EQ(evaluate_coordinate(xs, t), b.x) << case_name(6, n, t);
+      EXPECT_EQ(evaluate_coordinate(ys, t), b.y) << case_name(6, n, t);
+      EXPECT_EQ(evaluate_coordinate(zs, t), b.z) << case_name(6, n, t);
+    }
+  }
+}
+
 // The hard inputs: degree 20, coordinates around 1e6, around 1e-6, and
 // alternating ±1000 (where B(t) cancels: the x coordinate of the pure alternating curve is
 // 1000 (1 - 2t)^20, tiny near t = 1/2, yet the result stays within one rounding of it).
