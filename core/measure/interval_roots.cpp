@@ -150,17 +150,21 @@ struct Unrolled {
   /// the Horner form's ratio t / (1 - t) is not (p(1/4) of small integer coefficients is
   /// computed exactly), so a root that is a short binary fraction comes out exactly, as
   /// from de Casteljau alone. De Casteljau's throughout where the coefficients are too
-  /// large for the Horner form.
+  /// large for the Horner form, and below measure_tuning::kHornerFromDegree.
   static double root(const double* c, double e, double lo, double hi, double p_lo, double start) {
     const auto exact_rounds = [c](double t) { return value_and_slope_of<E>(c, t); };
-    const bernstein::HornerForm<E> form(c);
-    if (!form.prepared()) return refine(exact_rounds, e, lo, hi, p_lo, start);
-    const double t =
-        refine([&form](double u) { return form.value_and_slope(u); }, form.value_bound(), lo, hi, p_lo, start);
-    const ValueAndSlope p = exact_rounds(t);
-    if (p.value == 0.0 || !(p.slope != 0.0)) return t;
-    const double next = t - p.value / p.slope;
-    return lo < next && next < hi ? next : t;
+    if constexpr (E - 1 < measure_tuning::kHornerFromDegree) {
+      return refine(exact_rounds, e, lo, hi, p_lo, start);
+    } else {
+      const bernstein::HornerForm<E> form(c);
+      if (!form.prepared()) return refine(exact_rounds, e, lo, hi, p_lo, start);
+      const double t = refine([&form](double u) { return form.value_and_slope(u); }, form.value_bound(),
+                              lo, hi, p_lo, start);
+      const ValueAndSlope p = exact_rounds(t);
+      if (p.value == 0.0 || !(p.slope != 0.0)) return t;
+      const double next = t - p.value / p.slope;
+      return lo < next && next < hi ? next : t;
+    }
   }
 };
 
@@ -265,7 +269,7 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
   // needed). pending <= job.depth (one sibling a level), so the halved pieces need
   // kHalvedDepth + 2 slots.
   const bool halving = a == 0.0 && b == 1.0 && n > 3;
-  const double halving_error = 1.01 * static_cast<double>(n) * kUnitRoundoff * bernstein::max_abs(c);
+  const double halving_error = halving ? 1.01 * static_cast<double>(n) * kUnitRoundoff * bernstein::max_abs(c) : 0.0;
   constexpr std::size_t kSlots = kHalvedDepth + 2;
   std::array<double, kSlots * kUnrolledSizes> slots_inline;
   std::vector<double> slots_beyond;

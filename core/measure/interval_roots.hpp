@@ -25,8 +25,9 @@ enum class IntervalEnds { open, closed };
 /// evaluation it uses, then one more Newton step: within about e' / |p'| of the root, as
 /// closely as the rounded p determines it (or until the bracket is one ulp). The
 /// evaluation is p's Horner form (core/bernstein/horner_form.hpp, O(n) a step, e' about
-/// twice e) for up to measure_tuning::kUnrolledSizes coefficients, de Casteljau's (e' = e)
-/// beyond. The same sign tests as bisection, a few instead of 55 per root. An exact zero of p at a split
+/// twice e; then one last Newton step from de Casteljau's rounds, which are exact at short
+/// binary fractions) from degree measure_tuning::kHornerFromDegree up to
+/// measure_tuning::kUnrolledSizes coefficients, de Casteljau's (e' = e) otherwise. The same sign tests as bisection, a few instead of 55 per root. An exact zero of p at a split
 /// point is a root, and the pieces on either side leave that end out of their count.
 /// A cluster still unresolved at width 2^-40 (a multiple root, a root where p rounds to
 /// a tiny nonzero value at a split point) is reported at the middle of its piece.

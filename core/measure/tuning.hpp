@@ -37,6 +37,12 @@ inline constexpr int kHalvedDepth = 12;
 /// root evaluates by de Casteljau instead of the Horner form (interval_roots.hpp).
 inline constexpr std::size_t kUnrolledSizes = 24;
 
+/// The refinement of a root evaluates p by its Horner form from this degree on, by de
+/// Casteljau's rounds below it: a Horner step costs about 3n operations after a preparation
+/// of 3n, de Casteljau's n (n + 1) / 2 lerps, which for degree 4 and less is no more, and
+/// then the last de Casteljau step that the Horner form needs is not taken either.
+inline constexpr std::size_t kHornerFromDegree = 5;
+
 /// Iterations of the bracketed Newton refinement of one root, after which it returns its
 /// last iterate: Newton's steps reach the rounding of p in a few, and a step out of the
 /// bracket is a bisection, so even by bisection alone 200 iterations bring the bracket to
