@@ -11,6 +11,7 @@
 #include "core/measure/axis.hpp"
 #include "core/measure/interval_roots.hpp"
 #include "core/measure/normalised.hpp"
+#include "core/numeric/outward.hpp"
 #include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
@@ -48,8 +49,8 @@ Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
     double lo = kInfinity, hi = -kInfinity;
     const auto include = [&](double t, double v) {
       const bool exact = t == 0.0 || t == 1.0;
-      lo = std::min(lo, exact ? v : std::nextafter(v - evaluation_error, -kInfinity));
-      hi = std::max(hi, exact ? v : std::nextafter(v + evaluation_error, kInfinity));
+      lo = std::min(lo, exact ? v : next_down(v - evaluation_error));
+      hi = std::max(hi, exact ? v : next_up(v + evaluation_error));
     };
     include(a, axis(start, k));
     include(b, axis(end, k));

@@ -32,7 +32,7 @@ struct Bounds {
 /// where |x'| is within its rounding bound e over the whole stretch to t*, so x moves by at
 /// most e |t - t*|, also below an ulp of the curve's scale for the degrees the API takes.
 /// Each face is then moved outward by the evaluation's bound and rounded outward once more
-/// (std::nextafter), except a face attained at t = 0 or 1, which is a control point's
+/// (next_up, next_down), except a face attained at t = 0 or 1, which is a control point's
 /// coordinate and exact: the box contains the curve, and a face is at most 2 ulps (of its value,
 /// or of n^2 u max|P_i| where the extreme is near zero against the control points) beyond
 /// the exact extreme.
