@@ -9,8 +9,8 @@
 #include <type_traits>
 
 #include "core/numeric/binomial.hpp"
-#include "core/curve/derivative.hpp"
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/bernstein/casteljau_row.hpp"
 #include "core/measure/bernstein_product.hpp"
 #include "core/measure/interval_roots.hpp"
 #include "core/measure/normalised.hpp"
@@ -58,12 +58,19 @@ class Speed {
  public:
   static constexpr std::size_t kBatch = 8;
 
-  explicit Speed(const BasicCurve<P>& curve) : hodograph_(derivative(curve)) {}
+  /// The hodograph's points as derivative() computes them (each within one rounding of
+  /// n (P_{i+1} - P_i)), from its de Casteljau row, kept without a curve to allocate.
+  explicit Speed(const BasicCurve<P>& curve) {
+    CasteljauRow<P> row(curve.points());
+    row.hodograph_step();
+    hodograph_ = SmallArray<P>(row.size(), typename SmallArray<P>::Uninitialized{});
+    for (std::size_t i = 0; i < row.size(); ++i) hodograph_[i] = row.point(i);
+  }
 
   /// out[j] = |B'(ts[j])| for j < ts.size() <= kBatch.
   void operator()(std::span<const double> ts, double* out) const {
     assert(ts.size() <= kBatch);
-    const auto h = hodograph_.points();
+    const std::span<const P> h = hodograph();
     const std::size_t m = h.size();
     constexpr std::size_t kInlinePoints = 24;
     std::array<double, kInlinePoints * kBatch> inline_row;
@@ -113,7 +120,9 @@ class Speed {
     return value;
   }
 
-  [[nodiscard]] const BasicCurve<P>& hodograph() const noexcept { return hodograph_; }
+  [[nodiscard]] std::span<const P> hodograph() const noexcept {
+    return {hodograph_.data(), hodograph_.size()};
+  }
 
  private:
   static constexpr std::size_t kDimension = std::is_same_v<P, Point3> ? 3 : 2;
@@ -125,7 +134,7 @@ class Speed {
     return p.y;
   }
 
-  BasicCurve<P> hodograph_;
+  SmallArray<P> hodograph_;
 };
 
 /// One piece of [a, b] under the nested rules: its length by K7, or by P15 once extended,
@@ -218,8 +227,7 @@ class CompensatedSum {
 /// hodograph point), and is at least the length itself. Its own rounding is a few u of it,
 /// negligible once multiplied by the rounding constant.
 template <class P>
-double integrated_condition(const BasicCurve<P>& hodograph, double a, double b) {
-  const auto h = hodograph.points();
+double integrated_condition(std::span<const P> h, double a, double b) {
   const int m = static_cast<int>(h.size()) - 1;
   const auto antiderivative = [&](double x) {
     double sum = 0.0, prefix = 0.0;
@@ -278,14 +286,14 @@ std::vector<double> split_points(const Speed<P>& speed, double a, double b) {
   std::vector<double> cuts;
   cuts.reserve(16);
   cuts.push_back(a);
-  const auto h = speed.hodograph().points();
+  const std::span<const P> h = speed.hodograph();
   if (h.size() >= 2) {
-    const std::vector<double> squared_speed = dot_product_polynomial<P>(h, h);
-    const std::vector<double> slope = bernstein_derivative(squared_speed);
+    const Coeffs squared_speed = dot_product_polynomial<P>(h, h);
+    const Coeffs slope = bernstein_derivative(squared_speed);
     IntervalRoots found;
     if (may_rise_through_zero(slope)) found = interval_roots(slope, a, b, IntervalEnds::open, Crossings::rising);
     const auto& minima = found.roots;
-    const std::vector<double> second = minima.empty() ? std::vector<double>{} : bernstein_derivative(slope);
+    const Coeffs second = minima.empty() ? Coeffs() : bernstein_derivative(slope);
     for (std::size_t i = 0; i < minima.size(); ++i) {
       const double t0 = minima[i];
       cuts.push_back(t0);

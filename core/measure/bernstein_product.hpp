@@ -6,8 +6,9 @@
 #include <span>
 #include <vector>
 
-#include "core/numeric/binomial.hpp"
 #include "core/base/point.hpp"
+#include "core/numeric/binomial.hpp"
+#include "core/numeric/small_array.hpp"
 
 namespace bezier::core {
 
@@ -83,12 +84,11 @@ void dot_product_polynomial_into(int m, int n, U u, V v, double* w) {
   }
 }
 
-/// dot_product_polynomial_into as a new vector, u and v stored. Precondition: both spans
-/// non-empty.
+/// dot_product_polynomial_into as new coefficients, u and v stored. Precondition: both
+/// spans non-empty.
 template <class P>
-[[nodiscard]] std::vector<double> dot_product_polynomial(std::span<const P> u,
-                                                         std::span<const P> v) {
-  std::vector<double> w(u.size() + v.size() - 1);
+[[nodiscard]] Coeffs dot_product_polynomial(std::span<const P> u, std::span<const P> v) {
+  Coeffs w(u.size() + v.size() - 1, Coeffs::Uninitialized{});
   dot_product_polynomial_into(
       static_cast<int>(u.size()) - 1, static_cast<int>(v.size()) - 1,
       [u](int i) { return u[static_cast<std::size_t>(i)]; },
@@ -98,10 +98,10 @@ template <class P>
 
 /// The Bernstein coefficients of p'(t) for p of degree n: n (c_{i+1} - c_i), i = 0..n-1
 /// (degree n - 1; a constant's derivative is the single coefficient 0).
-[[nodiscard]] inline std::vector<double> bernstein_derivative(std::span<const double> c) {
+[[nodiscard]] inline Coeffs bernstein_derivative(std::span<const double> c) {
   const std::size_t n = c.size() - 1;
-  if (n == 0) return {0.0};
-  std::vector<double> d(n);
+  if (n == 0) return Coeffs(1, 0.0);
+  Coeffs d(n, Coeffs::Uninitialized{});
   for (std::size_t i = 0; i < n; ++i) d[i] = static_cast<double>(n) * (c[i + 1] - c[i]);
   return d;
 }
