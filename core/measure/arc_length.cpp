@@ -4,6 +4,8 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <cstddef>
+#include <memory_resource>
 #include <span>
 #include <tuple>
 #include <type_traits>
@@ -255,7 +257,7 @@ double integrated_condition(std::span<const P> h, double a, double b) {
 /// of the nested rules tracks the error. Below w = 1e-8 h the smoothing changes the integral
 /// by about (w / h)^2 log(h / w) < 1e-14 of it relative to the kink |t - t0| that the split
 /// at t0 already makes exact: no grading then.
-void grade_toward(double t0, double w, double toward, std::vector<double>& cuts) {
+void grade_toward(double t0, double w, double toward, std::pmr::vector<double>& cuts) {
   const double h = std::fabs(toward - t0);
   if (!(w > 1e-8 * h)) return;
   const double direction = toward > t0 ? 1.0 : -1.0;
@@ -282,8 +284,9 @@ bool may_rise_through_zero(std::span<const double> c) {
 /// rises through zero), and the grading around each small minimum (grade_toward),
 /// increasing. A maximum of |B'| needs no cut: S > 0 there, and |B'| is analytic around it.
 template <class P>
-std::vector<double> split_points(const Speed<P>& speed, double a, double b) {
-  std::vector<double> cuts;
+std::pmr::vector<double> split_points(const Speed<P>& speed, double a, double b,
+                                      std::pmr::memory_resource* memory) {
+  std::pmr::vector<double> cuts(memory);
   cuts.reserve(16);
   cuts.push_back(a);
   const std::span<const P> h = speed.hodograph();
@@ -322,9 +325,14 @@ ArcLength measure(const BasicCurve<P>& curve, double a, double b, const ArcLengt
   const double integrand_rounding =
       2 * (3.01 * n + 3) * kUnitRoundoff * integrated_condition(speed.hodograph(), a, b);
 
-  std::vector<Piece> heap;  // a max-heap on the error estimate
+  // The cuts and the pieces live in a stack arena (the vectors' growth falls back to the
+  // heap beyond it): allocations are a fixed cost of every call, a large part of it at
+  // loose tolerances.
+  std::array<std::byte, 4096> arena_bytes;
+  std::pmr::monotonic_buffer_resource arena(arena_bytes.data(), arena_bytes.size());
+  std::pmr::vector<Piece> heap(&arena);  // a max-heap on the error estimate
   const auto by_error = [](const Piece& x, const Piece& y) { return x.error < y.error; };
-  const std::vector<double> cuts = split_points(speed, a, b);
+  const std::pmr::vector<double> cuts = split_points(speed, a, b, &arena);
   heap.reserve(cuts.size() + 8);
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) heap.push_back(kronrod7(speed, cuts[i], cuts[i + 1]));
   std::make_heap(heap.begin(), heap.end(), by_error);
