@@ -1,8 +1,11 @@
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "core/base/curve.hpp"
+#include "core/bernstein/casteljau_row.hpp"
+#include "core/numeric/small_array.hpp"
 
 namespace bezier::core {
 
@@ -20,6 +23,17 @@ namespace bezier::core {
 template <class P>
 [[nodiscard]] BasicCurve<P> derivative(const BasicCurve<P>& curve) {
   return derivative(curve, 1);
+}
+
+/// The hodograph's points, the same values as derivative(curve).points(), in an inline
+/// store: for the kernels that only read them (no curve to allocate per call).
+template <class P>
+[[nodiscard]] SmallArray<P> hodograph_points(std::span<const P> points) {
+  CasteljauRow<P> row(points);
+  row.hodograph_step();
+  SmallArray<P> out(row.size(), typename SmallArray<P>::Uninitialized{});
+  for (std::size_t i = 0; i < row.size(); ++i) out[i] = row.point(i);
+  return out;
 }
 
 /// B'(t), B''(t), ..., B^(order)(t): the first `order` derivatives at t. Each is the

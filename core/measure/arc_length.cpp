@@ -12,7 +12,7 @@
 
 #include "core/numeric/binomial.hpp"
 #include "core/bernstein/bernstein1d.hpp"
-#include "core/bernstein/casteljau_row.hpp"
+#include "core/curve/derivative.hpp"
 #include "core/measure/bernstein_product.hpp"
 #include "core/measure/interval_roots.hpp"
 #include "core/measure/normalised.hpp"
@@ -60,14 +60,7 @@ class Speed {
  public:
   static constexpr std::size_t kBatch = 8;
 
-  /// The hodograph's points as derivative() computes them (each within one rounding of
-  /// n (P_{i+1} - P_i)), from its de Casteljau row, kept without a curve to allocate.
-  explicit Speed(const BasicCurve<P>& curve) {
-    CasteljauRow<P> row(curve.points());
-    row.hodograph_step();
-    hodograph_ = SmallArray<P>(row.size(), typename SmallArray<P>::Uninitialized{});
-    for (std::size_t i = 0; i < row.size(); ++i) hodograph_[i] = row.point(i);
-  }
+  explicit Speed(const BasicCurve<P>& curve) : hodograph_(hodograph_points(curve.points())) {}
 
   /// out[j] = |B'(ts[j])| for j < ts.size() <= kBatch.
   void operator()(std::span<const double> ts, double* out) const {

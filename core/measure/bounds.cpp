@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "core/bernstein/bernstein1d.hpp"
-#include "core/bernstein/casteljau_row.hpp"
+#include "core/curve/derivative.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/measure/axis.hpp"
 #include "core/measure/interval_roots.hpp"
@@ -35,10 +35,7 @@ Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
   // At 0 and 1 the curve is its end control point (evaluate would return it too).
   const P start = a == 0.0 ? curve.points().front() : evaluate(curve, a);
   const P end = b == 1.0 ? curve.points().back() : evaluate(curve, b);
-  // The hodograph as derivative() computes it (each point within one rounding of
-  // n (P_{i+1} - P_i)), kept in its row: no curve to allocate.
-  CasteljauRow<P> hodograph(curve.points());
-  hodograph.hodograph_step();
+  const SmallArray<P> hodograph = hodograph_points(curve.points());
   const double n = curve.degree();
   for (std::size_t k = 0; k < kAxes; ++k) {
     // The compensated evaluation's second-order term, with room for its constant.
@@ -56,7 +53,7 @@ Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
     include(b, axis(end, k));
     if (a < b) {
       Coeffs slope(hodograph.size(), Coeffs::Uninitialized{});
-      for (std::size_t i = 0; i < hodograph.size(); ++i) slope[i] = axis(hodograph.point(i), k);
+      for (std::size_t i = 0; i < hodograph.size(); ++i) slope[i] = axis(hodograph[i], k);
       out.critical[k] = interval_roots(slope, a, b, IntervalEnds::open).roots;
       for (const double t : out.critical[k]) include(t, evaluate_coordinate(values, t));
     }

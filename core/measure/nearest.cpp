@@ -7,6 +7,7 @@
 
 #include "core/base/multiversion.hpp"
 #include "core/bernstein/casteljau_row.hpp"
+#include "core/curve/derivative.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/measure/bernstein_product.hpp"
 #include "core/measure/interval_roots.hpp"
@@ -60,10 +61,7 @@ BEZIER_FMA_CLONES Jet<Point3> jet_at(std::span<const Point3> points, double t) {
 /// n (P_{i+1} - P_i)).
 template <class P>
 void distance_slope_of(std::span<const P> points, P target, double* f) {
-  CasteljauRow<P> row(points);
-  row.hodograph_step();
-  SmallArray<P> hodograph(row.size(), typename SmallArray<P>::Uninitialized{});
-  for (std::size_t j = 0; j < row.size(); ++j) hodograph[j] = row.point(j);
+  const SmallArray<P> hodograph = hodograph_points(points);
   dot_product_polynomial_into(
       static_cast<int>(points.size()) - 1, static_cast<int>(hodograph.size()) - 1,
       [&](int i) { return points[static_cast<std::size_t>(i)] - target; },
