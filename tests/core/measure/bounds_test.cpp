@@ -107,6 +107,47 @@ TEST(Bounds, SubIntervalAndPoint) {
   expect_upper_face(point.max.y, 1.0L);
 }
 
+TEST(Bounds, DoubleRootAtTheIntervalsEndIsTheEnd) {
+  // x = (2t - 1)^3 (control x -1, 1, -1, 1): x' = 6 (2t - 1)^2 vanishes twice at t = 1/2, the
+  // start of [1/2, 1], where x = 0 exactly; x rises to 1 at t = 1. No critical t in (1/2, 1).
+  const Curve curve({{-1, -2}, {1, 6}, {-1, 3}, {1, 2}});
+  const auto box = bounds(curve, 0.5, 1);
+  EXPECT_TRUE(box.critical[0].empty());
+  EXPECT_EQ(box.min.x, 0.0);
+  EXPECT_EQ(box.max.x, 1.0);
+  // Mirrored: x = (1 - 2t)^3 on [0, 1/2] ends at its double root.
+  const Curve reversed({{1, 2}, {-1, 3}, {1, 6}, {-1, -2}});
+  const auto mirrored = bounds(reversed, 0, 0.5);
+  EXPECT_TRUE(mirrored.critical[0].empty());
+  EXPECT_EQ(mirrored.min.x, 0.0);
+  EXPECT_EQ(mirrored.max.x, 1.0);
+}
+
+TEST(Bounds, SlopeZeroAtAnEndOfTheCurve) {
+  // y = 6t^2 - 2t^3 (control y 0, 0, 2, 4): y' = 6t (2 - t) vanishes at t = 0 only; x with
+  // control 2, 5, 6, 6 has x' = 3 (1 - t)(3 - t), zero at t = 1 only. The box is the end
+  // points' box exactly, with no critical parameter.
+  const auto box = bounds(Curve({{2, 0}, {5, 0}, {6, 2}, {6, 4}}), 0, 1);
+  EXPECT_TRUE(box.critical[0].empty());
+  EXPECT_TRUE(box.critical[1].empty());
+  EXPECT_EQ(box.min, (Point2{2, 0}));
+  EXPECT_EQ(box.max, (Point2{6, 4}));
+}
+
+TEST(Bounds, InteriorEndsAreExactWhenTheValueIsADouble) {
+  // x = t^2 on [1/4, 3/4] (control x 0, 0, 1): 1/16 and 9/16 are doubles, so the faces are
+  // those values themselves.
+  const auto box = bounds(Curve({{0, 0}, {0, 1}, {1, 1}}), 0.25, 0.75);
+  EXPECT_EQ(box.min.x, 0.0625);
+  EXPECT_EQ(box.max.x, 0.5625);
+  // y = 2t - t^2: at 1/3 the exact value 5/9 is no double; the faces bracket it tightly.
+  const double third = 1.0 / 3.0;
+  const auto piece = bounds(Curve({{0, 0}, {0, 1}, {1, 1}}), third, 0.75);
+  const long double y = 2.0L * third - static_cast<long double>(third) * third;
+  EXPECT_LE(static_cast<long double>(piece.min.y), y);
+  EXPECT_GE(piece.min.y, std::nextafter(static_cast<double>(y), -INFINITY));
+}
+
 template <class P>
 void check_random(int dimension) {
   test::Mulberry32 rng(static_cast<std::uint32_t>(31 + dimension));
