@@ -86,7 +86,7 @@ std::optional<std::vector<P>> read_targets(RequestReader& reader, const Json& va
   return targets;
 }
 
-/// Work units of one target (the units of Limits::max_work, about 3-6 ns each): isolating
+/// Work units of one target (the units of Limits::max_work): isolating
 /// and bisecting the roots of a degree 2n - 1 polynomial, each piece and each bisection step
 /// O(n^2), and polishing each root; 250 (2n)^2 is an upper estimate of what random curves of
 /// degrees 3 to 20 take.

@@ -5,8 +5,8 @@
 /// instruction (and so AVX's three-operand encoding) and one for plain x86-64, and the
 /// dynamic loader picks one at start (GNU ifunc). Without it the baseline x86-64 build
 /// calls libm's fma for every product (a call that spills the live vector registers),
-/// which made compensated evaluation about 4x slower; the intersection search's clipping
-/// step, pieces and Krawczyk test run 0.88x the instructions in their fma copies. `flatten` inlines
+/// which makes compensated evaluation several times slower; the intersection search's
+/// clipping step, pieces and Krawczyk test also run fewer instructions in their fma copies. `flatten` inlines
 /// every callee into each copy: a helper left out of line would be compiled once, for plain x86-64,
 /// and the fma copy would only call it. Both copies round every operation the same way (fma is
 /// exact-then-rounded either way, and the build turns off contraction of a * b + c,

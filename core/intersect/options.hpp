@@ -16,8 +16,8 @@ struct IntersectOptions {
   IntersectMethod method = IntersectMethod::hybrid;
   /// Degree k of the fat curve (hybrid only): 2 or 3. Curves of degree <= k are used as they
   /// are (their distance function is then bounded exactly, delta = 0). 3 by default: on
-  /// the shared benchmark (tests/bench/intersect_bench.cpp) it needs a third fewer steps
-  /// than 2 for cubics and is at least as fast for degrees 7 and 10.
+  /// the shared benchmark (tests/bench/intersect_bench.cpp) it needs fewer steps than 2
+  /// for cubics and is no slower for higher degrees.
   int fat_curve_degree = 3;
   /// Most work units (work_cost.hpp: each box step and Newton iteration charged by its
   /// degrees and arithmetic, so that units are proportional to time) before giving up with

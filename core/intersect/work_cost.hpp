@@ -7,17 +7,17 @@ namespace bezier::core {
 
 // What the two-curve search charges against IntersectOptions::max_work, in work units.
 //
-// A step's cost grows with the degrees and with the arithmetic: rebuilding a piece of degree
-// n is de Casteljau's triangle, about (n + 1)^2 coordinate updates per piece, the implicit
-// clip multiplies degree-n Bernstein polynomials ((n + 1)^2 products each), and compensated
-// pieces do all of it in double-double. Counting steps alone let the cost per step range
-// over 1000x (0.3 us for cubics, 40 us for compensated degree-20 steps), so a cap in steps
-// either cut legitimate searches short or let pathological ones run for seconds. Charging
-// each step by what it computes makes the spent units proportional to time: one unit is
-// about one coordinate update of de Casteljau's algorithm in doubles. The multipliers are
+// A step's cost grows with the degrees and with the arithmetic: rebuilding a piece of degree n
+// is de Casteljau's triangle, about (n + 1)^2 coordinate updates per piece, the implicit clip
+// multiplies degree-n Bernstein polynomials ((n + 1)^2 products each), and compensated pieces
+// do all of it in double-double. Counting steps alone lets the cost per step range over three
+// orders of magnitude (a plain cubic step against a compensated degree-20 one), so a cap in
+// steps either cut legitimate searches short or let pathological ones run for seconds.
+// Charging each step by what it computes makes the spent units proportional to time: one unit
+// is about one coordinate update of de Casteljau's algorithm in doubles. The multipliers are
 // fitted to the worst and the heaviest ordinary requests of tests/bench/worst_case_inputs.hpp,
-// so that every one that reaches the cap spends about the same time per unit: a plain step
-// is cheap next to what the costly ones add.
+// so that every one that reaches the cap spends about the same time per unit: a plain step is
+// cheap next to what the costly ones add.
 
 /// Compensated (double-double) pieces cost this many times the plain ones: each update is
 /// a two-product and two two-sums instead of one multiply-add.

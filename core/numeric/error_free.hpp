@@ -25,7 +25,7 @@ struct TwoTerm {
 /// a b = hi + lo exactly, with hi = fl(a b): the fused multiply-add gives the rounding
 /// error of the product in one rounding (exact unless the product over- or underflows).
 /// (Dekker's split-based TwoProduct avoids the libm call on x86-64 builds without -mfma,
-/// but measured no faster here: glibc dispatches fma to the hardware instruction.)
+/// but is no faster: glibc dispatches fma to the hardware instruction.)
 [[nodiscard]] inline TwoTerm<double> two_product(double a, double b) noexcept {
   const double p = a * b;
   return {p, std::fma(a, b, -p)};
