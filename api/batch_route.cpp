@@ -1,31 +1,38 @@
 #include "api/batch_route.hpp"
 
-#include <algorithm>
-#include <array>
 #include <string>
 #include <vector>
 
 #include "api/handler.hpp"
 #include "api/read_json.hpp"
+#include "api/route_table.hpp"
 
 namespace bezier::api {
 
 namespace {
 
-// The routes whose cost the degree and t-value limits bound rather than the work cap:
-// their items are not charged to the batch's work cap (their answers are bounded by
-// max_batch_answer_bytes instead). Every other item route is charged max_work.
-constexpr std::array<std::string_view, 4> kRoutesWithoutWorkCap = {"/evaluate", "/polar", "/classify",
-                                                                   "/bounds"};
-
-bool is_batch_item_route(std::string_view path) {
-  const auto routes = batch_item_routes();
-  return std::find(routes.begin(), routes.end(), path) != routes.end();
+// Whether an item of `path` is charged to the batch's work cap: the routes the per-item
+// work cap bounds (api/route_table.hpp). The others' cost the degree and t-value limits
+// bound; their answers are bounded by max_batch_answer_bytes.
+bool charged_to_work_cap(std::string_view path) {
+  const ComputeRoute* route = find_compute_route(path);
+  return route != nullptr && route->cost == CostBound::work_cap;
 }
 
-bool charged_to_work_cap(std::string_view path) {
-  return is_batch_item_route(path) &&
-         std::find(kRoutesWithoutWorkCap.begin(), kRoutesWithoutWorkCap.end(), path) == kRoutesWithoutWorkCap.end();
+bool is_batch_item_route(std::string_view path) { return find_compute_route(path) != nullptr; }
+
+// The routes whose items the batch's work cap is not charged for, as a sentence names them.
+std::string uncharged_routes_text() {
+  std::vector<std::string_view> routes;
+  for (const ComputeRoute& route : kComputeRoutes) {
+    if (route.cost != CostBound::work_cap) routes.push_back(route.path);
+  }
+  std::string text;
+  for (std::size_t i = 0; i < routes.size(); ++i) {
+    if (i > 0) text += i + 1 == routes.size() ? " and " : ", ";
+    text += routes[i];
+  }
+  return text;
 }
 
 std::string item_routes_text() {
@@ -104,8 +111,8 @@ Reply batch_route(const nlohmann::json& request, const Limits& limits, const Bat
                              " units bounds, which may spend up to " + std::to_string(charged_items) + " x " +
                              std::to_string(limits.max_work) + " units, above the batch's work cap of " +
                              std::to_string(limits.max_batch_work) +
-                             ": send them in smaller batches (items of /evaluate, /polar, /classify and "
-                             "/bounds are not charged)");
+                             ": send them in smaller batches (items of " + uncharged_routes_text() +
+                             " are not charged)");
   }
 
   std::string out = R"({"responses":[)";

@@ -30,9 +30,9 @@ using BatchItemObserver = std::function<void(std::string_view path, const Reply&
 /// point into the batch's body: when it is not {"requests": [...]} with every item an
 /// object of a string `path` and a `body`; when it has more than limits.max_batch_items
 /// items; and when the work its items may spend exceeds limits.max_batch_work (a work-cap
-/// problem): each item of a route whose cost the per-item cap bounds (every route but
-/// /evaluate, /polar, /classify and /bounds, whose cost the degree and t-value limits
-/// bound instead) is charged limits.max_work, the most it may spend. It is refused as well,
+/// problem): each item of a route whose cost the per-item cap bounds (CostBound::work_cap in
+/// api/route_table.hpp; the others' cost the degree and t-value limits bound instead) is
+/// charged limits.max_work, the most it may spend. It is refused as well,
 /// as soon as it is known, when the answers of its items would exceed
 /// limits.max_batch_answer_bytes (a 422 that points at the item that crossed it). Every
 /// item is computed under `limits` as it stands, so each answer, a work-cap problem

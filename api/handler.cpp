@@ -5,35 +5,17 @@
 
 #include "api/parse_json.hpp"
 #include "api/read_json.hpp"
-#include "api/routes.hpp"
+#include "api/route_table.hpp"
 
 namespace bezier::api {
 
 namespace {
 
-using RouteFunction = Reply (*)(const nlohmann::json&, const Limits&);
-
-struct Route {
-  std::string_view path;
-  RouteFunction function;
-};
-
-constexpr std::array kRoutes = {
-    Route{"/evaluate", &evaluate_route},
-    Route{"/polar", &polar_route},
-    Route{"/classify", &classify_route},
-    Route{"/loop-area", &loop_area_route},
-    Route{"/intersections", &intersections_route},
-    Route{"/length", &length_route},
-    Route{"/bounds", &bounds_route},
-    Route{"/nearest", &nearest_route},
-};
-
 // The compute routes, then /batch.
-constexpr std::array<std::string_view, kRoutes.size() + 1> kPaths = [] {
-  std::array<std::string_view, kRoutes.size() + 1> paths{};
-  for (std::size_t i = 0; i < kRoutes.size(); ++i) paths[i] = kRoutes[i].path;
-  paths[kRoutes.size()] = kBatchPath;
+constexpr std::array<std::string_view, kComputeRoutes.size() + 1> kPaths = [] {
+  std::array<std::string_view, kComputeRoutes.size() + 1> paths{};
+  for (std::size_t i = 0; i < kComputeRoutes.size(); ++i) paths[i] = kComputeRoutes[i].path;
+  paths[kComputeRoutes.size()] = kBatchPath;
   return paths;
 }();
 
@@ -42,7 +24,7 @@ constexpr std::array<std::string_view, kRoutes.size() + 1> kPaths = [] {
 std::span<const std::string_view> post_routes() noexcept { return kPaths; }
 
 std::span<const std::string_view> batch_item_routes() noexcept {
-  return std::span<const std::string_view>(kPaths).first(kRoutes.size());
+  return std::span<const std::string_view>(kPaths).first(kComputeRoutes.size());
 }
 
 bool is_post_route(std::string_view path) noexcept {
@@ -56,9 +38,7 @@ Reply compute_route_answer(std::string_view path, const nlohmann::json& body, co
   if (!body.is_object()) {
     return problem_reply(ProblemKind::malformed_json, "body must be a JSON object");
   }
-  for (const Route& r : kRoutes) {
-    if (r.path == path) return r.function(body, limits);
-  }
+  if (const ComputeRoute* route = find_compute_route(path)) return route->answer(body, limits);
   return problem_reply(ProblemKind::not_found, "no route " + std::string(path));
 }
 

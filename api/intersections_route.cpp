@@ -188,6 +188,7 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   Reply reply = json_reply(std::move(w));
   // A pair left unresolved for want of work units is an answer the cap decided.
   reply.limit_reached = certified.out_of_work;
+  reply.decided_by_work_cap = certified.out_of_work;
   return reply;
 }
 
@@ -268,6 +269,7 @@ Reply one_path_answer(const IntersectionsRequest& request, const Limits& limits)
   w.end_object();
   Reply reply = json_reply(std::move(w));
   reply.limit_reached = out_of_work;
+  reply.decided_by_work_cap = out_of_work;
   return reply;
 }
 

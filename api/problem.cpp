@@ -58,7 +58,10 @@ Reply problem_reply(ProblemKind kind, std::string detail, std::vector<FieldError
     body["errors"] = std::move(list);
   }
   // Invalid UTF-8 from the request may be echoed in a message: replace, never throw.
-  return {info.status, "application/problem+json", dump_json(body), kind == ProblemKind::work_cap};
+  Reply reply{info.status, "application/problem+json", dump_json(body)};
+  reply.limit_reached = kind == ProblemKind::work_cap;
+  reply.decided_by_work_cap = kind == ProblemKind::work_cap;
+  return reply;
 }
 
 Reply validation_reply(std::vector<FieldError> errors) {

@@ -30,6 +30,10 @@ struct Reply {
   /// refuses what is above it. A caller that tries a request under smaller limits first
   /// (the epoll engine's inline try) must compute it again only when this is set.
   bool limit_reached = false;
+  /// The work cap decided this answer: a 422 work-cap problem, or a 200 it cut short (a
+  /// self-intersection left unresolved). Implies limit_reached. A /batch sets it only when
+  /// the batch itself is refused by its work cap; its items carry their own.
+  bool decided_by_work_cap = false;
 };
 
 /// The kinds of problem the API reports. Each has a stable `type` URI, a `title` and an
@@ -48,7 +52,8 @@ enum class ProblemKind {
 };
 
 /// RFC 9457 problem details: `type`, `title`, `status`, `detail`, and for validation
-/// problems an `errors` list of {pointer, message}. A work_cap problem has limit_reached set.
+/// problems an `errors` list of {pointer, message}. A work_cap problem has limit_reached and
+/// decided_by_work_cap set.
 [[nodiscard]] Reply problem_reply(ProblemKind kind, std::string detail,
                                   std::vector<FieldError> errors = {});
 

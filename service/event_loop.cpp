@@ -384,7 +384,7 @@ void EventLoop::run_on_pool(std::uint64_t connection, const std::shared_ptr<Pend
     response.headers.emplace_back("Retry-After", "1");
   } else {
     response = router.compute(pending->path, body, config_.limits);
-    if (work_cap_reached(pending->path, response)) router.metrics().work_cap_hit();
+    if (work_cap_reached(response)) router.metrics().work_cap_hit();
   }
   {
     const std::lock_guard lock(completions_mutex_);

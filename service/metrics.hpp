@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include "api/route_table.hpp"
+
 namespace bezier::service {
 
 /// Why the service answered 503 to a request it could not take on.
@@ -49,10 +51,19 @@ class Metrics {
   /// The exposition text for GET /metrics.
   [[nodiscard]] std::string render() const;
 
-  static constexpr std::array<std::string_view, 15> kRoutes = {
-      "/evaluate", "/polar",   "/loop-area", "/intersections", "/classify", "/length",
-      "/bounds",   "/nearest", "/batch",     "/openapi.yaml",   "/healthz",  "/readyz",
-      "/metrics",  "/",        "other"};
+  /// The route labels: the compute routes (api/route_table.hpp), /batch, the GET routes,
+  /// the playground's page and "other" for every other path.
+  static constexpr std::array<std::string_view, 6> kOtherRoutes = {
+      "/batch", "/openapi.yaml", "/healthz", "/readyz", "/metrics", "/"};
+  static constexpr std::array<std::string_view, api::kComputeRoutes.size() + kOtherRoutes.size() + 1> kRoutes =
+      [] {
+        std::array<std::string_view, api::kComputeRoutes.size() + kOtherRoutes.size() + 1> routes{};
+        std::size_t i = 0;
+        for (const api::ComputeRoute& route : api::kComputeRoutes) routes[i++] = route.path;
+        for (const std::string_view route : kOtherRoutes) routes[i++] = route;
+        routes[i] = "other";
+        return routes;
+      }();
   static constexpr std::array<int, 13> kStatuses = {200, 204, 400, 401, 404, 405, 408,
                                                     413, 415, 422, 500, 503, 0 /*other*/};
   /// Upper bounds of the latency buckets, in seconds (+Inf is implied).

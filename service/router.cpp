@@ -70,13 +70,6 @@ bool is_get_route(std::string_view path) {
   return find_static_file(path).has_value();
 }
 
-bool decided_by_work_cap(bool limit_reached, int status, std::string_view body) noexcept {
-  if (!limit_reached) return false;
-  if (status == 200) return true;
-  // A limit_reached 422 is the work cap's, or another limit's refusal (a degree, a count).
-  return status == 422 && body.find("\"urn:bezier-service:problem:work-cap\"") != std::string_view::npos;
-}
-
 Response content(std::string_view body, std::string_view content_type) {
   Response response;
   response.content_type = std::string(content_type);
@@ -92,6 +85,7 @@ Response to_response(api::Reply reply) {
   response.content_type = std::move(reply.content_type);
   response.body = std::move(reply.body);
   response.limit_reached = reply.limit_reached;
+  response.decided_by_work_cap = reply.decided_by_work_cap;
   return response;
 }
 
@@ -99,13 +93,8 @@ Response problem_response(api::ProblemKind kind, std::string detail) {
   return to_response(api::problem_reply(kind, std::move(detail)));
 }
 
-bool work_cap_reached(std::string_view path, const Response& response) noexcept {
-  if (path == api::kBatchPath) return response.status == 422 && work_cap_reached(response);
-  return work_cap_reached(response);
-}
-
 bool work_cap_reached(const Response& response) noexcept {
-  return decided_by_work_cap(response.limit_reached, response.status, response.body);
+  return response.decided_by_work_cap;
 }
 
 Router::Router(const Config& config, Log log) : config_(config), log_(std::move(log)) {}
@@ -240,7 +229,7 @@ Response Router::compute(std::string_view path, std::string_view body, const api
     if (path == api::kBatchPath) {
       const auto count_item = [this](std::string_view item_path, const api::Reply& reply) {
         metrics_.batch_item_finished(item_path, reply.status);
-        if (decided_by_work_cap(reply.limit_reached, reply.status, reply.body)) metrics_.work_cap_hit();
+        if (reply.decided_by_work_cap) metrics_.work_cap_hit();
       };
       return to_response(api::handle(path, body, limits, count_item));
     }

@@ -38,6 +38,8 @@ struct Response {
   /// api::Reply::limit_reached of a computed answer: a limit decided it, so under larger
   /// limits it may differ. Not sent; the epoll engine's inline try reads it.
   bool limit_reached = false;
+  /// api::Reply::decided_by_work_cap of a computed answer (for the metrics).
+  bool decided_by_work_cap = false;
 };
 
 /// The request's start time, id and client, from Router::begin to Router::finish, and
@@ -132,10 +134,9 @@ class Router {
 [[nodiscard]] Response problem_response(api::ProblemKind kind, std::string detail);
 
 /// Whether the work cap decided a computed answer: a 422 work-cap problem, or a 200 the
-/// cap cut short (api::Reply::limit_reached on a success). For a /batch, whose items the
-/// router counts as it computes them, only the batch's own refusal by its work cap.
+/// cap cut short (api::Reply::decided_by_work_cap). For a /batch, whose items the router
+/// counts as it computes them, only the batch's own refusal by its work cap.
 [[nodiscard]] bool work_cap_reached(const Response& response) noexcept;
-[[nodiscard]] bool work_cap_reached(std::string_view path, const Response& response) noexcept;
 
 /// The headers of a preflight answer beyond Access-Control-Allow-Origin: the methods
 /// allowed, the request headers a page may send, and how long a browser may cache it.

@@ -22,6 +22,8 @@ LAYERS = [
     'core/self_intersect',
     'core/loop',
     'core/path',
+    'core/region',
+    'core/outline',
     'api',
     'service',
 ]
