@@ -4,6 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/install-deps.sh run
+# ccache keys objects by paths relative to the clone (tools/test.sh does the same).
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
 cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DBEZIER_BUILD_TESTS=OFF -DBEZIER_BUILD_BENCHMARKS=OFF >/dev/null
 cmake --build build/release --target bezier-service

@@ -5,6 +5,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/install-deps.sh test
 jobs=$(nproc)
+# ccache (CMakeLists.txt uses it when installed) keys objects by paths relative to the
+# clone, so a second clone or a CI checkout elsewhere reuses what an earlier build compiled.
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
 # Node packages of the browser and contract tests, exactly as locked.
 for dir in tests/browser tests/contract; do
   if [ -f "$dir/package-lock.json" ]; then (cd "$dir" && npm ci --no-audit --no-fund --loglevel=error); fi
