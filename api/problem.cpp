@@ -22,6 +22,8 @@ ProblemInfo info_of(ProblemKind kind) noexcept {
       return {422, "validation", "Request failed validation"};
     case ProblemKind::work_cap:
       return {422, "work-cap", "Request needs more work than the per-request cap allows"};
+    case ProblemKind::result_overflow:
+      return {422, "result-overflow", "The answer overflows the double range"};
     case ProblemKind::payload_too_large:
       return {413, "payload-too-large", "Request body is larger than the limit"};
     case ProblemKind::unsupported_media_type:
@@ -71,13 +73,13 @@ Reply validation_reply(std::vector<FieldError> errors) {
 Reply json_reply(JsonWriter&& answer) {
   // Finite input can still give a result beyond the double range (B(2) of a segment to
   // 1e308, a derivative of alternating ±1e308 points). JSON has no infinity and the
-  // writer put null in its place: the request is answered as unanswerable instead.
+  // writer put null in its place: the request is answered as unanswerable instead. The
+  // problem names the answer's field, not a request field: the request broke no rule,
+  // and which of its fields made the number overflow is not known here.
   if (!answer.all_finite()) {
-    return problem_reply(ProblemKind::validation,
+    return problem_reply(ProblemKind::result_overflow,
                          "the result overflows the double range (answer field '" +
-                             answer.first_non_finite_pointer() + "')",
-                         {{"/points", "coordinates too large for this computation: a result "
-                                      "overflows the double range"}});
+                             answer.first_non_finite_pointer() + "')");
   }
   return {200, "application/json", std::move(answer).take()};
 }
