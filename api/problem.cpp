@@ -42,6 +42,22 @@ ProblemInfo info_of(ProblemKind kind) noexcept {
   return {500, "internal", "Internal error"};
 }
 
+// At most `limit` bytes of `text` (cut at a UTF-8 character boundary), then "…": what a
+// detail quotes of the request (a pointer holds the client's member names, of any length)
+// stays short. The `errors` list keeps every pointer whole: a client matches them.
+// Messages quote at most a short excerpt of a value themselves (the path parser's numbers);
+// kMessageBytes is a backstop far above any message's own length.
+constexpr std::size_t kQuotedPointerBytes = 64;
+constexpr std::size_t kMessageBytes = 512;
+std::string excerpt(std::string_view text, std::size_t limit) {
+  if (text.size() <= limit) return std::string(text);
+  std::size_t cut = limit;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  std::string out(text.substr(0, cut));
+  out += "\xE2\x80\xA6";
+  return out;
+}
+
 }  // namespace
 
 int status_of(ProblemKind kind) noexcept { return info_of(kind).status; }
@@ -65,7 +81,12 @@ Reply problem_reply(ProblemKind kind, std::string detail, std::vector<FieldError
 
 Reply validation_reply(std::vector<FieldError> errors) {
   std::string detail = "request rejected";
-  if (!errors.empty()) detail = "'" + errors.front().pointer + "': " + errors.front().message;
+  if (!errors.empty()) {
+    detail = "'";
+    detail += excerpt(errors.front().pointer, kQuotedPointerBytes);
+    detail += "': ";
+    detail += excerpt(errors.front().message, kMessageBytes);
+  }
   if (errors.size() > 1) detail += " (and " + std::to_string(errors.size() - 1) + " more)";
   return problem_reply(ProblemKind::validation, std::move(detail), std::move(errors));
 }
