@@ -14,6 +14,7 @@
 
 #include "service/http_problem.hpp"
 #include "service/inline_policy.hpp"
+#include "service/memory_release.hpp"
 
 namespace bezier::service {
 
@@ -395,6 +396,7 @@ void EventLoop::run_on_pool(std::uint64_t connection, const std::shared_ptr<Pend
     response = router.compute(pending->path, body, config_.limits);
     if (work_cap_reached(pending->path, response)) router.metrics().work_cap_hit();
   }
+  release_free_memory();  // what a costly request freed goes back to the system
   {
     const std::lock_guard lock(completions_mutex_);
     completions_.push_back({connection, pending, std::move(response)});
