@@ -1,6 +1,9 @@
 #include "api/batch_route.hpp"
 
+#include <limits>
+#include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "api/handler.hpp"
@@ -10,6 +13,8 @@
 namespace bezier::api {
 
 namespace {
+
+constexpr double kAnyFinite = std::numeric_limits<double>::max();
 
 // Whether an item of `path` is charged to the batch's work cap: the routes the per-item
 // work cap bounds (api/route_table.hpp). The others' cost the degree and t-value limits
@@ -49,6 +54,45 @@ struct Item {
   std::string_view path;
   const Json* body;
 };
+
+// A lower bound on the bytes of an item's answer, from its request alone, for the routes
+// whose answer grows with the request's t values or samples (/evaluate, /polar: up to
+// max_t_values points each, megabytes from a request of a few bytes); 0 for the others
+// and for a body the route would refuse (the route's own checks, run here without
+// computing anything). Each result is at least {"point":[x,y],"t":t}, every number at
+// least one character: 17 + 2d bytes for d coordinates.
+std::size_t answer_bytes_at_least(const Item& item, const Limits& limits) {
+  const bool evaluate = item.path == "/evaluate";
+  if ((!evaluate && item.path != "/polar") || !item.body->is_object()) return 0;
+  const Json& body = *item.body;
+  RequestReader reader(limits);
+  if (evaluate) {
+    reader.reject_unknown_fields(body, {"points", "t", "samples", "derivatives", "frame", "split"}, "");
+  } else {
+    reader.reject_unknown_fields(body, {"points", "t0", "t", "samples"}, "");
+  }
+  const auto curve = reader.request_curve(body);
+  const std::vector<double> ts = reader.parameters(body, /*required=*/evaluate);
+  int derivatives = 0;
+  if (const Json* d = RequestReader::optional(body, "derivatives")) {
+    derivatives = reader.integer(*d, "/derivatives", 0, limits.max_degree).value_or(0);
+  }
+  if (const Json* f = RequestReader::optional(body, "frame"); f != nullptr && !f->is_boolean()) reader.fail("/frame", "expected a boolean");
+  if (const Json* s = RequestReader::optional(body, "split")) reader.number(*s, "/split");
+  if (evaluate && ts.size() * static_cast<std::size_t>(derivatives + 1) > static_cast<std::size_t>(limits.max_t_values)) {
+    return 0;
+  }
+  if (!evaluate) {
+    const Json* t0 = reader.required(body, "t0", "");
+    const auto us = t0 == nullptr ? std::nullopt : reader.number_or_numbers(*t0, "/t0", -kAnyFinite, kAnyFinite);
+    if (curve && us && us->size() > static_cast<std::size_t>(std::visit([](const auto& c) { return c.degree(); }, *curve))) {
+      return 0;
+    }
+  }
+  if (!reader.ok() || !curve) return 0;
+  const std::size_t dimension = std::holds_alternative<core::Curve>(*curve) ? 2 : 3;
+  return ts.size() * (17 + 2 * dimension);
+}
 
 // The answer of one item: the route's, or a 404 for a path no item may name.
 Reply item_answer(const Item& item, const Limits& limits) {
@@ -113,6 +157,22 @@ Reply batch_route(const nlohmann::json& request, const Limits& limits, const Bat
                              std::to_string(limits.max_batch_work) +
                              ": send them in smaller batches (items of " + uncharged_routes_text() +
                              " are not charged)");
+  }
+
+  // Refused before any item is computed when the answers certainly exceed the cap: at the
+  // item where their lower bounds do (the answer itself would cross it there or earlier).
+  std::size_t at_least = 0;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    at_least += answer_bytes_at_least(items[i], limits);
+    if (at_least > limits.max_batch_answer_bytes) {
+      Reply refused = validation_reply(
+          {{pointer_to("/requests", i), "the answers of items 0 to " + std::to_string(i) + " take at least " +
+                                            std::to_string(at_least) + " bytes, above the batch's answer cap of " +
+                                            std::to_string(limits.max_batch_answer_bytes) +
+                                            " bytes: send the items in smaller batches"}});
+      refused.limit_reached = true;
+      return refused;
+    }
   }
 
   std::string out = R"({"responses":[)";

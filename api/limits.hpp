@@ -35,13 +35,17 @@ struct Limits {
   int max_batch_items = 1000;
   /// Work cap of a whole batch, in the units of max_work: the batch is refused before any
   /// item is computed when its items may spend more (each item of a route the per-item cap
-  /// bounds is charged max_work; api/batch_route.hpp). The default admits 32 such items at
-  /// the default max_work, a batch's CPU time at most a few seconds.
-  std::int64_t max_batch_work = 32 * std::int64_t{22000000};
+  /// bounds is charged max_work; api/batch_route.hpp). The default admits 10 such items at
+  /// the default max_work: a batch's kernel time about 1 s (docs/WORK_CAPS.md), the time
+  /// it holds one compute thread.
+  std::int64_t max_batch_work = 10 * std::int64_t{22000000};
   /// Largest answer of a whole batch in bytes (the items' answers bound the memory a batch
   /// holds, since each may be much larger than its request: a batch is refused when they
-  /// exceed it).
-  std::size_t max_batch_answer_bytes = std::size_t{64} << 20;
+  /// exceed it, before any item is computed when lower bounds of its items' answers
+  /// already do). A batch then holds at most this plus one item's answer, twice over
+  /// while it is sent (docs/OPERATIONS.md): 8 MiB keeps a few concurrent batches well
+  /// inside a 512 MiB pod.
+  std::size_t max_batch_answer_bytes = std::size_t{8} << 20;
 };
 
 }  // namespace bezier::api

@@ -22,6 +22,8 @@ ProblemInfo info_of(ProblemKind kind) noexcept {
       return {422, "validation", "Request failed validation"};
     case ProblemKind::work_cap:
       return {422, "work-cap", "Request needs more work than the per-request cap allows"};
+    case ProblemKind::result_overflow:
+      return {422, "result-overflow", "The answer overflows the double range"};
     case ProblemKind::payload_too_large:
       return {413, "payload-too-large", "Request body is larger than the limit"};
     case ProblemKind::unsupported_media_type:
@@ -38,6 +40,22 @@ ProblemInfo info_of(ProblemKind kind) noexcept {
       break;
   }
   return {500, "internal", "Internal error"};
+}
+
+// At most `limit` bytes of `text` (cut at a UTF-8 character boundary), then "…": what a
+// detail quotes of the request (a pointer holds the client's member names, of any length)
+// stays short. The `errors` list keeps every pointer whole: a client matches them.
+// Messages quote at most a short excerpt of a value themselves (the path parser's numbers);
+// kMessageBytes is a backstop far above any message's own length.
+constexpr std::size_t kQuotedPointerBytes = 64;
+constexpr std::size_t kMessageBytes = 512;
+std::string excerpt(std::string_view text, std::size_t limit) {
+  if (text.size() <= limit) return std::string(text);
+  std::size_t cut = limit;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  std::string out(text.substr(0, cut));
+  out += "\xE2\x80\xA6";
+  return out;
 }
 
 }  // namespace
@@ -66,7 +84,12 @@ Reply problem_reply(ProblemKind kind, std::string detail, std::vector<FieldError
 
 Reply validation_reply(std::vector<FieldError> errors) {
   std::string detail = "request rejected";
-  if (!errors.empty()) detail = "'" + errors.front().pointer + "': " + errors.front().message;
+  if (!errors.empty()) {
+    detail = "'";
+    detail += excerpt(errors.front().pointer, kQuotedPointerBytes);
+    detail += "': ";
+    detail += excerpt(errors.front().message, kMessageBytes);
+  }
   if (errors.size() > 1) detail += " (and " + std::to_string(errors.size() - 1) + " more)";
   return problem_reply(ProblemKind::validation, std::move(detail), std::move(errors));
 }
@@ -74,13 +97,13 @@ Reply validation_reply(std::vector<FieldError> errors) {
 Reply json_reply(JsonWriter&& answer) {
   // Finite input can still give a result beyond the double range (B(2) of a segment to
   // 1e308, a derivative of alternating ±1e308 points). JSON has no infinity and the
-  // writer put null in its place: the request is answered as unanswerable instead.
+  // writer put null in its place: the request is answered as unanswerable instead. The
+  // problem names the answer's field, not a request field: the request broke no rule,
+  // and which of its fields made the number overflow is not known here.
   if (!answer.all_finite()) {
-    return problem_reply(ProblemKind::validation,
+    return problem_reply(ProblemKind::result_overflow,
                          "the result overflows the double range (answer field '" +
-                             answer.first_non_finite_pointer() + "')",
-                         {{"/points", "coordinates too large for this computation: a result "
-                                      "overflows the double range"}});
+                             answer.first_non_finite_pointer() + "')");
   }
   return {200, "application/json", std::move(answer).take()};
 }

@@ -42,6 +42,7 @@ enum class ProblemKind {
   malformed_json,           ///< 400: body is not JSON, or not an object
   validation,               ///< 422: wrong types, missing fields, out of range, limits
   work_cap,                 ///< 422: the request needs more work than the cap allows
+  result_overflow,          ///< 422: a valid request whose answer is beyond the double range
   payload_too_large,        ///< 413
   unsupported_media_type,   ///< 415
   not_found,                ///< 404

@@ -1,5 +1,7 @@
 #include "service/compute_pool.hpp"
 
+#include <algorithm>
+
 namespace bezier::service {
 
 ComputePool::ComputePool(std::size_t threads, std::size_t max_queued) : max_queued_(max_queued) {
@@ -16,13 +18,28 @@ ComputePool::~ComputePool() {
   for (auto& w : workers_) w.join();
 }
 
-bool ComputePool::submit(std::function<void()> task) {
+ComputePool::Ticket ComputePool::submit(std::function<void()> task) {
+  Ticket ticket = 0;
   {
     const std::lock_guard lock(mutex_);
-    if (tasks_.size() >= max_queued_) return false;
-    tasks_.push_back(std::move(task));
+    if (tasks_.size() >= max_queued_) return 0;
+    ticket = next_ticket_++;
+    tasks_.push_back({ticket, std::move(task)});
   }
   ready_.notify_one();
+  return ticket;
+}
+
+bool ComputePool::withdraw(Ticket ticket) {
+  std::function<void()> dropped;  // destroyed after the lock is released
+  {
+    const std::lock_guard lock(mutex_);
+    // The queue holds at most max_queued tasks, in ticket order.
+    const auto found = std::find_if(tasks_.begin(), tasks_.end(), [ticket](const Queued& q) { return q.ticket == ticket; });
+    if (found == tasks_.end()) return false;
+    dropped = std::move(found->task);
+    tasks_.erase(found);
+  }
   return true;
 }
 
@@ -33,7 +50,7 @@ void ComputePool::work() {
       std::unique_lock lock(mutex_);
       ready_.wait(lock, [this] { return stopping_ || !tasks_.empty(); });
       if (tasks_.empty()) return;  // stopping, and nothing left to run
-      task = std::move(tasks_.front());
+      task = std::move(tasks_.front().task);
       tasks_.pop_front();
     }
     task();

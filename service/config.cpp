@@ -27,7 +27,33 @@ bool is_cors_origin(std::string_view value) noexcept {
                          c == '[' || c == ']';
     if (!allowed) return false;
   }
-  return true;
+  // host [":" port]: an IPv6 literal in brackets, or a name or IPv4 address without ':'
+  // or brackets; the port, when given, decimal digits naming a TCP port (at most 65535).
+  std::string_view port;
+  if (authority.front() == '[') {
+    const std::size_t close = authority.find(']');
+    if (close == std::string_view::npos || close == 1) return false;
+    const std::string_view after = authority.substr(close + 1);
+    if (!after.empty() && after.front() != ':') return false;
+    if (authority.substr(1, close - 1).find_first_of("[]") != std::string_view::npos) return false;
+    if (!after.empty()) port = after.substr(1);
+    if (!after.empty() && port.empty()) return false;
+  } else {
+    const std::size_t colon = authority.find(':');
+    const std::string_view host = authority.substr(0, colon);
+    if (host.empty() || host.find_first_of("[]") != std::string_view::npos) return false;
+    if (colon != std::string_view::npos) {
+      port = authority.substr(colon + 1);
+      if (port.empty()) return false;
+    }
+  }
+  if (port.size() > 5) return false;
+  unsigned number = 0;
+  for (const char c : port) {
+    if (c < '0' || c > '9') return false;
+    number = number * 10 + static_cast<unsigned>(c - '0');
+  }
+  return number <= 65535;
 }
 
 ParsedConfig parse_config(int argc, char** argv) {

@@ -14,6 +14,7 @@
 
 #include "service/http_problem.hpp"
 #include "service/inline_policy.hpp"
+#include "service/memory_release.hpp"
 
 namespace bezier::service {
 
@@ -62,8 +63,10 @@ struct EventLoop::Pending {
   std::string path;
   WireOptions wire;
   Clock::time_point queued_at;
-  /// Set by the loop when it closes the connection (a reset, a failed send): nothing
-  /// could be delivered any more, so the pool does not compute the request.
+  ComputePool::Ticket ticket = 0;  ///< its place in the compute queue, to withdraw it
+  /// Set by the loop when it closes the connection (a reset, a failed send) after a
+  /// pool thread took the request: nothing could be delivered any more, so the pool
+  /// does not compute it if it has not started yet.
   std::atomic<bool> connection_gone{false};
 };
 
@@ -90,6 +93,7 @@ struct EventLoop::Connection {
   std::shared_ptr<Pending> on_pool;  ///< that request, while busy
   bool close_after_write = false;
   bool peer_closed = false;     ///< the client shut down its side: answer, then close
+  bool fin_seen = false;        ///< EPOLLRDHUP came: the client's FIN is in the socket
   bool continue_sent = false;
   bool lingering = false;       ///< answered and shut down for writing; input is discarded
   int served = 0;
@@ -165,6 +169,13 @@ void EventLoop::on_event(std::uint64_t id, std::uint32_t events) {
   // shut ours): nothing can be delivered any more. It is reported whatever the interest,
   // so it must close here or the loop would spin on it.
   if (events & (EPOLLERR | EPOLLHUP)) return close(id);
+  // The client's FIN while its request is on the pool (reading is off meanwhile, so only
+  // EPOLLRDHUP tells): a request still waiting for a thread is dropped.
+  if ((events & EPOLLRDHUP) && !c.fin_seen) {
+    c.fin_seen = true;
+    if (drop_waiting_request(c)) return;
+    update_interest(c);
+  }
   if (events & EPOLLIN) read(c);
   if (connections_.count(id) == 0 || !(events & EPOLLOUT)) return;
   flush(c);
@@ -233,6 +244,7 @@ void EventLoop::read(Connection& c) {
     // The client shut down its sending side (or closed): what it sent is still
     // answered, then the connection closes.
     c.peer_closed = true;
+    if (drop_waiting_request(c)) return;
     if (c.busy || c.out_pos < c.out.size()) return update_interest(c);
     if (!c.parser.started() && c.in_pos == c.in.size()) return close(c.id);
   } else {
@@ -351,8 +363,8 @@ void EventLoop::dispatch(Connection& c) {
   const std::uint64_t id = c.id;
   // Counted before it is queued, so that the task's decrement never comes first.
   router.metrics().compute_queued();
-  const bool queued = shared_.pool.submit([this, id, pending, body] { run_on_pool(id, pending, *body); });
-  if (!queued) {
+  pending->ticket = shared_.pool.submit([this, id, pending, body] { run_on_pool(id, pending, *body); });
+  if (pending->ticket == 0) {
     router.metrics().compute_dequeued();
     router.metrics().overloaded(Overload::queue_full);
     Response full = http_problem(503, "the compute queue is full");
@@ -376,22 +388,48 @@ void EventLoop::run_on_pool(std::uint64_t connection, const std::shared_ptr<Pend
   if (pending->connection_gone.load()) return router.abandon(pending->exchange, pending->method, pending->path);
   Response response;
   if (Clock::now() - pending->queued_at > queue_deadline_) {
-    // Its client has likely given up, and the queue behind it is long: computing it
-    // would only make every later request wait longer.
+    // Taken between two sweeps of its loop (which withdraws it from the queue once its
+    // deadline passes): answered the same way.
     router.metrics().overloaded(Overload::queue_deadline);
-    response = http_problem(503, "the request waited longer than " + std::to_string(config_.queue_deadline_s) +
-                                     " s for a compute thread");
-    response.headers.emplace_back("Retry-After", "1");
+    response = queue_deadline_problem();
   } else {
     response = router.compute(pending->path, body, config_.limits);
     if (work_cap_reached(response)) router.metrics().work_cap_hit();
   }
+  release_free_memory();  // what a costly request freed goes back to the system
   {
     const std::lock_guard lock(completions_mutex_);
     completions_.push_back({connection, pending, std::move(response)});
   }
   const std::uint64_t one = 1;
   [[maybe_unused]] const auto n = ::write(wake_fd_, &one, sizeof one);
+}
+
+Response EventLoop::queue_deadline_problem() const {
+  Response response = http_problem(503, "the request waited longer than " + std::to_string(config_.queue_deadline_s) +
+                                            " s for a compute thread");
+  response.headers.emplace_back("Retry-After", "1");
+  return response;
+}
+
+bool EventLoop::withdraw_from_pool(Connection& c) {
+  if (!c.on_pool || !shared_.pool.withdraw(c.on_pool->ticket)) return false;
+  shared_.router.metrics().compute_dequeued();
+  c.busy = false;
+  return true;
+}
+
+bool EventLoop::drop_waiting_request(Connection& c) {
+  // As for a reset: a client that closes while its request waits has given up (nginx
+  // logs such a request 499 the same way), and computing it would make every request
+  // behind it wait longer. One a thread already runs is answered, bounded by its work
+  // cap.
+  const std::shared_ptr<Pending> waiting = c.on_pool;
+  if (!withdraw_from_pool(c)) return false;
+  c.on_pool.reset();
+  shared_.router.abandon(waiting->exchange, waiting->method, waiting->path);
+  close(c.id);
+  return true;
 }
 
 void EventLoop::take_completions() {
@@ -495,6 +533,7 @@ void EventLoop::update_interest(Connection& c) {
   std::uint32_t want = 0;
   const bool output_waiting = c.out_pos < c.out.size();
   if (may_take_request(c) && !c.peer_closed) want |= EPOLLIN;
+  if (c.busy && !c.fin_seen && !c.peer_closed) want |= EPOLLRDHUP;
   if (output_waiting) want |= EPOLLOUT;
   if (!output_waiting) c.write_since = {};
   if (want == c.interest) return;
@@ -508,7 +547,18 @@ void EventLoop::update_interest(Connection& c) {
 void EventLoop::close(std::uint64_t id) {
   const auto found = connections_.find(id);
   if (found == connections_.end()) return;
-  if (found->second->on_pool) found->second->on_pool->connection_gone.store(true);
+  Connection& c = *found->second;
+  if (c.on_pool) {
+    // Still queued: out of the queue now, so its place is free at once. Taken by a
+    // thread: it finds the flag and skips the computation if it has not begun.
+    const std::shared_ptr<Pending> waiting = c.on_pool;
+    if (withdraw_from_pool(c)) {
+      shared_.router.abandon(waiting->exchange, waiting->method, waiting->path);
+    } else {
+      waiting->connection_gone.store(true);
+    }
+    c.on_pool.reset();
+  }
   epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, found->second->fd, nullptr);
   ::close(found->second->fd);
   connections_.erase(found);
@@ -525,8 +575,14 @@ void EventLoop::sweep(Clock::time_point now) {
   const auto idle_timeout = std::chrono::seconds(config_.keep_alive_timeout_s);
   std::vector<std::uint64_t> to_close;
   std::vector<std::uint64_t> timed_out;
+  std::vector<std::uint64_t> past_deadline;
   for (auto& [id, c] : connections_) {
-    if (c->busy) continue;  // its answer is being computed, bounded by the work cap
+    if (c->busy) {
+      // Waiting for a compute thread past its deadline: answered 503 now, whatever the
+      // pool's threads are doing (a thread that took it meanwhile answers it).
+      if (now - c->on_pool->queued_at > queue_deadline_) past_deadline.push_back(id);
+      continue;  // otherwise its answer is being computed, bounded by the work cap
+    }
     if (c->lingering) {
       if (now - c->linger_since > kLingerTime) to_close.push_back(id);
     } else if (c->out_pos < c->out.size()) {
@@ -551,6 +607,20 @@ void EventLoop::sweep(Clock::time_point now) {
     Connection& c = *connections_.at(id);
     refuse(c, 408, "the request was not complete within " + std::to_string(config_.read_timeout_s) + " s");
     flush(c);
+  }
+  for (const auto id : past_deadline) {
+    const auto found = connections_.find(id);
+    if (found == connections_.end()) continue;
+    Connection& c = *found->second;
+    const std::shared_ptr<Pending> waiting = c.on_pool;
+    if (!withdraw_from_pool(c)) continue;
+    c.on_pool.reset();
+    shared_.router.metrics().overloaded(Overload::queue_deadline);
+    waiting->wire.keep_alive = waiting->wire.keep_alive && !stopping_;
+    const Response response = queue_deadline_problem();
+    const std::size_t bytes = respond(c, response, for_exchange(waiting->wire, waiting->exchange));
+    shared_.router.finish(waiting->exchange, waiting->method, waiting->path, response.status, bytes);
+    process(c);  // the pipelined requests that waited, then flush
   }
 }
 

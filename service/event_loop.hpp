@@ -21,9 +21,10 @@ namespace bezier::service {
 /// answers every connection it accepted, non-blocking and level-triggered. Cheap
 /// requests are answered on the loop; the others go to the ComputePool and their
 /// answers come back through an eventfd, so one slow request never holds up the
-/// loop's other connections. A request that waited in the compute queue longer than
-/// --queue-deadline is answered 503 instead of computed, and one whose connection closed
-/// meanwhile is dropped. While a connection's unsent answers exceed a limit, its requests
+/// loop's other connections. A request that waits in the compute queue longer than
+/// --queue-deadline is withdrawn and answered 503 by the sweep (within kSweepInterval of
+/// its deadline, whatever the pool's threads are doing), and one whose connection closes
+/// meanwhile (a reset or a FIN) is withdrawn and dropped. While a connection's unsent answers exceed a limit, its requests
 /// wait unread until the client reads. Timeouts (read, keep-alive idle, write) are
 /// checked by a sweep every kSweepInterval.
 class EventLoop {
@@ -68,6 +69,14 @@ class EventLoop {
   void dispatch(Connection& c);
   /// On a compute thread: the answer to a queued request, posted back to the loop.
   void run_on_pool(std::uint64_t connection, const std::shared_ptr<Pending>& pending, std::string_view body);
+  /// Takes the connection's request out of the compute queue if no thread has taken it
+  /// (the connection is no longer busy then; on_pool is left to the caller): whether it
+  /// was there.
+  bool withdraw_from_pool(Connection& c);
+  [[nodiscard]] Response queue_deadline_problem() const;
+  /// The client closed: its request, if still in the compute queue, is withdrawn, logged
+  /// as abandoned and the connection closed (true); false when there is none waiting.
+  bool drop_waiting_request(Connection& c);
   /// Queues the answer; the bytes it takes on the wire.
   std::size_t respond(Connection& c, const Response& response, const WireOptions& wire);
   void refuse(Connection& c, int status, std::string detail);

@@ -130,6 +130,15 @@ HttpRequestParser::Progress HttpRequestParser::feed(std::string_view input) {
         const std::size_t take = std::min(input.size() - used, room);
         head.append(input.substr(used, take));
         const std::size_t end = head.find("\r\n\r\n", before >= 3 ? before - 3 : 0);
+        // RFC 9112 §2.2: a line of the head ends in CRLF. A bare LF would never complete
+        // the head (the client waits for an answer, the server for the blank line, until
+        // the read timeout), and a proxy that accepts it frames differently: 400 at once.
+        const std::size_t scanned = end == std::string::npos ? head.size() : end + 4;
+        for (std::size_t i = before; i < scanned; ++i) {
+          if (head[i] == '\n' && (i == 0 || head[i - 1] != '\r')) {
+            return fail(400, "a line of the request head ends in a bare LF, not CRLF", used + take);
+          }
+        }
         if (end == std::string::npos || end + 4 > limits_.max_head_bytes) {
           if (head.size() <= limits_.max_head_bytes) return {State::need_more, used + take};
           if (head.find("\r\n") == std::string::npos) {
@@ -218,6 +227,7 @@ bool HttpRequestParser::parse_head() {
 bool HttpRequestParser::check_single_fields() {
   int hosts = 0;
   int codings = 0;
+  int authorizations = 0;
   for (const HttpRequest::Header& h : request_.headers) {
     if (iequals(h.name, "host")) {
       ++hosts;
@@ -227,6 +237,8 @@ bool HttpRequestParser::check_single_fields() {
       }
     } else if (iequals(h.name, "content-encoding")) {
       ++codings;
+    } else if (iequals(h.name, "authorization")) {
+      ++authorizations;
     }
   }
   // RFC 9112 §3.2: a server must answer 400 to an HTTP/1.1 request without Host, and to
@@ -238,6 +250,12 @@ bool HttpRequestParser::check_single_fields() {
   // Which codings apply would depend on whether a reader joins the lines or takes one.
   if (codings > 1) {
     fail(400, "more than one Content-Encoding header", 0);
+    return false;
+  }
+  // RFC 9110 §11.6.2 defines one set of credentials; with two, the server and a proxy in
+  // front of it might each check a different one.
+  if (authorizations > 1) {
+    fail(400, "more than one Authorization header", 0);
     return false;
   }
   return true;

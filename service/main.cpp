@@ -9,6 +9,7 @@
 
 #include "service/config.hpp"
 #include "service/log.hpp"
+#include "service/memory_release.hpp"
 #include "service/server.hpp"
 #include "service/version.hpp"
 
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
     return parsed.exit_code;
   }
   const Config& config = *parsed.config;
+  configure_allocator();  // before any thread: see service/memory_release.hpp
 
   // SIGTERM and SIGINT are blocked in every thread and taken by sigwait in one, so
   // shutdown runs as ordinary code rather than inside a signal handler. The mask is

@@ -425,12 +425,12 @@ double invert(const BasicCurve<P>& curve, const ArcLength& measured, double targ
 template <class P>
 ArcLength scaled_measure(const BasicCurve<P>& curve, double a, double b,
                          const ArcLengthOptions& options) {
-  if (normalising_factor(curve) == 1.0) return measure(curve, a, b, options);
+  if (normalising_exponent(curve) == 0) return measure(curve, a, b, options);
   const Normalised<P> unit = normalised(curve);
   ArcLength out = measure(unit.curve, a, b, options);
-  out.length /= unit.factor;
-  out.error_bound /= unit.factor;
-  for (LengthPiece& piece : out.pieces) piece.length /= unit.factor;
+  out.length = unit.from_unit(out.length);
+  out.error_bound = unit.from_unit(out.error_bound);
+  for (LengthPiece& piece : out.pieces) piece.length = unit.from_unit(piece.length);
   return out;
 }
 
@@ -438,9 +438,9 @@ template <class P>
 double scaled_invert(const BasicCurve<P>& curve, const ArcLength& measured, double length) {
   const Normalised<P> unit = normalised(curve);
   ArcLength unit_measured = measured;
-  unit_measured.length *= unit.factor;
-  for (LengthPiece& piece : unit_measured.pieces) piece.length *= unit.factor;
-  return invert(unit.curve, unit_measured, length * unit.factor);
+  unit_measured.length = unit.to_unit(unit_measured.length);
+  for (LengthPiece& piece : unit_measured.pieces) piece.length = unit.to_unit(piece.length);
+  return invert(unit.curve, unit_measured, unit.to_unit(length));
 }
 
 }  // namespace

@@ -131,11 +131,19 @@ Bounds<P> box(const BasicCurve<P>& curve, double a, double b) {
 /// The box of the normalised curve, scaled back (exactly: powers of two).
 template <class P>
 Bounds<P> scaled_box(const BasicCurve<P>& curve, double a, double b) {
-  if (normalising_factor(curve) == 1.0) return box(curve, a, b);
+  if (normalising_exponent(curve) == 0) return box(curve, a, b);
   const Normalised<P> unit = normalised(curve);
   Bounds<P> out = box(unit.curve, a, b);
-  out.min = out.min / unit.factor;
-  out.max = out.max / unit.factor;
+  // Scaling back is exact unless a face lands among the subnormals (a curve whose largest
+  // coordinate is subnormal or nearly so), where it rounds once: a face rounded inward is
+  // moved out by one step, so the box still contains the curve. Scaling the rounded face
+  // up again is exact, which tells the direction.
+  for (std::size_t k = 0; k < Bounds<P>::kAxes; ++k) {
+    const double lo = unit.from_unit(axis(out.min, k));
+    const double hi = unit.from_unit(axis(out.max, k));
+    axis(out.min, k) = unit.to_unit(lo) > axis(out.min, k) ? next_down(lo) : lo;
+    axis(out.max, k) = unit.to_unit(hi) < axis(out.max, k) ? next_up(hi) : hi;
+  }
   return out;
 }
 

@@ -59,12 +59,12 @@ std::optional<Frame<Point3>> unit_frame(const Curve3& curve, double t) {
 }
 
 /// The frame of the normalised curve (tangent and normal are scale-free; the curvature of
-/// factor * B is the curvature of B over factor).
+/// 2^e B is the curvature of B over 2^e).
 template <class P>
 std::optional<Frame<P>> scaled_frame(const BasicCurve<P>& curve, double t) {
   const Normalised<P> unit = normalised(curve);
   auto f = unit_frame(unit.curve, t);
-  if (f) f->curvature *= unit.factor;
+  if (f) f->curvature = unit.to_unit(f->curvature);
   return f;
 }
 

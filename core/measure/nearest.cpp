@@ -229,12 +229,11 @@ NearestPoint<P> closest(const BasicCurve<P>& curve, P target, double a, double b
 template <class P>
 NearestPoint<P> scaled_closest(const BasicCurve<P>& curve, P target, double a, double b) {
   const double largest = std::max(scale(curve), max_abs_coordinate(target));
-  const double factor = normalising_factor_of(largest);
-  if (factor == 1.0) return closest(curve, target, a, b, largest);
+  if (normalising_exponent_of(largest) == 0) return closest(curve, target, a, b, largest);
   const Normalised<P> unit = normalised(curve, max_abs_coordinate(target));
-  NearestPoint<P> out = closest(unit.curve, unit.factor * target, a, b, factor * largest);
-  out.point = out.point / unit.factor;
-  out.distance /= unit.factor;
+  NearestPoint<P> out = closest(unit.curve, unit.to_unit(target), a, b, unit.to_unit(largest));
+  out.point = unit.from_unit(out.point);
+  out.distance = unit.from_unit(out.distance);
   return out;
 }
 

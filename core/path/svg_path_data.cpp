@@ -16,6 +16,9 @@ namespace {
 
 using core::Point2;
 
+/// How much of a refused number a message quotes (then "…"): enough to recognise it.
+constexpr std::size_t kQuotedDigits = 64;
+
 /// wsp of the SVG grammar: tab, line feed, form feed, carriage return, space.
 bool is_wsp(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\f' || c == '\r'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
@@ -167,9 +170,14 @@ class PathDataParser {
       // the smallest rounds to a subnormal or zero as any decimal reader rounds it.
       value = std::strtod(std::string(first, last).c_str(), nullptr);
       if (!std::isfinite(value)) {
+        // The number is quoted up to kQuotedDigits characters: a request of a megabyte of
+        // digits is not echoed back whole.
+        const std::string_view number = data_.substr(begin, pos_ - begin);
+        const std::string quoted = number.size() <= kQuotedDigits
+                                       ? std::string(number)
+                                       : std::string(number.substr(0, kQuotedDigits)) + "\xE2\x80\xA6";
         return fail(PathDataErrorKind::out_of_range, begin,
-                    "the number " + std::string(data_.substr(begin, pos_ - begin)) +
-                        " is beyond the double range");
+                    "the number " + quoted + " is beyond the double range");
       }
     } else if (ec != std::errc{} || end != last) {
       return fail(PathDataErrorKind::syntax, begin, "expected a number");

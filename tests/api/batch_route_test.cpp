@@ -228,6 +228,34 @@ TEST(BatchLimits, AnswersBeyondTheBatchAnswerCapRefuseTheBatchAtTheItemThatCross
   EXPECT_EQ(handle("/batch", batch_body(items), limits).body, whole);
 }
 
+// 70 items of a degree-20 space curve at 10000 samples: a 21 KB request whose answer is
+// tens of megabytes. Each result takes at least {"point":[x,y,z],"t":t} (23 bytes), so the
+// items' answers certainly exceed the default cap, and the batch is refused before any item
+// is built, at the item where those least sizes cross it.
+TEST(BatchLimits, AnswersThatCertainlyExceedTheCapAreRefusedBeforeAnyItemIsComputed) {
+  std::string points = "[";
+  for (int i = 0; i <= 20; ++i) points += (i > 0 ? ",[" : "[") + std::to_string(i) + ",1,-1]";
+  points += "]";
+  const std::vector<Item> items(70, Item{"/evaluate", R"({"points":)" + points + R"(,"samples":10000})"});
+  const Limits defaults;
+  Seen seen;
+  const Reply refused = handle("/batch", batch_body(items), defaults, seen.observer());
+  EXPECT_EQ(refused.status, 422);
+  EXPECT_TRUE(refused.limit_reached);
+  EXPECT_TRUE(seen.items.empty());
+  const std::size_t least = 10000 * (17 + 2 * 3);
+  const std::size_t crossing = defaults.max_batch_answer_bytes / least;  // items 0..crossing
+  EXPECT_EQ(pointers_of(refused), std::vector<std::string>{"/requests/" + std::to_string(crossing)});
+  // As many as fit by that bound are computed, and the real answer decides.
+  Limits roomy;
+  roomy.max_batch_answer_bytes = std::size_t{1} << 30;
+  const std::vector<Item> two(items.begin(), items.begin() + 2);
+  EXPECT_EQ(handle("/batch", batch_body(two), defaults).body, expected_answer(two, roomy));
+  // A body the route refuses is not counted: its answer is a short problem.
+  const std::vector<Item> refused_items(70, Item{"/evaluate", R"({"points":)" + points + R"(,"samples":10000,"x":1})"});
+  EXPECT_EQ(handle("/batch", batch_body(refused_items), defaults).status, 200);
+}
+
 // The cap is on the whole answer, its closing "]}" included: an answer one or two bytes
 // longer than the cap is refused at its last item, not sent.
 TEST(BatchLimits, AnAnswerLongerThanTheCapByItsClosingBytesIsRefusedAtItsLastItem) {

@@ -69,9 +69,12 @@ TEST(EvaluateRoute, AnyFiniteTExtrapolates) {
 
 TEST(EvaluateRoute, ResultBeyondTheDoubleRangeNamesItsField) {
   // B(2) of the segment 0 -> 1e308 and B' of -1e308 -> 1e308 are 2e308: finite input, a
-  // result JSON cannot carry. The detail names the first such number of the answer.
+  // result JSON cannot carry. The problem says so in its type and title (the request broke
+  // no rule), and the detail names the first such number of the answer.
   json r = call(R"({"points":[[0,0],[1e308,0]],"t":[0.5,2]})", 422);
-  EXPECT_EQ(test::error_pointers(r), std::vector<std::string>{"/points"});
+  EXPECT_EQ(r["type"], "urn:bezier-service:problem:result-overflow");
+  EXPECT_EQ(r["title"], "The answer overflows the double range");
+  EXPECT_FALSE(r.contains("errors"));
   EXPECT_EQ(r["detail"], "the result overflows the double range (answer field '/results/1/point/0')");
   r = call(R"({"points":[[-1e308,0],[1e308,0]],"t":0.5,"derivatives":1})", 422);
   EXPECT_EQ(r["detail"], "the result overflows the double range (answer field '/results/0/derivatives/0/0')");

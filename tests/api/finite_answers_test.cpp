@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <ctime>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
@@ -82,6 +84,59 @@ TEST(FiniteAnswers, SubnormalSegmentsThroughTheApi) {
   const auto answer = nlohmann::json::parse(reply.body);
   ASSERT_EQ(answer["intersections"].size(), 1u) << reply.body;
   EXPECT_EQ(answer["intersections"][0]["point"], nlohmann::json::parse("[0.0, 0.0]")) << reply.body;
+}
+
+// Subnormal coordinates are ordinary input with representable answers: the measuring
+// kernels scale the curve by a power of two (beyond 2^1023 for a subnormal largest
+// coordinate) and the answers come back in the subnormal range.
+TEST(FiniteAnswers, NearestOnASubnormalSegment) {
+  const Reply reply = handle("/nearest", R"({"points":[[0,0],[1e-320,1e-320]],"targets":[[0,0],[1e-320,0]]})",
+                             Limits{});
+  ASSERT_EQ(reply.status, 200) << reply.body;
+  const json answer = json::parse(reply.body);
+  const double d = 1e-320;  // the segment from 0 to (d, d)
+  const double ulp = std::numeric_limits<double>::denorm_min();
+  // The origin is the segment's start.
+  EXPECT_EQ(answer["results"][0]["t"], 0.0);
+  EXPECT_EQ(answer["results"][0]["distance"], 0.0);
+  EXPECT_EQ(answer["results"][0]["point"], json::parse("[0.0, 0.0]"));
+  // (d, 0) projects onto the segment's midpoint (d/2, d/2), at distance d / sqrt(2).
+  const json& far = answer["results"][1];
+  EXPECT_NEAR(far["t"].get<double>(), 0.5, 1e-12) << reply.body;
+  EXPECT_NEAR(far["point"][0].get<double>(), d / 2, ulp) << reply.body;
+  EXPECT_NEAR(far["point"][1].get<double>(), d / 2, ulp) << reply.body;
+  EXPECT_NEAR(far["distance"].get<double>(), d / std::sqrt(2.0), 2 * ulp) << reply.body;
+}
+
+TEST(FiniteAnswers, BoundsOfASubnormalPath) {
+  // The quadratic (0,0), (x1, y1), (x2, 0): x rises from 0 to x2 (x1 < x2 and 2 x1 > 0), y
+  // peaks at t = 1/2 at y1 / 2. Each face is the exact extreme or outside it by at most a
+  // few ulps (here the smallest subnormal).
+  const double x2 = 2e-310, y1 = 2e-310;
+  const double ulp = std::numeric_limits<double>::denorm_min();
+  for (const std::string body : {R"({"path":"M0 0 Q1e-310 2e-310 2e-310 0"})",
+                                 R"({"points":[[0,0],[1e-310,2e-310],[2e-310,0]]})"}) {
+    const Reply reply = handle("/bounds", body, Limits{});
+    ASSERT_EQ(reply.status, 200) << body << " -> " << reply.body;
+    const json answer = json::parse(reply.body);
+    EXPECT_EQ(answer["min"], json::parse("[0.0, 0.0]")) << reply.body;
+    EXPECT_EQ(answer["max"][0].get<double>(), x2) << reply.body;
+    const double top = answer["max"][1].get<double>();
+    EXPECT_GE(2 * top, y1) << reply.body;  // doubling a subnormal is exact
+    EXPECT_LE(top, y1 / 2 + 4 * ulp) << reply.body;
+  }
+}
+
+// A path request whose answer overflows: the problem is about the answer, and points at no
+// request field (the request has no "points").
+TEST(FiniteAnswers, OverflowOfAPathAnswerNamesTheAnswerField) {
+  const Reply reply = handle("/length", R"({"path":"M-1.7e308 0 L1.7e308 0"})", Limits{});
+  ASSERT_EQ(reply.status, 422) << reply.body;
+  const json answer = json::parse(reply.body);
+  EXPECT_EQ(answer["type"], "urn:bezier-service:problem:result-overflow") << reply.body;
+  EXPECT_EQ(answer["title"], "The answer overflows the double range");
+  EXPECT_FALSE(answer.contains("errors")) << reply.body;
+  EXPECT_NE(answer["detail"].get<std::string>().find("(answer field '/"), std::string::npos) << reply.body;
 }
 
 }  // namespace

@@ -20,7 +20,8 @@
 //   - items of /loop-area, /intersections, /length, /nearest times max_work above
 //     max_batch_work: the work-cap 422;
 //   - an answer longer than max_batch_answer_bytes: 422 at the first item whose answer
-//     makes it longer (the answer of that item and those before it, closed);
+//     makes it longer (the answer of that item and those before it, closed), or at a
+//     later item with none computed (lower bounds of /evaluate and /polar answers);
 //   - otherwise 200 with the text of the items' answers alone, byte for byte, and
 //     limit_reached exactly when one of them has it set;
 // each refusal with limit_reached set and before any item is computed (the answer cap's
@@ -219,8 +220,16 @@ void check_against_items_alone(const std::vector<Item>& items, const bezier::api
     }
     expected += entry;
     if (expected.size() + 2 > limits.max_batch_answer_bytes) {
-      check(reply.status == 422 && reply.limit_reached &&
-                pointers_of(answer) == std::vector<std::string>{"/requests/" + std::to_string(i)},
+      // Refused at this item, or, before any item is computed, at this one or a later one:
+      // where lower bounds of the /evaluate and /polar answers cross the cap (they never
+      // exceed the real answers, so they cross here or after).
+      const std::vector<std::string> pointers = pointers_of(answer);
+      const std::string_view prefix = "/requests/";
+      const bool at_or_after =
+          pointers.size() == 1 && pointers[0].rfind(prefix, 0) == 0 &&
+          (pointers[0] == std::string(prefix) + std::to_string(i) ||
+           (observed.empty() && std::stoul(pointers[0].substr(prefix.size())) > i));
+      check(reply.status == 422 && reply.limit_reached && at_or_after,
             [&] {
               return "the answer through item " + std::to_string(i) + " takes " + std::to_string(expected.size() + 2) +
                      " bytes, above the cap of " + std::to_string(limits.max_batch_answer_bytes) + "; answered " +

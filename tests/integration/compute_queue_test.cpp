@@ -1,9 +1,10 @@
 // The compute queue has a deadline (--queue-deadline): a request that waited longer for a
 // compute thread is answered 503 with Retry-After instead of computed, so a burst of
 // costly requests sent and abandoned does not cost their whole CPU time, nor make every
-// later request wait for all of them. A request whose connection is gone (reset) while it
-// waits is dropped unanswered and uncomputed. Both are counted in the metrics. The
-// service's CPU time is read from /proc/<pid>/stat.
+// later request wait for all of them. The 503 comes when the deadline passes, while the
+// pool's only thread is still busy with a long request. A request whose connection is gone
+// (reset, or closed normally) while it waits is dropped unanswered and uncomputed. Both
+// are counted in the metrics. The service's CPU time is read from /proc/<pid>/stat.
 #include <chrono>
 #include <memory>
 #include <string>
@@ -64,14 +65,13 @@ TEST(ComputeQueue, RequestsPastTheDeadlineAre503InsteadOfComputed) {
   ASSERT_EQ(nlohmann::json::parse(body_of(alone))["type"], "urn:bezier-service:problem:work-cap");
   const double one_request = cpu_seconds(service.pid()) - before;
 
-  // A burst of them, each client gone (FIN) right after sending, as an attacker would.
+  // A burst of them, sent at once as an attacker would.
   constexpr int kBurst = 12;
   before = cpu_seconds(service.pid());
   std::vector<std::unique_ptr<Connection>> burst;
   for (int i = 0; i < kBurst; ++i) {
     burst.push_back(std::make_unique<Connection>(service.port()));
     ASSERT_TRUE(burst.back()->send_all(costly));
-    burst.back()->shutdown_write();
   }
   int computed = 0;
   int refused = 0;
@@ -138,6 +138,50 @@ TEST(ComputeQueue, RequestOfAResetConnectionIsDroppedUncomputed) {
   EXPECT_EQ(metric(service.port(), "bezier_work_cap_hits_total"), 1);
   EXPECT_EQ(metric(service.port(), kDepth), 0);
   EXPECT_EQ(metric(service.port(), kInFlight), 1);  // the metrics request itself
+}
+
+TEST(ComputeQueue, DeadlineHoldsWhileTheOnlyThreadIsBusy) {
+  // The only compute thread runs a request fifty times the default work cap (seconds of
+  // CPU); the deadline is a tenth of a second. A request queued behind it gets
+  // its 503 while that request still runs, not when the thread is free again.
+  ServiceProcess service({"--threads", "1", "--io-threads", "1", "--max-work", "1100000000",
+                          "--queue-deadline", "0.1"});
+  const auto running = start_costly_request(service.port());
+  Connection waiting(service.port());
+  ASSERT_TRUE(waiting.send_all(post_request("/intersections", work_cap_bound_intersections())));
+  const auto answers = waiting.responses(1, 60000);
+  ASSERT_EQ(answers.size(), 1u);
+  ASSERT_FALSE(answer_arrived(*running)) << "the 503 came only after the running request ended";
+  expect_problem(answers[0], 503);
+  EXPECT_TRUE(has_header(answers[0], "Retry-After: 1")) << answers[0];
+  EXPECT_EQ(metric(service.port(), R"(bezier_overload_responses_total{reason="queue_deadline"})"), 1);
+  EXPECT_EQ(metric(service.port(), kDepth), 0);
+  running->reset();
+}
+
+TEST(ComputeQueue, RequestOfAConnectionClosedNormallyIsDroppedUncomputed) {
+  // As for a reset, but the clients close their side normally (FIN) while their requests
+  // wait behind a running one: the requests leave the queue at once, unanswered.
+  ServiceProcess service({"--threads", "1", "--io-threads", "1", "--max-work", "1100000000"});
+  const auto running = start_costly_request(service.port());
+  constexpr int kQueued = 3;
+  std::vector<std::unique_ptr<Connection>> queued;
+  for (int i = 0; i < kQueued; ++i) {
+    queued.push_back(std::make_unique<Connection>(service.port()));
+    ASSERT_TRUE(queued.back()->send_all(post_request("/intersections", work_cap_bound_intersections())));
+  }
+  ASSERT_EQ(await_metric(service.port(), kDepth, [](double v) { return v == kQueued; }), kQueued);
+  for (auto& c : queued) c->shutdown_write();
+  EXPECT_EQ(await_metric(service.port(), "bezier_requests_dropped_total", [](double v) { return v >= kQueued; }),
+            kQueued);
+  EXPECT_EQ(metric(service.port(), kDepth), 0);
+  ASSERT_FALSE(answer_arrived(*running)) << "the running request ended before the closes were seen";
+  // Each closed connection ends without an answer.
+  for (auto& c : queued) {
+    EXPECT_TRUE(c->closed_by_peer(20000));
+    EXPECT_TRUE(c->responses(1, 0).empty());
+  }
+  running->reset();
 }
 
 TEST(ComputeQueue, FullQueueIs503AndCounted) {

@@ -199,6 +199,10 @@ TEST(HttpRequestParser, MalformedRequestsAre400) {
            "POST / HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: chunked\r\n\r\n\r\n",        // no size
            "POST / HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: chunked\r\n\r\n1\r\nab\r\n",  // data longer than size
            "POST / HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: chunked\r\n\r\n1\n",          // bare LF
+           "GET / HTTP/1.1\nHost: x\n\n",                                // bare LF line ends
+           "GET / HTTP/1.1\r\nHost: x\n\r\n",                            // one bare LF
+           "GET / HTTP/1.1\nHost: x\r\n",                                // a bare LF, head not yet complete
+           "GET / HTTP/1.1\r\nHost: x\r\nAuthorization: Bearer a\r\nauthorization: Bearer b\r\n\r\n",
        }) {
     const auto o = parse(input);
     EXPECT_EQ(o.state, State::error) << input;

@@ -242,6 +242,16 @@ inline std::int64_t resident_bytes(pid_t pid) {
   return -1;
 }
 
+/// VmHWM of a process from /proc/<pid>/status (its peak resident set so far), in bytes.
+inline std::int64_t peak_resident_bytes(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stoll(line.substr(6)) * 1024;  // "VmHWM:  1234 kB"
+  }
+  return -1;
+}
+
 /// User plus system CPU time of a process (all its threads) from /proc/<pid>/stat, in
 /// seconds.
 inline double cpu_seconds(pid_t pid) {
