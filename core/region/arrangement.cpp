@@ -251,6 +251,32 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int
   for (const path::SegmentSelfIntersections& w : found.within_segments) {
     for (const core::Overlap& o : w.result.overlaps) join_overlap(w.segment, w.segment, o);
   }
+  // Edges between the same two vertices that stay within the ray clearance of each other
+  // (a lens thinner than rounding, e.g. between two crossings of curves that touch to within
+  // a few ulps) are one edge for every later decision: no ray can tell their sides apart.
+  const double clearance = kRayClearanceRel * out.scale;
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> by_ends;
+  for (std::size_t e = 0; e < out.edges.size(); ++e) {
+    const ArrangementEdge& edge = out.edges[e];
+    if (edge.from == edge.to) continue;
+    by_ends[{std::min(edge.from, edge.to), std::max(edge.from, edge.to)}].push_back(e);
+  }
+  for (const auto& [ends, list] : by_ends) {
+    for (std::size_t x = 0; x < list.size(); ++x) {
+      for (std::size_t y = x + 1; y < list.size(); ++y) {
+        const ArrangementEdge& p = out.edges[list[x]];
+        const ArrangementEdge& q = out.edges[list[y]];
+        const bool flip = p.from != q.from;
+        bool near = true;
+        for (const double t : {0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875}) {
+          const Point2 at_p = core::evaluate(p.exact, t);
+          const Point2 at_q = core::evaluate(q.exact, flip ? 1.0 - t : t);
+          near = near && core::length(at_p - at_q) <= clearance;
+        }
+        if (near) groups.join(list[x], list[y]);
+      }
+    }
+  }
   std::vector<std::size_t> group_of_root(out.edges.size(), SIZE_MAX);
   for (std::size_t e = 0; e < out.edges.size(); ++e) {
     const std::size_t root = groups.find(e);

@@ -83,7 +83,11 @@ struct Arrangement {
 /// Edges: each segment is cut at its events' parameters in increasing order; consecutive
 /// cuts at the same vertex are one cut unless the piece between them is more than the
 /// vertex's size (a loop); zero-length segments give no edge. The pieces of segments in
-/// one overlap whose end vertices agree are one coincident group.
+/// one overlap whose end vertices agree are one coincident group, and so are two edges
+/// between the same two vertices whose points at t = k/8 (k = 1..7, matched along their
+/// common direction) are within kRayClearanceRel * scale of each other: a lens thinner than
+/// the side-winding rays can resolve (two crossings a few ulps off a tangency) has no area
+/// worth a contour, and its two sides are told apart only as one edge.
 ///
 /// Budget: max_work units for the whole search (as path::self_intersections spends them).
 /// Precondition: finite coordinates; every subpath closed.
