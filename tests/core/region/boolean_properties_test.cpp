@@ -221,5 +221,50 @@ TEST(BooleanProperties, ScalingByPowersOfTwoAndReversal) {
   }
 }
 
+
+/// Cells of a 6 x 6 board of unit squares, each its own contour (counter-clockwise or, at
+/// random, clockwise), so that neighbouring cells share edges in opposite directions (or the
+/// same one, when one is reversed) and four cells meet at each inner corner.
+path::Path cells(const std::vector<bool>& chosen, test::Mulberry32& rng) {
+  path::Path p;
+  for (int k = 0; k < 36; ++k) {
+    if (!chosen[static_cast<std::size_t>(k)]) continue;
+    const double x = k % 6, y = k / 6;
+    std::vector<Point2> corners{{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}};
+    if (rng.next() < 0.3) std::swap(corners[1], corners[3]);
+    const std::size_t first = p.segments.size();
+    for (std::size_t i = 0; i < 4; ++i) p.segments.push_back(core::Curve({corners[i], corners[(i + 1) % 4]}));
+    p.subpaths.push_back({first, 4, true});
+  }
+  return p;
+}
+
+TEST(BooleanProperties, BoardCellsGiveExactAreas) {
+  // The area of op on two sets of cells is the number of cells where op holds: exact.
+  test::Mulberry32 rng(36);
+  for (int trial = 0; trial < 60; ++trial) {
+    SCOPED_TRACE(testing::Message() << "trial " << trial);
+    std::vector<bool> in_a(36), in_b(36);
+    for (int k = 0; k < 36; ++k) {
+      in_a[static_cast<std::size_t>(k)] = rng.next() < 0.5;
+      in_b[static_cast<std::size_t>(k)] = rng.next() < 0.5;
+    }
+    const path::Path a = cells(in_a, rng), b = cells(in_b, rng);
+    for (const BooleanOperation op : kOps) {
+      int expected = 0;
+      for (std::size_t k = 0; k < 36; ++k) expected += keeps(op, in_a[k], in_b[k]) ? 1 : 0;
+      const BooleanResult r = boolean_operation(op, {&a, FillRule::nonzero}, {&b, FillRule::nonzero}, kWork);
+      test::expect_clean(r, a, &b, 0.0);
+      EXPECT_EQ(r.area, expected) << static_cast<int>(op);
+      // Winding 1 in the cells op keeps, 0 in the others.
+      const auto lines = test::polylines(test::result_path(r), 1);
+      for (std::size_t k = 0; k < 36; ++k) {
+        const Point2 centre{static_cast<double>(k % 6) + 0.5, static_cast<double>(k / 6) + 0.5};
+        EXPECT_EQ(test::polyline_winding(lines, centre).winding, keeps(op, in_a[k], in_b[k]) ? 1 : 0);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace bezier::region
