@@ -10,7 +10,7 @@
 #include "core/curve/polar.hpp"
 #include "core/intersect/options.hpp"
 #include "core/path/path_intersections.hpp"
-#include "core/region/tuning.hpp"
+#include "core/region/boolean_tuning.hpp"
 
 namespace bezier::region {
 

@@ -12,13 +12,10 @@ namespace bezier::region {
 
 namespace {
 
-BooleanResult run(BooleanOperation op, const RegionOperand& a, const RegionOperand* b,
-                  std::int64_t max_work) {
+BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::int64_t max_work) {
   BooleanResult result;
-  const path::Path empty;
-  const path::Path& path_a = a.path != nullptr ? *a.path : empty;
-  const path::Path* path_b = b != nullptr ? (b->path != nullptr ? b->path : &empty) : nullptr;
-  const Arrangement arrangement = build_arrangement(path_a, path_b, max_work);
+  const Arrangement arrangement =
+      build_arrangement(a.path, b != nullptr ? &b->path : nullptr, max_work);
   result.work = arrangement.work;
   if (arrangement.status != core::IntersectStatus::ok) {
     result.status = BooleanStatus::work_cap_reached;
@@ -27,7 +24,7 @@ BooleanResult run(BooleanOperation op, const RegionOperand& a, const RegionOpera
   WorkBudget budget{arrangement.work, max_work};
   const FillRule rule_b = b != nullptr ? b->fill_rule : FillRule::nonzero;
   const auto inside = [&](const std::array<int, 2>& w) {
-    return keeps(op, fills(w[0], a.fill_rule), fills(w[1], rule_b));
+    return keeps(op, fills(a.fill_rule, w[0]), fills(rule_b, w[1]));
   };
 
   std::vector<DirectedEdge> kept;
@@ -92,13 +89,13 @@ BooleanResult run(BooleanOperation op, const RegionOperand& a, const RegionOpera
 
 }  // namespace
 
-BooleanResult boolean_operation(BooleanOperation op, const RegionOperand& a,
-                                const RegionOperand& b, std::int64_t max_work) {
+BooleanResult boolean_operation(BooleanOperation op, const Region& a, const Region& b,
+                                std::int64_t max_work) {
   if (op == BooleanOperation::simplify) return run(op, a, nullptr, max_work);
   return run(op, a, &b, max_work);
 }
 
-BooleanResult simplify(const RegionOperand& a, std::int64_t max_work) {
+BooleanResult simplify(const Region& a, std::int64_t max_work) {
   return run(BooleanOperation::simplify, a, nullptr, max_work);
 }
 

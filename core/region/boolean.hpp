@@ -52,6 +52,7 @@
 #include "core/path/path.hpp"
 #include "core/region/arrangement.hpp"
 #include "core/region/fill_rule.hpp"
+#include "core/region/region.hpp"
 
 namespace bezier::region {
 
@@ -74,12 +75,6 @@ enum class BooleanOperation {
   }
   return false;
 }
-
-/// An operand: a path whose subpaths are all closed, and its fill rule.
-struct RegionOperand {
-  const path::Path* path = nullptr;
-  FillRule fill_rule = FillRule::nonzero;
-};
 
 /// One segment of a result contour.
 struct ResultSegment {
@@ -117,11 +112,11 @@ struct BooleanResult {
 };
 
 /// The result of `op` on a and b (b ignored by simplify). max_work bounds the whole call.
-/// Preconditions: every subpath of both paths closed; finite coordinates.
-[[nodiscard]] BooleanResult boolean_operation(BooleanOperation op, const RegionOperand& a,
-                                              const RegionOperand& b, std::int64_t max_work);
+/// Preconditions: finite coordinates (a Region's subpaths are closed).
+[[nodiscard]] BooleanResult boolean_operation(BooleanOperation op, const Region& a,
+                                              const Region& b, std::int64_t max_work);
 
 /// simplify of one operand.
-[[nodiscard]] BooleanResult simplify(const RegionOperand& a, std::int64_t max_work);
+[[nodiscard]] BooleanResult simplify(const Region& a, std::int64_t max_work);
 
 }  // namespace bezier::region

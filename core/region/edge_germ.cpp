@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/curve/derivative.hpp"
-#include "core/region/tuning.hpp"
+#include "core/region/boolean_tuning.hpp"
 
 namespace bezier::region {
 

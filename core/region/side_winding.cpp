@@ -7,7 +7,7 @@
 #include "core/curve/derivative.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/curve/subdivide.hpp"
-#include "core/region/tuning.hpp"
+#include "core/region/boolean_tuning.hpp"
 
 namespace bezier::region {
 

@@ -131,7 +131,7 @@ Case random_case(test::Mulberry32& rng) {
 }
 
 BooleanResult run(BooleanOperation op, const Case& c) {
-  return boolean_operation(op, {&c.a, c.rule_a}, {&c.b, c.rule_b}, kWork);
+  return boolean_operation(op, {c.a, c.rule_a}, {c.b, c.rule_b}, kWork);
 }
 
 // Areas are sums of Green's integrals of pieces of coordinates up to about 100: rounding of a
@@ -157,7 +157,7 @@ TEST(BooleanProperties, PointsAwayFromBoundariesFollowTheOperation) {
         const test::PolylineWinding wb = test::polyline_winding(lines_b, p);
         if (wa.distance < 0.1 || wb.distance < 0.1) continue;
         const test::PolylineWinding wr = test::polyline_winding(lines_r, p);
-        const bool expected = keeps(op, fills(wa.winding, c.rule_a), fills(wb.winding, c.rule_b));
+        const bool expected = keeps(op, fills(c.rule_a, wa.winding), fills(c.rule_b, wb.winding));
         ASSERT_EQ(wr.winding, expected ? 1 : 0) << "at " << p.x << ", " << p.y;
         ++checked;
       }
@@ -175,8 +175,8 @@ TEST(BooleanProperties, AreaIdentities) {
     const BooleanResult i = run(BooleanOperation::intersection, c);
     const BooleanResult x = run(BooleanOperation::xor_, c);
     const BooleanResult d_ab = run(BooleanOperation::difference, c);
-    const BooleanResult sa = simplify({&c.a, c.rule_a}, kWork);
-    const BooleanResult sb = simplify({&c.b, c.rule_b}, kWork);
+    const BooleanResult sa = simplify({c.a, c.rule_a}, kWork);
+    const BooleanResult sb = simplify({c.b, c.rule_b}, kWork);
     for (const BooleanResult* r : {&u, &i, &x, &d_ab, &sa, &sb}) ASSERT_EQ(r->status, BooleanStatus::ok);
     EXPECT_NEAR(u.area + i.area, sa.area + sb.area, kAreaTolerance);
     EXPECT_NEAR(x.area, u.area - i.area, kAreaTolerance);
@@ -188,11 +188,11 @@ TEST(BooleanProperties, AreaIdentities) {
     EXPECT_NEAR(run(BooleanOperation::union_, same).area, sa.area, kAreaTolerance);
     // simplify is idempotent.
     const path::Path once = test::result_path(sa);
-    const BooleanResult twice = simplify({&once, FillRule::nonzero}, kWork);
+    const BooleanResult twice = simplify({once, FillRule::nonzero}, kWork);
     ASSERT_EQ(twice.status, BooleanStatus::ok);
     EXPECT_NEAR(twice.area, sa.area, kAreaTolerance);
     EXPECT_EQ(twice.contours.size(), sa.contours.size());
-    const BooleanResult twice_evenodd = simplify({&once, FillRule::evenodd}, kWork);
+    const BooleanResult twice_evenodd = simplify({once, FillRule::evenodd}, kWork);
     EXPECT_NEAR(twice_evenodd.area, sa.area, kAreaTolerance);
   }
 }
@@ -253,7 +253,7 @@ TEST(BooleanProperties, BoardCellsGiveExactAreas) {
     for (const BooleanOperation op : kOps) {
       int expected = 0;
       for (std::size_t k = 0; k < 36; ++k) expected += keeps(op, in_a[k], in_b[k]) ? 1 : 0;
-      const BooleanResult r = boolean_operation(op, {&a, FillRule::nonzero}, {&b, FillRule::nonzero}, kWork);
+      const BooleanResult r = boolean_operation(op, {a, FillRule::nonzero}, {b, FillRule::nonzero}, kWork);
       test::expect_clean(r, a, &b, 0.0);
       EXPECT_EQ(r.area, expected) << static_cast<int>(op);
       // Winding 1 in the cells op keeps, 0 in the others.

@@ -24,13 +24,13 @@ constexpr std::int64_t kWork = 100000000;
 
 BooleanResult run(BooleanOperation op, const path::Path& a, const path::Path& b,
                   FillRule rule_a = FillRule::nonzero, FillRule rule_b = FillRule::nonzero) {
-  BooleanResult r = boolean_operation(op, {&a, rule_a}, {&b, rule_b}, kWork);
+  BooleanResult r = boolean_operation(op, {a, rule_a}, {b, rule_b}, kWork);
   test::expect_clean(r, a, &b, 1e-9);
   return r;
 }
 
 BooleanResult run_simplify(const path::Path& a, FillRule rule) {
-  BooleanResult r = simplify({&a, rule}, kWork);
+  BooleanResult r = simplify({a, rule}, kWork);
   test::expect_clean(r, a, nullptr, 1e-9);
   return r;
 }
@@ -345,8 +345,8 @@ TEST(Boolean, DegreeFiveOperand) {
 TEST(Boolean, WorkCapIsReported) {
   const path::Path a = parsed_path(circle(0, 0, 1));
   const path::Path b = parsed_path(circle(0.5, 0.25, 1));
-  const BooleanResult r = boolean_operation(BooleanOperation::union_, {&a, FillRule::nonzero},
-                                            {&b, FillRule::nonzero}, 100);
+  const BooleanResult r = boolean_operation(BooleanOperation::union_, {a, FillRule::nonzero},
+                                            {b, FillRule::nonzero}, 100);
   EXPECT_EQ(r.status, BooleanStatus::work_cap_reached);
   EXPECT_TRUE(r.contours.empty());
 }
