@@ -252,6 +252,38 @@ TEST(Boolean, FigureEightSimplify) {
   }
 }
 
+TEST(Boolean, OperandOverlappingItselfInTheSameDirection) {
+  // The same square twice in one path: winding 2 inside, its edges shared with themselves.
+  const path::Path twice = parsed_path("M0 0 H2 V2 H0 Z M0 0 H2 V2 H0 Z");
+  const BooleanResult nonzero = run_simplify(twice, FillRule::nonzero);
+  EXPECT_EQ(nonzero.area, 4.0);
+  EXPECT_EQ(nonzero.contours.size(), 1u);
+  EXPECT_TRUE(run_simplify(twice, FillRule::evenodd).contours.empty());
+  // Half of it again, sharing three of its sides' pieces.
+  const path::Path with_half = parsed_path("M0 0 H2 V2 H0 Z M0 0 H1 V2 H0 Z");
+  EXPECT_EQ(run_simplify(with_half, FillRule::nonzero).area, 4.0);
+  EXPECT_EQ(run_simplify(with_half, FillRule::evenodd).area, 2.0);
+}
+
+TEST(Boolean, CrossingsCloserThanTheToleranceAreOneVertex) {
+  // The triangle's left vertex lies 2^-50 inside the square's right edge: its two sides cross
+  // that edge 2^-51 above and below y = 1, and all three points are one vertex (within
+  // kVertexMergeRel of scale), so the sliver between them is no contour.
+  const double d = 0x1p-50;
+  const path::Path a = parsed_path("M0 0 H2 V2 H0 Z");
+  path::Path b;
+  b.segments.push_back(core::Curve({{2 - d, 1}, {4, 0}}));
+  b.segments.push_back(core::Curve({{4, 0}, {4, 2}}));
+  b.segments.push_back(core::Curve({{4, 2}, {2 - d, 1}}));
+  b.subpaths.push_back({0, 3, true});
+  const double area_b = exact_area(b).to_double();
+  const BooleanResult u = run(BooleanOperation::union_, a, b);
+  EXPECT_NEAR(u.area, 4.0 + area_b, 1e-13);
+  EXPECT_TRUE(run(BooleanOperation::intersection, a, b).contours.empty());
+  EXPECT_NEAR(run(BooleanOperation::difference, a, b).area, 4.0, 1e-13);
+  EXPECT_NEAR(run(BooleanOperation::difference, b, a).area, area_b, 1e-13);
+}
+
 std::string circle(double cx, double cy, double r) {
   // Four cubic arcs from the points at 0, 90, 180 and 270 degrees.
   const double k = 0.5522847498307936 * r;
