@@ -168,7 +168,7 @@ TEST(BooleanProperties, PointsAwayFromBoundariesFollowTheOperation) {
 
 TEST(BooleanProperties, AreaIdentities) {
   test::Mulberry32 rng(7);
-  for (int trial = 0; trial < 400; ++trial) {
+  for (int trial = 0; trial < 200; ++trial) {
     SCOPED_TRACE(testing::Message() << "trial " << trial);
     const Case c = random_case(rng);
     const BooleanResult u = run(BooleanOperation::union_, c);
@@ -242,7 +242,7 @@ path::Path cells(const std::vector<bool>& chosen, test::Mulberry32& rng) {
 TEST(BooleanProperties, BoardCellsGiveExactAreas) {
   // The area of op on two sets of cells is the number of cells where op holds: exact.
   test::Mulberry32 rng(36);
-  for (int trial = 0; trial < 60; ++trial) {
+  for (int trial = 0; trial < 30; ++trial) {
     SCOPED_TRACE(testing::Message() << "trial " << trial);
     std::vector<bool> in_a(36), in_b(36);
     for (int k = 0; k < 36; ++k) {
