@@ -13,6 +13,7 @@
 #include "core/curve/evaluate.hpp"
 #include "core/curve/polar.hpp"
 #include "core/path/path.hpp"
+#include "core/path/path_intersections.hpp"
 #include "core/region/boolean.hpp"
 
 namespace bezier::test {
@@ -98,6 +99,22 @@ inline void expect_clean(const region::BooleanResult& result, const path::Path& 
     }
   }
   EXPECT_NEAR(total, result.area, 1e-12 * (1.0 + std::fabs(total)));
+  // Contours neither cross nor overlap themselves or each other: the certified intersection
+  // search finds contacts between result segments only at their ends (vertices, where
+  // contours may touch), and no segment crosses itself.
+  const path::Path contours = result_path(result);
+  const path::PathSelfIntersectionResult contacts = path::self_intersections(contours, core::IntersectOptions{});
+  ASSERT_EQ(contacts.status, core::IntersectStatus::ok);
+  EXPECT_TRUE(contacts.overlaps.empty());
+  const auto at_end = [](double t) { return t <= 1e-9 || t >= 1.0 - 1e-9; };
+  for (const path::PathContact& c : contacts.intersections) {
+    EXPECT_TRUE(at_end(c.intersection.t) && at_end(c.intersection.s))
+        << "segments " << c.segment_t << " and " << c.segment_s << " meet at t = " << c.intersection.t
+        << ", s = " << c.intersection.s;
+  }
+  for (const path::SegmentSelfIntersections& w : contacts.within_segments) {
+    EXPECT_TRUE(w.result.pairs.empty() && w.result.overlaps.empty()) << "segment " << w.segment;
+  }
 }
 
 }  // namespace bezier::test
