@@ -6,6 +6,7 @@
 #include <numeric>
 #include <utility>
 
+#include "core/curve/derivative.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/curve/polar.hpp"
 #include "core/intersect/options.hpp"
@@ -293,14 +294,13 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int
     const ArrangementEdge& r = out.edges[g.representative];
     for (std::size_t e : g.edges) {
       const ArrangementEdge& x = out.edges[e];
-      bool along = x.from == r.from && x.to == r.to;
-      if (x.from == x.to || x.from != r.from || x.to != r.to) {
-        // A loop, or ends swapped: decide by the direction at the middle.
-        const Point2 dr = r.exact.back() - r.exact.front();
-        const Point2 dx = x.exact.back() - x.exact.front();
-        along = (x.from == r.from && x.to == r.to && x.from != x.to) || core::dot(dr, dx) > 0.0;
-        if (x.from != x.to && x.from == r.to && x.to == r.from) along = false;
-      }
+      // Along the representative when it leaves the same vertex; for a loop (both ends at
+      // one vertex) when its tangent at the middle points the same way.
+      const bool along =
+          (x.from != x.to && r.from != r.to)
+              ? x.from == r.from
+              : core::dot(core::derivatives_at(x.exact, 0.5, 1).front(),
+                          core::derivatives_at(r.exact, 0.5, 1).front()) > 0.0;
       g.multiplicity[static_cast<std::size_t>(x.source)] += along ? 1 : -1;
     }
   }

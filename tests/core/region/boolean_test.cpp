@@ -326,6 +326,32 @@ TEST(Boolean, CirclesTangentInsideSegments) {
   EXPECT_GE(d.contours.size(), 1u);
 }
 
+TEST(Boolean, CirclesNearTangentAcrossTheTolerance) {
+  // Unit circles (as cubics) whose centres are 2 r(0.3) + gap apart along the direction at
+  // 0.3 radians, r(0.3) the first circle's radius there: they cross in a thin lens for
+  // gap < 0, touch near gap = 0 and miss for gap > 0, on both sides of every tolerance.
+  // Whatever the contacts found, area(A ∪ B) + area(A ∩ B) = area(A) + area(B).
+  const path::Path a = parsed_path(circle(0, 0, 1));
+  const double area = exact_area(a).to_double();
+  double lo = 0.0, hi = 1.0;
+  for (int i = 0; i < 100; ++i) {
+    const double mid = (lo + hi) / 2;
+    const Point2 p = core::evaluate(a.segments[0], mid);
+    (std::atan2(p.y, p.x) < 0.3 ? lo : hi) = mid;
+  }
+  const Point2 on = core::evaluate(a.segments[0], lo);
+  const double r = std::hypot(on.x, on.y);
+  for (const double gap : {1e-9, 1e-12, 1e-14, 0.0, -1e-14, -1e-12, -1e-9}) {
+    SCOPED_TRACE(gap);
+    const double d = 2 * r + gap;
+    const path::Path b = parsed_path(circle(d * std::cos(0.3), d * std::sin(0.3), 1));
+    const BooleanResult u = run(BooleanOperation::union_, a, b);
+    const BooleanResult i = run(BooleanOperation::intersection, a, b);
+    EXPECT_NEAR(u.area + i.area, 2 * area, 1e-13);
+    EXPECT_LE(i.area, 1e-12);
+  }
+}
+
 TEST(Boolean, MirroredArcsTouchingAtTheirMiddles) {
   // A's right arc runs from -45 to 45 degrees; B is A mirrored about the vertical line through
   // that arc's middle, so the two touch there with a common vertical tangent, inside a segment
