@@ -284,6 +284,21 @@ TEST(Boolean, CrossingsCloserThanTheToleranceAreOneVertex) {
   EXPECT_NEAR(run(BooleanOperation::difference, b, a).area, area_b, 1e-13);
 }
 
+TEST(Boolean, SegmentRetracingItself) {
+  // A closed cubic that runs out along a line and back (palindromic control points: it
+  // retraces itself), inside the square, and another outside it: zero area, they add
+  // nothing and take nothing away.
+  const path::Path a = parsed_path("M0 0 H2 V2 H0 Z M0.5 0.5 C1.5 1 1.5 1 0.5 0.5 M3 3 C4 4 4 4 3 3");
+  for (const FillRule rule : {FillRule::nonzero, FillRule::evenodd}) {
+    const BooleanResult s = run_simplify(a, rule);
+    EXPECT_EQ(s.area, 4.0);
+    EXPECT_EQ(s.contours.size(), 1u);
+  }
+  // The spike along a shared edge: a retraced piece of the square's bottom side.
+  const path::Path b = parsed_path("M0 0 H2 V2 H0 Z M0.5 0 C1.5 0 1.5 0 0.5 0");
+  EXPECT_EQ(run_simplify(b, FillRule::nonzero).area, 4.0);
+}
+
 std::string circle(double cx, double cy, double r) {
   // Four cubic arcs from the points at 0, 90, 180 and 270 degrees.
   const double k = 0.5522847498307936 * r;
