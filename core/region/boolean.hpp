@@ -30,7 +30,8 @@
 //  - arrangement.hpp: both boundaries cut at every contact (crossings, tangencies, vertices on
 //    edges, overlaps in either direction, self-contacts of either operand and within one
 //    segment), contacts closer than their located intervals merged into one vertex the same
-//    way on every edge; pieces of shared boundary grouped.
+//    way on every edge; pieces of shared boundary grouped, and so are two edges between the
+//    same vertices that stay within kRayClearanceRel of scale (a lens thinner than rounding).
 //  - side_winding.hpp: for each group, both operands' winding numbers on its two sides, from
 //    a ray cast across the arrangement with every crossing decided clearly (else another ray).
 //  - the group is a boundary of the result where op(fill_a(w_a), fill_b(w_b)) differs between
@@ -38,7 +39,7 @@
 //    edge (the first of a).
 //  - contour_chain.hpp: kept edges chained into contours, choosing at vertices by the order of
 //    the edges around it (edge_germ.hpp: tangent angle, then turn).
-//  - contours of zero area (to rounding) are dropped.
+//  - contours whose |area| is at most 2^-80 scale^2 (zero to rounding) are dropped.
 // What is not certified: the order of edges leaving a vertex with tangents within
 // kTangentTieAngle and equal turn (contacts of order three and up) is taken from floating
 // point; a region whose every ray is unclear (kTurns) gives status unresolved.
