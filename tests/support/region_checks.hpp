@@ -88,7 +88,9 @@ inline void expect_clean(const region::BooleanResult& result, const path::Path& 
       const region::ResultSegment& s = result.segments[k];
       const std::size_t next = k + 1 < c.end_segment ? k + 1 : c.first_segment;
       EXPECT_EQ(s.curve.back(), result.segments[next].curve.front()) << "join after segment " << k;
-      EXPECT_NE(s.curve.front(), s.curve.back()) << "segment " << k;
+      bool has_length = false;  // a loop's ends may meet; a zero-length segment is one point
+      for (const core::Point2 p : s.curve.points()) has_length = has_length || p != s.curve.front();
+      EXPECT_TRUE(has_length) << "segment " << k;
       const path::Path& source = s.source == region::Operand::a ? a : *b;
       ASSERT_LT(s.segment, source.segments.size());
       const core::Curve piece = core::portion(source.segments[s.segment], s.t0, s.t1);

@@ -11,6 +11,7 @@
 
 #include "core/region/boolean.hpp"
 #include "tests/support/mulberry32.hpp"
+#include "tests/support/parsed_path.hpp"
 #include "tests/support/region_checks.hpp"
 
 namespace bezier::region {
@@ -238,6 +239,45 @@ TEST(BooleanProperties, TranslationScalingByPowersOfTwoAndReversal) {
   }
 }
 
+
+TEST(BooleanProperties, SelfIntersectingOperandsSimplified) {
+  // A pentagram (winding 2 in its centre), a cubic crossing itself closed by a line, a
+  // degree-5 curve crossing itself three times, and a glyph of two overlapping stars: each
+  // simplified under both fill rules, checked on a grid against the flattened oracle.
+  std::vector<path::Path> shapes;
+  shapes.push_back(test::parsed_path("M0 10 L6 -8 L-9.5 3 L9.5 3 L-6 -8 Z"));
+  shapes.push_back(test::parsed_path("M-8 -8 C12 12 -12 12 8 -8 Z"));
+  path::Path quintic;
+  quintic.segments.push_back(core::Curve({{-9, 0}, {12, 14}, {-14, 7}, {14, -7}, {-12, -14}, {9, 0}}));
+  quintic.segments.push_back(core::Curve({{9, 0}, {-9, 0}}));
+  quintic.subpaths.push_back({0, 2, true});
+  shapes.push_back(quintic);
+  test::Mulberry32 rng(5);
+  path::Path stars;
+  add_star(stars, rng, {-3, 0}, 5, 9);
+  add_star(stars, rng, {3, 1}, 5, 9);
+  shapes.push_back(stars);
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    const auto lines = test::polylines(shapes[k], 512);
+    for (const FillRule rule : {FillRule::nonzero, FillRule::evenodd}) {
+      SCOPED_TRACE(testing::Message() << "shape " << k << " rule " << static_cast<int>(rule));
+      const BooleanResult r = simplify({shapes[k], rule}, kWork);
+      test::expect_clean(r, shapes[k], nullptr, 1e-9);
+      const auto result_lines = test::polylines(test::result_path(r), 512);
+      int checked = 0;
+      for (double x = -12.05; x < 12; x += 0.25) {
+        for (double y = -12.05; y < 12; y += 0.25) {
+          const test::PolylineWinding w = test::polyline_winding(lines, {x, y});
+          if (w.distance < 0.01) continue;
+          ASSERT_EQ(test::polyline_winding(result_lines, {x, y}).winding, fills(rule, w.winding) ? 1 : 0)
+              << "at " << x << ", " << y;
+          ++checked;
+        }
+      }
+      EXPECT_GT(checked, 1000);
+    }
+  }
+}
 
 /// Cells of a 6 x 6 board of unit squares, each its own contour (counter-clockwise or, at
 /// random, clockwise), so that neighbouring cells share edges in opposite directions (or the
