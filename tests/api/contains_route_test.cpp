@@ -75,6 +75,8 @@ TEST(ContainsRoute, Validation) {
   EXPECT_EQ(pointers(R"({"path":"M0 0 H1 V1 Z","curves":[],"targets":[[0,0]]})"), V{""});
   EXPECT_EQ(pointers(R"({"path":"M0 0 X","targets":[[0,0]]})"), V{"/path"});
   EXPECT_EQ(pointers(R"({"path":null,"targets":[[0,0]]})"), V{"/path"});
+  EXPECT_EQ(pointers(R"({"curves":null,"targets":[[0,0]]})"), V{"/curves"});
+  EXPECT_EQ(pointers(R"({"path":"M0 0 H1 V1 Z","fill_rule":null,"targets":[[0,0]]})"), V{"/fill_rule"});
   EXPECT_EQ(pointers(R"({"path":"M0 0 H1 V1 Z","targets":[[0,0]],"point":[1,1]})"), V{"/point"});
   EXPECT_EQ(pointers(R"({"curves":{},"targets":[[0,0]]})"), V{"/curves"});
   EXPECT_EQ(pointers(R"({"curves":[[[0,0],[1,0]],[[1,0]]],"targets":[[0,0]]})"), V{"/curves/1"});
