@@ -54,6 +54,13 @@ std::optional<std::vector<core::Curve>> read_curves(RequestReader& reader, const
   return curves;
 }
 
+/// The member `key` of `object`, null included: a null is refused, not taken for a missing
+/// member (as read_path does with a null path).
+const Json* member(const Json& object, std::string_view key) {
+  const auto it = object.find(key);
+  return it == object.end() ? nullptr : &*it;
+}
+
 }  // namespace
 
 std::optional<region::Region> read_region(RequestReader& reader, const Json& object,
@@ -64,14 +71,14 @@ std::optional<region::Region> read_region(RequestReader& reader, const Json& obj
   }
   region::FillRule rule = region::FillRule::nonzero;
   bool rule_ok = true;
-  if (const Json* value = RequestReader::optional(object, "fill_rule")) {
+  if (const Json* value = member(object, "fill_rule")) {
     const auto name = reader.one_of(*value, pointer_to(pointer, "fill_rule"),
                                     {to_string(region::FillRule::nonzero),
                                      to_string(region::FillRule::evenodd)});
     rule_ok = name.has_value();
     if (name && *name == to_string(region::FillRule::evenodd)) rule = region::FillRule::evenodd;
   }
-  const Json* curves = RequestReader::optional(object, "curves");
+  const Json* curves = member(object, "curves");
   const bool has_path_member = has_path(object);
   if (curves != nullptr && has_path_member) {
     reader.fail(pointer, "give either \"path\" or \"curves\", not both");

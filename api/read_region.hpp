@@ -16,8 +16,9 @@ inline constexpr std::string_view kRegionFields[] = {"path", "curves", "fill_rul
 /// A region operand (DESIGN.md §8) from the object at `pointer`:
 ///   {"path": "<SVG path data>", "fill_rule": "nonzero" | "evenodd"}, or
 ///   {"curves": [[[x, y], ...], ...], "fill_rule": ...}
-/// exactly one of `path` and `curves`; `fill_rule` optional (default "nonzero"), anything
-/// else refused at <pointer>/fill_rule.
+/// exactly one of `path` and `curves` (null is refused, not taken for absent); `fill_rule`
+/// optional (default "nonzero"), anything else (null included) refused at
+/// <pointer>/fill_rule.
 ///   path    SVG path data (read_path; "" or data that draws nothing is the empty region);
 ///           every open subpath is closed for filling (region::region_from_path).
 ///   curves  0 to limits().max_path_segments curves of degree 1 to limits().max_degree

@@ -69,15 +69,31 @@ double diameter_bound(const core::Curve& c) {
   return 2.0 * m;
 }
 
-path::Path combined(const path::Path& a, const path::Path* b) {
-  path::Path all = a;
-  if (b == nullptr) return all;
-  const std::size_t offset = a.segments.size();
-  for (const core::Curve& s : b->segments) all.segments.push_back(s);
-  for (path::Subpath sub : b->subpaths) {
-    sub.first_segment += offset;
-    all.subpaths.push_back(sub);
+/// Both operands' segments as one path, without the zero-length ones (a single point adds
+/// no boundary; inside a subpath it is a joint of its neighbours, and a subpath of points
+/// alone is left out), and where each came from.
+struct Combined {
+  path::Path path;
+  std::vector<std::pair<Operand, std::size_t>> origin;
+};
+
+void append(Combined& all, const path::Path& p, Operand source) {
+  for (const path::Subpath& sub : p.subpaths) {
+    const std::size_t first = all.path.segments.size();
+    for (std::size_t k = sub.first_segment; k < sub.first_segment + sub.segment_count; ++k) {
+      if (is_point(p.segments[k])) continue;
+      all.path.segments.push_back(p.segments[k]);
+      all.origin.emplace_back(source, k);
+    }
+    const std::size_t count = all.path.segments.size() - first;
+    if (count > 0) all.path.subpaths.push_back({first, count, sub.closed});
   }
+}
+
+Combined combined(const path::Path& a, const path::Path* b) {
+  Combined all;
+  append(all, a, Operand::a);
+  if (b != nullptr) append(all, *b, Operand::b);
   return all;
 }
 
@@ -85,8 +101,8 @@ path::Path combined(const path::Path& a, const path::Path* b) {
 
 Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int64_t max_work) {
   Arrangement out;
-  const path::Path all = combined(a, b);
-  const std::size_t count_a = a.segments.size();
+  const Combined both = combined(a, b);
+  const path::Path& all = both.path;
   double scale = 0.0;
   for (const core::Curve& s : all.segments) scale = std::max(scale, core::scale(s));
   out.scale = scale > 0.0 ? scale : 1.0;
@@ -108,7 +124,6 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int
   std::vector<std::pair<std::size_t, std::size_t>> same;  // events that are one vertex
   for (std::size_t i = 0; i < all.segments.size(); ++i) {
     const core::Curve& s = all.segments[i];
-    if (is_point(s)) continue;
     events.push_back({i, 0.0, s.front(), base_radius, true});
     events.push_back({i, 1.0, s.back(), base_radius, true});
   }
@@ -214,8 +229,8 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int
     }
     for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
       ArrangementEdge edge;
-      edge.source = i < count_a ? Operand::a : Operand::b;
-      edge.segment = i < count_a ? i : i - count_a;
+      edge.source = both.origin[i].first;
+      edge.segment = both.origin[i].second;
       edge.t0 = kept[k].first;
       edge.t1 = kept[k + 1].first;
       edge.from = kept[k].second;

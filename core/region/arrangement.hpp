@@ -82,7 +82,8 @@ struct Arrangement {
 ///
 /// Edges: each segment is cut at its events' parameters in increasing order; consecutive
 /// cuts at the same vertex are one cut unless the piece between them is more than the
-/// vertex's size (a loop); zero-length segments give no edge. The pieces of segments in
+/// vertex's size (a loop); zero-length segments are left out of the search and give no
+/// edge (a single point adds no boundary). The pieces of segments in
 /// one overlap whose end vertices agree are one coincident group, and so are two edges
 /// between the same two vertices whose points at t = k/8 (k = 1..7, matched along their
 /// common direction) are within kRayClearanceRel * scale of each other: a lens thinner than

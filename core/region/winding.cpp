@@ -7,6 +7,7 @@
 #include "core/intersect/work_cost.hpp"
 #include "core/numeric/double_double.hpp"
 #include "core/numeric/power_of_two.hpp"
+#include "core/numeric/small_array.hpp"
 #include "core/numeric/unit_roundoff.hpp"
 #include "core/region/tuning.hpp"
 
@@ -90,10 +91,8 @@ PieceTest test_piece(std::span<const DdPoint> q, Point2 target, double band, dou
   const std::size_t n = q.size() - 1;
   // w_i = q_i - target rounded to doubles, e_i its error bound (with the piece's error).
   double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
-  // Small inline arrays: degrees are bounded by the API's degree limit, 20 by default;
-  // larger ones take the vector.
-  std::vector<Point2> w(n + 1);
-  std::vector<double> e(n + 1);
+  core::SmallArray<Point2> w(n + 1, core::SmallArray<Point2>::Uninitialized{});
+  core::SmallArray<double> e(n + 1, core::SmallArray<double>::Uninitialized{});
   for (std::size_t i = 0; i <= n; ++i) {
     w[i] = {dd::to_double(dd::sub(q[i].x, dd::from(target.x))),
             dd::to_double(dd::sub(q[i].y, dd::from(target.y)))};
@@ -169,7 +168,7 @@ SegmentOutcome refine_segment(std::span<const Point2> points, Point2 target, dou
   };
   std::vector<DdPoint> store;
   std::vector<Piece> pieces;
-  std::vector<DdPoint> row(size);
+  std::vector<DdPoint> row(size), left(size);
   store.reserve(size * (region_tuning::kMaxDepth + 2));
   for (const Point2 p : points) store.push_back({dd::from(p.x), dd::from(p.y)});
   pieces.push_back({0, false});
@@ -183,8 +182,7 @@ SegmentOutcome refine_segment(std::span<const Point2> points, Point2 target, dou
     const Piece piece = pieces.back();
     const std::size_t at = (pieces.size() - 1) * size;
     const std::span<const DdPoint> q(store.data() + at, size);
-    const double error =
-        piece.depth * (n * kLevelError + kTiny) + kTiny;
+    const double error = piece.depth * (n * kLevelError + kTiny) + kTiny;
     const PieceTest test = test_piece(q, target, band, error, piece.far);
     if (test.outcome == PieceOutcome::boundary) {
       out.boundary = true;
@@ -205,7 +203,6 @@ SegmentOutcome refine_segment(std::span<const Point2> points, Point2 target, dou
     store.resize(at + 2 * size);
     const std::span<DdPoint> parent(store.data() + at, size);
     const std::span<DdPoint> right(store.data() + at + size, size);
-    std::vector<DdPoint> left(size);
     halve(parent, left, right, row);
     std::copy(right.begin(), right.end(), parent.begin());
     std::copy(left.begin(), left.end(), right.begin());
