@@ -299,6 +299,21 @@ TEST(Boolean, SegmentRetracingItself) {
   EXPECT_EQ(run_simplify(b, FillRule::nonzero).area, 4.0);
 }
 
+TEST(Boolean, ZeroLengthSegmentsAddNothing) {
+  // The square with a zero-length segment at a corner and 10000 single-point chains: the
+  // same union as without them, and no work spent on the points' pairs.
+  const path::Path a = parsed_path("M0 0 H2 L2 0 V2 H0 Z");
+  path::Path b = parsed_path("M1 1 H3 V3 H1 Z");
+  for (int k = 0; k < 10000; ++k) {
+    b.subpaths.push_back({b.segments.size(), 1, true});
+    b.segments.push_back(core::Curve({{9, 9}, {9, 9}}));
+  }
+  const BooleanResult u = run(BooleanOperation::union_, a, b);
+  EXPECT_EQ(u.area, 7.0);
+  EXPECT_EQ(u.contours.size(), 1u);
+  EXPECT_LT(u.work, 1000000);
+}
+
 std::string circle(double cx, double cy, double r) {
   // Four cubic arcs from the points at 0, 90, 180 and 270 degrees.
   const double k = 0.5522847498307936 * r;
