@@ -314,6 +314,52 @@ TEST(Boolean, ZeroLengthSegmentsAddNothing) {
   EXPECT_LT(u.work, 1000000);
 }
 
+TEST(Boolean, PointsOneBillionthOfScaleOffEveryEdge) {
+  // Promise 1 at its stated margin: beside every input edge of polygon operands, 1e-9 of the
+  // scale away on either side (and at least that far from every other edge), a point is in
+  // the result exactly when op(in a, in b) holds. Windings of polygons from their edges.
+  const std::vector<std::pair<std::string, std::string>> pairs = {
+      {"M0 0 H2 V2 H0 Z", "M1 1 H3 V3 H1 Z"},
+      {"M0 0 H1 V1 H0 Z", "M1 0 H2 V1 H1 Z"},
+      {"M0 0 H2 V1 H0 Z", "M1 0 H2 V2 H1 Z"},
+      {"M0 0 H1 V1 H0 Z M1 1 H2 V2 H1 Z", "M1 0 H2 V1 H1 Z M0 1 H1 V2 H0 Z"},
+      {"M0 0 H2 V2 H0 Z", "M0 0 L3 1 L1 3 Z"},
+      {"M0 0 H4 V4 H0 Z M1 1 H3 V3 H1 Z", "M0 2 L4 1 L4 3 Z"},
+      {"M0 0 L2 2 L2 0 L0 2 Z", "M0.5 0 H1.5 V2 H0.5 Z"},
+  };
+  const BooleanOperation ops[] = {BooleanOperation::union_, BooleanOperation::intersection,
+                                  BooleanOperation::difference, BooleanOperation::xor_};
+  for (const auto& [data_a, data_b] : pairs) {
+    const path::Path a = parsed_path(data_a), b = parsed_path(data_b);
+    const auto lines_a = test::polylines(a, 1), lines_b = test::polylines(b, 1);
+    for (const FillRule rule : {FillRule::nonzero, FillRule::evenodd}) {
+      for (const BooleanOperation op : ops) {
+        SCOPED_TRACE(testing::Message() << data_a << " | " << data_b << " op " << static_cast<int>(op));
+        const BooleanResult r = run(op, a, b, rule, rule);
+        const auto lines_r = test::polylines(test::result_path(r), 1);
+        for (const path::Path* source : {&a, &b}) {
+          for (const core::Curve& edge : source->segments) {
+            const Point2 d = edge.back() - edge.front();
+            const Point2 n = Point2{-d.y, d.x} / core::length(d);
+            for (const double t : {0.1, 0.3, 0.7, 0.9}) {
+              for (const double side : {-1e-9, 1e-9}) {
+                const Point2 p = core::evaluate(edge, t) + side * 4.0 * n;  // scale 4
+                const test::PolylineWinding wa = test::polyline_winding(lines_a, p);
+                const test::PolylineWinding wb = test::polyline_winding(lines_b, p);
+                // Nearer another edge than the margin (near a vertex): not the promise.
+                if (std::min(wa.distance, wb.distance) < 0.9e-9 * 4.0) continue;
+                const bool expected = keeps(op, fills(rule, wa.winding), fills(rule, wb.winding));
+                EXPECT_EQ(test::polyline_winding(lines_r, p).winding, expected ? 1 : 0)
+                    << "at " << p.x << ", " << p.y;
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
 std::string circle(double cx, double cy, double r) {
   // Four cubic arcs from the points at 0, 90, 180 and 270 degrees.
   const double k = 0.5522847498307936 * r;
