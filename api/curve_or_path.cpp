@@ -18,7 +18,7 @@ const Json* path_member(const Json& object) {
 }  // namespace
 
 std::optional<path::Path> read_path(RequestReader& reader, const Json& value,
-                                    const std::string& pointer) {
+                                    const std::string& pointer, bool allow_empty) {
   if (!value.is_string()) {
     reader.fail(pointer, "expected a string of SVG path data, e.g. \"M0 0 C1 1 2 1 3 0\"");
     return std::nullopt;
@@ -36,7 +36,7 @@ std::optional<path::Path> read_path(RequestReader& reader, const Json& value,
     }
     return std::nullopt;
   }
-  if (parse.path.segments.empty()) {
+  if (parse.path.segments.empty() && !allow_empty) {
     reader.fail(pointer, "the path draws no segment (it needs a moveto and a drawing command)");
     return std::nullopt;
   }

@@ -19,8 +19,10 @@ using CurveOrPath = std::variant<core::Curve, path::Path>;
 /// string, so the message begins with the character offset where parsing stopped, then says
 /// what was expected there ("offset 12: expected a number, found 'x'"). More segments than
 /// limits().max_path_segments, or a segment above limits().max_degree, is a limit's refusal.
+/// Path data that draws no segment (e.g. "") is refused unless `allow_empty` (a region may
+/// be empty).
 std::optional<path::Path> read_path(RequestReader& reader, const Json& value,
-                                    const std::string& pointer);
+                                    const std::string& pointer, bool allow_empty = false);
 
 /// The member `points` (a planar curve, RequestReader::curve2) or `path` (read_path) of the
 /// object at `pointer`: exactly one of the two, else a refusal at `pointer`.

@@ -40,6 +40,8 @@ inline constexpr std::array kComputeRoutes = {
     ComputeRoute{"/length", &length_route, CostBound::work_cap},
     ComputeRoute{"/bounds", &bounds_route, CostBound::request_size},
     ComputeRoute{"/nearest", &nearest_route, CostBound::work_cap},
+    ComputeRoute{"/contains", &contains_route, CostBound::work_cap},
+    ComputeRoute{"/boolean", &boolean_route, CostBound::work_cap},
 };
 
 /// The compute route of `path`, or nullptr when there is none.

@@ -49,6 +49,8 @@ const std::vector<Item>& mixed_items() {
       {"/bounds", R"({"points":[[0,0],[1,2],[2,-1],[3,1]]})"},
       {"/nearest", R"({"points":[[0,0],[1,2],[2,-1],[3,1]],"targets":[[1,1],[2,0]]})"},
       {"/nearest", R"({"points":[[0,0],[1,2]],"targets":[]})"},
+      {"/contains", R"({"path":"M0 0 H4 V4 H0 Z","fill_rule":"evenodd","targets":[[1,1],[4,2],[5,5]]})"},
+      {"/contains", R"({"curves":[[[0,0],[1,0]]],"fill_rule":"odd","targets":[[0,0]]})"},
       // Bodies that are not objects get the route's 400.
       {"/classify", "[1,2]"},
       {"/bounds", "null"},
@@ -73,7 +75,7 @@ TEST(Batch, EveryItemIsTheRoutesAnswerAloneByteForByte) {
   std::vector<int> statuses;
   for (const json& r : answer.at("responses")) statuses.push_back(r.at("status").get<int>());
   EXPECT_EQ(statuses, (std::vector<int>{200, 422, 422, 200, 422, 200, 200, 200, 422, 200, 200, 422, 200, 200, 422,
-                                        400, 400, 400, 422, 200}));
+                                        200, 422, 400, 400, 400, 422, 200}));
 }
 
 TEST(Batch, AFailedItemsPointersPointIntoItsOwnBody) {

@@ -5,9 +5,10 @@
 // work-capped routes, and the answer cap 1024 + bytes 1-2 (little-endian) modulo 4096, so
 // that it falls anywhere between one item's answer and several). The rest is either
 //   - raw: the batch's body as the service would pass it on, or
-//   - items: one item a line, its first byte the path (byte - '0' modulo the 11 paths of
+//   - items: one item a line, its first byte the path (byte - '0' modulo the 13 paths of
 //     kItemPaths: '0' /evaluate ... '7' /nearest, then /batch and two paths no item may
-//     name), the rest of the line the item's body, put into the batch as it is.
+//     name, then ';' /contains, '<' /boolean), the rest of the line the item's body, put into the batch
+//     as it is.
 //
 // Checks on every execution: everything in reply_checks.hpp for the batch itself; on a
 // 200 answer, {"responses": [...]} with one {"body": object, "status"} per item, each a
@@ -17,7 +18,7 @@
 // (then the batch holds exactly those items): the answer the contract (api/batch_route.hpp,
 // README "POST /batch") gives, computed here from each item sent alone to its route:
 //   - more items than max_batch_items: 422 at /requests;
-//   - items of /loop-area, /intersections, /length, /nearest times max_work above
+//   - items of /loop-area, /intersections, /length, /nearest, /contains, /boolean times max_work above
 //     max_batch_work: the work-cap 422;
 //   - an answer longer than max_batch_answer_bytes: 422 at the first item whose answer
 //     makes it longer (the answer of that item and those before it, closed), or at a
@@ -55,18 +56,21 @@ using bezier::fuzz::check;
 
 // The compute routes of api/openapi.yaml (what an item may name), the batch route itself,
 // and paths no route has.
-constexpr std::array<std::string_view, 11> kItemPaths = {
-    "/evaluate", "/polar",  "/classify", "/loop-area",     "/intersections", "/length",
-    "/bounds",   "/nearest", "/batch",   "/openapi.yaml", "/evaluate/"};
+// /contains and /boolean came after the others and are last, so that the seeds keep their paths.
+constexpr std::array<std::string_view, 13> kItemPaths = {
+    "/evaluate", "/polar",   "/classify", "/loop-area",    "/intersections", "/length",
+    "/bounds",   "/nearest", "/batch",    "/openapi.yaml", "/evaluate/",     "/contains",
+    "/boolean"};
 constexpr std::size_t kComputeRoutes = 8;
 
 // The routes whose items a batch charges max_work each (README, "POST /batch").
-constexpr std::array<std::string_view, 4> kChargedRoutes = {"/loop-area", "/intersections", "/length",
-                                                            "/nearest"};
+constexpr std::array<std::string_view, 6> kChargedRoutes = {"/loop-area", "/intersections", "/length",
+                                                            "/nearest", "/contains", "/boolean"};
 
 bool is_compute_route(std::string_view path) {
-  return std::find(kItemPaths.begin(), kItemPaths.begin() + kComputeRoutes, path) !=
-         kItemPaths.begin() + kComputeRoutes;
+  return path == "/contains" || path == "/boolean" ||
+         std::find(kItemPaths.begin(), kItemPaths.begin() + kComputeRoutes, path) !=
+             kItemPaths.begin() + kComputeRoutes;
 }
 
 bool is_charged(std::string_view path) {

@@ -1,0 +1,113 @@
+// POST /contains (api/openapi.yaml, DESIGN.md §8): for each target, whether a region holds
+// it, whether it is on the region's boundary, and its exact winding number.
+//
+// Request:  {"path": "<SVG path data>" or "curves": [[[x, y], ...], ...],
+//            "fill_rule": "nonzero" | "evenodd", "targets": [[x, y], ...]}
+//   path, curves, fill_rule  the region operand (api/read_region.hpp); every subpath is
+//                            closed for filling.
+//   targets                  1 to max_t_values points [x, y], finite.
+// Answer:   {"fill_rule", "results": [{"boundary", "inside", "target", "winding"}]}
+//   one result per target, in order (core/region/winding.hpp): boundary when the target is
+//   within 8 u s of the path (u = 2^-53, s the largest |coordinate| of the region's control
+//   points and the target), winding the exact winding number (null on the boundary),
+//   inside when on the boundary or filled by the fill rule.
+// Errors: 422 validation problems with JSON Pointers; 422 work-cap problem when the targets'
+// tests (each segment's box, the subdivision near the path) exceed limits.max_work.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "api/read_json.hpp"
+#include "api/read_region.hpp"
+#include "api/routes.hpp"
+#include "api/write_json.hpp"
+#include "core/region/winding.hpp"
+
+namespace bezier::api {
+
+namespace {
+
+/// `targets`: 1 to max_t_values planar points.
+std::optional<std::vector<core::Point2>> read_targets(RequestReader& reader, const Json& value) {
+  if (!value.is_array()) {
+    reader.fail("/targets", "expected an array of points [x, y]");
+    return std::nullopt;
+  }
+  if (value.empty()) {
+    reader.fail("/targets", "must not be empty");
+    return std::nullopt;
+  }
+  const auto limit = static_cast<std::size_t>(reader.limits().max_t_values);
+  if (value.size() > limit) {
+    reader.fail_limit("/targets", "at most " + std::to_string(limit) + " targets allowed, got " +
+                                      std::to_string(value.size()) + " (the max_t_values limit)");
+    return std::nullopt;
+  }
+  std::vector<core::Point2> targets;
+  targets.reserve(value.size());
+  bool all_ok = true;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const Json& p = value[i];
+    const std::string pointer = pointer_to("/targets", i);
+    if (!p.is_array() || p.size() != 2) {
+      reader.fail(pointer, "expected a point [x, y]");
+      all_ok = false;
+      continue;
+    }
+    const auto x = reader.number(p[0], pointer_to(pointer, std::size_t{0}));
+    const auto y = reader.number(p[1], pointer_to(pointer, std::size_t{1}));
+    all_ok = all_ok && x && y;
+    targets.push_back({x.value_or(0.0), y.value_or(0.0)});
+  }
+  if (!all_ok) return std::nullopt;
+  return targets;
+}
+
+}  // namespace
+
+Reply contains_route(const Json& request, const Limits& limits) {
+  RequestReader reader(limits);
+  reader.reject_unknown_fields(request, {kRegionFields[0], kRegionFields[1], kRegionFields[2], "targets"},
+                               "");
+  std::optional<region::Region> operand = read_region(reader, request, "");
+  std::optional<std::vector<core::Point2>> targets;
+  if (const Json* value = reader.required(request, "targets", "")) {
+    targets = read_targets(reader, *value);
+  }
+  if (!reader.ok()) return reader.refusal();
+
+  const region::RegionWinding prepared(*operand);
+  std::int64_t work_left = limits.max_work;
+  JsonWriter w;
+  w.begin_object();
+  w.key("fill_rule").value(to_string(operand->fill_rule));
+  w.key("results").begin_array();
+  for (const core::Point2 target : *targets) {
+    const std::optional<region::Winding> found = prepared.at(target, work_left);
+    if (!found) {
+      return problem_reply(ProblemKind::work_cap,
+                           "deciding " + std::to_string(targets->size()) + " targets against " +
+                               std::to_string(operand->path.segments.size()) +
+                               " segments needs more than the cap of " +
+                               std::to_string(limits.max_work) +
+                               " work units: send fewer targets or segments per request");
+    }
+    w.begin_object();
+    w.key("boundary").value(found->boundary);
+    w.key("inside").value(region::inside(*found, operand->fill_rule));
+    write_point(w.key("target"), target);
+    if (found->boundary) {
+      w.key("winding").null();
+    } else {
+      w.key("winding").value(static_cast<std::int64_t>(found->winding));
+    }
+    w.end_object();
+  }
+  w.end_array();
+  w.end_object();
+  return json_reply(std::move(w));
+}
+
+}  // namespace bezier::api

@@ -1,0 +1,325 @@
+#include "core/region/arrangement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <utility>
+
+#include "core/curve/derivative.hpp"
+#include "core/curve/evaluate.hpp"
+#include "core/curve/polar.hpp"
+#include "core/intersect/options.hpp"
+#include "core/path/path_intersections.hpp"
+#include "core/region/boolean_tuning.hpp"
+
+namespace bezier::region {
+
+namespace {
+
+using core::Point2;
+
+/// A place on a segment of the combined path that must be a vertex.
+struct Event {
+  std::size_t segment = 0;
+  double t = 0.0;
+  Point2 point;
+  double radius = 0.0;
+  bool segment_end = false;
+};
+
+/// Union-find over event indices.
+class Clusters {
+ public:
+  explicit Clusters(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), std::size_t{0}); }
+  std::size_t find(std::size_t i) {
+    while (parent_[i] != i) {
+      parent_[i] = parent_[parent_[i]];
+      i = parent_[i];
+    }
+    return i;
+  }
+  void join(std::size_t i, std::size_t j) {
+    i = find(i);
+    j = find(j);
+    if (i == j) return;
+    if (j < i) std::swap(i, j);
+    parent_[j] = i;  // the lower index is the root: vertices are numbered in event order
+  }
+
+ private:
+  std::vector<std::size_t> parent_;
+};
+
+bool is_point(const core::Curve& segment) {
+  return std::all_of(segment.points().begin(), segment.points().end(),
+                     [&](Point2 p) { return p == segment.front(); });
+}
+
+/// n max |P_{i+1} - P_i|: a bound on |B'(t)| over [0, 1].
+double speed_bound(const core::Curve& c) {
+  double m = 0.0;
+  for (int i = 0; i < c.degree(); ++i) m = std::max(m, core::length(c[i + 1] - c[i]));
+  return c.degree() * m;
+}
+
+double diameter_bound(const core::Curve& c) {
+  double m = 0.0;
+  for (int i = 0; i < c.degree(); ++i) m = std::max(m, core::length(c[i + 1] - c.front()));
+  return 2.0 * m;
+}
+
+/// Both operands' segments as one path, without the zero-length ones (a single point adds
+/// no boundary; inside a subpath it is a joint of its neighbours, and a subpath of points
+/// alone is left out), and where each came from.
+struct Combined {
+  path::Path path;
+  std::vector<std::pair<Operand, std::size_t>> origin;
+};
+
+void append(Combined& all, const path::Path& p, Operand source) {
+  for (const path::Subpath& sub : p.subpaths) {
+    const std::size_t first = all.path.segments.size();
+    for (std::size_t k = sub.first_segment; k < sub.first_segment + sub.segment_count; ++k) {
+      if (is_point(p.segments[k])) continue;
+      all.path.segments.push_back(p.segments[k]);
+      all.origin.emplace_back(source, k);
+    }
+    const std::size_t count = all.path.segments.size() - first;
+    if (count > 0) all.path.subpaths.push_back({first, count, sub.closed});
+  }
+}
+
+Combined combined(const path::Path& a, const path::Path* b) {
+  Combined all;
+  append(all, a, Operand::a);
+  if (b != nullptr) append(all, *b, Operand::b);
+  return all;
+}
+
+}  // namespace
+
+Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int64_t max_work) {
+  Arrangement out;
+  const Combined both = combined(a, b);
+  const path::Path& all = both.path;
+  double scale = 0.0;
+  for (const core::Curve& s : all.segments) scale = std::max(scale, core::scale(s));
+  out.scale = scale > 0.0 ? scale : 1.0;
+  const double base_radius = kVertexMergeRel * out.scale;
+
+  core::IntersectOptions options;
+  options.tolerance = kIntersectionTolerance;
+  options.max_work = max_work;
+  const path::PathSelfIntersectionResult found = path::self_intersections(all, options);
+  out.work = found.stats.work;
+  out.status = found.status;
+  if (found.status != core::IntersectStatus::ok) return out;
+
+  std::vector<double> speed(all.segments.size());
+  for (std::size_t i = 0; i < all.segments.size(); ++i) speed[i] = speed_bound(all.segments[i]);
+
+  // Events: segment ends first (so that a vertex holding one takes its point), then contacts.
+  std::vector<Event> events;
+  std::vector<std::pair<std::size_t, std::size_t>> same;  // events that are one vertex
+  for (std::size_t i = 0; i < all.segments.size(); ++i) {
+    const core::Curve& s = all.segments[i];
+    events.push_back({i, 0.0, s.front(), base_radius, true});
+    events.push_back({i, 1.0, s.back(), base_radius, true});
+  }
+  const auto add_pair = [&](std::size_t i, double t, double t_width, std::size_t j, double s,
+                            double s_width, Point2 p) {
+    const double r = base_radius + std::max(t_width * speed[i], s_width * speed[j]);
+    events.push_back({i, t, p, r, false});
+    events.push_back({j, s, p, r, false});
+    same.emplace_back(events.size() - 2, events.size() - 1);
+  };
+  for (const path::PathContact& c : found.intersections) {
+    const core::Intersection& x = c.intersection;
+    add_pair(c.segment_t, x.t, x.t_interval.width(), c.segment_s, x.s, x.s_interval.width(),
+             x.point);
+  }
+  const auto add_overlap = [&](std::size_t i, std::size_t j, const core::Overlap& o) {
+    const double s_at_lo = o.reversed ? o.s_interval.hi : o.s_interval.lo;
+    const double s_at_hi = o.reversed ? o.s_interval.lo : o.s_interval.hi;
+    add_pair(i, o.t_interval.lo, 0.0, j, s_at_lo, 0.0,
+             core::evaluate(all.segments[i], o.t_interval.lo));
+    add_pair(i, o.t_interval.hi, 0.0, j, s_at_hi, 0.0,
+             core::evaluate(all.segments[i], o.t_interval.hi));
+  };
+  for (const path::PathOverlap& o : found.overlaps) add_overlap(o.segment_t, o.segment_s, o.overlap);
+  for (const path::SegmentSelfIntersections& w : found.within_segments) {
+    for (const core::SelfIntersection& p : w.result.pairs) {
+      add_pair(w.segment, p.t, 0.0, w.segment, p.s, 0.0, p.point);
+    }
+    for (const core::Overlap& o : w.result.overlaps) add_overlap(w.segment, w.segment, o);
+  }
+
+  // Clusters: the pairs above, and every two events within the sum of their radii (a sweep
+  // over x; the largest radius bounds how far to look).
+  Clusters clusters(events.size());
+  for (const auto& [i, j] : same) clusters.join(i, j);
+  double max_radius = 0.0;
+  for (const Event& e : events) max_radius = std::max(max_radius, e.radius);
+  std::vector<std::size_t> by_x(events.size());
+  std::iota(by_x.begin(), by_x.end(), std::size_t{0});
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t i, std::size_t j) {
+    return events[i].point.x < events[j].point.x;
+  });
+  for (std::size_t k = 0; k < by_x.size(); ++k) {
+    const Event& e = events[by_x[k]];
+    for (std::size_t l = k + 1; l < by_x.size(); ++l) {
+      const Event& f = events[by_x[l]];
+      if (f.point.x - e.point.x > e.radius + max_radius) break;
+      const double reach = e.radius + f.radius;
+      if (std::fabs(f.point.x - e.point.x) <= reach && std::fabs(f.point.y - e.point.y) <= reach &&
+          core::length(f.point - e.point) <= reach) {
+        clusters.join(by_x[k], by_x[l]);
+      }
+    }
+  }
+
+  // Vertices, numbered by their first event; a segment end's point wins.
+  std::vector<std::size_t> vertex_of_root(events.size(), SIZE_MAX);
+  std::vector<std::size_t> vertex_of(events.size());
+  std::vector<bool> from_end;
+  std::vector<double> vertex_radius;
+  for (std::size_t e = 0; e < events.size(); ++e) {
+    const std::size_t root = clusters.find(e);
+    if (vertex_of_root[root] == SIZE_MAX) {
+      vertex_of_root[root] = out.vertices.size();
+      out.vertices.push_back(events[e].point);
+      from_end.push_back(events[e].segment_end);
+      vertex_radius.push_back(events[e].radius);
+    }
+    const std::size_t v = vertex_of_root[root];
+    vertex_of[e] = v;
+    vertex_radius[v] = std::max(vertex_radius[v], events[e].radius);
+    if (events[e].segment_end && !from_end[v]) {
+      out.vertices[v] = events[e].point;
+      from_end[v] = true;
+    }
+  }
+
+  // Cuts per segment, then the edges between consecutive cuts.
+  std::vector<std::vector<std::pair<double, std::size_t>>> cuts(all.segments.size());
+  for (std::size_t e = 0; e < events.size(); ++e) {
+    cuts[events[e].segment].emplace_back(events[e].t, vertex_of[e]);
+  }
+  // Edges of one segment in order, for the overlap groups below.
+  std::vector<std::vector<std::size_t>> edges_of(all.segments.size());
+  for (std::size_t i = 0; i < all.segments.size(); ++i) {
+    auto& list = cuts[i];
+    if (list.empty()) continue;
+    std::sort(list.begin(), list.end());
+    const core::Curve& seg = all.segments[i];
+    // Merge consecutive cuts at one vertex, keeping an exact end parameter (0 or 1).
+    std::vector<std::pair<double, std::size_t>> kept;
+    for (const auto& cut : list) {
+      if (!kept.empty() && kept.back().second == cut.second) {
+        const double lo = kept.back().first;
+        const core::Curve between = core::portion(seg, lo, cut.first);
+        if (diameter_bound(between) <= 4.0 * vertex_radius[cut.second]) {
+          if (cut.first == 1.0) kept.back().first = 1.0;
+          continue;
+        }
+      }
+      if (!kept.empty() && kept.back().first == cut.first) continue;
+      kept.push_back(cut);
+    }
+    for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
+      ArrangementEdge edge;
+      edge.source = both.origin[i].first;
+      edge.segment = both.origin[i].second;
+      edge.t0 = kept[k].first;
+      edge.t1 = kept[k + 1].first;
+      edge.from = kept[k].second;
+      edge.to = kept[k + 1].second;
+      edge.exact = core::portion(seg, edge.t0, edge.t1);
+      std::vector<Point2> pts(edge.exact.points().begin(), edge.exact.points().end());
+      pts.front() = out.vertices[edge.from];
+      pts.back() = out.vertices[edge.to];
+      edge.piece = core::Curve(std::move(pts));
+      edge.group = out.edges.size();
+      edges_of[i].push_back(out.edges.size());
+      out.edges.push_back(std::move(edge));
+    }
+  }
+
+  // Coincident groups: within each overlap, the pieces of both segments with the same ends.
+  Clusters groups(out.edges.size());
+  const auto join_overlap = [&](std::size_t i, std::size_t j, const core::Overlap& o) {
+    const double slack = 2.0 * kIntersectionTolerance;
+    for (std::size_t p : edges_of[i]) {
+      const ArrangementEdge& ep = out.edges[p];
+      if (ep.t0 < o.t_interval.lo - slack || ep.t1 > o.t_interval.hi + slack) continue;
+      for (std::size_t q : edges_of[j]) {
+        if (q == p) continue;
+        const ArrangementEdge& eq = out.edges[q];
+        if (eq.t0 < o.s_interval.lo - slack || eq.t1 > o.s_interval.hi + slack) continue;
+        const bool same_ends = (ep.from == eq.from && ep.to == eq.to) ||
+                               (ep.from == eq.to && ep.to == eq.from);
+        if (same_ends) groups.join(p, q);
+      }
+    }
+  };
+  for (const path::PathOverlap& o : found.overlaps) join_overlap(o.segment_t, o.segment_s, o.overlap);
+  for (const path::SegmentSelfIntersections& w : found.within_segments) {
+    for (const core::Overlap& o : w.result.overlaps) join_overlap(w.segment, w.segment, o);
+  }
+  // Edges between the same two vertices that stay within the ray clearance of each other
+  // (a lens thinner than rounding, e.g. between two crossings of curves that touch to within
+  // a few ulps) are one edge for every later decision: no ray can tell their sides apart.
+  const double clearance = kRayClearanceRel * out.scale;
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> by_ends;
+  for (std::size_t e = 0; e < out.edges.size(); ++e) {
+    const ArrangementEdge& edge = out.edges[e];
+    if (edge.from == edge.to) continue;
+    by_ends[{std::min(edge.from, edge.to), std::max(edge.from, edge.to)}].push_back(e);
+  }
+  for (const auto& [ends, list] : by_ends) {
+    for (std::size_t x = 0; x < list.size(); ++x) {
+      for (std::size_t y = x + 1; y < list.size(); ++y) {
+        const ArrangementEdge& p = out.edges[list[x]];
+        const ArrangementEdge& q = out.edges[list[y]];
+        const bool flip = p.from != q.from;
+        bool near = true;
+        for (const double t : {0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875}) {
+          const Point2 at_p = core::evaluate(p.exact, t);
+          const Point2 at_q = core::evaluate(q.exact, flip ? 1.0 - t : t);
+          near = near && core::length(at_p - at_q) <= clearance;
+        }
+        if (near) groups.join(list[x], list[y]);
+      }
+    }
+  }
+  std::vector<std::size_t> group_of_root(out.edges.size(), SIZE_MAX);
+  for (std::size_t e = 0; e < out.edges.size(); ++e) {
+    const std::size_t root = groups.find(e);
+    if (group_of_root[root] == SIZE_MAX) {
+      group_of_root[root] = out.groups.size();
+      out.groups.push_back({e, {}, {0, 0}});
+    }
+    CoincidentGroup& g = out.groups[group_of_root[root]];
+    out.edges[e].group = group_of_root[root];
+    g.edges.push_back(e);
+    // Edges are in segment order, a before b: the group's first edge of a comes first.
+  }
+  for (CoincidentGroup& g : out.groups) {
+    const ArrangementEdge& r = out.edges[g.representative];
+    for (std::size_t e : g.edges) {
+      const ArrangementEdge& x = out.edges[e];
+      // Along the representative when it leaves the same vertex; for a loop (both ends at
+      // one vertex) when its tangent at the middle points the same way.
+      const bool along =
+          (x.from != x.to && r.from != r.to)
+              ? x.from == r.from
+              : core::dot(core::derivatives_at(x.exact, 0.5, 1).front(),
+                          core::derivatives_at(r.exact, 0.5, 1).front()) > 0.0;
+      g.multiplicity[static_cast<std::size_t>(x.source)] += along ? 1 : -1;
+    }
+  }
+  return out;
+}
+
+}  // namespace bezier::region

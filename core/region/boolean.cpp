@@ -1,0 +1,102 @@
+#include "core/region/boolean.hpp"
+
+#include <cmath>
+#include <utility>
+
+#include "core/curve/area.hpp"
+#include "core/path/path_area.hpp"
+#include "core/region/contour_chain.hpp"
+#include "core/region/side_winding.hpp"
+
+namespace bezier::region {
+
+namespace {
+
+BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::int64_t max_work) {
+  BooleanResult result;
+  const Arrangement arrangement =
+      build_arrangement(a.path, b != nullptr ? &b->path : nullptr, max_work);
+  result.work = arrangement.work;
+  if (arrangement.status != core::IntersectStatus::ok) {
+    result.status = BooleanStatus::work_cap_reached;
+    return result;
+  }
+  WorkBudget budget{arrangement.work, max_work};
+  const FillRule rule_b = b != nullptr ? b->fill_rule : FillRule::nonzero;
+  const auto inside = [&](const std::array<int, 2>& w) {
+    return keeps(op, fills(a.fill_rule, w[0]), fills(rule_b, w[1]));
+  };
+
+  std::vector<DirectedEdge> kept;
+  std::vector<bool> kept_reversed;
+  for (std::size_t g = 0; g < arrangement.groups.size(); ++g) {
+    const SideWindingResult sides = side_windings(arrangement, g, budget);
+    if (sides.status == SideWindingStatus::work_cap_reached) {
+      result.work = budget.spent;
+      result.status = BooleanStatus::work_cap_reached;
+      return result;
+    }
+    if (sides.status == SideWindingStatus::unclear) {
+      result.work = budget.spent;
+      result.status = BooleanStatus::unresolved;
+      return result;
+    }
+    const bool left = inside(sides.windings.left);
+    const bool right = inside(sides.windings.right);
+    if (left == right) continue;
+    const std::size_t e = arrangement.groups[g].representative;
+    const ArrangementEdge& edge = arrangement.edges[e];
+    if (left) {
+      kept.push_back({edge.from, edge.to, edge.piece, e});
+    } else {
+      kept.push_back({edge.to, edge.from, core::reversed(edge.piece), e});
+    }
+    kept_reversed.push_back(!left);
+  }
+  if (!budget.charge(static_cast<std::int64_t>(kept.size()) * 16)) {
+    result.work = budget.spent;
+    result.status = BooleanStatus::work_cap_reached;
+    return result;
+  }
+  const auto chains = chain_contours(kept, arrangement.vertices.size());
+  result.work = budget.spent;
+  if (!chains) {
+    result.status = BooleanStatus::unresolved;
+    return result;
+  }
+  const double zero_area = 0x1p-80 * arrangement.scale * arrangement.scale;
+  for (const std::vector<std::size_t>& chain : *chains) {
+    path::Path contour_path;
+    for (std::size_t k : chain) contour_path.segments.push_back(kept[k].curve);
+    contour_path.subpaths.push_back({0, chain.size(), true});
+    const double area = path::closed_subpath_area(contour_path, contour_path.subpaths.front());
+    if (!(std::fabs(area) > zero_area)) continue;
+    ResultContour contour;
+    contour.first_segment = result.segments.size();
+    for (std::size_t k : chain) {
+      const ArrangementEdge& edge = arrangement.edges[kept[k].tag];
+      const bool backwards = kept_reversed[k];
+      result.segments.push_back({edge.source, edge.segment, backwards ? edge.t1 : edge.t0,
+                                 backwards ? edge.t0 : edge.t1, kept[k].curve});
+    }
+    contour.end_segment = result.segments.size();
+    contour.area = area;
+    result.area += area;
+    result.contours.push_back(contour);
+  }
+  return result;
+}
+
+}  // namespace
+
+BooleanResult boolean_operation(BooleanOperation op, const Region& a, const Region& b,
+                                std::int64_t max_work) {
+  if (op == BooleanOperation::simplify) return run(op, a, nullptr, max_work);
+  return run(op, a, &b, max_work);
+}
+
+BooleanResult simplify(const Region& a, std::int64_t max_work) {
+  return run(BooleanOperation::simplify, a, nullptr, max_work);
+}
+
+}  // namespace bezier::region

@@ -1,0 +1,170 @@
+#include "core/region/side_winding.hpp"
+
+#include <cmath>
+#include <span>
+#include <vector>
+
+#include "core/curve/derivative.hpp"
+#include "core/curve/evaluate.hpp"
+#include "core/curve/subdivide.hpp"
+#include "core/region/boolean_tuning.hpp"
+
+namespace bezier::region {
+
+namespace {
+
+using core::Point2;
+
+/// The turns tried from the left normal, radians: alternating sides, none a simple
+/// fraction of a right angle so that a ray rarely runs along axis-aligned or diagonal edges.
+constexpr double kTurns[] = {0.0, 0.613, -0.613, 1.171, -1.171, 0.307, -0.307,
+                             0.919, -0.919, 1.397, -1.397, 0.151, -0.151};
+
+/// Which end of a piece is the ray's origin (the representative's halves).
+enum class OriginEnd { none, front, back };
+
+struct Ray {
+  Point2 origin;
+  Point2 direction;
+  double clearance = 0.0;
+};
+
+struct Count {
+  int crossings = 0;
+  bool clear = true;
+  bool out_of_work = false;
+};
+
+void count_crossings(const core::Curve& piece, const Ray& ray, OriginEnd origin, bool check_ends,
+                     int depth, Count& count, WorkBudget& budget) {
+  if (!count.clear || count.out_of_work) return;
+  const int n = piece.degree();
+  if (!budget.charge(n + 1)) {
+    count.out_of_work = true;
+    return;
+  }
+  const auto pts = piece.points();
+  double min_c = INFINITY, max_c = -INFINITY, min_r = INFINITY, max_r = -INFINITY;
+  bool rising = true, falling = true;
+  double previous = 0.0;
+  for (int i = 0; i <= n; ++i) {
+    const Point2 v = pts[static_cast<std::size_t>(i)] - ray.origin;
+    const double c = core::cross(ray.direction, v);
+    const double r = core::dot(ray.direction, v);
+    min_c = std::fmin(min_c, c);
+    max_c = std::fmax(max_c, c);
+    min_r = std::fmin(min_r, r);
+    max_r = std::fmax(max_r, r);
+    if (i > 0) {
+      rising = rising && c >= previous;
+      falling = falling && c <= previous;
+    }
+    previous = c;
+  }
+  const Point2 v0 = pts.front() - ray.origin, vn = pts.back() - ray.origin;
+  const double c0 = core::cross(ray.direction, v0), cn = core::cross(ray.direction, vn);
+  const double eps = ray.clearance;
+  if (check_ends) {
+    // The ray through (or beside) a vertex: which side the edges leave it is not decided here.
+    if (std::fabs(c0) <= eps && core::dot(ray.direction, v0) > -eps) count.clear = false;
+    if (std::fabs(cn) <= eps && core::dot(ray.direction, vn) > -eps) count.clear = false;
+    if (!count.clear) return;
+  }
+  if (origin == OriginEnd::front || origin == OriginEnd::back) {
+    // c is 0 at the origin end; a monotone c has no other zero.
+    if ((rising || falling) && max_c - min_c > 0.0) return;
+  } else {
+    if (min_c > 0.0 || max_c < 0.0) return;
+    if (max_r < -eps) return;
+    if ((rising || falling) && min_r > eps) {
+      if (c0 < 0.0 && cn > 0.0) count.crossings += 1;
+      if (c0 > 0.0 && cn < 0.0) count.crossings -= 1;
+      if (c0 == 0.0 || cn == 0.0) count.clear = false;  // a zero at a split point
+      return;
+    }
+    if ((rising || falling) && (c0 > 0.0) == (cn > 0.0) && c0 != 0.0 && cn != 0.0) return;
+  }
+  if (depth >= kRayMaxDepth) {
+    count.clear = false;
+    return;
+  }
+  if (!budget.charge(static_cast<std::int64_t>(n + 1) * (n + 1))) {
+    count.out_of_work = true;
+    return;
+  }
+  // Halve, away from a point on the ray's line so that no crossing sits at the split.
+  double t = 0.5;
+  for (const double candidate : {0.5, 0.4375, 0.5625, 0.40625}) {
+    t = candidate;
+    if (std::fabs(core::cross(ray.direction, core::evaluate(piece, t) - ray.origin)) > eps) break;
+  }
+  const core::Split<Point2> halves = core::subdivide(piece, t);
+  count_crossings(halves.left, ray, origin == OriginEnd::front ? OriginEnd::front : OriginEnd::none,
+                  false, depth + 1, count, budget);
+  count_crossings(halves.right, ray, origin == OriginEnd::back ? OriginEnd::back : OriginEnd::none,
+                  false, depth + 1, count, budget);
+}
+
+/// The first nonzero derivative of the curve at t (its tangent direction there).
+Point2 tangent_at(const core::Curve& curve, double t) {
+  const std::vector<Point2> d = core::derivatives_at(curve, t, curve.degree());
+  for (const Point2 v : d) {
+    if (v.x != 0.0 || v.y != 0.0) return v;
+  }
+  return curve.back() - curve.front();
+}
+
+}  // namespace
+
+SideWindingResult side_windings(const Arrangement& arrangement, std::size_t group,
+                                WorkBudget& budget) {
+  SideWindingResult result;
+  const CoincidentGroup& g = arrangement.groups[group];
+  const ArrangementEdge& rep = arrangement.edges[g.representative];
+  const core::Split<Point2> halves = core::subdivide(rep.exact, 0.5);
+  const Point2 middle = halves.left.back();
+  const Point2 tangent = tangent_at(rep.exact, 0.5);
+  const double norm = core::length(tangent);
+  if (!(norm > 0.0)) {
+    result.status = SideWindingStatus::unclear;
+    return result;
+  }
+  const Point2 normal{-tangent.y / norm, tangent.x / norm};
+  for (const double turn : kTurns) {
+    const double c = std::cos(turn), s = std::sin(turn);
+    const Ray ray{middle, {c * normal.x - s * normal.y, s * normal.x + c * normal.y},
+                  kRayClearanceRel * arrangement.scale};
+    std::array<int, 2> left{0, 0};
+    bool clear = true;
+    for (std::size_t e = 0; e < arrangement.edges.size() && clear; ++e) {
+      const ArrangementEdge& edge = arrangement.edges[e];
+      if (edge.group == group) continue;
+      Count count;
+      count_crossings(edge.piece, ray, OriginEnd::none, true, 0, count, budget);
+      if (count.out_of_work) {
+        result.status = SideWindingStatus::work_cap_reached;
+        return result;
+      }
+      clear = count.clear;
+      left[static_cast<std::size_t>(edge.source)] += count.crossings;
+    }
+    if (!clear) continue;
+    Count own;
+    count_crossings(halves.left, ray, OriginEnd::back, false, 0, own, budget);
+    count_crossings(halves.right, ray, OriginEnd::front, false, 0, own, budget);
+    if (own.out_of_work) {
+      result.status = SideWindingStatus::work_cap_reached;
+      return result;
+    }
+    if (!own.clear) continue;
+    for (std::size_t k = 0; k < 2; ++k) {
+      result.windings.left[k] = left[k] + g.multiplicity[k] * own.crossings;
+      result.windings.right[k] = result.windings.left[k] - g.multiplicity[k];
+    }
+    return result;
+  }
+  result.status = SideWindingStatus::unclear;
+  return result;
+}
+
+}  // namespace bezier::region

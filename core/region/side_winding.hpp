@@ -1,0 +1,64 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+#include "core/region/arrangement.hpp"
+
+namespace bezier::region {
+
+/// The winding numbers of both operands just left and just right of a coincident group (left
+/// of its representative edge's direction).
+struct SideWindings {
+  std::array<int, 2> left{0, 0};
+  std::array<int, 2> right{0, 0};
+};
+
+/// Work spent so far against a cap (core/intersect/work_cost.hpp's unit).
+struct WorkBudget {
+  std::int64_t spent = 0;
+  std::int64_t cap = 0;
+  /// Charges `units`; false once the cap is passed.
+  bool charge(std::int64_t units) noexcept {
+    spent += units;
+    return spent <= cap;
+  }
+};
+
+/// What side_windings found.
+enum class SideWindingStatus { ok, unclear, work_cap_reached };
+
+struct SideWindingResult {
+  SideWindings windings;
+  SideWindingStatus status = SideWindingStatus::ok;
+};
+
+/// Each operand's winding number on both sides of group g, by a ray from the middle m of the
+/// representative edge (its exact piece at t = 1/2) into its left side.
+///
+/// The winding number of a closed path about a point p is the signed count of the path's
+/// crossings of any half-line from p: +1 where the path crosses it from right to left
+/// (cross(d, B'(t)) > 0 for the ray direction d). The arrangement's edges meet only at
+/// vertices and coincide only inside a group, so the ray from m meets no edge at m except
+/// those of g. Its crossings with the other edges give each operand's winding just left of g
+/// (the open half-line counts the point m + eps d for small eps); the representative's own
+/// crossings away from m count once for every edge of g (they are the same point set),
+/// signed by the multiplicity; the right side differs by the multiplicity (crossing g from
+/// right to left adds it).
+///
+/// Counting crossings of one edge: the edge's control points give c_i = cross(d, P_i - m)
+/// (the signed distance to the ray's line, in Bernstein form) and r_i = dot(d, P_i - m)
+/// (the position along it). No crossing when all c_i have one sign or every r_i < 0; one
+/// crossing, signed by c_n - c_0, when the c_i are monotone with c_0, c_n of opposite signs
+/// and every r_i > 0; otherwise the edge is halved (de Casteljau) and both halves counted.
+/// A ray is unclear, and the next direction is tried, when it passes within
+/// kRayClearanceRel * scale of a vertex or of its origin, or a piece stays undecided after
+/// kRayMaxDepth halvings (a tangency to the ray). Directions: the left normal of the
+/// representative at m, then turned by fixed angles up to +-1.4 radians (still on the left).
+/// Each control-point pass is charged (n + 1) units and each halving (n + 1)^2.
+[[nodiscard]] SideWindingResult side_windings(const Arrangement& arrangement, std::size_t group,
+                                              WorkBudget& budget);
+
+}  // namespace bezier::region
