@@ -108,10 +108,11 @@ TEST(ContainsRoute, Limits) {
 }
 
 TEST(ContainsRoute, WorkCap) {
-  // A target on the closing line at a parameter that is no short binary fraction takes
-  // about fifty levels of subdivision to show that it is on the boundary.
+  // A target on the closing line: both segments' boxes hold it, so both are subdivided in
+  // double-double (a cubic piece costs 14 (3 + 1)^2 = 224 units) to show it is on the
+  // boundary.
   Limits tight;
-  tight.max_work = 1000;
+  tight.max_work = 100;
   const Reply r = handle("/contains", R"({"path":"M0 0 C0 4 4 4 4 0 Z","targets":[[0.1,0]]})", tight);
   EXPECT_EQ(r.status, 422);
   EXPECT_TRUE(r.limit_reached);
