@@ -53,7 +53,9 @@ int chord_crossing(bool a_below, bool b_below) {
 }
 
 /// c, a difference of exact values rounded once, certainly exceeds m >= 0.
-bool certainly_above(double c, double m) { return c > m * (1.0 + 4.0 * u) + kTiny; }
+bool certainly_above(double c, double m) {
+  return c > m * (1.0 + 4.0 * u) + kTiny;
+}
 
 /// de Casteljau's subdivision of `parent` at t = 1/2 in double-double: `left` takes the
 /// first half, `right` the second; left's last point and right's first are the same value.
@@ -104,7 +106,8 @@ PointAndTangent casteljau(std::span<const Point2> w, double t) {
 /// the target on the piece, estimated from `t` (the chord's nearest parameter) by a few
 /// Gauss-Newton steps on (B(t) - target) · B'(t), then B(t) - target evaluated from the
 /// differences `w` (each within `e_max` of the exact piece's) with its rounding bound.
-bool foot_within_band(std::span<const Point2> w, double t, double w_max, double e_max, double band) {
+bool foot_within_band(std::span<const Point2> w, double t, double w_max, double e_max,
+                      double band) {
   constexpr int kSteps = 3;
   for (int step = 0; step < kSteps; ++step) {
     const PointAndTangent at = casteljau(w, t);
@@ -272,7 +275,8 @@ SegmentOutcome refine_segment(std::span<const Point2> points, Point2 target, dou
 
 RegionWinding::RegionWinding(const Region& region) {
   double scale = 0.0;
-  for (const core::Curve& segment : region.path.segments) scale = std::fmax(scale, core::scale(segment));
+  for (const core::Curve& segment : region.path.segments)
+    scale = std::fmax(scale, core::scale(segment));
   exponent_ = scale > 0.0 ? core::exponent_of(scale) : 0;
   const core::PowerOfTwo factor(-exponent_);
   offsets_.reserve(region.path.segments.size() + 1);
@@ -310,7 +314,8 @@ std::optional<Winding> RegionWinding::at(Point2 target, std::int64_t& work_left)
         certainly_above(q.y - box.y_max, band)) {
       continue;
     }
-    const std::span<const Point2> points(points_.data() + offsets_[k], offsets_[k + 1] - offsets_[k]);
+    const std::span<const Point2> points(points_.data() + offsets_[k],
+                                         offsets_[k + 1] - offsets_[k]);
     if (certainly_above(box.x_min - q.x, band)) {
       crossings += chord_crossing(points.front().y <= q.y, points.back().y <= q.y);
       continue;

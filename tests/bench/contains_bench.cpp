@@ -33,7 +33,9 @@ bezier::region::Region wavy_outline() {
     const double r = 1 + 0.15 * std::sin(5 * theta) + 0.05 * std::cos(11 * theta);
     on.push_back({r * std::cos(theta), r * std::sin(theta)});
   }
-  const auto at = [&](int k) { return on[static_cast<std::size_t>((k + kOutlineSegments) % kOutlineSegments)]; };
+  const auto at = [&](int k) {
+    return on[static_cast<std::size_t>((k + kOutlineSegments) % kOutlineSegments)];
+  };
   std::vector<Curve> curves;
   for (int k = 0; k < kOutlineSegments; ++k) {
     const Point2 p0 = at(k), p1 = at(k + 1);
@@ -44,7 +46,8 @@ bezier::region::Region wavy_outline() {
   return bezier::region::region_from_curves(std::move(curves), bezier::region::FillRule::nonzero);
 }
 
-void run(benchmark::State& state, const bezier::region::Region& region, const std::vector<Point2>& targets) {
+void run(benchmark::State& state, const bezier::region::Region& region,
+         const std::vector<Point2>& targets) {
   const bezier::region::RegionWinding prepared(region);
   std::int64_t inside = 0;
   for (auto _ : state) {
