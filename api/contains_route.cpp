@@ -69,8 +69,8 @@ std::optional<std::vector<core::Point2>> read_targets(RequestReader& reader, con
 
 Reply contains_route(const Json& request, const Limits& limits) {
   RequestReader reader(limits);
-  reader.reject_unknown_fields(request, {kRegionFields[0], kRegionFields[1], kRegionFields[2], "targets"},
-                               "");
+  reader.reject_unknown_fields(
+      request, {kRegionFields[0], kRegionFields[1], kRegionFields[2], "targets"}, "");
   std::optional<region::Region> operand = read_region(reader, request, "");
   std::optional<std::vector<core::Point2>> targets;
   if (const Json* value = reader.required(request, "targets", "")) {

@@ -26,8 +26,8 @@ std::optional<std::vector<core::Curve>> read_curves(RequestReader& reader, const
   }
   const auto limit = static_cast<std::size_t>(reader.limits().max_path_segments);
   if (value.size() > limit) {
-    reader.fail_limit(pointer, "more than " + std::to_string(limit) +
-                                   " curves (the max_path_segments limit)");
+    reader.fail_limit(
+        pointer, "more than " + std::to_string(limit) + " curves (the max_path_segments limit)");
     return std::nullopt;
   }
   std::vector<core::Curve> curves;
@@ -72,9 +72,9 @@ std::optional<region::Region> read_region(RequestReader& reader, const Json& obj
   region::FillRule rule = region::FillRule::nonzero;
   bool rule_ok = true;
   if (const Json* value = member(object, "fill_rule")) {
-    const auto name = reader.one_of(*value, pointer_to(pointer, "fill_rule"),
-                                    {to_string(region::FillRule::nonzero),
-                                     to_string(region::FillRule::evenodd)});
+    const auto name =
+        reader.one_of(*value, pointer_to(pointer, "fill_rule"),
+                      {to_string(region::FillRule::nonzero), to_string(region::FillRule::evenodd)});
     rule_ok = name.has_value();
     if (name && *name == to_string(region::FillRule::evenodd)) rule = region::FillRule::evenodd;
   }

@@ -24,7 +24,8 @@ Region region_from_path(path::Path path, FillRule rule) {
     path::Subpath closed{region.path.segments.size(), subpath.segment_count, true};
     const bool needs_line = !ends_at_start(path, subpath);
     const core::Point2 start = path.segments[subpath.first_segment].front();
-    const core::Point2 end = path.segments[subpath.first_segment + subpath.segment_count - 1].back();
+    const core::Point2 end =
+        path.segments[subpath.first_segment + subpath.segment_count - 1].back();
     for (std::size_t k = 0; k < subpath.segment_count; ++k) {
       region.path.segments.push_back(std::move(path.segments[subpath.first_segment + k]));
     }

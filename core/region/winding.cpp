@@ -53,7 +53,9 @@ int chord_crossing(bool a_below, bool b_below) {
 }
 
 /// c, a difference of exact values rounded once, certainly exceeds m >= 0.
-bool certainly_above(double c, double m) { return c > m * (1.0 + 4.0 * u) + kTiny; }
+bool certainly_above(double c, double m) {
+  return c > m * (1.0 + 4.0 * u) + kTiny;
+}
 
 /// de Casteljau's subdivision of `parent` at t = 1/2 in double-double: `left` takes the
 /// first half, `right` the second; left's last point and right's first are the same value.
@@ -73,6 +75,51 @@ void halve(std::span<const DdPoint> parent, std::span<DdPoint> left, std::span<D
     right[n - level] = row[n - level];
   }
   right[0] = left[n];
+}
+
+/// The point at `t` of the curve with control points `w` (doubles), and its derivative, by
+/// de Casteljau's algorithm. Each of its n levels of (1 - t) a + t b, with 1 - t rounded,
+/// rounds by at most about 3 u max|w_i| (the convex combinations never exceed max|w_i|).
+struct PointAndTangent {
+  Point2 point, tangent;
+};
+
+PointAndTangent casteljau(std::span<const Point2> w, double t) {
+  core::SmallArray<Point2> row(std::span<const Point2>(w.data(), w.size()));
+  const std::size_t n = w.size() - 1;
+  const double r = 1.0 - t;
+  Point2 a = row[0], b = row[0];
+  for (std::size_t level = 1; level <= n; ++level) {
+    if (level == n) {
+      a = row[0];
+      b = row[1];
+    }
+    for (std::size_t i = 0; i + level <= n; ++i) {
+      row[i] = {r * row[i].x + t * row[i + 1].x, r * row[i].y + t * row[i + 1].y};
+    }
+  }
+  const double d = static_cast<double>(n);
+  return {row[0], {d * (b.x - a.x), d * (b.y - a.y)}};
+}
+
+/// Whether a point of the piece is certainly within the band of the target: the foot of
+/// the target on the piece, estimated from `t` (the chord's nearest parameter) by a few
+/// Gauss-Newton steps on (B(t) - target) · B'(t), then B(t) - target evaluated from the
+/// differences `w` (each within `e_max` of the exact piece's) with its rounding bound.
+bool foot_within_band(std::span<const Point2> w, double t, double w_max, double e_max,
+                      double band) {
+  constexpr int kSteps = 3;
+  for (int step = 0; step < kSteps; ++step) {
+    const PointAndTangent at = casteljau(w, t);
+    const double speed2 = at.tangent.x * at.tangent.x + at.tangent.y * at.tangent.y;
+    if (!(speed2 > 0.0)) break;
+    const double next = t - (at.point.x * at.tangent.x + at.point.y * at.tangent.y) / speed2;
+    t = std::clamp(next, 0.0, 1.0);
+  }
+  const Point2 p = casteljau(w, t).point;
+  const double n = static_cast<double>(w.size() - 1);
+  const double error = e_max + 4.0 * n * u * w_max + kTiny;
+  return (std::hypot(p.x, p.y) * (1.0 + 4.0 * u) + 2.0 * error) * (1.0 + 4.0 * u) <= band;
 }
 
 enum class PieceOutcome { settled, boundary, subdivide };
@@ -114,13 +161,13 @@ PieceTest test_piece(std::span<const DdPoint> q, Point2 target, double band, dou
   if (!out.far) {
     out.far = x_lo > band || x_hi < -band || y_lo > band || y_hi < -band;
   }
+  // The chord's nearest point to the target, at t on the chord.
+  const Point2 a = w[0], d = {w[n].x - w[0].x, w[n].y - w[0].y};
+  const double dd_len = d.x * d.x + d.y * d.y;
+  const double t = std::clamp(dd_len > 0.0 ? -(a.x * d.x + a.y * d.y) / dd_len : 0.0, 0.0, 1.0);
   if (!out.far) {
     // The direction from the target to the nearest point of the chord: every widened
     // control point beyond the band along it puts the whole hull beyond the band.
-    const Point2 a = w[0], d = {w[n].x - w[0].x, w[n].y - w[0].y};
-    const double dd_len = d.x * d.x + d.y * d.y;
-    double t = dd_len > 0.0 ? -(a.x * d.x + a.y * d.y) / dd_len : 0.0;
-    t = std::clamp(t, 0.0, 1.0);
     const Point2 v = {a.x + t * d.x, a.y + t * d.y};
     if (v.x != 0.0 || v.y != 0.0) {
       const double norm = std::hypot(v.x, v.y) * (1.0 + 4.0 * u);
@@ -143,6 +190,18 @@ PieceTest test_piece(std::span<const DdPoint> q, Point2 target, double band, dou
         out.outcome = PieceOutcome::boundary;
         return out;
       }
+    }
+    // So is the piece's point nearest to the target, when found well enough: a target on
+    // the path is shown so after a few levels, where the rounding of the piece's points
+    // relative to the target has fallen below the band.
+    double w_max = 0.0, e_max = 0.0;
+    for (std::size_t i = 0; i <= n; ++i) {
+      w_max = std::fmax(w_max, std::fmax(std::fabs(w[i].x), std::fabs(w[i].y)));
+      e_max = std::fmax(e_max, e[i]);
+    }
+    if (foot_within_band(std::span<const Point2>(w.data(), n + 1), t, w_max, e_max, band)) {
+      out.outcome = PieceOutcome::boundary;
+      return out;
     }
   }
   out.outcome = crossing_known && out.far ? PieceOutcome::settled : PieceOutcome::subdivide;
@@ -216,7 +275,8 @@ SegmentOutcome refine_segment(std::span<const Point2> points, Point2 target, dou
 
 RegionWinding::RegionWinding(const Region& region) {
   double scale = 0.0;
-  for (const core::Curve& segment : region.path.segments) scale = std::fmax(scale, core::scale(segment));
+  for (const core::Curve& segment : region.path.segments)
+    scale = std::fmax(scale, core::scale(segment));
   exponent_ = scale > 0.0 ? core::exponent_of(scale) : 0;
   const core::PowerOfTwo factor(-exponent_);
   offsets_.reserve(region.path.segments.size() + 1);
@@ -254,7 +314,8 @@ std::optional<Winding> RegionWinding::at(Point2 target, std::int64_t& work_left)
         certainly_above(q.y - box.y_max, band)) {
       continue;
     }
-    const std::span<const Point2> points(points_.data() + offsets_[k], offsets_[k + 1] - offsets_[k]);
+    const std::span<const Point2> points(points_.data() + offsets_[k],
+                                         offsets_[k + 1] - offsets_[k]);
     if (certainly_above(box.x_min - q.x, band)) {
       crossings += chord_crossing(points.front().y <= q.y, points.back().y <= q.y);
       continue;

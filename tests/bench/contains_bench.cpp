@@ -33,7 +33,9 @@ bezier::region::Region wavy_outline() {
     const double r = 1 + 0.15 * std::sin(5 * theta) + 0.05 * std::cos(11 * theta);
     on.push_back({r * std::cos(theta), r * std::sin(theta)});
   }
-  const auto at = [&](int k) { return on[static_cast<std::size_t>((k + kOutlineSegments) % kOutlineSegments)]; };
+  const auto at = [&](int k) {
+    return on[static_cast<std::size_t>((k + kOutlineSegments) % kOutlineSegments)];
+  };
   std::vector<Curve> curves;
   for (int k = 0; k < kOutlineSegments; ++k) {
     const Point2 p0 = at(k), p1 = at(k + 1);
@@ -44,18 +46,24 @@ bezier::region::Region wavy_outline() {
   return bezier::region::region_from_curves(std::move(curves), bezier::region::FillRule::nonzero);
 }
 
-void run(benchmark::State& state, const bezier::region::Region& region, const std::vector<Point2>& targets) {
+void run(benchmark::State& state, const bezier::region::Region& region,
+         const std::vector<Point2>& targets) {
   const bezier::region::RegionWinding prepared(region);
-  std::int64_t inside = 0;
+  std::int64_t inside = 0, spent = 0;
   for (auto _ : state) {
+    spent = 0;
     for (const Point2 q : targets) {
       std::int64_t work = INT64_MAX;
       const auto w = prepared.at(q, work);
+      spent += INT64_MAX - work;
       inside += w && bezier::region::inside(*w, region.fill_rule) ? 1 : 0;
     }
     benchmark::DoNotOptimize(inside);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(targets.size()));
+  // The work units charged per target (the units of the work cap), to set against the time.
+  state.counters["work_units_per_target"] =
+      static_cast<double>(spent) / static_cast<double>(targets.size());
 }
 
 void BM_Contains_Outline64_SpreadTargets(benchmark::State& state) {

@@ -12,7 +12,9 @@ namespace {
 using core::Curve;
 using core::Point2;
 
-Curve line(Point2 a, Point2 b) { return Curve({a, b}); }
+Curve line(Point2 a, Point2 b) {
+  return Curve({a, b});
+}
 
 TEST(FillRule, NamesAndTheFilledWindings) {
   EXPECT_EQ(to_string(FillRule::nonzero), "nonzero");
@@ -40,8 +42,9 @@ TEST(RegionFromPath, AnOpenSubpathIsClosedByALineBackToItsStart) {
 TEST(RegionFromPath, ClosedSubpathsKeepTheirSegmentsAndLaterOnesMoveOn) {
   // The first subpath returns to its start without Z: marked closed, no line added; the
   // second is open and gets its line, the third is closed by Z.
-  const Region r = region_from_path(
-      test::parsed_path("M0 0 L1 0 L0 1 L0 0 M5 5 L6 5 L6 6 M9 9 L10 9 L9 10 Z"), FillRule::nonzero);
+  const Region r =
+      region_from_path(test::parsed_path("M0 0 L1 0 L0 1 L0 0 M5 5 L6 5 L6 6 M9 9 L10 9 L9 10 Z"),
+                       FillRule::nonzero);
   ASSERT_EQ(r.path.subpaths.size(), 3u);
   EXPECT_EQ(r.path.subpaths[0].first_segment, 0u);
   EXPECT_EQ(r.path.subpaths[0].segment_count, 3u);
@@ -65,7 +68,7 @@ TEST(RegionFromPath, TheEmptyPathIsTheEmptyRegion) {
 
 TEST(RegionFromCurves, ChainsCloseWhereTheyStartedAndTheNextStartsAnywhere) {
   std::vector<Curve> curves = {
-      Curve({{0, 0}, {2, -1}, {4, 0}}), line({4, 0}, {0, 0}),        // chain 1, closed
+      Curve({{0, 0}, {2, -1}, {4, 0}}), line({4, 0}, {0, 0}),         // chain 1, closed
       Curve({{10, 0}, {11, 1}, {12, 1}, {13, 0}, {14, 2}, {15, 0}}),  // chain 2, degree 5
       line({15, 0}, {12, -3})};                                       // left open
   EXPECT_FALSE(chain_break(curves));

@@ -198,8 +198,8 @@ TEST(Winding, SquareCountsCounterClockwiseTurnsWithYUp) {
 
 TEST(Winding, TargetsOnVerticesAndEdgesAreOnTheBoundary) {
   const Region r = region_of("M0 0 L3 1 L1 4 Z");
-  for (const Point2 q : {Point2{0, 0}, Point2{3, 1}, Point2{1, 4}, Point2{1.5, 0.5},
-                         Point2{2, 2.5}, Point2{0.5, 2}}) {
+  for (const Point2 q : {Point2{0, 0}, Point2{3, 1}, Point2{1, 4}, Point2{1.5, 0.5}, Point2{2, 2.5},
+                         Point2{0.5, 2}}) {
     EXPECT_EQ(kernel(r, q), (Answer{true, 0})) << q.x << ", " << q.y;
     expect_exact(r, q);
     EXPECT_TRUE(inside(*winding(r, q, kWork), FillRule::nonzero));
@@ -210,8 +210,9 @@ TEST(Winding, OneUlpOffAnEdgeOnEitherSideIsWithinTheBand) {
   const Region r = region_of("M0 0 L3 1 L1 4 Z");
   constexpr double inf = std::numeric_limits<double>::infinity();
   for (const Point2 on : {Point2{1.5, 0.5}, Point2{2, 2.5}, Point2{0.5, 2}, Point2{3, 1}}) {
-    for (const Point2 q : {Point2{std::nextafter(on.x, inf), on.y}, Point2{std::nextafter(on.x, -inf), on.y},
-                           Point2{on.x, std::nextafter(on.y, inf)}, Point2{on.x, std::nextafter(on.y, -inf)}}) {
+    for (const Point2 q :
+         {Point2{std::nextafter(on.x, inf), on.y}, Point2{std::nextafter(on.x, -inf), on.y},
+          Point2{on.x, std::nextafter(on.y, inf)}, Point2{on.x, std::nextafter(on.y, -inf)}}) {
       expect_exact(r, q, "one ulp off");
       EXPECT_TRUE(kernel(r, q).boundary);
     }
@@ -350,7 +351,7 @@ TEST(Winding, RandomGlyphPolygonsAgreeWithTheExactOracle) {
 
 TEST(Winding, PointsOfCurvesAreOnTheBoundary) {
   // B(1/2) of these curves is a short binary fraction, a double exactly.
-  const Region quad = region_of("M0 0 Q2 4 4 0 Z");  // B(1/2) = (2, 2)
+  const Region quad = region_of("M0 0 Q2 4 4 0 Z");       // B(1/2) = (2, 2)
   const Region cubic = region_of("M0 0 C0 4 4 4 4 0 Z");  // B(1/2) = (2, 3)
   EXPECT_EQ(kernel(quad, {2, 2}), (Answer{true, 0}));
   EXPECT_EQ(kernel(cubic, {2, 3}), (Answer{true, 0}));
@@ -411,7 +412,8 @@ TEST(Winding, RandomCurvedOutlinesAgreeWithThePolylineOracle) {
       if (!want) continue;
       ++decided;
       const Answer got = kernel(r, q);
-      EXPECT_EQ(got, (Answer{false, *want})) << "shape " << shape << " target " << q.x << ", " << q.y;
+      EXPECT_EQ(got, (Answer{false, *want}))
+          << "shape " << shape << " target " << q.x << ", " << q.y;
     }
   }
   EXPECT_GT(decided, 1500);
@@ -440,7 +442,8 @@ TEST(Winding, TargetsOnRandomCurvesAreOnTheBoundaryAndTheirNeighboursAreNot) {
         nx /= norm;
         ny /= norm;
         for (const double side : {1e-4, -1e-4}) {
-          const Point2 q = {static_cast<double>(p.x + side * nx), static_cast<double>(p.y + side * ny)};
+          const Point2 q = {static_cast<double>(p.x + side * nx),
+                            static_cast<double>(p.y + side * ny)};
           const std::optional<long> want = polyline_winding(line, q, 1e-12L);
           if (!want) continue;
           ++decided;
