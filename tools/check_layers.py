@@ -22,6 +22,7 @@ LAYERS = [
     'core/self_intersect',
     'core/loop',
     'core/path',
+    'core/outline',
     'api',
     'service',
 ]

@@ -1,0 +1,224 @@
+#include "core/outline/flatten.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "core/curve/evaluate.hpp"
+#include "core/outline/chord_error.hpp"
+#include "core/outline/tuning.hpp"
+
+namespace bezier::outline {
+
+namespace {
+
+using core::Point2;
+
+/// The point of the curve with control points `q` at t by de Casteljau's algorithm in
+/// doubles (the density only steers the placement, so plain rounding is enough).
+Point2 plain_point(std::vector<Point2> q, double t) {
+  for (std::size_t k = q.size() - 1; k > 0; --k)
+    for (std::size_t i = 0; i < k; ++i) q[i] = core::lerp(q[i], q[i + 1], t);
+  return q.front();
+}
+
+/// The hodograph's control points n (P_{i+1} - P_i).
+std::vector<Point2> hodograph(const std::vector<Point2>& p) {
+  const double n = static_cast<double>(p.size() - 1);
+  std::vector<Point2> h;
+  for (std::size_t i = 0; i + 1 < p.size(); ++i) h.push_back(n * (p[i + 1] - p[i]));
+  return h;
+}
+
+/// The cumulative flattening integral F at the cell boundaries k / M, k = 0..M
+/// (flatten.hpp): midpoint rule on sqrt(|B''_⊥|), B''_⊥ = cross(B' / |B'|, B'').
+struct DensityTable {
+  std::vector<double> cumulative;
+  std::int64_t work = 0;
+};
+
+DensityTable density_table(const core::Curve& curve) {
+  const std::vector<Point2> p(curve.points().begin(), curve.points().end());
+  const int n = curve.degree();
+  DensityTable table;
+  table.cumulative.push_back(0.0);
+  if (n < 2) return table;  // a line: no density, one cell of nothing
+  const std::vector<Point2> first = hodograph(p);
+  const std::vector<Point2> second = hodograph(first);
+  const int cells = outline_tuning::kDensityCellsPerDegree * n;
+  double total = 0.0;
+  for (int k = 0; k < cells; ++k) {
+    const double t = (k + 0.5) / cells;
+    const Point2 velocity = plain_point(first, t);
+    const Point2 acceleration = plain_point(second, t);
+    const double speed = core::length(velocity);
+    // Where B' = 0 (a cusp) the density is its limit, which is finite; the cell's middle
+    // lands exactly on it only by accident, and one cell's value steers placement only.
+    const double across = speed > 0.0 ? std::fabs(core::cross(velocity / speed, acceleration)) : 0.0;
+    total += std::sqrt(across) / cells;
+    table.cumulative.push_back(total);
+  }
+  table.work = static_cast<std::int64_t>(cells) * static_cast<std::int64_t>(n) * (n + 1) * 2;
+  return table;
+}
+
+/// The t with F(t) = target, F piecewise linear between the table's cell boundaries.
+double parameter_of(const std::vector<double>& cumulative, double target) {
+  const auto cells = static_cast<double>(cumulative.size() - 1);
+  const auto upper = std::upper_bound(cumulative.begin(), cumulative.end(), target);
+  if (upper == cumulative.end()) return 1.0;
+  const auto k = static_cast<std::size_t>(upper - cumulative.begin()) - 1;
+  const double rise = cumulative[k + 1] - cumulative[k];
+  const double fraction = rise > 0.0 ? (target - cumulative[k]) / rise : 0.0;
+  return std::min(1.0, (static_cast<double>(k) + fraction) / cells);
+}
+
+double rounding_margin(const core::Curve& curve) {
+  return outline_tuning::kRoundingMarginUnits * curve.degree() *
+         std::numeric_limits<double>::epsilon() * core::scale(curve);
+}
+
+}  // namespace
+
+ChordEstimate estimate_chords(const core::Curve& curve, double tolerance) {
+  const DensityTable table = density_table(curve);
+  return {table.cumulative.back() / std::sqrt(8.0 * tolerance), table.work};
+}
+
+namespace {
+
+/// The march of flatten_parameters on a curve whose density table is known.
+CurveFlattening march(const core::Curve& curve, const DensityTable& table, double tolerance,
+                      std::int64_t work_left) {
+  assert(curve.degree() >= 1 && tolerance > 0.0);
+  CurveFlattening result;
+  const double root = std::sqrt(8.0 * tolerance);
+  const double total = table.cumulative.back();
+  const double margin = rounding_margin(curve);
+  const double slack = outline_tuning::kChordSlack;
+  const std::span<const Point2> points = curve.points();
+  const auto F = [&](double t) {
+    const double cells = static_cast<double>(table.cumulative.size() - 1);
+    const double x = t * cells;
+    const auto k = std::min(static_cast<std::size_t>(x), table.cumulative.size() - 2);
+    return table.cumulative[k] +
+           (x - static_cast<double>(k)) * (table.cumulative[k + 1] - table.cumulative[k]);
+  };
+
+  std::vector<double> vertices{0.0};
+  while (vertices.back() < 1.0) {
+    const double a = vertices.back();
+    // The first try: the rest of the integral spread evenly over the chords it needs.
+    const double rest = std::max(0.0, total - F(a));
+    const double chords_left = std::max(1.0, std::ceil(rest / root));
+    double b = chords_left <= 1.0 ? 1.0 : parameter_of(table.cumulative, F(a) + rest / chords_left);
+    if (!(b > a)) b = std::min(1.0, a + (1.0 - a) / chords_left);
+    double longest = a;  // the farthest end of a certified chord from a
+    bool probed = false;
+    for (int attempt = 0;; ++attempt) {
+      const ChordCheck check = check_chord(points, a, b, tolerance, margin);
+      result.work += check.work;
+      if (result.work > work_left) return result;
+      if (check.within) longest = std::max(longest, b);
+      const bool long_enough = check.within && (b == 1.0 || check.upper >= (1.0 - slack) * tolerance);
+      if (long_enough && !probed && b < 1.0) {
+        // Past an inflection the distance can fall again as the chord turns with the curve
+        // (it need not grow with the step): one longer chord is tried before stopping.
+        probed = true;
+        b = std::min(1.0, a + (b - a) * outline_tuning::kProbeFactor);
+        continue;
+      }
+      if (long_enough || (attempt + 1 >= outline_tuning::kMarchTries && longest > a)) break;
+      // The square law: the step that brings the distance to the tolerance, aimed a quarter
+      // of the slack short; at most doubled per try.
+      const double distance = std::max(check.upper, 1e-3 * tolerance);
+      const double factor = std::min(2.0, std::sqrt(tolerance / distance) * (1.0 - 0.25 * slack));
+      double next = std::min(1.0, a + (b - a) * factor);
+      if (!check.within && !(next < b)) next = a + 0.5 * (b - a);
+      if (longest > a && next <= longest) break;  // aiming below a certified end: take it
+      if (!(next > a)) {
+        // No double strictly between a and the chord's end: the tolerance is below the
+        // rounding the precondition excludes; report it as the budget's end.
+        result.work = std::max(result.work, work_left + 1);
+        return result;
+      }
+      b = next;
+    }
+    vertices.push_back(longest);
+  }
+  result.parameters = std::move(vertices);
+  return result;
+}
+
+}  // namespace
+
+CurveFlattening flatten_parameters(const core::Curve& curve, double tolerance,
+                                   std::int64_t work_left) {
+  const DensityTable table = density_table(curve);
+  CurveFlattening result = march(curve, table, tolerance, work_left - table.work);
+  result.work += table.work;
+  return result;
+}
+
+Flattening flatten(const core::Curve& curve, const FlattenOptions& options) {
+  path::Path single;
+  single.segments.push_back(curve);
+  single.subpaths.push_back({0, 1, curve.front() == curve.back() && curve.degree() >= 1});
+  return flatten(single, options);
+}
+
+Flattening flatten(const path::Path& path, const FlattenOptions& options) {
+  Flattening result;
+  double estimate = static_cast<double>(path.subpaths.size());
+  const double root = std::sqrt(8.0 * options.tolerance);
+  std::vector<DensityTable> tables;
+  tables.reserve(path.segments.size());
+  for (const core::Curve& segment : path.segments) {
+    tables.push_back(density_table(segment));
+    estimate += std::max(1.0, std::ceil(tables.back().cumulative.back() / root));
+    result.work += tables.back().work;
+  }
+  result.estimated_count = estimate;
+  if (result.work > options.max_work) {
+    result.status = FlattenStatus::work_cap_reached;
+    return result;
+  }
+  if (estimate > static_cast<double>(options.max_vertices)) {
+    result.status = FlattenStatus::too_many_vertices;
+    return result;
+  }
+
+  for (const path::Subpath& subpath : path.subpaths) {
+    std::vector<PolylineVertex> polyline;
+    for (std::size_t k = subpath.first_segment; k < subpath.first_segment + subpath.segment_count;
+         ++k) {
+      const core::Curve& segment = path.segments[k];
+      CurveFlattening flat =
+          march(segment, tables[k], options.tolerance, options.max_work - result.work);
+      result.work += flat.work;
+      if (flat.parameters.empty() || result.work > options.max_work) {
+        result.status = FlattenStatus::work_cap_reached;
+        result.polylines.clear();
+        return result;
+      }
+      // A segment after the first starts at the previous one's end: that vertex is listed.
+      const std::size_t first = k == subpath.first_segment ? 0 : 1;
+      for (std::size_t j = first; j < flat.parameters.size(); ++j) {
+        const double t = flat.parameters[j];
+        polyline.push_back({k, t, core::evaluate(segment, t)});
+      }
+      result.count += flat.parameters.size() - first;
+      if (result.count > options.max_vertices) {
+        result.status = FlattenStatus::too_many_vertices;
+        result.polylines.clear();
+        return result;
+      }
+    }
+    result.polylines.push_back(std::move(polyline));
+  }
+  return result;
+}
+
+}  // namespace bezier::outline
