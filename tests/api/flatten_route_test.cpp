@@ -82,6 +82,17 @@ TEST(FlattenRoute, TooManyVerticesIsRefusedAtTheTolerance) {
   EXPECT_EQ(test::error_pointers(problem), std::vector<std::string>{"/tolerance"});
 }
 
+TEST(FlattenRoute, ExtremeScalesGiveTheSameParameters) {
+  // Scaling by a power of two is exact, and the tolerance scales with the curve.
+  const json unit = call(R"({"points":[[0,0],[1,2],[2,-2],[3,0]],"tolerance":0.001})", 200);
+  for (const int e : {600, -600}) {
+    const double s = std::ldexp(1.0, e);
+    json request = {{"points", {{0, 0}, {s, 2 * s}, {2 * s, -2 * s}, {3 * s, 0}}}, {"tolerance", 0.001 * s}};
+    const json scaled = call(request.dump(), 200);
+    EXPECT_EQ(scaled["vertices"], unit["vertices"]) << e;
+  }
+}
+
 TEST(FlattenRoute, WorkCapIsA422) {
   Limits tight;
   tight.max_work = 2000;
