@@ -115,30 +115,66 @@ CurveFlattening march(const core::Curve& curve, const DensityTable& table, doubl
     const double chords_left = std::max(1.0, std::ceil(rest / root));
     double b = chords_left <= 1.0 ? 1.0 : parameter_of(table.cumulative, F(a) + rest / chords_left);
     if (!(b > a)) b = std::min(1.0, a + (1.0 - a) / chords_left);
-    double longest = a;  // the farthest end of a certified chord from a
-    bool probed = false;
-    for (int attempt = 0;; ++attempt) {
+    // The bracket: lo the farthest certified end (a when none yet) with its distance, hi the
+    // nearest end found too far (none yet: above 1) with its distance.
+    double lo = a, lo_distance = 0.0;
+    double hi = 2.0, hi_distance = 0.0;
+    int probes = 0;
+    int bracketed_tries = 0;
+    for (;;) {
       const ChordCheck check = check_chord(points, a, b, tolerance, margin);
       result.work += check.work;
       if (result.work > work_left) return result;
-      if (check.within) longest = std::max(longest, b);
-      const bool long_enough = check.within && (b == 1.0 || check.upper >= (1.0 - slack) * tolerance);
-      if (long_enough && !probed && b < 1.0) {
-        // Past an inflection the distance can fall again as the chord turns with the curve
-        // (it need not grow with the step): one longer chord is tried before stopping.
-        probed = true;
-        b = std::min(1.0, a + (b - a) * outline_tuning::kProbeFactor);
+      if (check.within && b > lo) {
+        lo = b;
+        lo_distance = check.upper;
+        // A failure below a farther certified end says nothing about what lies beyond it.
+        if (hi < lo) hi = 2.0;
+      } else if (!check.within && b < hi && b > lo) {
+        hi = b;
+        hi_distance = check.upper;
+      }
+      if (lo > a && (lo == 1.0 || lo_distance >= (1.0 - slack) * tolerance)) {
+        // Long enough. Past an inflection the distance can fall again as the chord turns
+        // with the curve (it need not grow with the step): longer chords are tried first,
+        // each kProbeFactor times the step of the one before; one that is certified becomes
+        // lo, and the march goes on from it.
+        if (probes >= outline_tuning::kProbes) break;
+        b = std::min(1.0, a + (lo - a) * std::pow(outline_tuning::kProbeFactor, probes + 1));
+        ++probes;
+        if (!(b > lo)) break;
         continue;
       }
-      if (long_enough || (attempt + 1 >= outline_tuning::kMarchTries && longest > a)) break;
-      // The square law: the step that brings the distance to the tolerance, aimed a quarter
-      // of the slack short; at most doubled per try.
-      const double distance = std::max(check.upper, 1e-3 * tolerance);
-      const double factor = std::min(2.0, std::sqrt(tolerance / distance) * (1.0 - 0.25 * slack));
-      double next = std::min(1.0, a + (b - a) * factor);
-      if (!check.within && !(next < b)) next = a + 0.5 * (b - a);
-      if (longest > a && next <= longest) break;  // aiming below a certified end: take it
-      if (!(next > a)) {
+      // The tries are counted once the longest chord is bracketed; growing (nothing too far
+      // yet) at least doubles the step each try, so it ends within log2(1 / step) tries.
+      if (hi <= 1.0 && ++bracketed_tries >= outline_tuning::kMarchTries && lo > a) break;
+      double next = 0.0;
+      if (hi > 1.0) {
+        // Nothing too far yet: the square law from lo, aimed a quarter of the slack short of
+        // the tolerance, at most doubling the step.
+        const double distance = std::max(lo_distance, 1e-3 * tolerance);
+        next = std::min(1.0, a + (lo - a) * std::clamp(std::sqrt(tolerance / distance) *
+                                                                  (1.0 - 0.25 * slack),
+                                                              2.0, 4.0));
+      } else if (lo > a) {
+        // Between a certified end and one too far: the secant of the distance through both,
+        // aimed at half the slack below the tolerance, kept inside the bracket; every other
+        // try halves the bracket instead, so a distance that jumps (a sharp turn just past
+        // lo) cannot hold the secant to small steps.
+        const double target = (1.0 - 0.5 * slack) * tolerance;
+        const double rise = hi_distance - lo_distance;
+        const double w = rise > 0.0 && bracketed_tries % 2 == 1 ? (target - lo_distance) / rise : 0.5;
+        next = lo + (hi - lo) * std::clamp(w, 0.05, 0.95);
+      } else {
+        // Only too far so far: the square law down from hi (halving where the check could
+        // not decide, its distance then being about the tolerance).
+        const double shrink = hi_distance > tolerance
+                                  ? std::min(0.9, std::sqrt(tolerance / hi_distance) * (1.0 - 0.25 * slack))
+                                  : 0.5;
+        next = a + (hi - a) * shrink;
+      }
+      if (!(next > lo) || !(next < hi) || next == b) {
+        if (lo > a) break;
         // No double strictly between a and the chord's end: the tolerance is below the
         // rounding the precondition excludes; report it as the budget's end.
         result.work = std::max(result.work, work_left + 1);
@@ -146,7 +182,7 @@ CurveFlattening march(const core::Curve& curve, const DensityTable& table, doubl
       }
       b = next;
     }
-    vertices.push_back(longest);
+    vertices.push_back(lo);
   }
   result.parameters = std::move(vertices);
   return result;

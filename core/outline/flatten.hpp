@@ -72,20 +72,21 @@ struct Flattening {
 /// density of R. Levien, "Flattening quadratic Béziers", 2019, who integrates it in closed
 /// form for a parabola; for any degree it is integrated here by the midpoint rule on
 /// outline_tuning::kDensityCellsPerDegree * n cells, F piecewise linear between them).
-/// The vertices are placed by a march that corrects this estimate with certified distances:
-/// from a vertex a, the first try is the end b with F(b) - F(a) the rest of the integral
-/// spread evenly over the chords it needs (ceil((F(1) - F(a)) / sqrt(8 ε)), the last one
-/// ending at 1); the chord [a, b] is then bracketed (check_chord, chord_error.hpp), and
-/// unless it is within ε and within outline_tuning::kChordSlack of it (or ends at 1), b is
-/// moved by the square law, b <- a + (b - a) sqrt(ε / h) (aimed a little short, at most
-/// doubling), and tried again, up to outline_tuning::kMarchTries times; the farthest
-/// certified end is the next vertex (halving the step until one is certified, where the
-/// estimate was far off: near a cusp, where the chord is not along the tangent; at an
-/// inflection, where the error is of third order). Each chord is thus within about half the
-/// slack of the longest certified chord from its start where the distance grows with the
-/// step, which is what the greedy polyline takes, and the estimate makes the first try land
-/// close (two or three checks a vertex). The density table's work and the checks' are
-/// charged to `work`.
+/// The vertices are placed by a march that corrects this estimate with certified distances
+/// (check_chord, chord_error.hpp). From a vertex a, the first try is the end b with
+/// F(b) - F(a) the rest of the integral spread evenly over the chords it needs
+/// (ceil((F(1) - F(a)) / sqrt(8 ε)), the last one ending at 1). While every try is within ε,
+/// the step grows by the square law, b <- a + (b - a) sqrt(ε / h) (h the chord's distance,
+/// aimed a little short; between 2 and 4 times the step); once an end is too far, the longest
+/// certified chord is bracketed and the bracket narrowed, alternately by the secant of the
+/// distance and by halving, up to outline_tuning::kMarchTries times. A chord within
+/// outline_tuning::kChordSlack of ε (or ending at 1) is long enough; then a few longer
+/// chords are still tried (outline_tuning::kProbes), because past an inflection or a sharp
+/// turn the distance can fall again as the step grows, and a certified one becomes the new
+/// start of the search. The farthest certified end is the next vertex. Each chord is thus
+/// about as long as the greedy polyline's from the same start, and the estimate makes the
+/// first try land close where the curvature varies smoothly (a few checks a vertex). The
+/// density table's work and the checks' are charged to `work`.
 ///
 /// `work_left` is the budget; returns nothing when it runs out (work then exceeds it).
 /// Precondition: degree >= 1, finite coordinates, tolerance as in FlattenOptions.

@@ -33,16 +33,21 @@ inline constexpr double kChordResolution = 2e-3;
 /// than the greedy one.
 inline constexpr double kChordSlack = 1e-2;
 
-/// Chord lengths tried from one vertex before the longest certified one is taken: the march
-/// corrects the step by sqrt(tolerance / distance) (the square law), which lands within the
-/// slack in two or three tries where the curvature varies smoothly.
-inline constexpr int kMarchTries = 6;
+/// Tries inside the bracket of the longest chord from one vertex (a certified end, an end
+/// too far) before the certified end is taken: the march alternates the secant of the
+/// distance with halving the bracket, which narrows it to a sixteenth or better, while the
+/// estimate and the square law make the first tries land close where the curvature varies
+/// smoothly.
+inline constexpr int kMarchTries = 8;
 
-/// The longer chord the march tries once a chord is long enough (a step this many times
-/// longer): where the curve turns back through an inflection a longer chord can be within the
-/// tolerance again; one try a vertex finds it where the next place within lies inside this
-/// reach, and the march goes on from there with the square law.
-inline constexpr double kProbeFactor = 1.125;
+/// The longer chords the march tries once a chord is long enough: steps kProbeFactor,
+/// kProbeFactor^2, ... kProbeFactor^kProbes times its step. Where the curve turns back
+/// through an inflection, or bends little after a bend, a longer chord can be within the
+/// tolerance again (the distance need not grow with the step), which is where the greedy
+/// polyline's farthest chord goes; these tries reach up to about twice the step for three
+/// checks more a vertex.
+inline constexpr double kProbeFactor = 1.26;
+inline constexpr int kProbes = 3;
 
 /// Rounding margin of the chord bound in units of n u S (n the degree, u the unit roundoff,
 /// S the largest coordinate): the piece's control points come from two de Casteljau
