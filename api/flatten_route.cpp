@@ -77,7 +77,7 @@ Reply flatten_route(const nlohmann::json& request, const Limits& limits) {
   }
   if (flat.status == outline::FlattenStatus::too_many_vertices) {
     const std::string size = flat.count > 0 ? std::to_string(flat.count) + " or more"
-                                            : "about " + format_number(std::ceil(flat.estimated_count));
+                                            : "about " + std::to_string(static_cast<long long>(std::ceil(flat.estimated_count)));
     reader.fail_limit("/tolerance", "the polylines would have " + size +
                                         " vertices, more than the limit of " +
                                         std::to_string(limits.max_t_values) +
