@@ -44,7 +44,10 @@ DensityTable density_table(const core::Curve& curve) {
   const int n = curve.degree();
   DensityTable table;
   table.cumulative.push_back(0.0);
-  if (n < 2) return table;  // a line: no density, one cell of nothing
+  if (n < 2) {
+    table.cumulative.push_back(0.0);  // a line: one cell of no density
+    return table;
+  }
   const std::vector<Point2> first = hodograph(p);
   const std::vector<Point2> second = hodograph(first);
   const int cells = outline_tuning::kDensityCellsPerDegree * n;
@@ -151,7 +154,7 @@ CurveFlattening march(const core::Curve& curve, const DensityTable& table, doubl
       double next = 0.0;
       if (hi > 1.0) {
         // Nothing too far yet: the square law from lo, aimed a quarter of the slack short of
-        // the tolerance, at most doubling the step.
+        // the tolerance, the step growing between 2 and 4 times.
         const double distance = std::max(lo_distance, 1e-3 * tolerance);
         next = std::min(1.0, a + (lo - a) * std::clamp(std::sqrt(tolerance / distance) *
                                                                   (1.0 - 0.25 * slack),
