@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/curve/evaluate.hpp"
+#include "core/numeric/power_of_two.hpp"
 #include "core/outline/chord_error.hpp"
 #include "core/outline/tuning.hpp"
 
@@ -78,6 +79,23 @@ double parameter_of(const std::vector<double>& cumulative, double target) {
   return std::min(1.0, (static_cast<double>(k) + fraction) / cells);
 }
 
+/// A curve scaled by a power of two (exact) so that its largest coordinate is in [1, 2), and
+/// the tolerance scaled alike: the parameters are then those of the curve itself, and the
+/// differences, hodographs and lengths of the kernels neither overflow nor underflow at the
+/// ends of the double range.
+struct Normalised {
+  core::Curve curve;
+  double tolerance = 0.0;
+};
+
+Normalised normalised(const core::Curve& curve, double tolerance) {
+  const double s = core::scale(curve);
+  if (s == 0.0) return {curve, tolerance};
+  const int e = -core::exponent_of(s);
+  const core::PowerOfTwo factor(e);
+  return {core::Curve(core::scaled_by_power_of_two(curve.points(), e)), factor.times(tolerance)};
+}
+
 double rounding_margin(const core::Curve& curve) {
   return outline_tuning::kRoundingMarginUnits * curve.degree() *
          std::numeric_limits<double>::epsilon() * core::scale(curve);
@@ -86,8 +104,9 @@ double rounding_margin(const core::Curve& curve) {
 }  // namespace
 
 ChordEstimate estimate_chords(const core::Curve& curve, double tolerance) {
-  const DensityTable table = density_table(curve);
-  return {table.cumulative.back() / std::sqrt(8.0 * tolerance), table.work};
+  const Normalised scaled = normalised(curve, tolerance);
+  const DensityTable table = density_table(scaled.curve);
+  return {table.cumulative.back() / std::sqrt(8.0 * scaled.tolerance), table.work};
 }
 
 namespace {
@@ -195,8 +214,9 @@ CurveFlattening march(const core::Curve& curve, const DensityTable& table, doubl
 
 CurveFlattening flatten_parameters(const core::Curve& curve, double tolerance,
                                    std::int64_t work_left) {
-  const DensityTable table = density_table(curve);
-  CurveFlattening result = march(curve, table, tolerance, work_left - table.work);
+  const Normalised scaled = normalised(curve, tolerance);
+  const DensityTable table = density_table(scaled.curve);
+  CurveFlattening result = march(scaled.curve, table, scaled.tolerance, work_left - table.work);
   result.work += table.work;
   return result;
 }
@@ -211,11 +231,14 @@ Flattening flatten(const core::Curve& curve, const FlattenOptions& options) {
 Flattening flatten(const path::Path& path, const FlattenOptions& options) {
   Flattening result;
   double estimate = static_cast<double>(path.subpaths.size());
-  const double root = std::sqrt(8.0 * options.tolerance);
+  std::vector<Normalised> scaled;
   std::vector<DensityTable> tables;
+  scaled.reserve(path.segments.size());
   tables.reserve(path.segments.size());
   for (const core::Curve& segment : path.segments) {
-    tables.push_back(density_table(segment));
+    scaled.push_back(normalised(segment, options.tolerance));
+    tables.push_back(density_table(scaled.back().curve));
+    const double root = std::sqrt(8.0 * scaled.back().tolerance);
     estimate += std::max(1.0, std::ceil(tables.back().cumulative.back() / root));
     result.work += tables.back().work;
   }
@@ -235,7 +258,7 @@ Flattening flatten(const path::Path& path, const FlattenOptions& options) {
          ++k) {
       const core::Curve& segment = path.segments[k];
       CurveFlattening flat =
-          march(segment, tables[k], options.tolerance, options.max_work - result.work);
+          march(scaled[k].curve, tables[k], scaled[k].tolerance, options.max_work - result.work);
       result.work += flat.work;
       if (flat.parameters.empty() || result.work > options.max_work) {
         result.status = FlattenStatus::work_cap_reached;

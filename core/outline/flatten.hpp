@@ -88,6 +88,10 @@ struct Flattening {
 /// first try land close where the curvature varies smoothly (a few checks a vertex). The
 /// density table's work and the checks' are charged to `work`.
 ///
+/// The curve and the tolerance are first scaled by a power of two (exact) that brings the
+/// largest coordinate to [1, 2): the parameters are the same, and no difference or
+/// derivative overflows or underflows anywhere in the double range.
+///
 /// `work_left` is the budget; returns nothing when it runs out (work then exceeds it).
 /// Precondition: degree >= 1, finite coordinates, tolerance as in FlattenOptions.
 struct CurveFlattening {

@@ -194,6 +194,23 @@ TEST(Flatten, PowerOfTwoScalingAndTranslationKeepTheParameters) {
   EXPECT_GE(g.count + 1, f.count);
 }
 
+TEST(Flatten, AtTheEndsOfTheDoubleRange) {
+  // Differences of these coordinates overflow (3 * 2^1023) or are subnormal: the kernel works
+  // on the curve scaled by a power of two, so the parameters are the unit curve's.
+  const Curve unit({{-1.5, 0}, {1.5, 1}, {0, -1.5}, {1, 1}});
+  const Flattening f = flatten_with(unit, 0x1p-10);  // a power of two: exact when scaled
+  ASSERT_EQ(f.status, FlattenStatus::ok);
+  ASSERT_GT(f.count, 2u);
+  for (const double s : {0x1p1023, 0x1p-1060}) {
+    std::vector<Point2> moved;
+    for (const Point2 p : unit.points()) moved.push_back(s * p);
+    const Flattening g = flatten_with(Curve(moved), s * 0x1p-10);
+    ASSERT_EQ(g.status, FlattenStatus::ok);
+    ASSERT_EQ(g.count, f.count) << s;
+    for (std::size_t i = 0; i < f.count; ++i) EXPECT_EQ(g.polylines[0][i].t, f.polylines[0][i].t);
+  }
+}
+
 TEST(Flatten, LinesAndPointsGiveTwoVertices) {
   for (const Curve& line : {Curve({{0, 0}, {3, 1}}), Curve({{0, 0}, {1, 1.0 / 3}, {2, 2.0 / 3}, {3, 1}}),
                             Curve({{2, 2}, {2, 2}, {2, 2}})}) {
