@@ -5,7 +5,8 @@
 //   tolerance  > 0, absolute (the coordinates' units), at least 1e-9 of the coordinates'
 //              scale (the largest absolute control-point coordinate): below it the polyline
 //              would be rounding noise, and it is refused at /tolerance.
-// Answer:   {"count", "polylines": [[[x, y], ...], ...], "vertices": [[{"segment", "t"}, ...], ...]}
+// Answer:   {"count", "polylines": [[[x, y], ...], ...], "vertices": [[{"segment", "t"}, ...],
+// ...]}
 //   polylines  one per subpath (a curve is one), in drawing order; vertices aligned with
 //              them. The Hausdorff distance of each polyline to its subpath is at most ε.
 // Errors: 422 validation problems with JSON Pointers; a polyline estimated (before any vertex
@@ -71,13 +72,16 @@ Reply flatten_route(const nlohmann::json& request, const Limits& limits) {
   options.max_work = limits.max_work;
   const outline::Flattening flat = outline::flatten(p, options);
   if (flat.status == outline::FlattenStatus::work_cap_reached) {
-    return problem_reply(ProblemKind::work_cap,
-                         "the chord checks of the polyline took more than the per-request work cap of " +
-                             std::to_string(limits.max_work) + " units: send a larger tolerance or a shorter path");
+    return problem_reply(
+        ProblemKind::work_cap,
+        "the chord checks of the polyline took more than the per-request work cap of " +
+            std::to_string(limits.max_work) + " units: send a larger tolerance or a shorter path");
   }
   if (flat.status == outline::FlattenStatus::too_many_vertices) {
-    const std::string size = flat.count > 0 ? std::to_string(flat.count) + " or more"
-                                            : "about " + std::to_string(static_cast<long long>(std::ceil(flat.estimated_count)));
+    const std::string size =
+        flat.count > 0
+            ? std::to_string(flat.count) + " or more"
+            : "about " + std::to_string(static_cast<long long>(std::ceil(flat.estimated_count)));
     reader.fail_limit("/tolerance", "the polylines would have " + size +
                                         " vertices, more than the limit of " +
                                         std::to_string(limits.max_t_values) +

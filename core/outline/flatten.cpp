@@ -60,7 +60,8 @@ DensityTable density_table(const core::Curve& curve) {
     const double speed = core::length(velocity);
     // Where B' = 0 (a cusp) the density is its limit, which is finite; the cell's middle
     // lands exactly on it only by accident, and one cell's value steers placement only.
-    const double across = speed > 0.0 ? std::fabs(core::cross(velocity / speed, acceleration)) : 0.0;
+    const double across =
+        speed > 0.0 ? std::fabs(core::cross(velocity / speed, acceleration)) : 0.0;
     total += std::sqrt(across) / cells;
     table.cumulative.push_back(total);
   }
@@ -175,9 +176,9 @@ CurveFlattening march(const core::Curve& curve, const DensityTable& table, doubl
         // Nothing too far yet: the square law from lo, aimed a quarter of the slack short of
         // the tolerance, the step growing between 2 and 4 times.
         const double distance = std::max(lo_distance, 1e-3 * tolerance);
-        next = std::min(1.0, a + (lo - a) * std::clamp(std::sqrt(tolerance / distance) *
-                                                                  (1.0 - 0.25 * slack),
-                                                              2.0, 4.0));
+        next = std::min(
+            1.0, a + (lo - a) * std::clamp(std::sqrt(tolerance / distance) * (1.0 - 0.25 * slack),
+                                           2.0, 4.0));
       } else if (lo > a) {
         // Between a certified end and one too far: the secant of the distance through both,
         // aimed at half the slack below the tolerance, kept inside the bracket; every other
@@ -185,14 +186,16 @@ CurveFlattening march(const core::Curve& curve, const DensityTable& table, doubl
         // lo) cannot hold the secant to small steps.
         const double target = (1.0 - 0.5 * slack) * tolerance;
         const double rise = hi_distance - lo_distance;
-        const double w = rise > 0.0 && bracketed_tries % 2 == 1 ? (target - lo_distance) / rise : 0.5;
+        const double w =
+            rise > 0.0 && bracketed_tries % 2 == 1 ? (target - lo_distance) / rise : 0.5;
         next = lo + (hi - lo) * std::clamp(w, 0.05, 0.95);
       } else {
         // Only too far so far: the square law down from hi (halving where the check could
         // not decide, its distance then being about the tolerance).
-        const double shrink = hi_distance > tolerance
-                                  ? std::min(0.9, std::sqrt(tolerance / hi_distance) * (1.0 - 0.25 * slack))
-                                  : 0.5;
+        const double shrink =
+            hi_distance > tolerance
+                ? std::min(0.9, std::sqrt(tolerance / hi_distance) * (1.0 - 0.25 * slack))
+                : 0.5;
         next = a + (hi - a) * shrink;
       }
       if (!(next > lo) || !(next < hi) || next == b) {

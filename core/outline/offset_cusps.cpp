@@ -30,8 +30,10 @@ std::vector<double> product(const std::vector<A>& a, const std::vector<B>& b, F 
   std::vector<double> r(static_cast<std::size_t>(m + k + 1), 0.0);
   for (int i = 0; i <= m; ++i) {
     for (int j = 0; j <= k; ++j) {
-      const double weight = core::binomial(m, i) * core::binomial(k, j) / core::binomial(m + k, i + j);
-      r[static_cast<std::size_t>(i + j)] += weight * f(a[static_cast<std::size_t>(i)], b[static_cast<std::size_t>(j)]);
+      const double weight =
+          core::binomial(m, i) * core::binomial(k, j) / core::binomial(m + k, i + j);
+      r[static_cast<std::size_t>(i + j)] +=
+          weight * f(a[static_cast<std::size_t>(i)], b[static_cast<std::size_t>(j)]);
     }
   }
   return r;
@@ -61,12 +63,15 @@ std::vector<double> offset_cusps(const core::Curve& curve, double d) {
 
   const std::vector<Point2> first = hodograph(p);
   const std::vector<Point2> second = hodograph(first);
-  const std::vector<double> c = product(first, second, [](Point2 a, Point2 b) { return core::cross(a, b); });
-  const std::vector<double> s = product(first, first, [](Point2 a, Point2 b) { return core::dot(a, b); });
+  const std::vector<double> c =
+      product(first, second, [](Point2 a, Point2 b) { return core::cross(a, b); });
+  const std::vector<double> s =
+      product(first, first, [](Point2 a, Point2 b) { return core::dot(a, b); });
   // d^2 c^2, raised from degree 4n - 6 to 6n - 6 by the product with 1 (all coefficients 1).
   std::vector<double> squared = times(c, c);
   for (double& x : squared) x *= scaled_d * scaled_d;
-  const std::vector<double> raised = times(squared, std::vector<double>(static_cast<std::size_t>(2 * n + 1), 1.0));
+  const std::vector<double> raised =
+      times(squared, std::vector<double>(static_cast<std::size_t>(2 * n + 1), 1.0));
   const std::vector<double> cubed = times(times(s, s), s);
   std::vector<double> poly(raised.size());
   double largest = 0.0;

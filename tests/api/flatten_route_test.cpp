@@ -51,34 +51,36 @@ TEST(FlattenRoute, PathGivesOnePolylinePerSubpath) {
   const json r = call(R"({"path":"M0 0 Q1 2 2 0 Z M5 5 L6 6","tolerance":0.01})", 200);
   ASSERT_EQ(r["polylines"].size(), 2u);
   EXPECT_EQ(r["polylines"][0].front(), r["polylines"][0].back());  // closed
-  EXPECT_EQ(r["vertices"][0].back()["segment"], 1);                 // the closing line
+  EXPECT_EQ(r["vertices"][0].back()["segment"], 1);                // the closing line
   EXPECT_EQ(r["polylines"][1], json::parse("[[5.0,5.0],[6.0,6.0]]"));
   EXPECT_EQ(r["vertices"][1], json::parse(R"([{"segment":2,"t":0.0},{"segment":2,"t":1.0}])"));
   EXPECT_EQ(r["count"].get<std::size_t>(), r["polylines"][0].size() + 2);
 }
 
 TEST(FlattenRoute, ToleranceMustBePositiveAndAboveTheRoundingScale) {
-  for (const char* body : {R"({"points":[[0,0],[1,1]],"tolerance":0})",
-                           R"({"points":[[0,0],[1,1]],"tolerance":-1})",
-                           R"({"points":[[0,0],[1,1]],"tolerance":"x"})",
-                           R"({"points":[[0,0],[1,1]]})",
-                           R"({"points":[[0,0],[1e6,1]],"tolerance":1e-4})"}) {
-    EXPECT_EQ(test::error_pointers(call(body, 422)), std::vector<std::string>{"/tolerance"}) << body;
+  for (const char* body :
+       {R"({"points":[[0,0],[1,1]],"tolerance":0})", R"({"points":[[0,0],[1,1]],"tolerance":-1})",
+        R"({"points":[[0,0],[1,1]],"tolerance":"x"})", R"({"points":[[0,0],[1,1]]})",
+        R"({"points":[[0,0],[1e6,1]],"tolerance":1e-4})"}) {
+    EXPECT_EQ(test::error_pointers(call(body, 422)), std::vector<std::string>{"/tolerance"})
+        << body;
   }
   // 1e-9 of the scale is accepted.
   call(R"({"points":[[0,0],[1e6,1]],"tolerance":1e-3})", 200);
 }
 
 TEST(FlattenRoute, UnknownFieldsAndMissingCurveAreRefused) {
-  EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1]],"tolerance":1,"tolerence":1})", 422)),
-            std::vector<std::string>{"/tolerence"});
+  EXPECT_EQ(
+      test::error_pointers(call(R"({"points":[[0,0],[1,1]],"tolerance":1,"tolerence":1})", 422)),
+      std::vector<std::string>{"/tolerence"});
   call(R"({"tolerance":1})", 422);
 }
 
 TEST(FlattenRoute, TooManyVerticesIsRefusedAtTheTolerance) {
   Limits small;
   small.max_t_values = 50;
-  const json problem = call(R"({"points":[[0,0],[1,2],[2,-2],[3,0]],"tolerance":1e-6})", 422, small);
+  const json problem =
+      call(R"({"points":[[0,0],[1,2],[2,-2],[3,0]],"tolerance":1e-6})", 422, small);
   EXPECT_EQ(test::error_pointers(problem), std::vector<std::string>{"/tolerance"});
 }
 
@@ -87,7 +89,8 @@ TEST(FlattenRoute, ExtremeScalesGiveTheSameParameters) {
   const json unit = call(R"({"points":[[0,0],[1,2],[2,-2],[3,0]],"tolerance":0.001})", 200);
   for (const int e : {600, -600, 1022}) {  // at 2^1022 differences reach 2^1024, beyond the doubles
     const double s = std::ldexp(1.0, e);
-    json request = {{"points", {{0, 0}, {s, 2 * s}, {2 * s, -2 * s}, {3 * s, 0}}}, {"tolerance", 0.001 * s}};
+    json request = {{"points", {{0, 0}, {s, 2 * s}, {2 * s, -2 * s}, {3 * s, 0}}},
+                    {"tolerance", 0.001 * s}};
     const json scaled = call(request.dump(), 200);
     EXPECT_EQ(scaled["vertices"], unit["vertices"]) << e;
   }
@@ -96,7 +99,8 @@ TEST(FlattenRoute, ExtremeScalesGiveTheSameParameters) {
 TEST(FlattenRoute, WorkCapIsA422) {
   Limits tight;
   tight.max_work = 2000;
-  const json problem = call(R"({"points":[[0,0],[1,2],[2,-2],[3,0]],"tolerance":1e-5})", 422, tight);
+  const json problem =
+      call(R"({"points":[[0,0],[1,2],[2,-2],[3,0]],"tolerance":1e-5})", 422, tight);
   EXPECT_NE(problem["detail"].get<std::string>().find("work cap"), std::string::npos);
 }
 

@@ -26,7 +26,8 @@ TEST(ChordError, ParabolaBracketHoldsTheClosedForm) {
   for (const auto& [a, b] : {std::pair{0.0, 1.0}, std::pair{0.25, 0.5}, std::pair{0.1, 0.9}}) {
     const double x0 = 2 * a - 1, x1 = 2 * b - 1;
     const Point2 chord{x1 - x0, x1 * x1 - x0 * x0};
-    const double exact = std::fabs(core::cross(Point2{0, 8}, chord)) / core::length(chord) * (b - a) * (b - a) / 8;
+    const double exact =
+        std::fabs(core::cross(Point2{0, 8}, chord)) / core::length(chord) * (b - a) * (b - a) / 8;
     const double tolerance = 2 * exact;
     const ChordCheck check = check_chord(parabola.points(), a, b, tolerance, 0.0);
     EXPECT_TRUE(check.within);

@@ -73,7 +73,8 @@ int greedy_vertices(const Curve& curve, double tolerance) {
 /// Whether n equal parameter steps all pass the dense check.
 bool uniform_passes(const Curve& curve, double tolerance, int n) {
   for (int j = 0; j < n; ++j) {
-    if (chord_distance(curve, static_cast<double>(j) / n, static_cast<double>(j + 1) / n) > tolerance)
+    if (chord_distance(curve, static_cast<double>(j) / n, static_cast<double>(j + 1) / n) >
+        tolerance)
       return false;
   }
   return true;
@@ -99,11 +100,11 @@ std::vector<Curve> sample_curves() {
     for (int k = 0; k < 6; ++k) p.push_back({rng.uniform(-1, 1), rng.uniform(-1, 1)});
     curves.emplace_back(p);
   }
-  curves.push_back(Curve({{0, 0}, {1, 1}, {0, 1}, {1, 0}}));    // a loop
-  curves.push_back(Curve({{0, 0}, {1, 1}, {0, 1}, {1, 1}}));    // a cusp-like turn
-  curves.push_back(Curve({{0, 0}, {2, 2}, {-1, 2}, {1, 0}}));   // a cusp at t = 1/2
-  curves.push_back(Curve({{0, 0}, {1, 2}, {2, -2}, {3, 0}}));   // an S with an inflection
-  curves.push_back(Curve({{0, 0}, {0.5, 1}, {1, 0}}));          // a parabola
+  curves.push_back(Curve({{0, 0}, {1, 1}, {0, 1}, {1, 0}}));   // a loop
+  curves.push_back(Curve({{0, 0}, {1, 1}, {0, 1}, {1, 1}}));   // a cusp-like turn
+  curves.push_back(Curve({{0, 0}, {2, 2}, {-1, 2}, {1, 0}}));  // a cusp at t = 1/2
+  curves.push_back(Curve({{0, 0}, {1, 2}, {2, -2}, {3, 0}}));  // an S with an inflection
+  curves.push_back(Curve({{0, 0}, {0.5, 1}, {1, 0}}));         // a parabola
   return curves;
 }
 
@@ -212,8 +213,9 @@ TEST(Flatten, AtTheEndsOfTheDoubleRange) {
 }
 
 TEST(Flatten, LinesAndPointsGiveTwoVertices) {
-  for (const Curve& line : {Curve({{0, 0}, {3, 1}}), Curve({{0, 0}, {1, 1.0 / 3}, {2, 2.0 / 3}, {3, 1}}),
-                            Curve({{2, 2}, {2, 2}, {2, 2}})}) {
+  for (const Curve& line :
+       {Curve({{0, 0}, {3, 1}}), Curve({{0, 0}, {1, 1.0 / 3}, {2, 2.0 / 3}, {3, 1}}),
+        Curve({{2, 2}, {2, 2}, {2, 2}})}) {
     const Flattening f = flatten_with(line, 1e-6);
     ASSERT_EQ(f.status, FlattenStatus::ok);
     EXPECT_EQ(f.count, 2u);

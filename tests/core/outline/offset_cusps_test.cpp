@@ -86,7 +86,8 @@ TEST(OffsetCusps, SignChangesOfOneMinusDKappaAreTheCusps) {
                                        [&](double t) { return t >= t0 - 1e-9 && t <= t1 + 1e-9; });
         // A sign change through infinity (B' = 0 between the samples) is not a cusp of O.
         const bool through_infinity = std::fabs(value) > 1e3 || std::fabs(previous) > 1e3;
-        EXPECT_TRUE(found || through_infinity) << "trial " << trial << " between " << t0 << " and " << t1;
+        EXPECT_TRUE(found || through_infinity)
+            << "trial " << trial << " between " << t0 << " and " << t1;
       }
       previous = value;
     }
