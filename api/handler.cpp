@@ -28,6 +28,7 @@ constexpr std::array kRoutes = {
     Route{"/bounds", &bounds_route},
     Route{"/nearest", &nearest_route},
     Route{"/flatten", &flatten_route},
+    Route{"/offset", &offset_route},
 };
 
 // The compute routes, then /batch.

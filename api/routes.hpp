@@ -20,5 +20,6 @@ namespace bezier::api {
 [[nodiscard]] Reply bounds_route(const nlohmann::json& request, const Limits& limits);
 [[nodiscard]] Reply nearest_route(const nlohmann::json& request, const Limits& limits);
 [[nodiscard]] Reply flatten_route(const nlohmann::json& request, const Limits& limits);
+[[nodiscard]] Reply offset_route(const nlohmann::json& request, const Limits& limits);
 
 }  // namespace bezier::api
