@@ -42,6 +42,8 @@ inline constexpr std::array kComputeRoutes = {
     ComputeRoute{"/nearest", &nearest_route, CostBound::work_cap},
     ComputeRoute{"/contains", &contains_route, CostBound::work_cap},
     ComputeRoute{"/boolean", &boolean_route, CostBound::work_cap},
+    ComputeRoute{"/flatten", &flatten_route, CostBound::work_cap},
+    ComputeRoute{"/offset", &offset_route, CostBound::work_cap},
 };
 
 /// The compute route of `path`, or nullptr when there is none.

@@ -21,5 +21,7 @@ namespace bezier::api {
 [[nodiscard]] Reply nearest_route(const nlohmann::json& request, const Limits& limits);
 [[nodiscard]] Reply contains_route(const nlohmann::json& request, const Limits& limits);
 [[nodiscard]] Reply boolean_route(const nlohmann::json& request, const Limits& limits);
+[[nodiscard]] Reply flatten_route(const nlohmann::json& request, const Limits& limits);
+[[nodiscard]] Reply offset_route(const nlohmann::json& request, const Limits& limits);
 
 }  // namespace bezier::api

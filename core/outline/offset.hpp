@@ -1,0 +1,81 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/base/curve.hpp"
+
+namespace bezier::outline {
+
+/// One cubic of a parallel curve: it stands for O on [t0, t1] of its source curve.
+struct OffsetCubic {
+  double t0 = 0.0;
+  double t1 = 0.0;
+  std::array<core::Point2, 4> points;
+  /// The certified bound of the Hausdorff distance between this cubic and O on [t0, t1].
+  double error_bound = 0.0;
+};
+
+enum class OffsetStatus { ok, work_cap_reached };
+
+struct CurveOffset {
+  OffsetStatus status = OffsetStatus::ok;
+  /// In order of t; consecutive cubics share their end point except across a zero of B'
+  /// (where the normal turns by a half turn and O jumps by 2 |d|).
+  std::vector<OffsetCubic> cubics;
+  std::int64_t work = 0;
+};
+
+/// The parallel curve O(t) = B(t) + d N(t) of a planar Bézier curve of any degree n >= 1 (N
+/// the unit left normal, y up; where B'(t) = 0, N is the limit of the tangent's normal from
+/// the side of the piece) as cubics within `tolerance` of it, both ways.
+///
+/// Pieces. B is cut at the cusps of O (offset_cusps.hpp: the radius of curvature is |d| on
+/// d's side) and at the zeros of B' inside (0, 1) (roots of x' where y' vanishes too, to
+/// 1e-9 of the hodograph's scale), so that on each piece O' = |B'| (1 - d κ) T keeps its
+/// direction sign: each cusp of O is the end of a cubic.
+///
+/// Fit (Tiller and Hanson's construction, 1984, with the handle lengths by least squares):
+/// the cubic has the ends O(t0), O(t1) and end tangents along ±T there (the sign of 1 - d κ
+/// on the piece: O turns back between cusps), and its two handle lengths minimise
+/// Σ |C(u_j) - O(t0 + u_j (t1 - t0))|^2 over 16 uniform u_j; then the bound below is
+/// computed, and a piece whose bound exceeds the tolerance is halved (in t) and fitted again.
+///
+/// The bound. With the linear correspondence u -> t = t0 + u (t1 - t0), the Hausdorff
+/// distance is at most max_u |e(u)|, e(u) = C(u) - O(t(u)) (each point of one is that close
+/// to a point of the other). On K uniform samples u_j, between two of them
+///   |e(u)| <= max(|e(u_j)|, |e(u_{j+1})|) + h^2 / 8 max |e''|,  h = 1 / K,
+/// (the linear interpolant of e plus its remainder), and |e''| <= |C''| + |O_p''| with O_p the
+/// piece's parallel curve in u. For the piece B_p (de Casteljau, local parameter u) with
+/// M_k >= |B_p^(k)| (the largest control point of its k-th hodograph: convex hull) and
+/// m <= |B_p'| (the least projection of B_p's first hodograph's control points on the
+/// direction of B_p'(1/2), when positive), the turning rate ω = cross(B_p', B_p'') / |B_p'|^2
+/// gives N'' = -ω' T - ω^2 N, so
+///   |O_p''| <= M_2 + |d| (|ω'| + ω^2),  |ω| <= M_1 M_2 / m^2,
+///   |ω'| <= M_1 M_3 / m^2 + 2 M_1^2 M_2^2 / m^4,
+/// and |C''| is at most its second hodograph's largest control point. K is chosen so that the
+/// remainder is at most a quarter of the tolerance. Where m is not positive (B' vanishes on
+/// or near the piece), the bound is the sum of the radii of two balls about O(t0): the cubic
+/// is within its control points' largest distance from O(t0), and O within
+/// max |B_p(u) - B_p(0)| + |d| θ, θ the angle spanned by the nonzero control points of the
+/// first hodograph (the normal turns by at most θ, |N(u) - N(0)| <= θ), when θ < π.
+/// Evaluations and de Casteljau steps are in doubles; the bound adds 64 n u S for their
+/// rounding (S the largest coordinate plus |d|).
+///
+/// Segment count. The ends, end tangents and cusps are exact, and the handles minimise the
+/// squared distance at 16 samples; this does not reach the sixth order of the geometric
+/// Hermite cubic (de Boor, Höllig and Sabin, "High accuracy geometric Hermite interpolation",
+/// CAGD 4, 1987), which R. Levien's fit ("Parallel curves of cubic Béziers", 2022) attains by
+/// matching the piece's signed area and moment: at tight tolerances this makes more cubics
+/// than Levien's, and fewer than a fixed subdivision. No measured comparison is in
+/// BENCHMARKS.md yet.
+///
+/// Work (units of one de Casteljau coordinate update) is charged for every fit and bound;
+/// `work_left` is the budget. Precondition: finite coordinates, tolerance > 1e-9 of the
+/// coordinates' scale and |d|.
+[[nodiscard]] CurveOffset offset_curve(const core::Curve& curve, double d, double tolerance,
+                                       std::int64_t work_left);
+
+}  // namespace bezier::outline

@@ -1,0 +1,172 @@
+// Tests of core/outline/offset.hpp: cubics within a tolerance of the parallel curve.
+//
+// Independent checks: every exact offset point O(t) = B(t) + d N(t) (N from the derivative,
+// computed here) is within the tolerance of the answer (nearest-point kernel on each cubic);
+// every answer point is within the tolerance of the exact offset curve (the least distance
+// to O over a dense set of t, refined by golden-section search around the best); cusps of O
+// are ends of cubics; a line's offset is a line.
+
+#include "core/outline/offset.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "core/curve/derivative.hpp"
+#include "core/curve/evaluate.hpp"
+#include "core/measure/nearest.hpp"
+#include "core/outline/offset_cusps.hpp"
+#include "tests/support/mulberry32.hpp"
+
+namespace bezier::outline {
+namespace {
+
+using core::Curve;
+using core::Point2;
+
+/// O(t) with the one-sided limit of the normal where B' = 0 (side +1 from the right).
+Point2 exact_offset(const Curve& curve, double d, double t, double side) {
+  const auto k = core::derivatives_at(curve, t, curve.degree());
+  for (std::size_t i = 0; i < k.size(); ++i) {
+    const double len = core::length(k[i]);
+    if (len > 1e-9) {
+      const double sign = (i % 2 == 1 && side < 0) ? -1.0 : 1.0;  // ε^i / i! B^(i+1)
+      const Point2 tangent = (sign / len) * k[i];
+      return core::evaluate(curve, t) + d * Point2{-tangent.y, tangent.x};
+    }
+  }
+  return core::evaluate(curve, t);
+}
+
+double distance_to_answer(const CurveOffset& offset, Point2 p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const OffsetCubic& c : offset.cubics) {
+    const Curve cubic(std::vector<Point2>(c.points.begin(), c.points.end()));
+    best = std::min(best, core::nearest(cubic, p, 0, 1).distance);
+  }
+  return best;
+}
+
+/// min over t in [t0, t1] of |O(t) - p|: dense samples, then golden-section search around the
+/// best sample.
+double distance_to_exact(const Curve& curve, double d, double t0, double t1, Point2 p) {
+  const int samples = 400;
+  double best = std::numeric_limits<double>::infinity();
+  int best_j = 0;
+  for (int j = 0; j <= samples; ++j) {
+    const double t = t0 + (t1 - t0) * j / samples;
+    const double dist = core::length(exact_offset(curve, d, t, j == samples ? -1.0 : 1.0) - p);
+    if (dist < best) best = dist, best_j = j;
+  }
+  double lo = t0 + (t1 - t0) * std::max(0, best_j - 1) / samples;
+  double hi = t0 + (t1 - t0) * std::min(samples, best_j + 1) / samples;
+  const double phi = (std::sqrt(5.0) - 1) / 2;
+  for (int i = 0; i < 80; ++i) {
+    const double m1 = hi - phi * (hi - lo), m2 = lo + phi * (hi - lo);
+    const double f1 = core::length(exact_offset(curve, d, m1, 1.0) - p);
+    const double f2 = core::length(exact_offset(curve, d, m2, 1.0) - p);
+    best = std::min({best, f1, f2});
+    (f1 < f2 ? hi : lo) = f1 < f2 ? m2 : m1;
+  }
+  return best;
+}
+
+void expect_within(const Curve& curve, double d, double tolerance, const CurveOffset& offset) {
+  ASSERT_EQ(offset.status, OffsetStatus::ok);
+  ASSERT_FALSE(offset.cubics.empty());
+  const double allowed = tolerance * (1 + 1e-6);
+  // Exact offset points near the answer, from both sides of every cut.
+  for (const OffsetCubic& c : offset.cubics) {
+    EXPECT_LE(c.error_bound, tolerance);
+    for (int j = 0; j <= 20; ++j) {
+      const double t = c.t0 + (c.t1 - c.t0) * j / 20;
+      const Point2 o = exact_offset(curve, d, t, j == 20 ? -1.0 : 1.0);
+      EXPECT_LE(distance_to_answer(offset, o), allowed) << "t " << t << " d " << d;
+    }
+    // Answer points near the exact offset of their piece.
+    const Curve cubic(std::vector<Point2>(c.points.begin(), c.points.end()));
+    for (int j = 0; j <= 8; ++j) {
+      const Point2 p = core::evaluate(cubic, j / 8.0);
+      EXPECT_LE(distance_to_exact(curve, d, c.t0, c.t1, p), allowed)
+          << "piece " << c.t0 << " d " << d;
+    }
+  }
+  // The pieces cover [0, 1] in order.
+  EXPECT_EQ(offset.cubics.front().t0, 0.0);
+  EXPECT_EQ(offset.cubics.back().t1, 1.0);
+  for (std::size_t i = 1; i < offset.cubics.size(); ++i)
+    EXPECT_EQ(offset.cubics[i].t0, offset.cubics[i - 1].t1);
+}
+
+TEST(Offset, LineOffsetIsTheParallelLine) {
+  const Curve line({{0, 0}, {3, 0}});
+  const CurveOffset o = offset_curve(line, 1.0, 1e-6, 1 << 30);
+  ASSERT_EQ(o.cubics.size(), 1u);
+  EXPECT_EQ(o.cubics[0].points[0], (Point2{0, 1}));
+  EXPECT_EQ(o.cubics[0].points[3], (Point2{3, 1}));
+  expect_within(line, 1.0, 1e-6, o);
+}
+
+TEST(Offset, ParabolaBothSides) {
+  const Curve parabola({{-1, 1}, {0, -1}, {1, 1}});
+  for (const double d : {0.3, -0.3, -1.0}) {
+    expect_within(parabola, d, 1e-3, offset_curve(parabola, d, 1e-3, 1 << 30));
+  }
+}
+
+TEST(Offset, CuspsAreEndsOfCubics) {
+  const Curve parabola({{-1, 1}, {0, -1}, {1, 1}});
+  const double d = std::sqrt(2.0);  // cusps at t = 1/4 and 3/4 (offset_cusps_test.cpp)
+  const CurveOffset o = offset_curve(parabola, d, 1e-3, 1 << 30);
+  expect_within(parabola, d, 1e-3, o);
+  for (const double cusp : offset_cusps(parabola, d)) {
+    bool is_end = false;
+    for (const OffsetCubic& c : o.cubics) is_end = is_end || c.t1 == cusp;
+    EXPECT_TRUE(is_end) << cusp;
+  }
+}
+
+TEST(Offset, RandomCubicsAndQuintics) {
+  test::Mulberry32 rng(3131);
+  for (int trial = 0; trial < 12; ++trial) {
+    const int n = trial % 3 == 2 ? 5 : 3;
+    std::vector<Point2> p;
+    for (int k = 0; k <= n; ++k) p.push_back({rng.uniform(-1, 1), rng.uniform(-1, 1)});
+    const Curve curve(p);
+    const double d = rng.uniform(-0.3, 0.3);
+    expect_within(curve, d, 1e-3, offset_curve(curve, d, 1e-3, 1 << 30));
+  }
+}
+
+TEST(Offset, ZeroDerivativeAtAnEndAndInside) {
+  const Curve handle({{0, 0}, {0, 0}, {1, 1}, {2, 0}});  // B'(0) = 0
+  expect_within(handle, 0.2, 1e-3, offset_curve(handle, 0.2, 1e-3, 1 << 30));
+  const Curve cusped({{0, 0}, {2, 2}, {-1, 2}, {1, 0}});  // B'(1/2) = 0
+  const CurveOffset o = offset_curve(cusped, 0.1, 1e-3, 1 << 30);
+  expect_within(cusped, 0.1, 1e-3, o);
+  bool cut = false;
+  for (const OffsetCubic& c : o.cubics) cut = cut || std::fabs(c.t1 - 0.5) < 1e-9;
+  EXPECT_TRUE(cut);
+}
+
+TEST(Offset, TheChecksTellAnotherDistanceApart) {
+  // The independent check is sharp enough to see a parallel curve 0.01 away.
+  const Curve parabola({{-1, 1}, {0, -1}, {1, 1}});
+  const CurveOffset o = offset_curve(parabola, 0.3, 1e-3, 1 << 30);
+  double worst = 0.0;
+  for (int j = 0; j <= 20; ++j)
+    worst = std::max(worst, distance_to_answer(o, exact_offset(parabola, 0.31, j / 20.0, 1.0)));
+  EXPECT_GT(worst, 5e-3);
+}
+
+TEST(Offset, WorkCapIsReported) {
+  const Curve curve({{0, 0}, {1, 2}, {2, -2}, {3, 0}});
+  const CurveOffset o = offset_curve(curve, 0.1, 1e-6, 1000);
+  EXPECT_EQ(o.status, OffsetStatus::work_cap_reached);
+  EXPECT_TRUE(o.cubics.empty());
+}
+
+}  // namespace
+}  // namespace bezier::outline
