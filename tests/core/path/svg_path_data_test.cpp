@@ -227,8 +227,11 @@ TEST(SvgPathData, ErrorsNameTheirOffsetAndWhatWasExpected) {
   const ErrorCase cases[] = {
       {"L1 1", 0, K::syntax, "expected a moveto command"},
       {"  1 1", 2, K::syntax, "expected a moveto command"},
-      {"M0 0 A1 1 0 0 1 2 2", 5, K::arc, "elliptical arc command A"},
-      {"M0 0 L1 1 a1 1 0 0 1 2 2", 10, K::arc, "elliptical arc command a"},
+      {"M0 0 A1 1 0 2 1 2 2", 12, K::syntax, "expected a flag (0 or 1), found '2'"},
+      {"M0 0 a1 1 0 0", 13, K::syntax, "expected a flag (0 or 1), found the end"},
+      {"M0 0 A1 1 0 0 1 2", 17, K::syntax, "expected a number, found the end"},
+      {"M0 0 A1 1 0 .5 1 2 2", 12, K::syntax, "expected a flag (0 or 1), found '.'"},
+      {"M0 0 A1.7e308 1 0 1 1 1e308 0", 5, K::out_of_range, "control points leave"},
       {"M0,0,L1,1", 5, K::syntax, "expected a number after ','"},
       {"M0 0 L1 1,", 10, K::syntax, "expected a number after ','"},
       {"M0 0 L1", 7, K::syntax, "expected a number, found the end of the data"},
