@@ -15,8 +15,8 @@ namespace {
 // The routes whose cost the degree and t-value limits bound rather than the work cap:
 // their items are not charged to the batch's work cap (their answers are bounded by
 // max_batch_answer_bytes instead). Every other item route is charged max_work.
-constexpr std::array<std::string_view, 4> kRoutesWithoutWorkCap = {"/evaluate", "/polar", "/classify",
-                                                                   "/bounds"};
+constexpr std::array<std::string_view, 5> kRoutesWithoutWorkCap = {"/evaluate", "/polar", "/classify",
+                                                                   "/bounds", "/segments"};
 
 bool is_batch_item_route(std::string_view path) {
   const auto routes = batch_item_routes();

@@ -44,6 +44,15 @@ void write_arc_tolerance(JsonWriter& w, const std::optional<double>& arc_toleran
 std::optional<path::Path> read_path(RequestReader& reader, const Json& value,
                                     const std::string& pointer,
                                     std::optional<double> arc_tolerance) {
+  auto parse = read_parsed_path(reader, value, pointer, arc_tolerance, EmptyPath::refused);
+  if (!parse) return std::nullopt;
+  return std::move(parse->path);
+}
+
+std::optional<path::PathDataParse> read_parsed_path(RequestReader& reader, const Json& value,
+                                                    const std::string& pointer,
+                                                    std::optional<double> arc_tolerance,
+                                                    EmptyPath empty) {
   if (!value.is_string()) {
     reader.fail(pointer, "expected a string of SVG path data, e.g. \"M0 0 C1 1 2 1 3 0\"");
     return std::nullopt;
@@ -61,7 +70,7 @@ std::optional<path::Path> read_path(RequestReader& reader, const Json& value,
     }
     return std::nullopt;
   }
-  if (parse.path.segments.empty()) {
+  if (parse.path.segments.empty() && empty == EmptyPath::refused) {
     reader.fail(pointer, "the path draws no segment (it needs a moveto and a drawing command)");
     return std::nullopt;
   }
@@ -74,7 +83,7 @@ std::optional<path::Path> read_path(RequestReader& reader, const Json& value,
       return std::nullopt;
     }
   }
-  return std::move(parse.path);
+  return parse;
 }
 
 std::optional<CurveOrPath> read_curve_or_path(RequestReader& reader, const Json& object,

@@ -8,6 +8,7 @@
 #include "api/write_json.hpp"
 #include "core/base/curve.hpp"
 #include "core/path/path.hpp"
+#include "core/path/svg_path_data.hpp"
 
 namespace bezier::api {
 
@@ -37,6 +38,17 @@ void write_arc_tolerance(JsonWriter& w, const std::optional<double>& arc_toleran
 std::optional<path::Path> read_path(RequestReader& reader, const Json& value,
                                     const std::string& pointer,
                                     std::optional<double> arc_tolerance);
+
+/// Whether read_parsed_path accepts path data that draws nothing (movetos alone, or empty).
+enum class EmptyPath { refused, accepted };
+
+/// read_path's parse, with what the parser records beside the path (the closing lines):
+/// the same refusals, except that with EmptyPath::accepted data that draws no segment is a
+/// path without segments.
+std::optional<path::PathDataParse> read_parsed_path(RequestReader& reader, const Json& value,
+                                                    const std::string& pointer,
+                                                    std::optional<double> arc_tolerance,
+                                                    EmptyPath empty);
 
 /// The member `points` (a planar curve, RequestReader::curve2) or `path` (read_path) of the
 /// object at `pointer`: exactly one of the two, else a refusal at `pointer`.

@@ -27,6 +27,7 @@ constexpr std::array kRoutes = {
     Route{"/length", &length_route},
     Route{"/bounds", &bounds_route},
     Route{"/nearest", &nearest_route},
+    Route{"/segments", &segments_route},
 };
 
 // The compute routes, then /batch.

@@ -19,5 +19,6 @@ namespace bezier::api {
 [[nodiscard]] Reply length_route(const nlohmann::json& request, const Limits& limits);
 [[nodiscard]] Reply bounds_route(const nlohmann::json& request, const Limits& limits);
 [[nodiscard]] Reply nearest_route(const nlohmann::json& request, const Limits& limits);
+[[nodiscard]] Reply segments_route(const nlohmann::json& request, const Limits& limits);
 
 }  // namespace bezier::api

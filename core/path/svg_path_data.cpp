@@ -107,7 +107,7 @@ class PathDataParser {
       }
     }
     end_subpath();
-    return {std::move(path_), std::nullopt};
+    return {std::move(path_), std::move(closing_lines_), std::nullopt};
   }
 
  private:
@@ -120,7 +120,7 @@ class PathDataParser {
     error_ = PathDataError{kind, offset, std::move(message)};
     return take_error();
   }
-  PathDataParse take_error() { return {Path{}, std::move(error_)}; }
+  PathDataParse take_error() { return {Path{}, {}, std::move(error_)}; }
   bool fail(PathDataErrorKind kind, std::size_t offset, std::string message) {
     error_ = PathDataError{kind, offset, std::move(message)};
     return false;
@@ -319,6 +319,7 @@ class PathDataParser {
   bool close_subpath(std::size_t offset) {
     if (subpath_open_ && !(current_ == start_)) {
       if (!segment({current_, start_}, Previous::other, offset)) return false;
+      closing_lines_.push_back(path_.segments.size() - 1);
     }
     end_subpath();
     current_ = start_;
@@ -341,6 +342,7 @@ class PathDataParser {
   std::size_t pos_ = 0;
   std::optional<PathDataError> error_;
   Path path_;
+  std::vector<std::size_t> closing_lines_;
   Point2 current_{};
   Point2 start_{};
   std::size_t subpath_first_ = 0;

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/path/path.hpp"
 
@@ -30,6 +31,8 @@ struct PathDataError {
 /// A parsed path, or the first error (then `path` is empty).
 struct PathDataParse {
   Path path;
+  /// The segments that are the closing line of a Z (z), increasing.
+  std::vector<std::size_t> closing_lines;
   std::optional<PathDataError> error;
 };
 

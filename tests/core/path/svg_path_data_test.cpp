@@ -373,3 +373,18 @@ TEST(SvgPathData, RandomOutlinesSpelledAbsoluteOrRelativeAgree) {
 
 }  // namespace
 }  // namespace bezier::path
+
+namespace bezier::path {
+namespace {
+
+TEST(SvgPathData, ClosingLinesAreTheLinesZAdds) {
+  // Z after a drawn line back to the start adds nothing; z elsewhere adds its line.
+  const PathDataParse p = parse_svg_path_data("M0 0 L1 0 L0 0 Z M5 5 h1 v1 z L9 9 z", kNoLimit);
+  ASSERT_FALSE(p.error);
+  // Segments: 0 (1,0) 1 back to (0,0), 2 h1, 3 v1, 4 closing, 5 L9 9 (from (5, 5)), 6 closing.
+  EXPECT_EQ(p.closing_lines, (std::vector<std::size_t>{4, 6}));
+  EXPECT_EQ(p.path.segments[4], Curve({{6, 6}, {5, 5}}));
+}
+
+}  // namespace
+}  // namespace bezier::path
