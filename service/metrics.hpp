@@ -49,10 +49,10 @@ class Metrics {
   /// The exposition text for GET /metrics.
   [[nodiscard]] std::string render() const;
 
-  static constexpr std::array<std::string_view, 16> kRoutes = {
+  static constexpr std::array<std::string_view, 17> kRoutes = {
       "/evaluate", "/polar",   "/loop-area", "/intersections", "/classify", "/length",
-      "/bounds",   "/nearest", "/segments",  "/batch",         "/openapi.yaml", "/healthz",
-      "/readyz",   "/metrics", "/",          "other"};
+      "/bounds",   "/nearest", "/segments",  "/batch",         "/openapi.yaml", "/openapi.json",
+      "/healthz",  "/readyz",  "/metrics",   "/",              "other"};
   static constexpr std::array<int, 13> kStatuses = {200, 204, 400, 401, 404, 405, 408,
                                                     413, 415, 422, 500, 503, 0 /*other*/};
   /// Upper bounds of the latency buckets, in seconds (+Inf is implied).

@@ -61,7 +61,8 @@ std::string request_id_for(std::string_view given) {
   return id;
 }
 
-constexpr std::string_view kGetRoutes[] = {"/healthz", "/readyz", "/metrics", "/openapi.yaml"};
+constexpr std::string_view kGetRoutes[] = {"/healthz", "/readyz", "/metrics", "/openapi.yaml",
+                                           "/openapi.json"};
 
 bool is_get_route(std::string_view path) {
   for (const auto r : kGetRoutes) {
@@ -177,6 +178,7 @@ Response Router::answer_get(std::string_view path) const {
   }
   if (path == "/metrics") return content(metrics_.render(), "text/plain; version=0.0.4; charset=utf-8");
   if (path == "/openapi.yaml") return content(api::openapi_yaml(), "application/yaml");
+  if (path == "/openapi.json") return content(api::openapi_json(), "application/json");
   if (const auto file = find_static_file(path)) return content(file->content, file->content_type);
   if (api::is_post_route(path)) {
     Response response = problem_response(api::ProblemKind::method_not_allowed, "use POST on " + std::string(path));
