@@ -90,10 +90,13 @@ ArcSegments arc_to_cubics(const EllipticalArc& arc, std::optional<double> tolera
   const Point2 c = rotated_back(unit(chord), cos_phi, sin_phi);
   const Point2 e = unit(rx >= ry ? Point2{c.x * (ry / rx), c.y} : Point2{c.x, c.y * (rx / ry)});
   const Point2 e_perp{-e.y, e.x};
-  double m = std::hypot(h.x / rx, h.y / ry);
-  if (m > 1.0) {  // radii too small: scaled up to reach (B.2.5, Λ = m² > 1)
-    rx *= m;
-    ry *= m;
+  // m in long double: x' / rx overflows a double for radii far below the chord (a subnormal
+  // radius), while the scaled radii rx m, ry m are about the chord's size.
+  const long double m_wide = std::hypot(static_cast<long double>(h.x) / rx, static_cast<long double>(h.y) / ry);
+  double m = static_cast<double>(m_wide);
+  if (m_wide > 1.0L) {  // radii too small: scaled up to reach (B.2.5, Λ = m² > 1)
+    rx = static_cast<double>(rx * m_wide);
+    ry = static_cast<double>(ry * m_wide);
     m = 1.0;
   }
   const double q = std::sqrt(std::max(0.0, (1.0 - m) * (1.0 + m)));
@@ -110,6 +113,10 @@ ArcSegments arc_to_cubics(const EllipticalArc& arc, std::optional<double> tolera
   const double magnitude = std::max(std::abs(frame.centre.x), std::abs(frame.centre.y)) + radius;
   const double asked = tolerance.value_or(kDefaultArcRelativeTolerance * radius);
   const double used = std::max(asked, kArcToleranceFloor * magnitude);
+  if (!std::isfinite(magnitude) || !std::isfinite(rx) || !std::isfinite(ry)) {
+    out.status = ArcStatus::out_of_range;  // an ellipse reaching beyond the double range
+    return out;
+  }
   // u1 and u2 equal in doubles: the chord subtends less than an ulp of angle (m below about
   // 1e-16), and the small arc is the chord to within its sagitta, about radius · m² / 2.
   if (sweep_angle == 0.0 && !arc.large_arc) return line(used);

@@ -365,3 +365,21 @@ TEST(EllipticalArc, ToleranceNeverBelowTheRoundingFloor) {
 
 }  // namespace
 }  // namespace bezier::path
+
+namespace bezier::path {
+namespace {
+
+TEST(EllipticalArc, ExtremeRadiiAreScaledOrRefusedNeverGarbage) {
+  // A subnormal radius is scaled up to the chord's half (the half circle of radius 1).
+  const ArcSegments tiny = arc_to_cubics({{0, 0}, {2, 0}, 1e-320, 1e-320, 0, false, true}, std::nullopt, kNoLimit);
+  ASSERT_EQ(tiny.status, ArcStatus::ok);
+  EXPECT_EQ(tiny.tolerance, 1e-6);
+  for (const Curve& c : tiny.segments) EXPECT_NEAR(std::hypot(c.back().x - 1, c.back().y), 1.0, 1e-15);
+  // An ellipse reaching past the double range is refused as out of range.
+  const ArcSegments huge = arc_to_cubics({{1e308, 0}, {-1e308, 0}, 1.5e308, 1.5e308, 0, true, true}, std::nullopt, kNoLimit);
+  EXPECT_EQ(huge.status, ArcStatus::out_of_range);
+  EXPECT_TRUE(huge.segments.empty());
+}
+
+}  // namespace
+}  // namespace bezier::path
