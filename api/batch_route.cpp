@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "api/handler.hpp"
+#include "api/nearest_name.hpp"
 #include "api/read_json.hpp"
 #include "api/route_table.hpp"
 
@@ -98,6 +99,7 @@ std::size_t answer_bytes_at_least(const Item& item, const Limits& limits) {
 Reply item_answer(const Item& item, const Limits& limits) {
   if (!is_batch_item_route(item.path)) {
     return problem_reply(ProblemKind::not_found, "no route " + std::string(item.path) +
+                                                     did_you_mean(item.path, batch_item_routes()) +
                                                      " in a batch: an item names one of " + item_routes_text());
   }
   return compute_route_answer(item.path, *item.body, limits);

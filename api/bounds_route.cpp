@@ -12,6 +12,9 @@
 // whole path, the union of its segments' tight boxes,
 //   {"critical": [[{"segment", "t"}, ...] per axis], "max", "min", "segment_count"}
 //   critical   per axis, by segment then t: each segment's critical t in (0, 1).
+// A path's elliptical arcs are cubics within "arc_tolerance" (a request field, > 0; default
+// 1e-6 of each arc's larger radius), and the answer then begins with "arc_tolerance": the
+// distance they keep (api/curve_or_path.hpp).
 // Errors: 422 validation problems with JSON Pointers.
 
 #include <algorithm>
@@ -52,7 +55,7 @@ Reply bounds_answer(const core::BasicCurve<P>& curve, ParameterInterval interval
   return json_reply(std::move(w));
 }
 
-// {"critical", "max", "min", "segment_count"}, members in key order.
+// {"arc_tolerance"?, "critical", "max", "min", "segment_count"}, members in key order.
 Reply path_bounds_answer(const path::Path& p) {
   core::Bounds<core::Point2> box = core::bounds(p.segments[0], 0.0, 1.0);
   std::array<std::vector<std::pair<std::size_t, double>>, 2> critical;
@@ -66,6 +69,7 @@ Reply path_bounds_answer(const path::Path& p) {
   }
   JsonWriter w;
   w.begin_object();
+  write_arc_tolerance(w, p.arc_tolerance);
   w.key("critical").begin_array();
   for (const auto& axis : critical) {
     w.begin_array();
@@ -89,12 +93,13 @@ Reply path_bounds_answer(const path::Path& p) {
 
 Reply bounds_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
-  reader.reject_unknown_fields(request, {"points", "path", "interval"}, "");
+  reader.reject_unknown_fields(request, {"points", "path", "arc_tolerance", "interval"}, "");
   if (has_path(request)) {
     const std::optional<path::Path> p = read_request_path(reader, request);
     if (!reader.ok()) return reader.refusal();
     return path_bounds_answer(*p);
   }
+  refuse_arc_tolerance_without_path(reader, request, false);
   const auto curve = reader.request_curve(request);
   const auto interval = read_parameter_interval(reader, request);
   if (!reader.ok()) return reader.refusal();

@@ -49,8 +49,9 @@ std::string format_number(double v) {
 
 Reply flatten_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
-  reader.reject_unknown_fields(request, {"points", "path", "tolerance"}, "");
-  std::optional<CurveOrPath> input = read_curve_or_path(reader, request, "");
+  reader.reject_unknown_fields(request, {"points", "path", "arc_tolerance", "tolerance"}, "");
+  refuse_arc_tolerance_without_path(reader, request, has_path(request));
+  std::optional<CurveOrPath> input = read_curve_or_path(reader, request, "", read_arc_tolerance(reader, request));
   double tolerance = 0.0;
   if (const auto* value = reader.required(request, "tolerance", "")) {
     const std::optional<double> given = reader.number(*value, "/tolerance");
@@ -92,6 +93,7 @@ Reply flatten_route(const nlohmann::json& request, const Limits& limits) {
   // {"count", "polylines", "vertices"}, members in key order.
   JsonWriter w;
   w.begin_object();
+  write_arc_tolerance(w, p.arc_tolerance);
   w.key("count").value(static_cast<std::int64_t>(flat.count));
   w.key("polylines").begin_array();
   for (const auto& polyline : flat.polylines) {

@@ -3,6 +3,7 @@
 #include <array>
 #include <string>
 
+#include "api/nearest_name.hpp"
 #include "api/parse_json.hpp"
 #include "api/read_json.hpp"
 #include "api/route_table.hpp"
@@ -39,11 +40,17 @@ Reply compute_route_answer(std::string_view path, const nlohmann::json& body, co
     return problem_reply(ProblemKind::malformed_json, "body must be a JSON object");
   }
   if (const ComputeRoute* route = find_compute_route(path)) return route->answer(body, limits);
-  return problem_reply(ProblemKind::not_found, "no route " + std::string(path));
+  return problem_reply(ProblemKind::not_found, "no route " + std::string(path) + did_you_mean(path, kPaths));
 }
 
 Reply handle(std::string_view path, std::string_view body, const Limits& limits,
              const BatchItemObserver& observer) {
+  if (body.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+    return problem_reply(ProblemKind::malformed_json,
+                         std::string(body.empty() ? "the body is empty" : "the body is only whitespace") +
+                             ": send a JSON object, e.g. {\"points\": [[0, 0], [1, 2], [2, 0]], \"t\": 0.5} "
+                             "for /evaluate (the routes and their fields: GET /openapi.yaml)");
+  }
   const ParsedJson parsed = parse_json(body);
   // Nested too deeply to parse: a body that is not an object is a 400 like any other; an
   // object is a request this service will not take.

@@ -37,5 +37,7 @@ namespace bezier::api {
 
 /// The OpenAPI document, byte for byte api/openapi.yaml (compiled in).
 [[nodiscard]] std::string_view openapi_yaml() noexcept;
+/// The same document as JSON (tools/openapi_to_json.py's text, converted at build time).
+[[nodiscard]] std::string_view openapi_json() noexcept;
 
 }  // namespace bezier::api

@@ -25,6 +25,9 @@
 // search: "closed-form-cubic", "subdivision" or "collinear"), "work", "max_depth",
 // "newton_iterations", "certification_iterations"}; `method` and `fat_curve_degree` do not
 // apply there and are ignored.
+// A path's elliptical arcs are cubics within "arc_tolerance" (a request field, > 0; default
+// 1e-6 of each arc's larger radius), and the answer then begins with "arc_tolerance": the
+// distance they keep (api/curve_or_path.hpp).
 // With a path among the curves (a curve then counts as a path of one segment, segment 0):
 // the same answers over the paths' segments (core/path/path_intersections.hpp), each
 // intersection and overlap with "segments": [i, j], the segment of the first curve or path
@@ -214,12 +217,15 @@ Reply two_paths_answer(const IntersectionsRequest& request, const Limits& limits
   const path::Path a = as_path(request.inputs[0]);
   const path::Path b = as_path(request.inputs[1]);
   const path::PathIntersectionResult r = path::intersect(a, b, request.options);
+  std::optional<double> arc_tolerance = a.arc_tolerance;
+  if (b.arc_tolerance) arc_tolerance = std::max(arc_tolerance.value_or(0.0), *b.arc_tolerance);
   if (r.status == core::IntersectStatus::work_cap_reached) return path_work_cap_reply(r.stats, limits);
   if (r.status == core::IntersectStatus::tolerance_too_small) {
     return tolerance_too_small_reply();
   }
   JsonWriter w;
   w.begin_object();
+  write_arc_tolerance(w, arc_tolerance);
   w.key("intersections").begin_array();
   for (const path::PathContact& c : r.intersections) write_path_intersection(w, c);
   w.end_array();
@@ -257,6 +263,7 @@ Reply one_path_answer(const IntersectionsRequest& request, const Limits& limits)
   sort_contacts(contacts);
   JsonWriter w;
   w.begin_object();
+  write_arc_tolerance(w, p.arc_tolerance);
   w.key("intersections").begin_array();
   for (const path::PathContact& c : contacts) write_path_intersection(w, c);
   w.end_array();
@@ -277,8 +284,11 @@ Reply one_path_answer(const IntersectionsRequest& request, const Limits& limits)
 
 Reply intersections_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
-  reader.reject_unknown_fields(request, {"curves", "tolerance", "method", "fat_curve_degree"}, "");
+  reader.reject_unknown_fields(
+      request, {"curves", "arc_tolerance", "tolerance", "method", "fat_curve_degree"}, "");
   IntersectionsRequest parsed;
+  const std::optional<double> arc_tolerance = read_arc_tolerance(reader, request);
+  bool any_path = false;
   parsed.options.max_work = limits.max_work;
   if (const auto* curves = reader.required(request, "curves", "")) {
     if (!curves->is_array() || curves->empty() || curves->size() > 2) {
@@ -293,10 +303,14 @@ Reply intersections_route(const nlohmann::json& request, const Limits& limits) {
           continue;
         }
         reader.reject_unknown_fields(c, {"points", "path"}, at);
-        if (auto input = read_curve_or_path(reader, c, at)) parsed.inputs.push_back(std::move(*input));
+        any_path = any_path || has_path(c);
+        if (auto input = read_curve_or_path(reader, c, at, arc_tolerance)) {
+          parsed.inputs.push_back(std::move(*input));
+        }
       }
     }
   }
+  refuse_arc_tolerance_without_path(reader, request, any_path);
   if (const auto* tolerance = RequestReader::optional(request, "tolerance")) {
     if (const auto v = reader.number(*tolerance, "/tolerance")) {
       if (!(core::kMinTolerance <= *v && *v <= 1.0)) {

@@ -18,6 +18,9 @@
 //   parameters   the segment holding length l from the path's start (the first one whose
 //                cumulative length reaches l) and its t there.
 //   The segments' quadratures are charged to the work cap (arc_length_work below).
+// A path's elliptical arcs are cubics within "arc_tolerance" (a request field, > 0; default
+// 1e-6 of each arc's larger radius), and the answer then begins with "arc_tolerance": the
+// distance they keep (api/curve_or_path.hpp).
 // Errors: 422 validation problems with JSON Pointers; 422 work-cap problem when the
 // quadrature needs more pieces than its cap.
 
@@ -139,10 +142,11 @@ Reply path_length_answer(RequestReader& reader, const path::Path& p,
     refuse_lengths_beyond(reader, *at_lengths, total, error_bound, "the path");
     if (!reader.ok()) return reader.refusal();
   }
-  // {"error_bound", "length", "parameters"?: [{"length", "point", "segment", "t"}],
-  //  "segment_count", "segment_lengths"}, members in key order.
+  // {"arc_tolerance"?, "error_bound", "length", "parameters"?: [{"length", "point",
+  //  "segment", "t"}], "segment_count", "segment_lengths"}, members in key order.
   JsonWriter w;
   w.begin_object();
+  write_arc_tolerance(w, p.arc_tolerance);
   w.key("error_bound").value(error_bound);
   w.key("length").value(total);
   if (at_lengths) {
@@ -186,13 +190,14 @@ std::optional<std::vector<double>> read_at_lengths(RequestReader& reader, const 
 
 Reply length_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
-  reader.reject_unknown_fields(request, {"points", "path", "interval", "at_lengths"}, "");
+  reader.reject_unknown_fields(request, {"points", "path", "arc_tolerance", "interval", "at_lengths"}, "");
   if (has_path(request)) {
     const std::optional<path::Path> p = read_request_path(reader, request);
     const auto at_lengths = read_at_lengths(reader, request);
     if (!reader.ok()) return reader.refusal();
     return path_length_answer(reader, *p, at_lengths);
   }
+  refuse_arc_tolerance_without_path(reader, request, false);
   const auto curve = reader.request_curve(request);
   const auto interval = read_parameter_interval(reader, request);
   const auto at_lengths = read_at_lengths(reader, request);

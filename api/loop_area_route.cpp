@@ -21,6 +21,9 @@
 //    "signed_area", "t": [t on segment i, s on segment j]}] (the path's self-intersection
 //    loops, core/path/path_loops.hpp), "overlaps": [{"s_interval", "segments",
 //    "t_interval"}], "segment_count", "stats": {"candidate_pairs", "work"}}
+// A path's elliptical arcs are cubics within "arc_tolerance" (a request field, > 0; default
+// 1e-6 of each arc's larger radius), and the answer then begins with "arc_tolerance": the
+// distance they keep (api/curve_or_path.hpp).
 // Errors: 422 validation problems with JSON Pointers (an area beyond the double range is
 // reported at /points); 422 work-cap problem when the self-intersection search needs more
 // than limits.max_work work units (parameter boxes charged by the curve's degree,
@@ -152,11 +155,12 @@ Reply path_loops_answer(const path::Path& p, const Limits& limits) {
   }
   bool closed = true;
   for (const path::Subpath& sub : p.subpaths) closed = closed && sub.closed;
-  // {"area", "closed", "closed_area", "loops": [{"area", "kind", "point", "segments",
+  // {"arc_tolerance"?, "area", "closed", "closed_area", "loops": [{"area", "kind", "point", "segments",
   //  "signed_area", "t"}], "overlaps": [{"s_interval", "segments", "t_interval"}],
   //  "segment_count", "stats": {"candidate_pairs", "work"}}, members in key order.
   JsonWriter w;
   w.begin_object();
+  write_arc_tolerance(w, p.arc_tolerance);
   w.key("area").value(total);
   w.key("closed").value(closed);
   write_optional(w.key("closed_area"), closed_area);
@@ -188,8 +192,10 @@ Reply path_loops_answer(const path::Path& p, const Limits& limits) {
 
 Reply loop_area_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
-  reader.reject_unknown_fields(request, {"points", "path", "interval"}, "");
-  std::optional<CurveOrPath> input = read_curve_or_path(reader, request, "");
+  reader.reject_unknown_fields(request, {"points", "path", "arc_tolerance", "interval"}, "");
+  const std::optional<double> arc_tolerance = read_arc_tolerance(reader, request);
+  refuse_arc_tolerance_without_path(reader, request, has_path(request));
+  std::optional<CurveOrPath> input = read_curve_or_path(reader, request, "", arc_tolerance);
   std::optional<ParameterInterval> interval;
   if (const auto* value = RequestReader::optional(request, "interval")) {
     if (has_path(request)) {

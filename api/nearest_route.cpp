@@ -17,6 +17,9 @@
 //   the least distance over every segment; the lowest segment (then the smallest t)
 //   attaining it, the others that tie with it to the same tolerance in `ties`, a joint
 //   once (on the lower segment).
+// A path's elliptical arcs are cubics within "arc_tolerance" (a request field, > 0; default
+// 1e-6 of each arc's larger radius), and the answer then begins with "arc_tolerance": the
+// distance they keep (api/curve_or_path.hpp).
 // Errors: 422 validation problems with JSON Pointers; 422 work-cap problem when targets
 // times the cost of one target's search (on a path: on every segment) exceeds
 // limits.max_work.
@@ -149,13 +152,14 @@ struct PathCandidate {
   core::Point2 point;
 };
 
-// {"results": [{"distance", "point", "segment", "t", "target", "ties"}], "segment_count"},
-// members in key order.
+// {"arc_tolerance"?, "results": [{"distance", "point", "segment", "t", "target", "ties"}],
+//  "segment_count"}, members in key order.
 Reply path_nearest_answer(const path::Path& p, const std::vector<core::Point2>& targets) {
   double path_scale = 0.0;
   for (const core::Curve& segment : p.segments) path_scale = std::max(path_scale, core::scale(segment));
   JsonWriter w;
   w.begin_object();
+  write_arc_tolerance(w, p.arc_tolerance);
   w.key("results").begin_array();
   for (const core::Point2 target : targets) {
     std::vector<PathCandidate> candidates;
@@ -234,8 +238,10 @@ Reply read_path_and_answer(RequestReader& reader, const Json& request) {
 
 Reply nearest_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
-  reader.reject_unknown_fields(request, {"points", "path", "targets", "interval"}, "");
+  reader.reject_unknown_fields(request, {"points", "path", "arc_tolerance", "targets", "interval"},
+                               "");
   if (has_path(request)) return read_path_and_answer(reader, request);
+  refuse_arc_tolerance_without_path(reader, request, false);
   const auto curve = reader.request_curve(request);
   const auto interval = read_parameter_interval(reader, request);
   if (!curve) {

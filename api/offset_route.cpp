@@ -48,8 +48,9 @@ struct SourcedCubic {
 
 Reply offset_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
-  reader.reject_unknown_fields(request, {"points", "path", "distance", "tolerance"}, "");
-  std::optional<CurveOrPath> input = read_curve_or_path(reader, request, "");
+  reader.reject_unknown_fields(request, {"points", "path", "arc_tolerance", "distance", "tolerance"}, "");
+  refuse_arc_tolerance_without_path(reader, request, has_path(request));
+  std::optional<CurveOrPath> input = read_curve_or_path(reader, request, "", read_arc_tolerance(reader, request));
   double distance = 0.0, tolerance = 0.0;
   if (const auto* value = reader.required(request, "distance", "")) {
     distance = reader.number(*value, "/distance").value_or(0.0);
@@ -114,9 +115,10 @@ Reply offset_route(const nlohmann::json& request, const Limits& limits) {
     }
   }
 
-  // {"error_bound", "path", "segments"}, members in key order.
+  // {"arc_tolerance"?, "error_bound", "path", "segments"}, members in key order.
   JsonWriter w;
   w.begin_object();
+  write_arc_tolerance(w, p.arc_tolerance);
   w.key("error_bound").value(error_bound);
   w.key("path").value(std::string_view(data));
   w.key("segments").begin_array();

@@ -60,10 +60,19 @@ std::string excerpt(std::string_view text, std::size_t limit) {
 
 }  // namespace
 
+/// The end of every work-cap problem's detail: what a client can change to finish.
+constexpr std::string_view kWorkCapAdvice =
+    ". To finish within the cap, ask for less per request: a larger `tolerance` or another "
+    "`method` (/intersections), fewer `targets` or `at_lengths`, a shorter path or a larger "
+    "`arc_tolerance` (fewer arc segments), fewer batch items; or run the service with a larger "
+    "--max-work (BEZIER_MAX_WORK; --max-batch-work for a whole batch)";
+
 int status_of(ProblemKind kind) noexcept { return info_of(kind).status; }
 
 Reply problem_reply(ProblemKind kind, std::string detail, std::vector<FieldError> errors) {
   const ProblemInfo info = info_of(kind);
+  // What a client can change: every work-cap problem ends with it.
+  if (kind == ProblemKind::work_cap) detail += kWorkCapAdvice;
   nlohmann::json body = {
       {"type", std::string("urn:bezier-service:problem:") + info.slug},
       {"title", info.title},

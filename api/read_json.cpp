@@ -1,8 +1,11 @@
 #include "api/read_json.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 
+#include "api/nearest_name.hpp"
 #include "core/curve/evaluate.hpp"
 
 namespace bezier::api {
@@ -69,13 +72,30 @@ Reply RequestReader::refusal() {
   return reply;
 }
 
+namespace {
+
+/// The routes that take SVG path data ("path"), named when a route that takes control
+/// points only is sent one.
+constexpr std::string_view kRoutesTakingPaths =
+    "/intersections, /loop-area, /length, /bounds, /nearest, /contains, /boolean, /flatten, /offset "
+    "and /segments";
+
+}  // namespace
+
 void RequestReader::reject_unknown_fields(const Json& object,
                                           std::initializer_list<std::string_view> known,
                                           const std::string& pointer) {
+  const std::span<const std::string_view> names(known.begin(), known.size());
+  const bool takes_points = std::find(names.begin(), names.end(), "points") != names.end();
   for (const auto& [key, value] : object.items()) {
-    bool is_known = false;
-    for (const std::string_view k : known) is_known = is_known || key == k;
-    if (!is_known) fail(pointer_to(pointer, key), "unknown field");
+    if (std::find(names.begin(), names.end(), key) != names.end()) continue;
+    if (key == "path" && takes_points) {
+      fail(pointer_to(pointer, key),
+           "this route takes control points (\"points\"), not SVG path data; the routes that "
+           "take \"path\" are " + std::string(kRoutesTakingPaths));
+      continue;
+    }
+    fail(pointer_to(pointer, key), "unknown field" + did_you_mean(key, names));
   }
 }
 

@@ -90,7 +90,9 @@ std::optional<region::Region> read_region(RequestReader& reader, const Json& obj
     return std::nullopt;
   }
   if (has_path_member) {
-    auto path = read_path(reader, object.at("path"), pointer_to(pointer, "path"), true);
+    auto parse = read_parsed_path(reader, object.at("path"), pointer_to(pointer, "path"), std::nullopt,
+                                  EmptyPath::accepted);
+    auto path = parse ? std::optional<path::Path>(std::move(parse->path)) : std::nullopt;
     if (!path || !rule_ok) return std::nullopt;
     return region::region_from_path(std::move(*path), rule);
   }

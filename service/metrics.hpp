@@ -53,8 +53,8 @@ class Metrics {
 
   /// The route labels: the compute routes (api/route_table.hpp), /batch, the GET routes,
   /// the playground's page and "other" for every other path.
-  static constexpr std::array<std::string_view, 6> kOtherRoutes = {
-      "/batch", "/openapi.yaml", "/healthz", "/readyz", "/metrics", "/"};
+  static constexpr std::array<std::string_view, 7> kOtherRoutes = {
+      "/batch", "/openapi.yaml", "/openapi.json", "/healthz", "/readyz", "/metrics", "/"};
   static constexpr std::array<std::string_view, api::kComputeRoutes.size() + kOtherRoutes.size() + 1> kRoutes =
       [] {
         std::array<std::string_view, api::kComputeRoutes.size() + kOtherRoutes.size() + 1> routes{};

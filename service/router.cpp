@@ -3,8 +3,10 @@
 #include <cctype>
 #include <cstdio>
 #include <random>
+#include <vector>
 
 #include "api/handler.hpp"
+#include "api/nearest_name.hpp"
 #include "service/static_files.hpp"
 
 namespace bezier::service {
@@ -61,7 +63,15 @@ std::string request_id_for(std::string_view given) {
   return id;
 }
 
-constexpr std::string_view kGetRoutes[] = {"/healthz", "/readyz", "/metrics", "/openapi.yaml"};
+constexpr std::string_view kGetRoutes[] = {"/healthz", "/readyz", "/metrics", "/openapi.yaml",
+                                           "/openapi.json"};
+
+/// "no route P", with the nearest route's name when P looks like a misspelling of one.
+std::string no_route(std::string_view path) {
+  std::vector<std::string_view> routes(api::post_routes().begin(), api::post_routes().end());
+  routes.insert(routes.end(), std::begin(kGetRoutes), std::end(kGetRoutes));
+  return "no route " + std::string(path) + api::did_you_mean(path, routes);
+}
 
 bool is_get_route(std::string_view path) {
   for (const auto r : kGetRoutes) {
@@ -166,13 +176,14 @@ Response Router::answer_get(std::string_view path) const {
   }
   if (path == "/metrics") return content(metrics_.render(), "text/plain; version=0.0.4; charset=utf-8");
   if (path == "/openapi.yaml") return content(api::openapi_yaml(), "application/yaml");
+  if (path == "/openapi.json") return content(api::openapi_json(), "application/json");
   if (const auto file = find_static_file(path)) return content(file->content, file->content_type);
   if (api::is_post_route(path)) {
     Response response = problem_response(api::ProblemKind::method_not_allowed, "use POST on " + std::string(path));
     response.headers.emplace_back("Allow", "POST");
     return response;
   }
-  return problem_response(api::ProblemKind::not_found, "no route " + std::string(path));
+  return problem_response(api::ProblemKind::not_found, no_route(path));
 }
 
 std::optional<Response> Router::check_post(const RequestView& request) const {
@@ -183,7 +194,7 @@ std::optional<Response> Router::check_post(const RequestView& request) const {
       response.headers.emplace_back("Allow", "GET, HEAD");
       return response;
     }
-    return problem_response(api::ProblemKind::not_found, "no route " + path);
+    return problem_response(api::ProblemKind::not_found, no_route(path));
   }
   if (!authorized(request)) {
     Response response =
@@ -215,7 +226,7 @@ Response Router::answer_other_method(const RequestView& request) const {
   } else if (is_get_route(path)) {
     allow = "GET, HEAD";
   } else {
-    return problem_response(api::ProblemKind::not_found, "no route " + path);
+    return problem_response(api::ProblemKind::not_found, no_route(path));
   }
   Response response = problem_response(api::ProblemKind::method_not_allowed,
                                        std::string(request.method) + " is not allowed on " + path);

@@ -5,10 +5,12 @@
 set -euo pipefail
 profile=${1:-run}
 
+# python3 and python3-yaml build the JSON form of the spec (GET /openapi.json,
+# tools/openapi_to_json.py at configure time).
 packages=(build-essential cmake ninja-build pkg-config ccache
-          libcpp-httplib-dev nlohmann-json3-dev libspdlog-dev libcli11-dev)
+          libcpp-httplib-dev nlohmann-json3-dev libspdlog-dev libcli11-dev python3 python3-yaml)
 if [ "$profile" = test ]; then
-  packages+=(libgtest-dev libgmock-dev libbenchmark-dev libvalijson-dev curl python3 python3-yaml python3-kubernetes docker-compose
+  packages+=(libgtest-dev libgmock-dev libbenchmark-dev libvalijson-dev curl python3-kubernetes docker-compose
              chromium chromium-driver)
 fi
 

@@ -26,6 +26,10 @@ struct Subpath {
 struct Path {
   std::vector<core::Curve> segments;
   std::vector<Subpath> subpaths;
+  /// When some segments stand for elliptical arcs of the path data (core/path/
+  /// elliptical_arc.hpp): the largest distance within which such segments follow their arc
+  /// (0 when every arc became nothing or an exact line); nullopt when the data had no arc.
+  std::optional<double> arc_tolerance;
 };
 
 /// The segment that follows `segment` at its end point inside its subpath: the next one,

@@ -1,5 +1,6 @@
 #include "core/path/svg_path_data.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "core/base/point.hpp"
+#include "core/path/elliptical_arc.hpp"
 
 namespace bezier::path {
 
@@ -32,6 +34,7 @@ int argument_count(char command) {
     case 'H': case 'h': case 'V': case 'v': return 1;
     case 'S': case 's': case 'Q': case 'q': return 4;
     case 'C': case 'c': return 6;
+    case 'A': case 'a': return 7;
     default: return 0;  // Z, z
   }
 }
@@ -40,7 +43,7 @@ bool is_command(char c) {
   switch (c) {
     case 'M': case 'm': case 'L': case 'l': case 'H': case 'h': case 'V': case 'v':
     case 'C': case 'c': case 'S': case 's': case 'Q': case 'q': case 'T': case 't':
-    case 'Z': case 'z':
+    case 'A': case 'a': case 'Z': case 'z':
       return true;
     default:
       return false;
@@ -62,8 +65,9 @@ enum class Previous { other, cubic, quadratic };
 
 class PathDataParser {
  public:
-  PathDataParser(std::string_view data, std::size_t max_segments)
-      : data_(data), max_segments_(max_segments) {}
+  PathDataParser(std::string_view data, std::size_t max_segments,
+                 std::optional<double> arc_tolerance)
+      : data_(data), max_segments_(max_segments), arc_tolerance_(arc_tolerance) {}
 
   PathDataParse run() {
     skip_wsp();
@@ -76,14 +80,9 @@ class PathDataParser {
     while (!at_end()) {
       const std::size_t command_offset = pos_;
       const char command = data_[pos_];
-      if (command == 'A' || command == 'a') {
-        return failure(PathDataErrorKind::arc, command_offset,
-                       std::string("the elliptical arc command ") + command +
-                           " is not supported: an arc is not a Bézier curve");
-      }
       if (!is_command(command)) {
         return failure(PathDataErrorKind::syntax, command_offset,
-                       "expected a command letter (M, L, H, V, C, S, Q, T, Z or their "
+                       "expected a command letter (M, L, H, V, C, S, Q, T, A, Z or their "
                        "lowercase forms), found " + describe(command));
       }
       ++pos_;
@@ -111,7 +110,7 @@ class PathDataParser {
       }
     }
     end_subpath();
-    return {std::move(path_), std::nullopt};
+    return {std::move(path_), std::move(closing_lines_), std::nullopt};
   }
 
  private:
@@ -124,7 +123,7 @@ class PathDataParser {
     error_ = PathDataError{kind, offset, std::move(message)};
     return take_error();
   }
-  PathDataParse take_error() { return {Path{}, std::move(error_)}; }
+  PathDataParse take_error() { return {Path{}, {}, std::move(error_)}; }
   bool fail(PathDataErrorKind kind, std::size_t offset, std::string message) {
     error_ = PathDataError{kind, offset, std::move(message)};
     return false;
@@ -189,7 +188,7 @@ class PathDataParser {
   /// nothing where a sign or point begins the next), then the segment they draw.
   bool arguments(char command, bool first_group, std::size_t offset) {
     const int count = argument_count(command);
-    std::array<double, 6> a{};
+    std::array<double, 7> a{};
     for (int k = 0; k < count; ++k) {
       if (k > 0) {
         skip_wsp();
@@ -198,11 +197,21 @@ class PathDataParser {
           skip_wsp();
         }
       }
+      // The large-arc and sweep flags of an arc (its 4th and 5th arguments) are one
+      // character each, so "00" or "11" is two flags, as in "a1 1 0 00 1 1".
+      if ((command == 'A' || command == 'a') && (k == 3 || k == 4)) {
+        if (!flag(a[static_cast<std::size_t>(k)])) return false;
+        continue;
+      }
       if (!number(a[static_cast<std::size_t>(k)])) return false;
     }
     const bool relative = command >= 'a';
     const Point2 base = relative ? current_ : Point2{0.0, 0.0};
     const auto at = [&](std::size_t k) { return Point2{base.x + a[k], base.y + a[k + 1]}; };
+    if (command == 'A' || command == 'a') {
+      return elliptical_arc(EllipticalArc{current_, at(5), a[0], a[1], a[2], a[3] != 0.0, a[4] != 0.0},
+                            offset);
+    }
     switch (command) {
       case 'M': case 'm':
         // Only the first pair moves; later pairs are implicit line commands.
@@ -227,6 +236,50 @@ class PathDataParser {
       default:
         return fail(PathDataErrorKind::syntax, offset, "expected a command letter");
     }
+  }
+
+  /// A flag argument of an arc at pos_: the character 0 or 1.
+  bool flag(double& value) {
+    if (at_end() || (data_[pos_] != '0' && data_[pos_] != '1')) {
+      return fail(PathDataErrorKind::syntax, pos_,
+                  at_end() ? std::string("expected a flag (0 or 1), found the end of the data")
+                           : "expected a flag (0 or 1), found " + describe(data_[pos_]));
+    }
+    value = data_[pos_] == '1' ? 1.0 : 0.0;
+    ++pos_;
+    return true;
+  }
+
+  /// The segments of an arc (core/path/elliptical_arc.hpp): none when it ends where it
+  /// starts, a line for a zero radius, else cubics within the tolerance. S and T after it
+  /// reflect nothing (it is not of their family).
+  bool elliptical_arc(const EllipticalArc& arc, std::size_t offset) {
+    if (!core::is_finite(arc.to)) {
+      return fail(PathDataErrorKind::out_of_range, offset,
+                  "the coordinates leave the double range");
+    }
+    const std::size_t room =
+        max_segments_ - std::min(max_segments_, path_.segments.size());
+    ArcSegments made = arc_to_cubics(arc, arc_tolerance_, room);
+    if (made.status == ArcStatus::too_many_pieces) {
+      return fail(PathDataErrorKind::too_many_segments, offset,
+                  "more than " + std::to_string(max_segments_) +
+                      " segments (an elliptical arc becomes cubics within its tolerance: a "
+                      "larger arc_tolerance needs fewer)");
+    }
+    if (made.status == ArcStatus::out_of_range) {
+      return fail(PathDataErrorKind::out_of_range, offset,
+                  "the arc's control points leave the double range");
+    }
+    path_.arc_tolerance = std::max(path_.arc_tolerance.value_or(0.0), made.tolerance);
+    previous_ = Previous::other;
+    for (core::Curve& piece : made.segments) {
+      if (!segment(std::vector<Point2>(piece.points().begin(), piece.points().end()),
+                   Previous::other, offset)) {
+        return false;
+      }
+    }
+    return true;
   }
 
   /// The first control point of S (family cubic) or T (family quadratic): the reflection of
@@ -274,6 +327,7 @@ class PathDataParser {
   bool close_subpath(std::size_t offset) {
     if (subpath_open_ && !(current_ == start_)) {
       if (!segment({current_, start_}, Previous::other, offset)) return false;
+      closing_lines_.push_back(path_.segments.size() - 1);
     }
     end_subpath();
     current_ = start_;
@@ -292,9 +346,11 @@ class PathDataParser {
 
   std::string_view data_;
   std::size_t max_segments_;
+  std::optional<double> arc_tolerance_;
   std::size_t pos_ = 0;
   std::optional<PathDataError> error_;
   Path path_;
+  std::vector<std::size_t> closing_lines_;
   Point2 current_{};
   Point2 start_{};
   std::size_t subpath_first_ = 0;
@@ -305,8 +361,9 @@ class PathDataParser {
 
 }  // namespace
 
-PathDataParse parse_svg_path_data(std::string_view data, std::size_t max_segments) {
-  return PathDataParser(data, max_segments).run();
+PathDataParse parse_svg_path_data(std::string_view data, std::size_t max_segments,
+                                  std::optional<double> arc_tolerance) {
+  return PathDataParser(data, max_segments, arc_tolerance).run();
 }
 
 }  // namespace bezier::path

@@ -217,6 +217,16 @@ TEST_F(ContractTest, TheServedSpecIsTheFile) {
   EXPECT_EQ(contract().spec().at("openapi"), "3.1.0");
 }
 
+TEST_F(ContractTest, TheServedJsonIsTheSpec) {
+  // The JSON is the YAML's content: equal as documents to the file read independently of
+  // the build (the same converter, run now on the source).
+  const auto e = exchange(port(), "GET", "/openapi.json");
+  EXPECT_EQ(e.status, 200);
+  const json served = json::parse(e.response_body);
+  EXPECT_TRUE(served == contract().spec()) << "GET /openapi.json is not api/openapi.yaml's content: rebuild the service";
+  EXPECT_EQ(served.at("paths").size(), contract().spec().at("paths").size());
+}
+
 TEST_F(ContractTest, EveryRouteOfTheServiceIsInTheSpec) {
   std::set<std::string> documented;
   for (const Operation& op : operations()) {

@@ -104,6 +104,19 @@ TEST(Metrics, BuildInfoCarriesTheVersion) {
   EXPECT_EQ(metric(service.port(), R"(bezier_build_info{version=")" + version.substr(space + 1) + R"("})"), 1);
 }
 
+TEST(Metrics, EachSpecRouteHasItsOwnLabel) {
+  ServiceProcess service;
+  const std::string json_200 = R"(bezier_requests_total{route="/openapi.json",status="200"})";
+  const std::string yaml_200 = R"(bezier_requests_total{route="/openapi.yaml",status="200"})";
+  const std::string segments_200 = R"(bezier_requests_total{route="/segments",status="200"})";
+  EXPECT_EQ(metric(service.port(), json_200).value_or(0), 0);  // a series appears at its first count
+  EXPECT_EQ(status_of(round_trip(service.port(), get_request("/openapi.json"))), 200);
+  EXPECT_EQ(status_of(round_trip(service.port(), post_request("/segments", R"({"path":"M0 0 L1 1"})"))), 200);
+  EXPECT_EQ(metric(service.port(), json_200), 1);
+  EXPECT_EQ(metric(service.port(), yaml_200).value_or(0), 0);
+  EXPECT_EQ(metric(service.port(), segments_200), 1);
+}
+
 TEST(Metrics, WorkCapHitsCountOnlyAnswersTheWorkCapDecided) {
   ServiceProcess service({"--threads", "1"});
   EXPECT_EQ(metric(service.port(), "bezier_work_cap_hits_total"), 0);

@@ -3,7 +3,7 @@
 // its contract drift apart: a status, media type or body the spec does not describe,
 // or a request the service accepted although the spec forbids it.
 //
-// The YAML is turned into JSON by tests/contract/openapi_to_json.py (Debian's
+// The YAML is turned into JSON by tools/openapi_to_json.py (Debian's
 // python3-yaml, read as YAML 1.2), and schemas are checked with valijson (Debian's
 // libvalijson-dev, JSON Schema draft 7 with nlohmann-json). The spec therefore keeps to
 // the part of OpenAPI 3.1 / JSON Schema 2020-12 that draft 7 reads the same way (no
@@ -161,7 +161,7 @@ struct HttpExchange {
     python = "/usr/bin/python3";  // Debian's, where python3-yaml installs
   }
   const std::string command =
-      "'" + python + "' '" + source_dir + "/tests/contract/openapi_to_json.py' '" + yaml_path + "'";
+      "'" + python + "' '" + source_dir + "/tools/openapi_to_json.py' '" + yaml_path + "'";
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) throw std::runtime_error("cannot run " + command);
   std::string text;

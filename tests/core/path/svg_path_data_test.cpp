@@ -227,8 +227,11 @@ TEST(SvgPathData, ErrorsNameTheirOffsetAndWhatWasExpected) {
   const ErrorCase cases[] = {
       {"L1 1", 0, K::syntax, "expected a moveto command"},
       {"  1 1", 2, K::syntax, "expected a moveto command"},
-      {"M0 0 A1 1 0 0 1 2 2", 5, K::arc, "elliptical arc command A"},
-      {"M0 0 L1 1 a1 1 0 0 1 2 2", 10, K::arc, "elliptical arc command a"},
+      {"M0 0 A1 1 0 2 1 2 2", 12, K::syntax, "expected a flag (0 or 1), found '2'"},
+      {"M0 0 a1 1 0 0", 13, K::syntax, "expected a flag (0 or 1), found the end"},
+      {"M0 0 A1 1 0 0 1 2", 17, K::syntax, "expected a number, found the end"},
+      {"M0 0 A1 1 0 .5 1 2 2", 12, K::syntax, "expected a flag (0 or 1), found '.'"},
+      {"M0 0 A1.7e308 1 0 1 1 1e308 0", 5, K::out_of_range, "control points leave"},
       {"M0,0,L1,1", 5, K::syntax, "expected a number after ','"},
       {"M0 0 L1 1,", 10, K::syntax, "expected a number after ','"},
       {"M0 0 L1", 7, K::syntax, "expected a number, found the end of the data"},
@@ -366,6 +369,21 @@ TEST(SvgPathData, RandomOutlinesSpelledAbsoluteOrRelativeAgree) {
       }
     }
   }
+}
+
+}  // namespace
+}  // namespace bezier::path
+
+namespace bezier::path {
+namespace {
+
+TEST(SvgPathData, ClosingLinesAreTheLinesZAdds) {
+  // Z after a drawn line back to the start adds nothing; z elsewhere adds its line.
+  const PathDataParse p = parse_svg_path_data("M0 0 L1 0 L0 0 Z M5 5 h1 v1 z L9 9 z", kNoLimit);
+  ASSERT_FALSE(p.error);
+  // Segments: 0 (1,0) 1 back to (0,0), 2 h1, 3 v1, 4 closing, 5 L9 9 (from (5, 5)), 6 closing.
+  EXPECT_EQ(p.closing_lines, (std::vector<std::size_t>{4, 6}));
+  EXPECT_EQ(p.path.segments[4], Curve({{6, 6}, {5, 5}}));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Prints api/openapi.yaml (or the YAML file given) as JSON, for the C++ contract tests.
+"""Prints api/openapi.yaml (or the YAML file given) as JSON: for the build, which compiles it
+into the service as GET /openapi.json (api/CMakeLists.txt), and for the C++ contract tests.
 
 Uses Debian's python3-yaml. PyYAML follows YAML 1.1, where `1e-12` (no dot) is a
 string and `yes`/`no`/`on`/`off` are booleans; the spec is read as YAML 1.2 core
