@@ -29,6 +29,11 @@ std::string circle_traced_1000_times() {
 }
 
 TEST(MemoryRelease, ResidentSetReturnsNearItsLevelAfterABurst) {
+#if defined(__SANITIZE_ADDRESS__)
+  // AddressSanitizer's allocator replaces glibc's (no malloc_trim) and keeps freed memory
+  // in quarantine: resident memory says nothing about the service's release there.
+  GTEST_SKIP() << "resident memory under AddressSanitizer is its allocator's";
+#endif
   ServiceProcess service({"--threads", "8", "--io-threads", "1"});
   const std::string request = post_request("/intersections", circle_traced_1000_times());
   ASSERT_EQ(status_of(round_trip(service.port(), post_request("/evaluate", R"({"points":[[0,0],[1,1]],"t":0.5})"))), 200);
