@@ -21,51 +21,12 @@
 
 #include "api/read_json.hpp"
 #include "api/read_region.hpp"
+#include "api/read_targets.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
 #include "core/region/winding.hpp"
 
 namespace bezier::api {
-
-namespace {
-
-/// `targets`: 1 to max_t_values planar points.
-std::optional<std::vector<core::Point2>> read_targets(RequestReader& reader, const Json& value) {
-  if (!value.is_array()) {
-    reader.fail("/targets", "expected an array of points [x, y]");
-    return std::nullopt;
-  }
-  if (value.empty()) {
-    reader.fail("/targets", "must not be empty");
-    return std::nullopt;
-  }
-  const auto limit = static_cast<std::size_t>(reader.limits().max_t_values);
-  if (value.size() > limit) {
-    reader.fail_limit("/targets", "at most " + std::to_string(limit) + " targets allowed, got " +
-                                      std::to_string(value.size()) + " (the max_t_values limit)");
-    return std::nullopt;
-  }
-  std::vector<core::Point2> targets;
-  targets.reserve(value.size());
-  bool all_ok = true;
-  for (std::size_t i = 0; i < value.size(); ++i) {
-    const Json& p = value[i];
-    const std::string pointer = pointer_to("/targets", i);
-    if (!p.is_array() || p.size() != 2) {
-      reader.fail(pointer, "expected a point [x, y]");
-      all_ok = false;
-      continue;
-    }
-    const auto x = reader.number(p[0], pointer_to(pointer, std::size_t{0}));
-    const auto y = reader.number(p[1], pointer_to(pointer, std::size_t{1}));
-    all_ok = all_ok && x && y;
-    targets.push_back({x.value_or(0.0), y.value_or(0.0)});
-  }
-  if (!all_ok) return std::nullopt;
-  return targets;
-}
-
-}  // namespace
 
 Reply contains_route(const Json& request, const Limits& limits) {
   RequestReader reader(limits);
@@ -74,7 +35,7 @@ Reply contains_route(const Json& request, const Limits& limits) {
   std::optional<region::Region> operand = read_region(reader, request, "");
   std::optional<std::vector<core::Point2>> targets;
   if (const Json* value = reader.required(request, "targets", "")) {
-    targets = read_targets(reader, *value);
+    targets = read_targets<core::Point2>(reader, *value, " [x, y]");
   }
   if (!reader.ok()) return reader.refusal();
 

@@ -20,52 +20,22 @@
 
 #include "api/curve_or_path.hpp"
 #include "api/read_json.hpp"
+#include "api/read_tolerance.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
 #include "core/outline/flatten.hpp"
 
 namespace bezier::api {
 
-namespace {
-
-/// Tolerances below this fraction of the coordinates' scale are refused: a chord's distance
-/// is certified to a few hundred ulps of the scale (core/outline/tuning.hpp), and a
-/// tolerance near that buys vertices, not accuracy.
-constexpr double kSmallestRelativeTolerance = 1e-9;
-
-double path_scale(const path::Path& p) {
-  double s = 0.0;
-  for (const core::Curve& segment : p.segments) s = std::max(s, core::scale(segment));
-  return s;
-}
-
-std::string format_number(double v) {
-  std::string out;
-  append_json_number(v, out);
-  return out;
-}
-
-}  // namespace
-
 Reply flatten_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
   reader.reject_unknown_fields(request, {"points", "path", "arc_tolerance", "tolerance"}, "");
   refuse_arc_tolerance_without_path(reader, request, has_path(request));
   std::optional<CurveOrPath> input = read_curve_or_path(reader, request, "", read_arc_tolerance(reader, request));
-  double tolerance = 0.0;
-  if (const auto* value = reader.required(request, "tolerance", "")) {
-    const std::optional<double> given = reader.number(*value, "/tolerance");
-    if (given && !(*given > 0.0)) reader.fail("/tolerance", "must be greater than 0");
-    tolerance = given.value_or(0.0);
-  }
+  const double tolerance = read_positive_tolerance(reader, request);
   if (!reader.ok() || !input) return reader.refusal();
   const path::Path p = as_path(std::move(*input));
-  const double scale = path_scale(p);
-  if (tolerance < kSmallestRelativeTolerance * scale) {
-    reader.fail("/tolerance", "must be at least 1e-9 of the coordinates' scale (" +
-                                  format_number(kSmallestRelativeTolerance * scale) + ")");
-    return reader.refusal();
-  }
+  if (!tolerance_fits_scale(reader, tolerance, coordinate_scale(p))) return reader.refusal();
 
   outline::FlattenOptions options;
   options.tolerance = tolerance;

@@ -35,6 +35,7 @@
 #include "api/curve_or_path.hpp"
 #include "api/parameter_interval.hpp"
 #include "api/read_json.hpp"
+#include "api/read_targets.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
 #include "core/curve/evaluate.hpp"
@@ -43,51 +44,6 @@
 namespace bezier::api {
 
 namespace {
-
-constexpr std::size_t dimension_of(core::Point2) { return 2; }
-constexpr std::size_t dimension_of(core::Point3) { return 3; }
-
-/// `targets`: 1 to max_t_values points of P's dimension.
-template <class P>
-std::optional<std::vector<P>> read_targets(RequestReader& reader, const Json& value) {
-  constexpr std::size_t kDimension = dimension_of(P{});
-  if (!value.is_array()) {
-    reader.fail("/targets", "expected an array of points");
-    return std::nullopt;
-  }
-  if (value.empty()) {
-    reader.fail("/targets", "must not be empty");
-    return std::nullopt;
-  }
-  const auto limit = static_cast<std::size_t>(reader.limits().max_t_values);
-  if (value.size() > limit) {
-    reader.fail_limit("/targets", "at most " + std::to_string(limit) + " targets allowed, got " +
-                                      std::to_string(value.size()));
-    return std::nullopt;
-  }
-  std::vector<P> targets;
-  bool all_ok = true;
-  for (std::size_t i = 0; i < value.size(); ++i) {
-    const Json& p = value[i];
-    const std::string pointer = pointer_to("/targets", i);
-    if (!p.is_array() || p.size() != kDimension) {
-      reader.fail(pointer, "expected a point of " + std::to_string(kDimension) +
-                               " numbers, the curve's dimension");
-      all_ok = false;
-      continue;
-    }
-    P target;
-    double* coordinates = &target.x;
-    for (std::size_t k = 0; k < kDimension; ++k) {
-      const auto c = reader.number(p[k], pointer_to(pointer, k));
-      all_ok = all_ok && c.has_value();
-      coordinates[k] = c.value_or(0.0);
-    }
-    targets.push_back(target);
-  }
-  if (!all_ok) return std::nullopt;
-  return targets;
-}
 
 /// Work units of one target (the units of Limits::max_work): isolating
 /// and bisecting the roots of a degree 2n - 1 polynomial, each piece and each bisection step
@@ -130,7 +86,7 @@ Reply read_and_answer(RequestReader& reader, const core::BasicCurve<P>& curve,
                       const Json& request, const std::optional<ParameterInterval>& interval) {
   std::optional<std::vector<P>> targets;
   if (const auto* value = reader.required(request, "targets", "")) {
-    targets = read_targets<P>(reader, *value);
+    targets = read_targets<P>(reader, *value, ", the curve's dimension");
   }
   if (!reader.ok()) return reader.refusal();
   const std::int64_t work = static_cast<std::int64_t>(targets->size()) * work_per_target(curve.degree());
@@ -217,7 +173,7 @@ Reply read_path_and_answer(RequestReader& reader, const Json& request) {
   const std::optional<path::Path> p = read_request_path(reader, request);
   std::optional<std::vector<core::Point2>> targets;
   if (const auto* value = reader.required(request, "targets", "")) {
-    targets = read_targets<core::Point2>(reader, *value);
+    targets = read_targets<core::Point2>(reader, *value, ", the curve's dimension");
   }
   if (!reader.ok()) return reader.refusal();
   std::int64_t per_target = 0;

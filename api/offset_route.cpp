@@ -23,6 +23,7 @@
 
 #include "api/curve_or_path.hpp"
 #include "api/read_json.hpp"
+#include "api/read_tolerance.hpp"
 #include "api/routes.hpp"
 #include "api/write_json.hpp"
 #include "core/outline/offset.hpp"
@@ -30,14 +31,6 @@
 namespace bezier::api {
 
 namespace {
-
-constexpr double kSmallestRelativeTolerance = 1e-9;
-
-std::string format_number(double v) {
-  std::string out;
-  append_json_number(v, out);
-  return out;
-}
 
 struct SourcedCubic {
   std::size_t source_segment = 0;
@@ -51,22 +44,14 @@ Reply offset_route(const nlohmann::json& request, const Limits& limits) {
   reader.reject_unknown_fields(request, {"points", "path", "arc_tolerance", "distance", "tolerance"}, "");
   refuse_arc_tolerance_without_path(reader, request, has_path(request));
   std::optional<CurveOrPath> input = read_curve_or_path(reader, request, "", read_arc_tolerance(reader, request));
-  double distance = 0.0, tolerance = 0.0;
+  double distance = 0.0;
   if (const auto* value = reader.required(request, "distance", "")) {
     distance = reader.number(*value, "/distance").value_or(0.0);
   }
-  if (const auto* value = reader.required(request, "tolerance", "")) {
-    const std::optional<double> given = reader.number(*value, "/tolerance");
-    if (given && !(*given > 0.0)) reader.fail("/tolerance", "must be greater than 0");
-    tolerance = given.value_or(0.0);
-  }
+  const double tolerance = read_positive_tolerance(reader, request);
   if (!reader.ok() || !input) return reader.refusal();
   const path::Path p = as_path(std::move(*input));
-  double scale = std::fabs(distance);
-  for (const core::Curve& segment : p.segments) scale = std::max(scale, core::scale(segment));
-  if (tolerance < kSmallestRelativeTolerance * scale) {
-    reader.fail("/tolerance", "must be at least 1e-9 of the coordinates' scale (" +
-                                  format_number(kSmallestRelativeTolerance * scale) + ")");
+  if (!tolerance_fits_scale(reader, tolerance, std::max(std::fabs(distance), coordinate_scale(p)))) {
     return reader.refusal();
   }
 
