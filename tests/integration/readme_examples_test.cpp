@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "api/handler.hpp"
 #include "tests/support/service_process.hpp"
 
 namespace bezier::test {
@@ -70,6 +71,19 @@ TEST(ReadmeExamples, EveryCurlExampleGivesTheDocumentedAnswer) {
     // wherever it runs.
     EXPECT_EQ(nlohmann::json::parse(r->body), nlohmann::json::parse(ex.expected));
   }
+}
+
+TEST(ReadmeExamples, TheRouteTableNamesEveryPostRouteInOrder) {
+  // The first screen's table: one line "| `POST /route` | what it answers |" per route.
+  std::ifstream file(std::string(BEZIER_SOURCE_DIR) + "/README.md");
+  std::vector<std::string> listed;
+  const std::string prefix = "| `POST ";
+  for (std::string line; std::getline(file, line);) {
+    if (line.rfind(prefix, 0) != 0) continue;
+    listed.push_back(line.substr(prefix.size(), line.find('`', prefix.size()) - prefix.size()));
+  }
+  const auto routes = api::post_routes();
+  EXPECT_EQ(listed, std::vector<std::string>(routes.begin(), routes.end()));
 }
 
 }  // namespace
