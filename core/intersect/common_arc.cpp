@@ -237,7 +237,8 @@ Monomial refined_on_curve(const WorkingCurve& c, Monomial p, int d) {
     std::vector<std::vector<double>> jacobian(unknowns);
     for (std::size_t u = 0; u < unknowns; ++u) {
       Monomial q = p;
-      const double h = 0x1p-27 * bernstein::max2(1.0, std::fabs(p[u + 1]));
+      const double h =
+          intersect_tuning::kFactorJacobianStep * bernstein::max2(1.0, std::fabs(p[u + 1]));
       q[u + 1] += h;
       const std::optional<std::vector<double>> shifted = misfit_of(q);
       if (!shifted) return p;

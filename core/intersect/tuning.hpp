@@ -163,6 +163,10 @@ inline constexpr double kArcSlack = 0x1p-24;
 /// The candidate filters' relative tolerance: far above the rounding of monomial
 /// coefficients of degree 20 (2^20 u), far below any curve that is not improper.
 inline constexpr double kArcFilter = 1e-6;
+/// The relative step of the forward-difference Jacobian when a common factor is refined on
+/// the curve (refined_on_curve): about sqrt(u), which balances the difference's truncation
+/// error (of order the step) against its rounding error (of order u / step).
+inline constexpr double kFactorJacobianStep = 0x1p-27;
 /// The division filter's tolerance (is_polynomial_in): a factor of a degree-20 curve whose
 /// power form cancels a lot leaves remainders near 2e-5 of its coefficients, while generic
 /// curves of degree 20 leave at least 2e-4, and those of lower degree more.

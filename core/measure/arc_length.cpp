@@ -16,6 +16,7 @@
 #include "core/measure/bernstein_product.hpp"
 #include "core/measure/interval_roots.hpp"
 #include "core/measure/normalised.hpp"
+#include "core/measure/tuning.hpp"
 #include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
@@ -247,12 +248,13 @@ double integrated_condition(std::span<const P> h, double a, double b) {
 /// rules can agree far better than either is right (the kink is resolved by neither). The
 /// piece is therefore cut at t0 + w 4^k, k = 0, 1, ..., so that each cut piece is at most
 /// four times as far from the complex zeros as it is wide, the regime where the difference
-/// of the nested rules tracks the error. Below w = 1e-8 h the smoothing changes the integral
+/// of the nested rules tracks the error. Below w = 1e-8 h (measure_tuning::kUngradedWidth) the
+/// smoothing changes the integral
 /// by about (w / h)^2 log(h / w) < 1e-14 of it relative to the kink |t - t0| that the split
 /// at t0 already makes exact: no grading then.
 void grade_toward(double t0, double w, double toward, std::pmr::vector<double>& cuts) {
   const double h = std::fabs(toward - t0);
-  if (!(w > 1e-8 * h)) return;
+  if (!(w > measure_tuning::kUngradedWidth * h)) return;
   const double direction = toward > t0 ? 1.0 : -1.0;
   for (double step = w; step < h / 2; step *= 4) cuts.push_back(t0 + direction * step);
 }

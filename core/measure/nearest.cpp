@@ -198,7 +198,8 @@ NearestPoint<P> closest(const BasicCurve<P>& curve, P target, double a, double b
   // The tie tolerance on the distances, from the least squared one; a candidate's squared
   // distance and its root agree with the distance to within rounding, far below it.
   const double rough_least = std::sqrt(least_squared);
-  const double tolerance = std::max(1e-12 * rough_least, 8 * kUnitRoundoff * coordinate_scale);
+  const double tolerance =
+      std::max(kTieRelativeTolerance * rough_least, 8 * kUnitRoundoff * coordinate_scale);
   const double tie_limit = (rough_least + tolerance) * (rough_least + tolerance);
   const auto tied_end = std::partition(kept.begin(), kept.end(), [&](const Candidate<P>& c) {
     return c.squared <= tie_limit;

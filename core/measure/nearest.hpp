@@ -6,6 +6,11 @@
 
 namespace bezier::core {
 
+/// Distances within this fraction of the least one tie with it (nearest(); below 8 ulps of
+/// the coordinates' scale the rounding decides instead): the tie tolerance POST /nearest
+/// promises.
+inline constexpr double kTieRelativeTolerance = 1e-12;
+
 /// The point of a curve piece nearest to a target.
 template <class P>
 struct NearestPoint {
@@ -44,8 +49,8 @@ struct NearestPoint {
 /// squares neither overflow nor underflow above the tie tolerance); the distance reported
 /// is hypot(B(t) - q).
 ///
-/// Ties (as POST /nearest promises in api/openapi.yaml): the candidates within max(1e-12 d_min, 8 u s) of the least distance
-/// d_min, s the largest coordinate of the control points and the target (below 8 ulps of
+/// Ties (as POST /nearest promises in api/openapi.yaml): the candidates within
+/// max(kTieRelativeTolerance d_min, 8 u s) of the least distance d_min, s the largest coordinate of the control points and the target (below 8 ulps of
 /// the coordinates the distances are rounding, so a target on a self-intersection ties its
 /// two parameters). Tied candidates with the distance at their midpoint also within the
 /// tolerance are one flat minimum, reported once (its smallest t).

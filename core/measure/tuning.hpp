@@ -67,4 +67,11 @@ inline constexpr double kPolishMargin = 1e-6;
 /// lowering by rounding-level amounts.
 inline constexpr int kPolishIterations = 8;
 
+// Arc length (arc_length.hpp).
+
+/// A piece whose |B'| has a kink smoothed over a width w below this fraction of the piece's
+/// length h is not graded toward it: the smoothing changes the integral by about
+/// (w / h)^2 log(h / w), below 1e-14 of it (arc_length.cpp, grade_toward).
+inline constexpr double kUngradedWidth = 1e-8;
+
 }  // namespace bezier::core::measure_tuning

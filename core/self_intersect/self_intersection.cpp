@@ -542,7 +542,8 @@ SelfIntersectionResult self_intersections(const Curve& curve,
   // (barring underflow of coordinates 2^-1000 below the largest) and every step of the
   // method scales with it, so parameters come out the same either way.
   const double original_scale = scale(curve);
-  const bool moderate = 0x1p-300 <= original_scale && original_scale <= 0x1p300;
+  const bool moderate = self_intersect_tuning::kSmallestUnscaled <= original_scale &&
+                        original_scale <= self_intersect_tuning::kLargestUnscaled;
   const int k = moderate || original_scale == 0.0 ? 0 : -exponent_of(original_scale);
   std::optional<Curve> rescaled;
   if (k != 0) rescaled.emplace(scaled_by_power_of_two(curve.points(), k));

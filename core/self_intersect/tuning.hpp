@@ -6,6 +6,15 @@
 
 namespace bezier::core::self_intersect_tuning {
 
+// The curve's scale (self_intersection.cpp).
+
+/// Curves whose largest coordinate lies in [kSmallestUnscaled, kLargestUnscaled] are worked
+/// on as given; others are scaled by a power of two (exact) to [1, 2) first. The inner loops
+/// square lengths (sqrt(v·v), not the slower overflow-safe hypot), which neither overflows
+/// nor underflows within 2^±300 for the degrees the API takes.
+inline constexpr double kSmallestUnscaled = 0x1p-300;
+inline constexpr double kLargestUnscaled = 0x1p300;
+
 // The search (search.hpp).
 
 /// Cone angles (radians) are compared with this margin, so that rounding in the control
