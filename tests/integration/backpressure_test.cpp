@@ -77,7 +77,9 @@ int read_and_check_answers(Connection& c, int count, const std::string& expected
 }
 
 void expect_unread_answers_bounded(int connections) {
-  ServiceProcess service({"--io-threads", "2"});
+  // Connections wait unread while the test reads the others' answers one connection after
+  // another (slow under the sanitizers): a write timeout longer than that reading keeps them.
+  ServiceProcess service({"--io-threads", "2", "--write-timeout", "600"});
   // One answer first: the text every later answer must repeat, and what every answer
   // needs once (the loops' buffers) is in the baseline.
   const std::string first = round_trip(service.port(), get_request("/openapi.yaml"));
