@@ -69,8 +69,8 @@ struct CurveOffset {
 /// Hermite cubic (de Boor, Höllig and Sabin, "High accuracy geometric Hermite interpolation",
 /// CAGD 4, 1987), which R. Levien's fit ("Parallel curves of cubic Béziers", 2022) attains by
 /// matching the piece's signed area and moment: at tight tolerances this makes more cubics
-/// than Levien's, and fewer than a fixed subdivision. No measured comparison is in
-/// BENCHMARKS.md yet.
+/// than Levien's, and fewer than a fixed subdivision (no measured comparison is claimed here:
+/// counts against other libraries belong in BENCHMARKS.md beside their command).
 ///
 /// Work (units of one de Casteljau coordinate update) is charged for every fit and bound;
 /// `work_left` is the budget. Precondition: finite coordinates, tolerance > 1e-9 of the
