@@ -2,12 +2,16 @@
 // two regions, or simplify of one, as contours made of pieces of the input segments.
 //
 // Request:  {"op": "union" | "intersection" | "difference" | "xor" | "simplify",
-//            "a": operand, "b": operand}
+//            "a": operand, "b": operand, "arc_tolerance"}
 //   operand  {"path": SVG path data, "fill_rule"} or {"curves": [[[x, y], ...], ...],
 //            "fill_rule"} (api/read_region.hpp); "b" is required except with "simplify",
 //            which refuses it.
+//   arc_tolerance  optional, > 0, when an operand has "path": the distance within which
+//            the operands' elliptical arcs become cubics (api/curve_or_path.hpp).
 // Answer:
-//   {"area": the result's area (>= 0, 0 when empty),
+//   {"arc_tolerance"?: when an operand's path had elliptical arcs, the largest distance of
+//            their cubics from them (the operation is the cubics'),
+//    "area": the result's area (>= 0, 0 when empty),
 //    "contours": [{"area" (signed: > 0 outer, counter-clockwise with y up; < 0 hole),
 //                  "orientation": "ccw" | "cw", "segments": [first, end)}],
 //    "path": the contours as SVG path data ("" when empty; null when a segment has degree 4
@@ -24,12 +28,14 @@
 // the side windings of an edge (boundaries within about 2^-40 of scale of a vertex
 // everywhere; see core/region/side_winding.hpp).
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <optional>
 #include <string>
 #include <utility>
 
+#include "api/curve_or_path.hpp"
 #include "api/read_json.hpp"
 #include "api/read_region.hpp"
 #include "api/routes.hpp"
@@ -85,12 +91,13 @@ std::optional<std::string> path_data(const region::BooleanResult& result) {
   return out;
 }
 
-Reply answer(const region::BooleanResult& result) {
-  // {"area", "contours": [{"area", "orientation", "segments"}], "path", "segments":
+Reply answer(const region::BooleanResult& result, std::optional<double> arc_tolerance) {
+  // {"arc_tolerance"?, "area", "contours": [{"area", "orientation", "segments"}], "path", "segments":
   //  [{"degree", "points", "segment", "source", "t"}], "stats": {"work"}}, members in key
   // order (the text a document of the answer would dump to).
   JsonWriter w;
   w.begin_object();
+  write_arc_tolerance(w, arc_tolerance);
   w.key("area").value(result.area);
   w.key("contours").begin_array();
   for (const region::ResultContour& c : result.contours) {
@@ -132,7 +139,8 @@ Reply answer(const region::BooleanResult& result) {
 
 Reply boolean_route(const nlohmann::json& request, const Limits& limits) {
   RequestReader reader(limits);
-  reader.reject_unknown_fields(request, {"op", "a", "b"}, "");
+  reader.reject_unknown_fields(request, {"op", "a", "b", "arc_tolerance"}, "");
+  const std::optional<double> arc_tolerance = read_arc_tolerance(reader, request);
   std::optional<region::BooleanOperation> op;
   if (const Json* value = reader.required(request, "op", "")) {
     const auto name = reader.one_of(*value, "/op",
@@ -147,7 +155,7 @@ Reply boolean_route(const nlohmann::json& request, const Limits& limits) {
     if (value->is_object()) {
       reader.reject_unknown_fields(*value, {kRegionFields[0], kRegionFields[1], kRegionFields[2]}, "/a");
     }
-    a = read_region(reader, *value, "/a");
+    a = read_region(reader, *value, "/a", arc_tolerance);
   }
   const Json* b_value = RequestReader::optional(request, "b");
   if (op == region::BooleanOperation::simplify) {
@@ -157,9 +165,14 @@ Reply boolean_route(const nlohmann::json& request, const Limits& limits) {
       if (value->is_object()) {
         reader.reject_unknown_fields(*value, {kRegionFields[0], kRegionFields[1], kRegionFields[2]}, "/b");
       }
-      b = read_region(reader, *value, "/b");
+      b = read_region(reader, *value, "/b", arc_tolerance);
     }
   }
+  const auto operand_has_path = [&](std::string_view key) {
+    const Json* value = RequestReader::optional(request, key);
+    return value != nullptr && value->is_object() && has_path(*value);
+  };
+  refuse_arc_tolerance_without_path(reader, request, operand_has_path("a") || operand_has_path("b"));
   if (!reader.ok()) return reader.refusal();
   const region::BooleanResult result =
       *op == region::BooleanOperation::simplify
@@ -177,7 +190,11 @@ Reply boolean_route(const nlohmann::json& request, const Limits& limits) {
                          "ray could decide which side of an edge is inside",
                          {{"", "the boolean operation could not be decided for these operands"}});
   }
-  return answer(result);
+  std::optional<double> arcs_followed = a->path.arc_tolerance;
+  if (b && b->path.arc_tolerance) {
+    arcs_followed = std::max(arcs_followed.value_or(0.0), *b->path.arc_tolerance);
+  }
+  return answer(result, arcs_followed);
 }
 
 }  // namespace bezier::api

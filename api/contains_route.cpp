@@ -2,11 +2,15 @@
 // it, whether it is on the region's boundary, and its exact winding number.
 //
 // Request:  {"path": "<SVG path data>" or "curves": [[[x, y], ...], ...],
-//            "fill_rule": "nonzero" | "evenodd", "targets": [[x, y], ...]}
+//            "fill_rule": "nonzero" | "evenodd", "targets": [[x, y], ...], "arc_tolerance"}
 //   path, curves, fill_rule  the region operand (api/read_region.hpp); every subpath is
 //                            closed for filling.
 //   targets                  1 to max_t_values points [x, y], finite.
-// Answer:   {"fill_rule", "results": [{"boundary", "inside", "target", "winding"}]}
+//   arc_tolerance            optional, > 0, with "path" only: the distance within which the
+//                            path's elliptical arcs become cubics (api/curve_or_path.hpp).
+// Answer:   {"arc_tolerance"?, "fill_rule", "results": [{"boundary", "inside", "target", "winding"}]}
+//   arc_tolerance when the path had elliptical arcs: the largest distance of their cubics
+//   from them (the region decided is the cubics').
 //   one result per target, in order (core/region/winding.hpp): boundary when the target is
 //   within 8 u s of the path (u = 2^-53, s the largest |coordinate| of the region's control
 //   points and the target), winding the exact winding number (null on the boundary),
@@ -19,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "api/curve_or_path.hpp"
 #include "api/read_json.hpp"
 #include "api/read_region.hpp"
 #include "api/read_targets.hpp"
@@ -31,8 +36,10 @@ namespace bezier::api {
 Reply contains_route(const Json& request, const Limits& limits) {
   RequestReader reader(limits);
   reader.reject_unknown_fields(
-      request, {kRegionFields[0], kRegionFields[1], kRegionFields[2], "targets"}, "");
-  std::optional<region::Region> operand = read_region(reader, request, "");
+      request, {kRegionFields[0], kRegionFields[1], kRegionFields[2], "targets", "arc_tolerance"}, "");
+  const std::optional<double> arc_tolerance = read_arc_tolerance(reader, request);
+  refuse_arc_tolerance_without_path(reader, request, has_path(request));
+  std::optional<region::Region> operand = read_region(reader, request, "", arc_tolerance);
   std::optional<std::vector<core::Point2>> targets;
   if (const Json* value = reader.required(request, "targets", "")) {
     targets = read_targets<core::Point2>(reader, *value, " [x, y]");
@@ -43,6 +50,7 @@ Reply contains_route(const Json& request, const Limits& limits) {
   std::int64_t work_left = limits.max_work;
   JsonWriter w;
   w.begin_object();
+  write_arc_tolerance(w, operand->path.arc_tolerance);
   w.key("fill_rule").value(to_string(operand->fill_rule));
   w.key("results").begin_array();
   for (const core::Point2 target : *targets) {

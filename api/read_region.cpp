@@ -64,7 +64,8 @@ const Json* member(const Json& object, std::string_view key) {
 }  // namespace
 
 std::optional<region::Region> read_region(RequestReader& reader, const Json& object,
-                                          const std::string& pointer) {
+                                          const std::string& pointer,
+                                          std::optional<double> arc_tolerance) {
   if (!object.is_object()) {
     reader.fail(pointer, "expected an object with \"path\" or \"curves\", and \"fill_rule\"");
     return std::nullopt;
@@ -90,7 +91,7 @@ std::optional<region::Region> read_region(RequestReader& reader, const Json& obj
     return std::nullopt;
   }
   if (has_path_member) {
-    auto parse = read_parsed_path(reader, object.at("path"), pointer_to(pointer, "path"), std::nullopt,
+    auto parse = read_parsed_path(reader, object.at("path"), pointer_to(pointer, "path"), arc_tolerance,
                                   EmptyPath::accepted);
     auto path = parse ? std::optional<path::Path>(std::move(parse->path)) : std::nullopt;
     if (!path || !rule_ok) return std::nullopt;

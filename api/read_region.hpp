@@ -20,7 +20,9 @@ inline constexpr std::string_view kRegionFields[] = {"path", "curves", "fill_rul
 /// optional (default "nonzero"), anything else (null included) refused at
 /// <pointer>/fill_rule.
 ///   path    SVG path data (read_path; "" or data that draws nothing is the empty region);
-///           every open subpath is closed for filling (region::region_from_path).
+///           every open subpath is closed for filling (region::region_from_path); its
+///           elliptical arcs become cubics within `arc_tolerance` (nullopt: the parser's
+///           default), and the region's path.arc_tolerance says what they kept.
 ///   curves  0 to limits().max_path_segments curves of degree 1 to limits().max_degree
 ///           (RequestReader::curve2 each); each starts exactly at the end of the one before,
 ///           except after a curve that closed its chain (ended where the chain started);
@@ -28,6 +30,7 @@ inline constexpr std::string_view kRegionFields[] = {"path", "curves", "fill_rul
 ///           is closed by a line (region::region_from_curves).
 /// Every problem is recorded at its pointer; nullopt when any was.
 std::optional<region::Region> read_region(RequestReader& reader, const Json& object,
-                                          const std::string& pointer);
+                                          const std::string& pointer,
+                                          std::optional<double> arc_tolerance);
 
 }  // namespace bezier::api

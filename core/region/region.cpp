@@ -19,6 +19,7 @@ bool ends_at_start(const path::Path& path, const path::Subpath& subpath) {
 Region region_from_path(path::Path path, FillRule rule) {
   Region region;
   region.fill_rule = rule;
+  region.path.arc_tolerance = path.arc_tolerance;
   region.path.segments.reserve(path.segments.size() + path.subpaths.size());
   for (const path::Subpath& subpath : path.subpaths) {
     path::Subpath closed{region.path.segments.size(), subpath.segment_count, true};

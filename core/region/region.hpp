@@ -23,7 +23,7 @@ struct Region {
 
 /// The region a path fills under `rule`, as SVG fills it: every open subpath is closed by a
 /// line from its end to its start (a subpath that already ends where it starts is marked
-/// closed, with no segment added).
+/// closed, with no segment added). The path's arc_tolerance stays with it.
 [[nodiscard]] Region region_from_path(path::Path path, FillRule rule);
 
 /// Where a list of curves breaks the chain rule of region_from_curves: the index of the

@@ -132,6 +132,28 @@ TEST(BooleanRoute, DegreeFiveCurvesGiveNullPath) {
   expect_consistent(r);
 }
 
+TEST(BooleanRoute, ArcsFollowTheirToleranceAndTheAnswerSaysIt) {
+  // The unit circle (two half-turn arcs) and the square [0, 2]^2 meet in a quarter disc of
+  // area pi/4; the cubics are within the stated distance d of the arc, so the area is within
+  // d times the quarter circle's length pi/2 of it (plus rounding).
+  constexpr double kPi = 3.141592653589793;
+  const json r = call(R"({"op":"intersection","arc_tolerance":1e-4,)"
+                      R"("a":{"path":"M-1 0 A1 1 0 0 0 1 0 A1 1 0 0 0 -1 0 Z"},)"
+                      R"("b":{"curves":[[[0,0],[2,0]],[[2,0],[2,2]],[[2,2],[0,2]],[[0,2],[0,0]]]}})",
+                      200);
+  ASSERT_TRUE(r.contains("arc_tolerance"));
+  const double d = r["arc_tolerance"].get<double>();
+  EXPECT_GT(d, 0.0);
+  EXPECT_LE(d, 1e-4);
+  EXPECT_NEAR(r["area"].get<double>(), kPi / 4, d * kPi / 2 + 1e-12);
+  // No arcs, nothing stated; no path, nothing to apply it to.
+  EXPECT_FALSE(call(R"({"op":"simplify","a":{"path":"M0 0 H1 V1 Z"}})", 200).contains("arc_tolerance"));
+  const json refused = call(R"({"op":"simplify","arc_tolerance":1e-3,)"
+                            R"("a":{"curves":[[[0,0],[1,0]],[[1,0],[0,1]],[[0,1],[0,0]]]}})",
+                            422);
+  EXPECT_EQ(refused["errors"][0]["pointer"], "/arc_tolerance");
+}
+
 TEST(BooleanRoute, RefusesBadRequests) {
   EXPECT_EQ(errors_of(R"({"a":{"path":"M0 0 H1 V1 Z"}})"), (Pointers{"/op"}));
   EXPECT_EQ(errors_of(R"({"op":"merge","a":{"path":"M0 0 H1 V1 Z"}})"), (Pointers{"/op"}));

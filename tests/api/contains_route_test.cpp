@@ -49,6 +49,29 @@ TEST(ContainsRoute, AnOpenSubpathIsClosedForFilling) {
                          result(false, false, 3, 3, 0)}));
 }
 
+TEST(ContainsRoute, ArcsFollowTheirToleranceAndTheAnswerSaysIt) {
+  // The unit circle as two half-turn arcs, cut by the tolerance asked for: within 1e-3 of
+  // it, a point 0.01 inside or outside the circle is decided as the circle decides it, and
+  // the answer states a distance no larger than the one asked for.
+  const json r = call(R"({"path":"M-1 0 A1 1 0 0 0 1 0 A1 1 0 0 0 -1 0 Z","arc_tolerance":1e-3,)"
+                      R"("targets":[[0,0.99],[0,-0.99],[0.7,0.7],[0,1.01],[0.72,0.72]]})",
+                      200);
+  ASSERT_TRUE(r.contains("arc_tolerance"));
+  EXPECT_GT(r["arc_tolerance"].get<double>(), 0.0);
+  EXPECT_LE(r["arc_tolerance"].get<double>(), 1e-3);
+  std::vector<bool> inside;
+  for (const json& x : r["results"]) inside.push_back(x["inside"].get<bool>());
+  EXPECT_EQ(inside, (std::vector<bool>{true, true, true, false, false}));
+  // Without arcs there is nothing to state; with curves there is nothing to apply it to.
+  EXPECT_FALSE(call(R"({"path":"M0 0 H1 V1 Z","targets":[[0.5,0.2]]})", 200).contains("arc_tolerance"));
+  const json refused = call(R"({"curves":[[[0,0],[1,0]],[[1,0],[0,1]],[[0,1],[0,0]]],)"
+                            R"("arc_tolerance":1e-3,"targets":[[0.2,0.2]]})",
+                            422);
+  EXPECT_EQ(refused["errors"][0]["pointer"], "/arc_tolerance");
+  EXPECT_EQ(call(R"({"path":"M0 0 H1 V1 Z","arc_tolerance":0,"targets":[[0.5,0.2]]})", 422)["errors"][0]["pointer"],
+            "/arc_tolerance");
+}
+
 TEST(ContainsRoute, CurvesOfAnyDegreeInChains) {
   // Chain 1: a degree-5 arch over [0, 5] closed by a line back (clockwise with y up: the
   // arch goes left to right above the base line); chain 2: a triangle far to the right.

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include <vector>
 
 #include "tests/support/parsed_path.hpp"
@@ -64,6 +66,13 @@ TEST(RegionFromPath, TheEmptyPathIsTheEmptyRegion) {
   const Region r = region_from_path(path::Path{}, FillRule::nonzero);
   EXPECT_TRUE(r.path.segments.empty());
   EXPECT_TRUE(r.path.subpaths.empty());
+}
+
+TEST(RegionFromPath, KeepsThePathsArcTolerance) {
+  path::Path arcs = test::parsed_path("M0 0 L4 0 L4 3");
+  arcs.arc_tolerance = 0.25;
+  EXPECT_EQ(region_from_path(arcs, FillRule::nonzero).path.arc_tolerance, std::optional<double>(0.25));
+  EXPECT_FALSE(region_from_path(test::parsed_path("M0 0 L4 0 L4 3"), FillRule::nonzero).path.arc_tolerance);
 }
 
 TEST(RegionFromCurves, ChainsCloseWhereTheyStartedAndTheNextStartsAnywhere) {
