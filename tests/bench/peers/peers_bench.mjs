@@ -569,7 +569,9 @@ function offset() {
   // Each peer: a name, the signed distances its outline stands for, and a function from a glyph
   // (control points) to its outline's segments. Adding a stroke peer is one more entry.
   const peers = [];
-  for (const precision of [1, 4, 16]) {
+  // Skia's stroker works to a fixed tolerance in device pixels divided by `precision` (its
+  // resScale): on outlines of size 1 it needs precisions in the thousands.
+  for (const precision of [1e3, 1e4, 1e5]) {
     peers.push({
       name: `skia stroke (width ${2 * d}, precision ${precision})`, sides: [d, -d],
       run: (g) => {
