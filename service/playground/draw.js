@@ -46,7 +46,10 @@ export function drawFeatureMark(ctx, x, y, cusp) {
   ctx.restore();
 }
 
-export const pointColor = (i) => kColors.points[i % kColors.points.length];
+/** Past the twelve listed colours, hues a golden angle apart (each new one as far as can be
+ * from those before it) at two alternating lightnesses, so no two points share a colour. */
+export const pointColor = (i) => (i < kColors.points.length ? kColors.points[i]
+    : `hsl(${Math.round(((i - kColors.points.length) * 137.508 + 15) % 360)}, 72%, ${i % 2 ? 36 : 50}%)`);
 /** The colour of de Casteljau level r >= 1. */
 export const levelColor = (r) => kColors.levels[(r - 1) % kColors.levels.length];
 
@@ -64,6 +67,24 @@ function polyline(ctx, view, points) {
   });
 }
 
+/** The segments of a path (control points of degree 1 to 3, from /segments) as canvas
+ * path commands, a closed subpath closed: the canvas draws each Bézier segment itself. */
+export function tracePath(ctx, view, path) {
+  ctx.beginPath();
+  for (const subpath of path.subpaths) {
+    const first = subpath.first_segment;
+    if (subpath.segment_count === 0) continue;
+    ctx.moveTo(...view.toScreen(path.segments[first][0]));
+    for (let k = first; k < first + subpath.segment_count; ++k) {
+      const q = path.segments[k].slice(1).flatMap((p) => view.toScreen(p));
+      if (q.length === 2) ctx.lineTo(...q);
+      else if (q.length === 4) ctx.quadraticCurveTo(...q);
+      else ctx.bezierCurveTo(...q);
+    }
+    if (subpath.closed) ctx.closePath();
+  }
+}
+
 function dot(ctx, view, p, radius, fill, stroke) {
   const [x, y] = view.toScreen(p);
   ctx.beginPath();
@@ -78,9 +99,15 @@ function dot(ctx, view, p, radius, fill, stroke) {
   }
 }
 
+/** Keeps a mark's disc at world point p clear of labels. */
+function keepClear(labels, view, p, radius) {
+  const [x, y] = view.toScreen(p);
+  labels.keepClear(x, y, radius);
+}
+
 function label(labels, view, p, text, color, rank) {
   const [x, y] = view.toScreen(p);
-  labels.add(x, y, text, color, rank);
+  labels.add(x, y, text, color, rank, rank >= kRank.area);
 }
 
 /** The name b_i^r of a de Casteljau point. */
@@ -145,7 +172,17 @@ function drawLoops(ctx, view, labels, state, answers, i) {
     ctx.closePath();
     ctx.fill('evenodd');
   }
+  const closedPath = curve.path && typeof curve.loopArea?.closed_area === 'number';
+  if (closedPath) {
+    tracePath(ctx, view, curve.path);
+    ctx.fill('nonzero');
+  }
   ctx.restore();
+  if (closedPath) {
+    const box = answers.measure?.curve === i && answers.measure.bounds;
+    const c = box ? [(box.min[0] + box.max[0]) / 2, (box.min[1] + box.max[1]) / 2] : curve.path.segments[0][0];
+    label(labels, view, c, `encloses signed ${areaText(curve.loopArea.closed_area)}`, color, kRank.area);
+  }
   for (const {loop, points} of curve.loopPaths) {
     ctx.lineWidth = 1.5;
     dot(ctx, view, loop.point, 3.5, '#ffffff', color);  // the double point B(t1) = B(t2)
@@ -214,13 +251,14 @@ function drawBox(ctx, view, state, measure) {
 }
 
 /** Tangent and normal arrows at B(t0) and the osculating circle there. */
-function drawFrame(ctx, view, frame) {
+function drawFrame(ctx, view, labels, frame) {
   if (!frame.tangent) return;  // a cusp: no direction
   const circle = osculatingCircle(frame);
   if (circle) {
     const [cx, cy] = view.toScreen(circle.centre);
     const r = circle.radius * view.scale;
     if (r < 1e5) {
+      labels.keepOffRing(cx, cy, r);
       ctx.save();
       ctx.strokeStyle = kColors.osculating;
       ctx.globalAlpha = 0.8;
@@ -275,6 +313,7 @@ function drawConstruction(ctx, view, labels, state, levels) {
     levels[r].forEach((p, i) => {
       ctx.lineWidth = 1.25;
       dot(ctx, view, p, 4, levelColor(r), '#ffffff');
+      keepClear(labels, view, p, 4);
       if (state.show.labels) label(labels, view, p, levelName(i, r), levelColor(r), kRank.level + r);
     });
   }
@@ -289,6 +328,7 @@ function drawPolarPoints(ctx, view, labels, state, points) {
     ctx.lineWidth = 1;
     ctx.fillRect(x - 4, y - 4, 8, 8);
     ctx.strokeRect(x - 4, y - 4, 8, 8);
+    labels.keepClear(x, y, 4);
     if (state.show.labels) label(labels, view, p, levelName(i, 1), kColors.polar, kRank.level + 1);
   });
 }
@@ -341,15 +381,12 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
       polyline(ctx, view, evaluated.results.map((r) => r.point));
       ctx.stroke();
     }
-    const segments = answers?.curves[i].pathSegments;
-    if (state.show.curve && segments) {
+    const path = answers?.curves[i].path;
+    if (state.show.curve && path && state.curves[i].path) {
       ctx.strokeStyle = kColors.curves[i];
       ctx.lineWidth = i === state.active ? 3 : 2.25;
-      for (const samples of segments) {
-        if (!samples) continue;
-        polyline(ctx, view, samples);
-        ctx.stroke();
-      }
+      tracePath(ctx, view, path);
+      ctx.stroke();
     }
   }
 
@@ -377,10 +414,11 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
       drawPolarPoints(ctx, view, labels, state, polar.control_points);
     }
   }
-  if (measured && state.show.frame && measure.frame) drawFrame(ctx, view, measure.frame);
+  if (measured && state.show.frame && measure.frame) drawFrame(ctx, view, labels, measure.frame);
   if (polar && used.includes(polar.curve) && (state.show.polar || state.show.casteljau)) {
     ctx.lineWidth = 2;
     dot(ctx, view, polar.curve_point, 5, '#ffffff', kColors.polar);
+    keepClear(labels, view, polar.curve_point, 5);
     if (state.show.labels) label(labels, view, polar.curve_point, `B(${state.t0.toFixed(2)})`, kColors.polar, kRank.curvePoint);
   }
 
@@ -402,6 +440,7 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
       if (state.show.points || hovered || selected) {
         ctx.lineWidth = 2;
         dot(ctx, view, p, 5.5, i === state.active ? pointColor(k) : '#ffffff', kColors.curves[i]);
+        keepClear(labels, view, p, 6);
       }
       if (selected) {
         ctx.save();
@@ -439,6 +478,15 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
     }
   }
 
+  if (state.show.loops && answers) {
+    // A path's self-intersections (/intersections of the path alone).
+    for (const i of used) {
+      for (const hit of answers.curves[i].selfIntersections?.intersections ?? []) {
+        const [x, y] = view.toScreen(hit.point);
+        drawKindMarker(ctx, x, y, hit.kind, 5, false);
+      }
+    }
+  }
   if (state.show.intersections && answers?.intersections) {
     answers.intersections.intersections.forEach((hit, k) => {
       const [x, y] = view.toScreen(hit.point);
