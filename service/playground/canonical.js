@@ -111,18 +111,27 @@ export function drawCanonicalMap(canvas, marks) {
   ctx.fillText('double inflection', sx(-3.3), sy(0.5));
   ctx.fillText('loop', sx(-1.8), sy(-1.4));
   ctx.fillText('arch', sx(0.8), sy(-1.8));
-  // The edges by name, each in its line's colour beside the line.
+  // The edges by name, each in its line's colour beside the line (the short loop-at-t = 1
+  // edge by a leader line from its name in the open arch region).
   ctx.font = 'italic 10px system-ui, sans-serif';
   ctx.fillStyle = '#b03a2e';
   ctx.textAlign = 'right';
   ctx.fillText('cusp', sx(-2.3) - 2, sy(cuspEdge(-2.3)) + 8);
   ctx.fillStyle = '#6c3483';
   ctx.textAlign = 'left';
-  ctx.fillText('loop closes at t = 0', sx(-0.9) + 6, sy(loopStartEdge(-0.9)) + 4);
-  ctx.textAlign = 'left';
-  ctx.fillText('loop closes at t = 1', sx(0.55) + 6, sy(loopEndEdge(0.55)) - 16);
+  ctx.fillText('loop at t = 0', sx(-0.9) + 6, sy(loopStartEdge(-0.9)) + 4);
+  const end = [sx(0.6), sy(loopEndEdge(0.6))];
+  const text = 'loop at t = 1';
+  const name = [Math.min(sx(1.15), width - 3 - ctx.measureText(text).width), sy(0.45)];
+  ctx.strokeStyle = '#6c3483';
+  ctx.lineWidth = 0.75;
+  ctx.beginPath();
+  ctx.moveTo(...end);
+  ctx.lineTo(name[0] - 2, name[1] - 4);
+  ctx.stroke();
+  ctx.fillText(text, ...name);
   ctx.fillStyle = '#1e8449';
-  ctx.fillText('inflection at t = 1', sx(0.3), sy(1) - 8);
+  ctx.fillText('inflection at t = 1', sx(-3.4), sy(1) - 7);
   ctx.font = '10px system-ui, sans-serif';
   ctx.fillStyle = '#3d4650';
   // The fixed images of P0, P1, P2.

@@ -186,7 +186,9 @@ function drawLoops(ctx, view, labels, state, answers, i) {
   for (const {loop, points} of curve.loopPaths) {
     ctx.lineWidth = 1.5;
     dot(ctx, view, loop.point, 3.5, '#ffffff', color);  // the double point B(t1) = B(t2)
-    label(labels, view, centroid(points), areaText(loop.area), color, kRank.area);
+    // At the loop's centre, or beside its boundary when the centre is taken (by the osculating circle, say).
+    const anchors = [centroid(points), ...points.filter((p, k) => k % 12 === 6)].map((p) => view.toScreen(p));
+    labels.addAnywhere(anchors, areaText(loop.area), color, kRank.area, true);
   }
   if (closed && typeof curve.loopArea.closed_area === 'number') {
     const c = centroid(curve.evaluate.results.map((r) => r.point));

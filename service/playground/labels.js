@@ -4,7 +4,8 @@
 // canvas (the osculating circle). Labels are collected
 // while the scene is drawn and placed at the end, most important first (control
 // points, then B(t0), then the construction's points, then areas and distances): each
-// tries eight positions around its anchor, then eight twice as far, and takes the first
+// tries eight positions around its anchor, then eight three times as far (then around
+// its other anchors, for a label that may stand in several places), and takes the first
 // that stays inside the canvas and clear of everything placed or kept clear; a label
 // with no free position is left out (its point is still drawn, and the panels list
 // every value).
@@ -58,7 +59,13 @@ export class LabelLayout {
 
   /** A label for the screen point (sx, sy); lower `rank` is placed first; offRings: it keeps off the rings. */
   add(sx, sy, text, color, rank, offRings = false) {
-    this.pending.push({sx, sy, text, color, rank, offRings, order: this.pending.length});
+    this.pending.push({anchors: [[sx, sy]], text, color, rank, offRings, order: this.pending.length});
+  }
+
+  /** A label that may stand at any of `anchors` ([[sx, sy], ...], the first preferred), such as
+   * a region's name at its centre or, when that is taken, beside points along its boundary. */
+  addAnywhere(anchors, text, color, rank, offRings = false) {
+    this.pending.push({anchors, text, color, rank, offRings, order: this.pending.length});
   }
 
   /** Boxes to keep clear, such as the tooltip or the legend. */
@@ -76,11 +83,10 @@ export class LabelLayout {
     for (const label of this.pending) {
       const w = ctx.measureText(label.text).width + 2;
       const h = kHeight;
-      const {sx, sy} = label;
-      const candidates = [kGap, 3 * kGap].flatMap((gap) => [
+      const candidates = label.anchors.flatMap(([sx, sy]) => [kGap, 3 * kGap].flatMap((gap) => [
         [sx + gap, sy - gap - h], [sx + gap, sy + gap], [sx - gap - w, sy - gap - h], [sx - gap - w, sy + gap],
         [sx + gap + 2, sy - h / 2], [sx - gap - 2 - w, sy - h / 2], [sx - w / 2, sy - gap - h - 2], [sx - w / 2, sy + gap + 2],
-      ]);
+      ]));
       const box = candidates.map(([x, y]) => ({text: label.text, x, y, w, h}))
           .find((b) => b.x >= 0 && b.y >= 0 && b.x + b.w <= this.width && b.y + b.h <= this.height &&
                        !this.placed.some((p) => overlaps(b, p)) && !this.marks.some((m) => overlaps(b, m)) &&
