@@ -15,7 +15,8 @@ import {drawCanonicalMap} from './canonical.js';
 import {computeRound, usedCurves} from './compute.js';
 import {LabelLayout} from './labels.js';
 import {LatestRequest} from './latest.js';
-import {computeOutline, defaultOutline, drawOutline, kOutlineExamples, outlineSummary, toleranceAt} from './outline.js';
+import {computeOutline, defaultOutline, defaultStroke, drawOutline, kOutlineExamples, outlineSummary,
+        toleranceAt} from './outline.js';
 import {computeRegions, defaultRegions, drawRegions, kRegionExamples, regionsSummary, usesB, windingRequest,
         windingText} from './regions.js';
 import {drawScene, kColors, kPointNames, formatNumber} from './draw.js';
@@ -916,6 +917,13 @@ function fillViewControls() {
   $('tolerance-value').textContent = String(o.tolerance);
   $('distance').value = String(o.distance);
   $('distance-value').textContent = String(o.distance);
+  const stroke = o.stroke ?? defaultStroke();
+  $('stroke-on').checked = Boolean(o.stroke);
+  $('stroke-width').value = String(stroke.width);
+  $('stroke-width-value').textContent = String(stroke.width);
+  $('stroke-join').value = stroke.join;
+  $('stroke-cap').value = stroke.cap;
+  for (const id of ['stroke-width', 'stroke-join', 'stroke-cap']) $(id).disabled = !o.stroke;
 }
 
 function fillExamples(select, examples) {
@@ -986,6 +994,11 @@ $('outline-form').addEventListener('submit', (event) => {
 });
 $('tolerance').addEventListener('input', (event) => setOutline({tolerance: toleranceAt(Number(event.target.value))}));
 $('distance').addEventListener('input', (event) => setOutline({distance: Number(event.target.value)}));
+$('stroke-on').addEventListener('change', (event) => setOutline({stroke: event.target.checked ? defaultStroke() : null}));
+const setStroke = (change) => setOutline({stroke: {...(state.outline.stroke ?? defaultStroke()), ...change}});
+$('stroke-width').addEventListener('input', (event) => setStroke({width: Number(event.target.value)}));
+$('stroke-join').addEventListener('change', (event) => setStroke({join: event.target.value}));
+$('stroke-cap').addEventListener('change', (event) => setStroke({cap: event.target.value}));
 
 // --- sharing and pictures ------------------------------------------------------------
 

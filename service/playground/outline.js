@@ -4,6 +4,10 @@
 // a signed distance within the same tolerance (/offset: cubics of the parallel curve,
 // positive to the left of the direction of travel, y up). The tolerance slider is
 // logarithmic, so each step scales it alike; the drawing follows it and the distance.
+// On request the path is also stroked (/stroke: width, join, cap, within the same
+// tolerance); the outline it answers, SVG path data in the drawing's units, is read back
+// by /segments and filled under the nonzero rule. A service without /stroke answers
+// 404, which is shown like any refusal: the rest of the view does not depend on it.
 
 import {post} from './api.js';
 import {formatNumber, tracePath} from './draw.js';
@@ -22,7 +26,9 @@ export const kOutlineExamples = Object.freeze({
 export const kToleranceRange = Object.freeze({min: -2, max: 1.5, step: 0.05});
 export const kDistanceRange = Object.freeze({min: -120, max: 120, step: 1});
 
-export const defaultOutline = () => ({path: kOutlineExamples.glyph.path, tolerance: 0.5, distance: -30});
+/** stroke: null (not stroked) or {width, join, cap}. */
+export const defaultOutline = () => ({path: kOutlineExamples.glyph.path, tolerance: 0.5, distance: -30, stroke: null});
+export const defaultStroke = () => ({width: 40, join: 'round', cap: 'round'});
 
 /** The tolerance a slider position stands for, rounded to 3 significant digits. */
 export const toleranceAt = (exponent) => Number((10 ** exponent).toPrecision(3));
@@ -33,7 +39,7 @@ export const toleranceAt = (exponent) => Number((10 ** exponent).toPrecision(3))
  */
 export async function computeOutline(outline) {
   const errors = [];
-  const answers = {view: 'outline', path: null, flatten: null, offset: null};
+  const answers = {view: 'outline', path: null, flatten: null, offset: null, stroke: null, strokeMissing: false};
   try {
     answers.path = await pathInDrawing(outline.path);
   } catch (error) {
@@ -52,13 +58,47 @@ export async function computeOutline(outline) {
     ask('flatten', '/flatten', {path: data, tolerance: outline.tolerance}),
     outline.distance !== 0 ? ask('offset', '/offset', {path: data, distance: outline.distance, tolerance: outline.tolerance})
                            : null,
+    outline.stroke ? stroke(outline, data, answers, errors) : null,
   ]);
   return {answers, errors};
+}
+
+/** The stroked outline: /stroke's path, read back by /segments (drawing units, no flip). */
+async function stroke(outline, data, answers, errors) {
+  const {width, join, cap} = outline.stroke;
+  let outlinePath;
+  try {
+    outlinePath = (await post('/stroke', {path: data, width, join, cap, tolerance: outline.tolerance})).path;
+  } catch (error) {
+    answers.strokeMissing = error.status === 404;
+    errors.push({what: 'stroke of the path', error});
+    return;
+  }
+  if (!outlinePath) {
+    answers.stroke = {segments: [], subpaths: []};
+    return;
+  }
+  try {
+    const read = await post('/segments', {path: outlinePath});
+    answers.stroke = {segments: read.segments.map((s) => s.points), subpaths: read.subpaths};
+  } catch (error) {
+    errors.push({what: 'segments of the stroke', error});
+  }
 }
 
 /** Draws the path, the flattened polylines with their vertices, and the offset cubics. */
 export function drawOutline(ctx, view, outline, answers) {
   if (!answers || answers.view !== 'outline' || !answers.path) return;
+  if (answers.stroke) {
+    ctx.save();
+    tracePath(ctx, view, answers.stroke);
+    ctx.fillStyle = 'rgba(31, 111, 209, 0.18)';
+    ctx.fill('nonzero');
+    ctx.strokeStyle = '#1f6fd1';
+    ctx.lineWidth = 1.25;
+    ctx.stroke();
+    ctx.restore();
+  }
   ctx.save();
   tracePath(ctx, view, answers.path);
   ctx.strokeStyle = kOutlineColors.path;
@@ -118,5 +158,10 @@ export function outlineSummary(outline, answers) {
     ['Offset', outline.distance === 0 ? 'distance 0: none' :
                (a?.offset ? `${a.offset.segments.length} cubics at d = ${formatNumber(outline.distance)}, ` +
                             `certified within ${formatNumber(a.offset.error_bound)}` : '—')],
+    ['Stroke', !outline.stroke ? 'off' :
+               (a?.strokeMissing ? 'this service has no /stroke route' :
+                (a?.stroke ? `width ${formatNumber(outline.stroke.width)}, ${outline.stroke.join} joins, ${outline.stroke.cap} caps: ` +
+                             `${a.stroke.segments.length} segments in ${a.stroke.subpaths.length} contour${a.stroke.subpaths.length === 1 ? '' : 's'}`
+                           : '—'))],
   ];
 }

@@ -7,8 +7,9 @@
 // pasted, percent-encoded, in pa (or pb), its points empty. The other views add:
 //   view=regions&ra=…&rb=…&op=union&fa=nonzero&fb=evenodd  (the two shapes' path data,
 //     the operation, each shape's fill rule)
-//   view=outline&op=…&tol=0.5&d=-20                          (the path data, the
-//     flattening and offset tolerance, the signed offset distance)
+//   view=outline&op=…&tol=0.5&d=-20[&sw=40&join=round&cap=round]  (the path data,
+//     the flattening and offset tolerance, the signed offset distance; the stroke's
+//     width, join and cap when the path is stroked)
 
 export const kLayers = Object.freeze(['polygon', 'curve', 'points', 'labels', 'polar', 'polarPoints', 'casteljau', 'frame',
                                       'box', 'nearest', 'loops', 'classify', 'intersections']);
@@ -36,6 +37,7 @@ export function encodeFragment(state) {
   } else if (state.view === 'outline') {
     const o = state.outline;
     parts.push('view=outline', `op=${text(o.path)}`, `tol=${o.tolerance}`, `d=${o.distance}`);
+    if (o.stroke) parts.push(`sw=${o.stroke.width}`, `join=${o.stroke.join}`, `cap=${o.stroke.cap}`);
   }
   return parts.join('&');
 }
@@ -66,7 +68,7 @@ function number(fields, key, fallback, ok, what) {
 /**
  * {curves: [a, b], paths: [pa, pb] (null where absent), second, t0, active, hidden (layer
  * names), view, regions ({a, b, op, fillA, fillB} or null), outline ({path, tolerance,
- * distance} or null)} from a fragment, null when empty; throws Error when malformed.
+ * distance, stroke ({width, join, cap} or null)} or null)} from a fragment, null when empty; throws Error when malformed.
  */
 export function decodeFragment(fragment) {
   const body = fragment.replace(/^#/, '');
@@ -92,7 +94,10 @@ export function decodeFragment(fragment) {
   } else if (view === 'outline') {
     if (!fields.get('op')) throw new Error('an outline link needs its path (op=…)');
     outline = {path: fields.get('op'), tolerance: number(fields, 'tol', 0.5, (v) => v > 0, 'positive', 0.5),
-               distance: number(fields, 'd', -20, () => true, 'a number')};
+               distance: number(fields, 'd', -20, () => true, 'a number'),
+               stroke: fields.has('sw') ? {width: number(fields, 'sw', 40, (v) => v > 0, 'positive'),
+                                           join: oneOf(fields, 'join', ['miter', 'round', 'bevel'], 'miter'),
+                                           cap: oneOf(fields, 'cap', ['butt', 'round', 'square'], 'butt')} : null};
   }
   return {
     curves: [paths[0] || !fields.has('a') ? [] : decodePoints(fields.get('a'), 'a'),
