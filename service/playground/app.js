@@ -1064,8 +1064,9 @@ window.playground = Object.freeze({
             inFlight: nearest.inFlight};
   },
   errors: () => errors.map(({what, error}) => ({what, route: error.route, status: error.status, problem: error.problem})),
-  /** The canvas labels as placed ({text, x, y, w, h} in CSS pixels) and those left out. */
-  labels: () => ({placed: labels.boxes(), dropped: [...labels.dropped]}),
+  /** The canvas labels as placed ({text, x, y, w, h} in CSS pixels), those left out, and the
+   *  marks' discs (as boxes) and rings they keep clear of. */
+  labels: () => ({placed: labels.boxes(), dropped: [...labels.dropped], ...labels.obstacles()}),
   /** Undo and redo depths, and the degree limit once the service has named it. */
   history: () => ({undo: history.past.length, redo: history.future.length}),
   degreeLimit: () => degreeLimit,

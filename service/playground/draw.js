@@ -300,6 +300,23 @@ function drawNearest(ctx, view, labels, state, nearest) {
   }
 }
 
+/** Labels closer together than this (CSS pixels, about a label's width) would stand in a row
+ * that hides the drawing: a level whose neighbouring points are closer keeps its marks and
+ * colour but not its names (the legend says what each level is). */
+const kLabelSpacing = 26;
+
+/** Whether the points of one level are far enough apart (on average) to be labelled one by one. */
+function roomForLabels(view, points) {
+  if (points.length < 2) return true;
+  let total = 0;
+  for (let k = 1; k < points.length; ++k) {
+    const [x0, y0] = view.toScreen(points[k - 1]);
+    const [x1, y1] = view.toScreen(points[k]);
+    total += Math.hypot(x1 - x0, y1 - y0);
+  }
+  return total / (points.length - 1) >= kLabelSpacing;
+}
+
 /** De Casteljau's levels 1..n at t0: each level's polygon and points, labelled b_i^r. */
 function drawConstruction(ctx, view, labels, state, levels) {
   const n = levels.length - 1;
@@ -312,17 +329,21 @@ function drawConstruction(ctx, view, labels, state, levels) {
     ctx.restore();
   }
   for (let r = 2; r < n; ++r) {
+    const named = roomForLabels(view, levels[r]);
     levels[r].forEach((p, i) => {
       ctx.lineWidth = 1.25;
       dot(ctx, view, p, 4, levelColor(r), '#ffffff');
       keepClear(labels, view, p, 4);
-      if (state.show.labels) label(labels, view, p, levelName(i, r), levelColor(r), kRank.level + r);
+      if (!state.show.labels) return;
+      if (named) label(labels, view, p, levelName(i, r), levelColor(r), kRank.level + r);
+      else labels.omit(levelName(i, r));
     });
   }
 }
 
 /** Level-1 points: the first polar's control points b_i^1, drawn as squares. */
 function drawPolarPoints(ctx, view, labels, state, points) {
+  const named = roomForLabels(view, points);
   points.forEach((p, i) => {
     const [x, y] = view.toScreen(p);
     ctx.fillStyle = kColors.polar;
@@ -331,7 +352,9 @@ function drawPolarPoints(ctx, view, labels, state, points) {
     ctx.fillRect(x - 4, y - 4, 8, 8);
     ctx.strokeRect(x - 4, y - 4, 8, 8);
     labels.keepClear(x, y, 4);
-    if (state.show.labels) label(labels, view, p, levelName(i, 1), kColors.polar, kRank.level + 1);
+    if (!state.show.labels) return;
+    if (named) label(labels, view, p, levelName(i, 1), kColors.polar, kRank.level + 1);
+    else labels.omit(levelName(i, 1));
   });
 }
 

@@ -68,6 +68,11 @@ export class LabelLayout {
     this.pending.push({anchors, text, color, rank, offRings, order: this.pending.length});
   }
 
+  /** A label left out on purpose (listed with those that found no place). */
+  omit(text) {
+    this.dropped.push(text);
+  }
+
   /** Boxes to keep clear, such as the tooltip or the legend. */
   reserve(x, y, w, h) {
     this.placed.push({text: '', x, y, w, h});

@@ -1068,13 +1068,39 @@ test('phone width: no sideways scrolling, and a tap adds a point', async () => {
     return state.curves.length >= 2 && state.curves[0].points.length === 4 && state.curves[0].points[0][0] === 250;
   }, null, {timeout: kTimeout});
   await settle(phone);
-  const {placed} = await phone.evaluate(() => window.playground.labels());
+  const {placed, marks} = await phone.evaluate(() => window.playground.labels());
   const canvasBox = await phone.locator('#scene').boundingBox();
   assert.ok(placed.length >= 12, `${placed.length} labels placed`);
   const overlapping = (a, b) => a.x < b.x + b.w - 0.5 && b.x < a.x + a.w - 0.5 && a.y < b.y + b.h - 0.5 && b.y < a.y + a.h - 0.5;
   for (const [k, a] of placed.entries()) {
     assert.ok(a.x >= 0 && a.y >= 0 && a.x + a.w <= canvasBox.width && a.y + a.h <= canvasBox.height, `${a.text} inside`);
     for (const b of placed.slice(k + 1)) assert.ok(!overlapping(a, b), `canvas labels ${a.text} and ${b.text} overlap`);
+  }
+  // No label covers a mark: every control point, B(t0) and construction point is kept clear,
+  // each of them checked here from the state and the answers, not from the page's list.
+  const crowded = await pageState(phone);
+  const crowdedAnswers = await pageAnswers(phone);
+  const markPoints = [...crowded.curves[0].points, ...crowded.curves[1].points, crowdedAnswers.polar.curve_point,
+                      ...crowdedAnswers.casteljau.levels.slice(1, -1).flat()];
+  assert.ok(marks.length >= markPoints.length, 'the page keeps each mark clear');
+  for (const p of markPoints) {
+    const x = p[0] * canvasBox.width / kWorld.width;
+    const y = (kWorld.height - p[1]) * canvasBox.height / kWorld.height;
+    const disc = {x: x - 3, y: y - 3, w: 6, h: 6};
+    for (const a of placed) assert.ok(!overlapping(a, disc), `label ${a.text} covers the mark at (${p})`);
+  }
+  // A tight row of points: the construction's names would stand in a row over it, so they are left
+  // out (each level keeps its colour, the legend names it) and nothing placed overlaps.
+  const row = [...Array(kMaxDegree + 1).keys()].map((k) => [300 + 20 * k, k % 2 ? 320 : 300]);
+  await phone.goto(`${baseUrl}/#a=${row.map((p) => p.join(',')).join(';')}&t0=0.5`);
+  await phone.waitForFunction(() => window.playground.state().curves[0].points.length === 6 && !window.playground.state().second,
+                              null, {timeout: kTimeout});
+  await settle(phone);
+  const tight = await phone.evaluate(() => window.playground.labels());
+  assert.ok(!tight.placed.some((b) => /^b/.test(b.text)), 'no construction name placed in the row');
+  assert.ok(tight.dropped.filter((text) => /^b/.test(text)).length >= kMaxDegree, 'they are left out');
+  for (const [k, a] of tight.placed.entries()) {
+    for (const b of tight.placed.slice(k + 1)) assert.ok(!overlapping(a, b), `canvas labels ${a.text} and ${b.text} overlap`);
   }
   const boxes = await phone.locator('h1, .lede, .segmented legend, .segmented span, .actions > button, select, .status, ' +
                                     '.t0-row > *, .checks label, summary, h2, #points-table th, #points-table input')
