@@ -1265,6 +1265,8 @@ test('regions: the operation\'s result filled, segments coloured by source, the 
   const text = await readout.textContent();
   const sign = (corners) => Math.sign(shoelace(corners));
   assert.match(text, new RegExp(`A: winding ${sign(a)}, inside; B: winding ${sign(b)}, inside; result: winding 1, inside`));
+  // The picture of the regions view for the README (beside the main one): the union, the pointer in both squares.
+  if (screenshotPath) await page.screenshot({path: screenshotPath.replace(/(\.png)?$/, '-regions.png')});
   await page.mouse.move(5, 5);
 
   // The link opens the same regions.
