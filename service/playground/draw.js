@@ -25,12 +25,11 @@ export const kColors = Object.freeze({
   nearest: '#d81b60',
   // One colour per control point P_i and its Bernstein polynomial B_{i,n}.
   points: ['#e6194b', '#3cb44b', '#4363d8', '#f58231', '#911eb4', '#42a5b5', '#f032e6', '#9a6324',
-           '#469990', '#800000', '#808000', '#000075'],
+           '#00695c', '#800000', '#808000', '#000075'],
   // De Casteljau levels r = 1, 2, ...: level 1 in the polar's colour (it is the polar's polygon).
   levels: ['#8a3fd1', '#1e88e5', '#00897b', '#c49000', '#e65100', '#c62828', '#6d4c41', '#37474f'],
 });
 
-/** The colour of control point i (and of B_{i,n}). */
 /** The mark of a cubic's feature at screen point (x, y): a diagonal cross for a cusp, an
  * upright one for an inflection (the canvas and the legend draw the same mark). */
 export function drawFeatureMark(ctx, x, y, cusp) {
@@ -46,10 +45,53 @@ export function drawFeatureMark(ctx, x, y, cusp) {
   ctx.restore();
 }
 
-/** Past the twelve listed colours, hues a golden angle apart (each new one as far as can be
- * from those before it) at two alternating lightnesses, so no two points share a colour. */
-export const pointColor = (i) => (i < kColors.points.length ? kColors.points[i]
-    : `hsl(${Math.round(((i - kColors.points.length) * 137.508 + 15) % 360)}, 72%, ${i % 2 ? 36 : 50}%)`);
+/** [r, g, b] of '#rrggbb'. */
+const rgbOf = (hex) => [1, 3, 5].map((k) => parseInt(hex.slice(k, k + 2), 16));
+
+/** [r, g, b] of hue h (degrees), saturation s and lightness l (percent). */
+function rgbOfHsl(h, s, l) {
+  const a = (s / 100) * Math.min(l / 100, 1 - l / 100);
+  const f = (n) => {
+    const k = (n + h / 30) % 12;
+    return Math.round(255 * (l / 100 - a * Math.max(-1, Math.min(k - 3, 9 - k, 1))));
+  };
+  return [f(0), f(8), f(4)];
+}
+
+/** How different two colours look: RGB distance weighted by the mean red ("redmean"), a cheap
+ * approximation of perceived difference. */
+function colorDistance(a, b) {
+  const r = (a[0] + b[0]) / 2;
+  const [dr, dg, db] = a.map((v, k) => v - b[k]);
+  return Math.sqrt((2 + r / 256) * dr * dr + 4 * dg * dg + (2 + (255 - r) / 256) * db * db);
+}
+
+// Past the twelve listed colours, each next one is the candidate (hues 6 degrees apart at
+// three lightnesses dark enough to read on white) farthest from every colour before it:
+// a greedy farthest-point choice, so no two control points share a colour at any degree.
+const kCandidates = [];
+for (let h = 0; h < 360; h += 6) for (const l of [28, 38, 48]) kCandidates.push(rgbOfHsl(h, 75, l));
+const chosen = kColors.points.map(rgbOf);
+
+/** The colour of control point i (and of B_{i,n}). */
+export function pointColor(i) {
+  while (chosen.length <= i) {
+    let best = kCandidates[0];
+    let farthest = -1;
+    for (const c of kCandidates) {
+      const d = Math.min(...chosen.map((p) => colorDistance(p, c)));
+      if (d > farthest) {
+        farthest = d;
+        best = c;
+      }
+    }
+    chosen.push(best);
+  }
+  return i < kColors.points.length ? kColors.points[i] : `rgb(${chosen[i].join(', ')})`;
+}
+
+/** The distance between the colours of points i and j (for tests: the palette's spread). */
+export const pointColorDistance = (i, j) => (pointColor(Math.max(i, j)), colorDistance(chosen[i], chosen[j]));
 /** The colour of de Casteljau level r >= 1. */
 export const levelColor = (r) => kColors.levels[(r - 1) % kColors.levels.length];
 

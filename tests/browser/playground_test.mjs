@@ -611,6 +611,29 @@ test('Bernstein basis: a colour per B_{i,n} matching its control point, a legend
   assert.ok(near(mark, swatch, 40), `B_${i},${n}(t0) marked in its colour, got ${mark}`);
 });
 
+test('control point colours stay distinct past twelve points, up to the service\'s default degree limit (20)', async () => {
+  // The page's palette, asked of the module the page runs (the service here stops at degree 5).
+  const colors = await page.evaluate(async () => {
+    const {pointColor} = await import('/playground/draw.js');
+    const probe = document.createElement('span');
+    document.body.append(probe);
+    const out = [];
+    for (let i = 0; i <= 20; ++i) {
+      probe.style.color = pointColor(i);
+      out.push(getComputedStyle(probe).color);
+    }
+    probe.remove();
+    return out;
+  });
+  const rgb = colors.map(rgbOf);
+  assert.equal(new Set(colors).size, colors.length, 'no two points share a colour');
+  let least = Infinity;
+  for (let i = 0; i < rgb.length; ++i) {
+    for (let j = i + 1; j < rgb.length; ++j) least = Math.min(least, Math.hypot(...rgb[i].map((v, k) => v - rgb[j][k])));
+  }
+  assert.ok(least >= 40, `the closest two colours are ${least.toFixed(1)} apart in RGB`);
+});
+
 test('explanations: a legend entry for every mark shown, a line per panel, search statistics folded', async () => {
   const marks = async () => page.locator('#legend li').evaluateAll((items) => items.map((li) => li.dataset.mark));
   const shown = await marks();
