@@ -132,6 +132,7 @@ export function drawCanonicalMap(canvas, marks) {
   ctx.fillText(text, ...name);
   ctx.fillStyle = '#1e8449';
   ctx.fillText('inflection at t = 1', sx(-3.4), sy(1) - 7);
+  canvas.dataset.edges = ['cusp', 'loop at t = 0', 'loop at t = 1', 'inflection at t = 1'].join('; ');
   ctx.font = '10px system-ui, sans-serif';
   ctx.fillStyle = '#3d4650';
   // The fixed images of P0, P1, P2.

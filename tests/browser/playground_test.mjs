@@ -481,6 +481,8 @@ test('loops shaded with their area; the cubic\'s type and canonical point', asyn
   const canonical = numbersIn((await page.locator('#types li[data-curve=A] .small').textContent()).split('canonical P3')[1]);
   assertClose(canonical[0], type.canonical_point[0], 'canonical x');
   assertClose(canonical[1], type.canonical_point[1], 'canonical y');
+  assert.equal(await page.locator('#canonical').getAttribute('data-edges'), 'cusp; loop at t = 0; loop at t = 1; inflection at t = 1',
+               'the map names its edges');
   assert.deepEqual(await pageErrorsShown(), []);
 });
 
@@ -1302,6 +1304,29 @@ test('regions: the operation\'s result filled, segments coloured by source, the 
   assert.deepEqual((await pageState(other)).regions, (await pageState()).regions);
   assert.equal((await pageAnswers(other)).boolean.area, expected.union);
   await other.close();
+
+  // Pasted shapes, arcs included: a disc of radius 100 (two arcs) cut by the half-plane right of its centre.
+  await page.locator('#region-op').selectOption('intersection');
+  await page.locator('#region-a').fill('M 300 300 A 100 100 0 1 1 500 300 A 100 100 0 1 1 300 300 Z');
+  await page.locator('#region-b').fill('M 400 100 H 700 V 500 H 400 Z');
+  await page.locator('#region-form button[type=submit]').click();
+  await page.waitForFunction(() => window.playground.state().regions.a.includes('A 100 100'));
+  await settle();
+  const half = await pageAnswers();
+  // The arcs keep within 1e-6 of the radius (the default arc_tolerance) of the circle, so the area is within
+  // the half circle's length times that band.
+  assert.ok(Math.abs(half.boolean.area - Math.PI * 100 * 100 / 2) <= Math.PI * 100 * 1e-6 * 100, `half a disc: ${half.boolean.area}`);
+  assert.ok(half.boolean.segments.some((s) => s.source === 'a' && s.degree === 3) &&
+            half.boolean.segments.some((s) => s.source === 'b' && s.degree === 1), 'arcs from A, the cut from B');
+  // Path data the service cannot read: its refusal is listed, the view waits for a readable shape.
+  await page.locator('#region-b').fill('M 400 100 H');
+  await page.locator('#region-form button[type=submit]').click();
+  await page.waitForFunction(() => window.playground.state().regions.b === 'M 400 100 H');
+  await settle();
+  const refused = await pageErrorsShown();
+  assert.deepEqual(refused.map((e) => [e.route, e.status]), [['/segments', 422]]);
+  assert.equal((await pageAnswers()).boolean, null);
+  await page.locator('#region-op').selectOption('union');
 
   // Simplify a glyph whose strokes overlap: the result has no crossing left (its area is less than the sum).
   await page.locator('#region-examples').selectOption('glyph');
