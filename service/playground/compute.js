@@ -34,7 +34,7 @@ function piece(interval) {
 }
 
 /** How a curve is sent: its path (drawing units, from `resolved`) in path mode, else its control points. */
-export function curveInput(curve, resolved) {
+function curveInput(curve, resolved) {
   return curve.path ? {path: resolved.data} : {points: curve.points};
 }
 

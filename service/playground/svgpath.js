@@ -83,7 +83,8 @@ export function pathFromSegments(answer) {
           arcTolerance: answer.arc_tolerance ?? null};
 }
 
-const cache = new Map();  // pasted text -> Promise of pathFromSegments(...)
+const cache = new Map();  // pasted text -> Promise of pathFromSegments(...), oldest first
+const kCacheSize = 64;  // texts kept: the paths of a session's drawings, links and examples
 
 /**
  * Pasted SVG path data (SVG units) as a path of the drawing (see pathFromSegments),
@@ -96,6 +97,7 @@ export function pathInDrawing(text) {
     const promise = post('/segments', {path: key}).then(pathFromSegments);
     promise.catch(() => cache.delete(key));  // a refusal is asked again, e.g. after a token is entered
     cache.set(key, promise);
+    if (cache.size > kCacheSize) cache.delete(cache.keys().next().value);
   }
   return cache.get(key);
 }
