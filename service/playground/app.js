@@ -62,6 +62,7 @@ let hover = null;  // {curve, index} of the control point under the cursor
 let hoverMark = -1;  // index of the intersection under the cursor
 let drag = null;  // {curve, index, pointerId, before}
 let degreeLimit = null;  // the service's highest degree, once it has refused one
+let acceptedPoints = 0;  // the most control points of a curve the service has drawn
 let labels = null;  // the last drawing's label layout
 let animation = null;  // {timer, direction, last} while t0 is animated
 
@@ -275,7 +276,7 @@ async function schedule() {
   while (answeredKey !== requestKey()) {
     const key = requestKey();
     const snap = structuredClone({curves: state.curves, second: state.second, active: state.active, t0: state.t0,
-                                  show: state.show, degreeLimit});
+                                  show: state.show, degreeLimit, acceptedPoints});
     let round;
     try {
       if (state.view === 'regions') round = await computeRegions(structuredClone(state.regions));
@@ -311,6 +312,9 @@ async function schedule() {
     }
     answers = round.answers;
     errors = round.errors;
+    for (const [i, curve] of (answers?.view === 'curves' ? answers.curves : []).entries()) {
+      if (curve.evaluate) acceptedPoints = Math.max(acceptedPoints, snap.curves[i].points.length);
+    }
     answeredKey = key;
     renderPanels();
     renderScene();

@@ -43,7 +43,9 @@ function curveInput(curve, resolved) {
  * answers.curves[i]: {evaluate, loopArea, classify, loopPaths, overlapPaths, features,
  * path (in path mode: the path /segments made of the pasted data, see svgpath.js),
  * selfIntersections (in path mode: /intersections of the path alone), tooLong (the
- * curve is past the degree limit state.degreeLimit, so nothing was asked about it)}
+ * curve is past the degree limit: state.degreeLimit, or the refusal of its first request
+ * when it has more control points than state.acceptedPoints, the most the service has
+ * taken so far; nothing else was asked about it)}
  * answers.polar: the /polar answer for the active curve (with .curve = its index);
  * answers.measure: for the active curve, {curve, frame (the /evaluate result at t0 with
  * frame), bounds (the /bounds answer), extremes ([{axis, t, point}] at its critical
@@ -80,13 +82,25 @@ export async function computeRound(state) {
     }
   }));
   const ready = (i) => (state.curves[i].path ? curves[i].path !== null : state.curves[i].points.length >= 2);
+  // A curve of more control points than the service has taken so far, while its limit is not
+  // known, is sampled alone first: when that is refused for its degree, every other request
+  // about it would be refused alike, so none is sent.
+  const probed = new Set();
+  await Promise.all(used.map(async (i) => {
+    const {name, points, path} = state.curves[i];
+    if (path || points.length < 2 || state.degreeLimit !== null || points.length <= (state.acceptedPoints ?? 0)) return;
+    probed.add(i);
+    const before = errors.length;
+    curves[i].evaluate = await attempt(`curve ${name}`, '/evaluate', {points, samples: kCurveSamples});
+    if (errors.slice(before).some(({error}) => isDegreeRefusal(error))) curves[i].tooLong = true;
+  }));
   const jobs = [];
   for (const i of used) {
     const {name, points, path} = state.curves[i];
     if (!path && state.degreeLimit !== null && points.length - 1 > state.degreeLimit) {
       curves[i].tooLong = true;  // refused already: its requests would all fail alike
-      continue;
     }
+    if (curves[i].tooLong) continue;
     if (path) {
       if (!ready(i)) continue;
       const data = curves[i].path.data;
@@ -96,8 +110,10 @@ export async function computeRound(state) {
       continue;
     }
     if (points.length < 2) continue;
-    jobs.push(attempt(`curve ${name}`, '/evaluate', {points, samples: kCurveSamples})
-        .then((a) => { curves[i].evaluate = a; }));
+    if (!probed.has(i)) {
+      jobs.push(attempt(`curve ${name}`, '/evaluate', {points, samples: kCurveSamples})
+          .then((a) => { curves[i].evaluate = a; }));
+    }
     if (points.length >= 3) {
       jobs.push(attempt(`loops of ${name}`, '/loop-area', {points})
           .then((a) => { curves[i].loopArea = a; }));
@@ -129,6 +145,12 @@ export async function computeRound(state) {
   await Promise.all(used.map((i) => (state.curves[i].path ? pointsOnPath(state, answers, i, attempt)
                                                           : pointsOnCurve(state, answers, i, attempt))));
   return {answers, errors};
+}
+
+/** Whether the service refused a curve for its degree (a 422 pointing at the control points). */
+export function isDegreeRefusal(error) {
+  return (error.problem?.errors ?? []).some((e) => /^\/(curves\/\d+\/)?points$/.test(e.pointer ?? '') &&
+                                                   /above the limit of \d+/.test(e.message ?? ''));
 }
 
 /** The measuring answers for a path: its length and box (no t0: a path has no single parameter). */
