@@ -13,6 +13,12 @@ import {ApiError, apiToken, setApiToken} from './api.js';
 import {drawBernstein, renderBernsteinLegend} from './bernstein.js';
 import {drawCanonicalMap} from './canonical.js';
 import {computeRound, usedCurves} from './compute.js';
+import {LabelLayout} from './labels.js';
+import {LatestRequest} from './latest.js';
+import {computeOutline, defaultOutline, defaultStroke, drawOutline, kOutlineExamples, outlineSummary,
+        toleranceAt} from './outline.js';
+import {computeRegions, defaultRegions, drawRegions, kRegionExamples, regionsSummary, usesB, windingRequest,
+        windingText} from './regions.js';
 import {drawScene, kColors, kPointNames, formatNumber} from './draw.js';
 import {kExamples} from './examples.js';
 import {download, kExportScale, renderPng, renderSvg} from './export.js';
@@ -21,12 +27,13 @@ import {markAt, pointAt} from './hit.js';
 import {legendEntries, renderLegend} from './legend.js';
 import {NearestTracker} from './nearest.js';
 import {renderErrors, renderIntersections, renderLoops, renderTypes, renderValues, segmentsText} from './panels.js';
-import {decodeFragment, encodeFragment} from './permalink.js';
+import {decodeFragment, encodeFragment, kLayers} from './permalink.js';
 import {renderPointTable} from './pointtable.js';
-import {InputError, parseCurveText, pathInDrawing} from './svgpath.js';
+import {InputError, isPathData, parsePointList, pathInDrawing, pathProblemText} from './svgpath.js';
 import {View, kWorld} from './view.js';
 
 const $ = (id) => document.getElementById(id);
+const kOpeningExample = 'crossing';  // what the page shows when the link holds no drawing
 
 const state = {
   curves: [{name: 'A', points: [], path: null}, {name: 'B', points: [], path: null}],  // path: SVG path data as pasted
@@ -40,9 +47,14 @@ const state = {
     loops: true, classify: true, intersections: true, box: true, frame: true, nearest: true,
     casteljau: true,
   },
+  view: 'curves',  // or 'regions', 'outline'
+  regions: defaultRegions(),  // {a, b (SVG path data), op, fillA, fillB}
+  outline: defaultOutline(),  // {path (SVG path data), tolerance, distance}
 };
 
 let answers = null;  // the last round's answers (for `answered` below)
+/** The last answers when they are the curves view's (each view's answers have their own shape), else null. */
+const curveAnswers = () => (answers?.view === 'curves' ? answers : null);
 let errors = [];
 let answeredKey = null;  // request key of the state those answers are for
 let inFlight = false;
@@ -50,6 +62,7 @@ let hover = null;  // {curve, index} of the control point under the cursor
 let hoverMark = -1;  // index of the intersection under the cursor
 let drag = null;  // {curve, index, pointerId, before}
 let degreeLimit = null;  // the service's highest degree, once it has refused one
+let acceptedPoints = 0;  // the most control points of a curve the service has drawn
 let labels = null;  // the last drawing's label layout
 let animation = null;  // {timer, direction, last} while t0 is animated
 
@@ -58,25 +71,44 @@ const view = new View(canvas);
 const history = new EditHistory();
 const nearest = new NearestTracker(() => {
   renderScene();
-  renderValues($('values'), state, answers, currentNearest());
+  renderValues($('values'), state, curveAnswers(), currentNearest());
 });
 
 /** The nearest-point answer for the edited curve as it is now, or null. */
 function currentNearest() {
-  return state.show.nearest ? nearest.current(state.curves[state.active].points) : null;
+  return state.show.nearest ? nearest.current(nearestInput()) : null;
+}
+
+/** What /nearest is asked about: the edited curve's control points, or its path as the service read it. */
+function nearestInput() {
+  const curve = state.curves[state.active];
+  if (curve.path) {
+    const path = curveAnswers()?.curves[state.active]?.path;
+    return path && answeredKey === requestKey() ? {path: path.data} : null;
+  }
+  return curve.points.length >= 2 ? {points: curve.points} : null;
 }
 
 /** Asks for the edited curve's point nearest to canvas position (sx, sy). */
 function askNearest(sx, sy) {
-  const points = state.curves[state.active].points;
-  if (!state.show.nearest || points.length < 2) return;
-  nearest.request(points, view.toWorld(sx, sy));
+  const input = nearestInput();
+  if (!state.show.nearest || !input) return;
+  nearest.request(input, view.toWorld(sx, sy));
 }
 
 /** What the requests depend on: nothing else triggers a round. */
 function requestKey() {
+  if (state.view === 'regions') return JSON.stringify(['regions', state.regions]);
+  if (state.view === 'outline') return JSON.stringify(['outline', state.outline]);
   return JSON.stringify([state.curves.map((c) => [c.points, c.path]), state.second, state.active, state.t0, state.show.casteljau]);
 }
+
+// The point under the pointer in the regions view, and where it winds (/contains in a /batch).
+let regionPointer = null;
+const winding = new LatestRequest('/batch', () => {
+  renderScene();
+  renderWinding();
+});
 
 function isIdle() {
   return !inFlight && answeredKey === requestKey();
@@ -218,16 +250,21 @@ function readFragment(source, opening = false) {
   let decoded;
   try {
     decoded = decodeFragment(location.hash);
-    for (const path of decoded?.paths ?? []) if (path) pathInDrawing(path);
   } catch (e) {
     showMessage(source, `This link's drawing could not be read: ${e.message}`);
     return;
   }
-  if (!decoded) return;
+  if (!decoded) return false;
+  for (const layer of kLayers) setLayer(layer, !decoded.hidden.includes(layer));
+  state.view = decoded.view;
+  if (decoded.regions) state.regions = decoded.regions;
+  if (decoded.outline) state.outline = decoded.outline;
+  fillViewControls();
   const next = {points: decoded.curves, paths: decoded.paths, second: decoded.second, active: decoded.active};
   if (opening) applySnapshot(next);  // the page opens on the link's drawing: nothing to undo yet
   else edit(source, (s) => Object.assign(s, next));
   setT0(decoded.t0);
+  return true;
 }
 
 // --- the rounds of requests ---------------------------------------------------------
@@ -239,15 +276,17 @@ async function schedule() {
   while (answeredKey !== requestKey()) {
     const key = requestKey();
     const snap = structuredClone({curves: state.curves, second: state.second, active: state.active, t0: state.t0,
-                                  show: state.show});
+                                  show: state.show, degreeLimit, acceptedPoints});
     let round;
     try {
-      round = await computeRound(snap);
+      if (state.view === 'regions') round = await computeRegions(structuredClone(state.regions));
+      else if (state.view === 'outline') round = await computeOutline(structuredClone(state.outline));
+      else round = await computeRound(snap);
     } catch (e) {
       // An answer of an unexpected shape: say so instead of stalling.
       round = {answers: null, errors: [{what: 'drawing the answers', error: new ApiError('(page)', 0, {title: 'Page error', detail: String(e)})}]};
     }
-    const limit = degreeLimitIn(round.errors);
+    const limit = state.view === 'curves' ? degreeLimitIn(round.errors) : null;
     if (limit !== null && key === requestKey()) {
       // Past the degree limit: take the edit back (the drawing stays as it was) and say why.
       degreeLimit = limit;
@@ -264,8 +303,18 @@ async function schedule() {
         continue;
       }
     }
+    const over = state.view === 'curves' ? tooLong(snapshot()) : null;
+    if (over !== null && key === requestKey()) {
+      // A drawing opened past the limit (a link): its points are shown, the view says why no curve is.
+      showMessage('canvas', `${limitText(degreeLimit)}: curve ${state.curves[over].name} has ` +
+                            `${state.curves[over].points.length}, so only its control points are drawn. Remove ` +
+                            `${state.curves[over].points.length - 1 - degreeLimit} to see the curve.`);
+    }
     answers = round.answers;
     errors = round.errors;
+    for (const [i, curve] of (answers?.view === 'curves' ? answers.curves : []).entries()) {
+      if (curve.evaluate) acceptedPoints = Math.max(acceptedPoints, snap.curves[i].points.length);
+    }
     answeredKey = key;
     renderPanels();
     renderScene();
@@ -286,8 +335,18 @@ function renderAll() {
 }
 
 function renderScene() {
+  if (state.view !== 'curves') {
+    $('hint').hidden = true;
+    const ctx = view.context();
+    const current = answers?.view === state.view ? answers : null;
+    if (state.view === 'regions') drawRegions(ctx, view, state.regions, current, regionPointer);
+    else drawOutline(ctx, view, state.outline, current);
+    labels = new LabelLayout(view.cssWidth, view.cssHeight);
+    updateStatus();
+    return;
+  }
   $('hint').hidden = state.curves.some((c) => c.points.length > 0 || c.path);
-  labels = drawScene(view, state, answers, hover, hoverMark, currentNearest());
+  labels = drawScene(view, state, curveAnswers(), hover, hoverMark, currentNearest());
   const active = state.active;
   const points = state.curves[active].points;
   const n = points.length - 1;
@@ -298,16 +357,60 @@ function renderScene() {
   updateStatus();
 }
 
+function renderDefinitions(container, rows) {
+  container.replaceChildren(...rows.flatMap(([term, value]) => {
+    const dt = document.createElement('dt');
+    dt.textContent = term;
+    const dd = document.createElement('dd');
+    dd.textContent = value;
+    dd.dataset.term = term.toLowerCase();
+    return [dt, dd];
+  }));
+}
+
+/** The winding readout for the point under the pointer, when its answer is for the drawing shown. */
+function currentWinding() {
+  if (state.view !== 'regions' || !regionPointer || !answers || answers.view !== 'regions' || !answers.a) return null;
+  const result = winding.current(JSON.stringify([requestKey(), regionPointer]));
+  return result && {names: windingRequest(answers, state.regions, regionPointer).names, answer: result.answer};
+}
+
+/** Asks where the world point under canvas position (sx, sy) winds. */
+function askWinding(sx, sy) {
+  if (!answers || answers.view !== 'regions' || !answers.a || answeredKey !== requestKey()) return;
+  regionPointer = view.toWorld(sx, sy).map((v) => Math.round(v * 100) / 100);
+  winding.request(JSON.stringify([requestKey(), regionPointer]), windingRequest(answers, state.regions, regionPointer).body);
+  renderScene();
+}
+
+function renderWinding() {
+  const current = currentWinding();
+  $('winding').textContent = current ? windingText(current.names, current.answer, regionPointer)
+                                     : 'Point at the drawing: the winding number of each shape and of the result there (/contains).';
+}
+
 function renderPanels() {
+  document.body.dataset.view = state.view;
+  for (const input of document.querySelectorAll('input[name=view]')) input.checked = input.value === state.view;
+  if (state.view !== 'curves') {
+    renderErrors({points: $('points-errors'), general: $('errors')}, errors);
+    if (state.view === 'regions') {
+      renderDefinitions($('region-values'), regionsSummary(state.regions, answers?.view === 'regions' ? answers : null));
+      renderWinding();
+    } else {
+      renderDefinitions($('outline-values'), outlineSummary(state.outline, answers?.view === 'outline' ? answers : null));
+    }
+    return;
+  }
   const active = state.active;
   const points = state.curves[active].points;
-  renderValues($('values'), state, answers, currentNearest());
-  renderTypes($('types'), state, answers);
-  renderIntersections($('intersections'), state, answers);
-  renderLoops($('loops'), state, answers);
+  renderValues($('values'), state, curveAnswers(), currentNearest());
+  renderTypes($('types'), state, curveAnswers());
+  renderIntersections($('intersections'), state, curveAnswers());
+  renderLoops($('loops'), state, curveAnswers());
   renderErrors({points: $('points-errors'), general: $('errors')}, errors);
   renderBernsteinLegend($('bernstein-legend'), points.length - 1, state.t0, points, kPointNames[active]);
-  renderLegend($('legend'), legendEntries(state, answers));
+  renderLegend($('legend'), legendEntries(state, curveAnswers()));
   $('points-caption').textContent = `curve ${state.curves[active].name}`;
   renderPathNote();
   renderPointTable($('points-table').tBodies[0], active, points, state.selected, tableHandlers);
@@ -315,7 +418,7 @@ function renderPanels() {
   section.hidden = !state.show.classify;
   if (state.show.classify) {
     const marks = usedCurves(state).map((i) => ({
-      label: kPointNames[i], color: kColors.curves[i], point: answers?.curves[i]?.classify?.canonical_point ?? null,
+      label: kPointNames[i], color: kColors.curves[i], point: curveAnswers()?.curves[i]?.classify?.canonical_point ?? null,
     }));
     drawCanonicalMap($('canonical'), marks);
   }
@@ -343,7 +446,7 @@ function showTooltip(sx, sy) {
     tooltip.hidden = true;
     return;
   }
-  const hit = answers.intersections.intersections[hoverMark];
+  const hit = curveAnswers().intersections.intersections[hoverMark];
   tooltip.textContent = `${hit.kind} intersection\n${segmentsText(state, hit)}t = ${formatNumber(hit.t)}, s = ${formatNumber(hit.s)}\n` +
       `at (${formatNumber(hit.point[0])}, ${formatNumber(hit.point[1])})`;
   tooltip.dataset.kind = hit.kind;
@@ -368,12 +471,17 @@ $('intersections').addEventListener('pointerleave', () => {
 function updateHover(event) {
   const [sx, sy] = localPosition(event);
   hover = pointAt(state, view, sx, sy, hitRadius(event));
-  hoverMark = hover ? -1 : markAt(state, view, answers, sx, sy, hitRadius(event));
+  hoverMark = hover ? -1 : markAt(state, view, curveAnswers(), sx, sy, hitRadius(event));
   canvas.classList.toggle('over-point', hover !== null && state.mode !== 'add');
   showTooltip(sx, sy);
 }
 
 canvas.addEventListener('pointermove', (event) => {
+  if (state.view === 'regions') {
+    askWinding(...localPosition(event));
+    return;
+  }
+  if (state.view !== 'curves') return;
   if (drag && event.pointerId === drag.pointerId) {
     const p = view.snappedWorld(...localPosition(event));
     const points = state.curves[drag.curve].points;
@@ -392,7 +500,7 @@ canvas.addEventListener('pointermove', (event) => {
 });
 
 canvas.addEventListener('pointerdown', (event) => {
-  if (event.button !== 0) return;
+  if (event.button !== 0 || state.view !== 'curves') return;
   canvas.focus({preventScroll: true});  // for the keys, also when the default action is prevented below
   updateHover(event);
   const [sx, sy] = localPosition(event);
@@ -439,6 +547,10 @@ canvas.addEventListener('pointerup', endDrag);
 canvas.addEventListener('pointercancel', endDrag);
 canvas.addEventListener('pointerleave', () => {
   if (drag) return;
+  if (regionPointer) {
+    regionPointer = null;
+    winding.clear();
+  }
   hover = null;
   hoverMark = -1;
   $('tooltip').hidden = true;
@@ -456,7 +568,7 @@ function select(curve, index) {
 }
 
 canvas.addEventListener('keydown', (event) => {
-  if (event.ctrlKey || event.metaKey || event.altKey) return;
+  if (event.ctrlKey || event.metaKey || event.altKey || state.view !== 'curves') return;
   const active = state.active;
   const points = state.curves[active].points;
   const selected = state.selected && state.selected.curve === active ? state.selected.index : -1;
@@ -604,9 +716,17 @@ for (const [id, key] of Object.entries(checks)) {
   $(id).addEventListener('change', (event) => {
     state.show[key] = event.target.checked;
     if (!state.show.intersections) hoverMark = -1;
+    writeFragment();  // the link keeps the layers shown
     renderAll();
     schedule();
   });
+}
+
+/** Shows or hides a layer (a name of state.show), its check box following. */
+function setLayer(key, on) {
+  state.show[key] = on;
+  const id = Object.keys(checks).find((k) => checks[k] === key);
+  if (id) $(id).checked = on;
 }
 
 function setSecond(on) {
@@ -664,37 +784,63 @@ $('add-point').addEventListener('click', () => {
   edit('table', (s) => s.points[s.active].push(p));
 });
 
-$('paste-form').addEventListener('submit', (event) => {
+/** After a paste that changed nothing and was not refused with a message: say so. */
+function unchanged() {
+  if ($('paste-message').hidden) showMessage('paste', 'That is the drawing already: nothing changed.', 'info');
+}
+
+$('paste-form').addEventListener('submit', async (event) => {
   event.preventDefault();
-  let read;
-  try {
-    read = parseCurveText($('paste-text').value);
-  } catch (e) {
-    if (!(e instanceof InputError)) throw e;
-    showMessage('paste', e.message);
+  $('paste-message').hidden = true;  // the answer's message replaces it
+  const text = $('paste-text').value.trim();
+  if (!isPathData(text)) {
+    let points;
+    try {
+      points = parsePointList(text);
+    } catch (e) {
+      if (!(e instanceof InputError)) throw e;
+      showMessage('paste', e.message);
+      return;
+    }
+    if (edit('paste', (s) => {
+      s.points[s.active] = points;
+      s.paths[s.active] = null;
+    })) {
+      showMessage('paste', `Read ${points.length} control points from the point list.`, 'info');
+    }
+    unchanged();
     return;
   }
-  const {curves, source} = read;
+  // SVG path data: the service reads it (/segments).
+  let path;
+  try {
+    path = await pathInDrawing(text);
+  } catch (error) {
+    showMessage('paste', pathProblemText(error));
+    return;
+  }
+  const curves = path.segments;
+  const n = curves.length;
   const as = $('paste-as').value;
-  if (source === 'path' && (as === 'path' || (as === 'auto' && curves.length > 1))) {
+  if (as === 'path' || (as === 'auto' && (n > 1 || path.subpaths.some((sp) => sp.closed)))) {
     const name = state.curves[state.active].name;
-    const text = $('paste-text').value.trim();
     if (edit('paste', (s) => {
       s.points[s.active] = [];
       s.paths[s.active] = text;
     })) {
-      showMessage('paste', `Curve ${name} is SVG path data of ${curves.length} segment${curves.length > 1 ? 's' : ''} ` +
-                           '(y flipped), drawn and intersected segment by segment; its control points are not editable ' +
-                           'in path mode.', 'info');
+      showMessage('paste', `Curve ${name} is SVG path data of ${n} segment${n > 1 ? 's' : ''} (read by /segments, ` +
+                           'y flipped): drawn, measured and intersected as a path; its control points are not ' +
+                           'editable in path mode.', 'info');
     }
+    unchanged();
     return;
   }
-  if (curves.length > 2) {
-    showMessage('paste', `The path has ${curves.length} segments: as points the playground takes one (the curve being edited) or two (A and B).`);
+  if (n > 2) {
+    showMessage('paste', `The path has ${n} segments: as points the playground takes one (the curve being edited) or two (A and B).`);
     return;
   }
   const made = edit('paste', (s) => {
-    if (curves.length === 2) {
+    if (n === 2) {
       s.points = curves;
       s.paths = [null, null];
       s.second = true;
@@ -705,9 +851,10 @@ $('paste-form').addEventListener('submit', (event) => {
     }
   });
   if (made) {
-    const what = source === 'path' ? `SVG path data (${curves.length} segment${curves.length > 1 ? 's' : ''}, y flipped)` : 'the point list';
-    showMessage('paste', `Read ${curves.map((c) => c.length).join(' + ')} control points from ${what}.`, 'info');
+    showMessage('paste', `Read ${curves.map((c) => c.length).join(' + ')} control points from SVG path data ` +
+                         `(${n} segment${n > 1 ? 's' : ''}, read by /segments, y flipped).`, 'info');
   }
+  unchanged();
 });
 
 // Path mode: the note saying what is off, and the way back to control points (the
@@ -718,21 +865,144 @@ function renderPathNote() {
   $('points-table').hidden = Boolean(curve.path);
   $('add-point').hidden = Boolean(curve.path);
   if (!curve.path) return;
-  const n = pathInDrawing(curve.path).segments.length;
+  const path = curveAnswers()?.curves[state.active]?.path;
+  const n = path ? path.segments.length : null;
   $('path-note-text').textContent =
-      `Curve ${curve.name} is an SVG path of ${n} segment${n > 1 ? 's' : ''} (path mode): it is drawn and intersected ` +
-      'segment by segment. Its control points cannot be edited, and the panels that need one curve\'s control ' +
-      'points (polar, de Casteljau, Bernstein basis, values, frame, box, length, loops, type) are off for it.';
+      `Curve ${curve.name} is an SVG path${n ? ` of ${n} segment${n > 1 ? 's' : ''}` : ''} (path mode): drawn, ` +
+      'measured (length, box, nearest point), searched for loops and self-intersections and intersected as a ' +
+      'path. Its control points cannot be edited, and the panels that need one curve\'s control points (polar, ' +
+      'de Casteljau, Bernstein basis, frame, type) are off for it.';
 }
-$('points-mode').addEventListener('click', () => {
+$('points-mode').addEventListener('click', async () => {
   const {path} = state.curves[state.active];
   if (!path) return;
-  const first = pathInDrawing(path).segments[0];
+  let first;
+  try {
+    first = (await pathInDrawing(path)).segments[0];
+  } catch (error) {
+    showMessage('paste', pathProblemText(error));
+    return;
+  }
   edit('canvas', (s) => {
     s.paths[s.active] = null;
     s.points[s.active] = first;
   });
 });
+
+// --- the regions and outline views ---------------------------------------------------
+
+function setView(name) {
+  if (state.view === name) return;
+  state.view = name;
+  regionPointer = null;
+  winding.clear();
+  nearest.clear();
+  clearMessages();
+  fillViewControls();
+  changed();
+}
+for (const input of document.querySelectorAll('input[name=view]')) {
+  input.addEventListener('change', () => setView(input.value));
+}
+
+/** The regions and outline controls from the state (after a link or an example). */
+function fillViewControls() {
+  const r = state.regions;
+  $('region-a').value = r.a;
+  $('region-b').value = r.b;
+  $('region-op').value = r.op;
+  $('fill-a').value = r.fillA;
+  $('fill-b').value = r.fillB;
+  $('region-b').disabled = !usesB(r);
+  $('fill-b').disabled = !usesB(r);
+  const o = state.outline;
+  $('outline-path').value = o.path;
+  $('tolerance').value = String(Math.log10(o.tolerance));
+  $('tolerance-value').textContent = String(o.tolerance);
+  $('distance').value = String(o.distance);
+  $('distance-value').textContent = String(o.distance);
+  const stroke = o.stroke ?? defaultStroke();
+  $('stroke-on').checked = Boolean(o.stroke);
+  $('stroke-width').value = String(stroke.width);
+  $('stroke-width-value').textContent = String(stroke.width);
+  $('stroke-join').value = stroke.join;
+  $('stroke-cap').value = stroke.cap;
+  for (const id of ['stroke-width', 'stroke-join', 'stroke-cap']) $(id).disabled = !o.stroke;
+}
+
+function fillExamples(select, examples) {
+  for (const [key, example] of Object.entries(examples)) {
+    const option = document.createElement('option');
+    option.value = key;
+    option.textContent = example.label;
+    select.append(option);
+  }
+}
+fillExamples($('region-examples'), kRegionExamples);
+fillExamples($('outline-examples'), kOutlineExamples);
+
+function setRegions(next) {
+  state.regions = {...state.regions, ...next};
+  regionPointer = null;
+  winding.clear();
+  fillViewControls();
+  changed();
+}
+$('region-examples').addEventListener('change', (event) => {
+  const example = kRegionExamples[event.target.value];
+  event.target.value = '';
+  if (!example) return;
+  const {a, b, op, fillA, fillB} = example;
+  $('region-message').hidden = true;
+  setRegions({a, b: b || state.regions.b, op, fillA, fillB});
+});
+$('region-op').addEventListener('change', (event) => setRegions({op: event.target.value}));
+$('fill-a').addEventListener('change', (event) => setRegions({fillA: event.target.value}));
+$('fill-b').addEventListener('change', (event) => setRegions({fillB: event.target.value}));
+$('region-form').addEventListener('submit', (event) => {
+  event.preventDefault();
+  const a = $('region-a').value.trim();
+  const b = $('region-b').value.trim();
+  const message = $('region-message');
+  if (!a || (usesB(state.regions) && !b)) {
+    message.textContent = usesB(state.regions) ? 'Both shapes need path data.' : 'Shape A needs path data.';
+    message.dataset.kind = 'error';
+    message.hidden = false;
+    return;
+  }
+  message.hidden = true;
+  setRegions({a, b});
+});
+
+function setOutline(next) {
+  state.outline = {...state.outline, ...next};
+  fillViewControls();
+  changed();
+}
+$('outline-examples').addEventListener('change', (event) => {
+  const example = kOutlineExamples[event.target.value];
+  event.target.value = '';
+  if (example) setOutline({path: example.path});
+});
+$('outline-form').addEventListener('submit', (event) => {
+  event.preventDefault();
+  const path = $('outline-path').value.trim();
+  if (!path) {
+    $('outline-message').textContent = 'The outline needs path data.';
+    $('outline-message').dataset.kind = 'error';
+    $('outline-message').hidden = false;
+    return;
+  }
+  $('outline-message').hidden = true;
+  setOutline({path});
+});
+$('tolerance').addEventListener('input', (event) => setOutline({tolerance: toleranceAt(Number(event.target.value))}));
+$('distance').addEventListener('input', (event) => setOutline({distance: Number(event.target.value)}));
+$('stroke-on').addEventListener('change', (event) => setOutline({stroke: event.target.checked ? defaultStroke() : null}));
+const setStroke = (change) => setOutline({stroke: {...(state.outline.stroke ?? defaultStroke()), ...change}});
+$('stroke-width').addEventListener('input', (event) => setStroke({width: Number(event.target.value)}));
+$('stroke-join').addEventListener('change', (event) => setStroke({join: event.target.value}));
+$('stroke-cap').addEventListener('change', (event) => setStroke({cap: event.target.value}));
 
 // --- sharing and pictures ------------------------------------------------------------
 
@@ -747,11 +1017,11 @@ $('copy-link').addEventListener('click', async () => {
 });
 
 $('download').addEventListener('click', () => {
-  const png = renderPng(state, answers, view.cssWidth, legendEntries(state, answers));
+  const png = renderPng(state, curveAnswers(), view.cssWidth, legendEntries(state, curveAnswers()));
   png.toBlob((blob) => { if (blob) download(blob, 'bezier-playground.png'); }, 'image/png');
 });
 $('download-svg').addEventListener('click', () => {
-  download(new Blob([renderSvg(state, answers)], {type: 'image/svg+xml'}), 'bezier-playground.svg');
+  download(new Blob([renderSvg(state, curveAnswers())], {type: 'image/svg+xml'}), 'bezier-playground.svg');
 });
 
 $('token').value = apiToken();
@@ -798,8 +1068,9 @@ window.playground = Object.freeze({
             inFlight: nearest.inFlight};
   },
   errors: () => errors.map(({what, error}) => ({what, route: error.route, status: error.status, problem: error.problem})),
-  /** The canvas labels as placed ({text, x, y, w, h} in CSS pixels) and those left out. */
-  labels: () => ({placed: labels.boxes(), dropped: [...labels.dropped]}),
+  /** The canvas labels as placed ({text, x, y, w, h} in CSS pixels), those left out, and the
+   *  marks' discs (as boxes) and rings they keep clear of. */
+  labels: () => ({placed: labels.boxes(), dropped: [...labels.dropped], ...labels.obstacles()}),
   /** Undo and redo depths, and the degree limit once the service has named it. */
   history: () => ({undo: history.past.length, redo: history.future.length}),
   degreeLimit: () => degreeLimit,
@@ -819,6 +1090,12 @@ window.playground = Object.freeze({
 
 setMode('add');
 $('t0-number').value = state.t0.toFixed(2);
+fillViewControls();
 resize();
-readFragment('link', true);
+if (!location.hash || !readFragment('link', true)) {
+  // No drawing in the link: open on an example rather than an empty grid.
+  const example = kExamples[kOpeningExample];
+  applySnapshot({points: [structuredClone(example.a), structuredClone(example.b ?? [])], paths: [null, null],
+                 second: Boolean(example.b), active: 0});
+}
 changed();

@@ -7,7 +7,7 @@
 //
 // Edges: cusp y = (-x^2 + 2x + 3)/4 (x <= 1); loop closing at t = 0:
 // y = (-x^2 + 3x)/3 (x <= 0); loop closing at t = 1: y = (sqrt(3(4x - x^2)) - x)/2
-// (0 <= x <= 1); inflection at t = 1: y = 1.
+// (0 <= x <= 1); inflection at t = 1: y = 1. Each edge is named beside its line.
 
 export const kWindow = Object.freeze({x0: -3.5, x1: 2.5, y0: -3, y1: 3});
 
@@ -111,6 +111,30 @@ export function drawCanonicalMap(canvas, marks) {
   ctx.fillText('double inflection', sx(-3.3), sy(0.5));
   ctx.fillText('loop', sx(-1.8), sy(-1.4));
   ctx.fillText('arch', sx(0.8), sy(-1.8));
+  // The edges by name, each in its line's colour beside the line (the short loop-at-t = 1
+  // edge by a leader line from its name in the open arch region).
+  ctx.font = 'italic 10px system-ui, sans-serif';
+  ctx.fillStyle = '#b03a2e';
+  ctx.textAlign = 'right';
+  ctx.fillText('cusp', sx(-2.3) - 2, sy(cuspEdge(-2.3)) + 8);
+  ctx.fillStyle = '#6c3483';
+  ctx.textAlign = 'left';
+  ctx.fillText('loop at t = 0', sx(-0.9) + 6, sy(loopStartEdge(-0.9)) + 4);
+  const end = [sx(0.6), sy(loopEndEdge(0.6))];
+  const text = 'loop at t = 1';
+  const name = [Math.min(sx(1.15), width - 3 - ctx.measureText(text).width), sy(0.45)];
+  ctx.strokeStyle = '#6c3483';
+  ctx.lineWidth = 0.75;
+  ctx.beginPath();
+  ctx.moveTo(...end);
+  ctx.lineTo(name[0] - 2, name[1] - 4);
+  ctx.stroke();
+  ctx.fillText(text, ...name);
+  ctx.fillStyle = '#1e8449';
+  ctx.fillText('inflection at t = 1', sx(-3.4), sy(1) - 7);
+  canvas.dataset.edges = ['cusp', 'loop at t = 0', 'loop at t = 1', 'inflection at t = 1'].join('; ');
+  ctx.font = '10px system-ui, sans-serif';
+  ctx.fillStyle = '#3d4650';
   // The fixed images of P0, P1, P2.
   ctx.fillStyle = '#3d4650';
   for (const [x, y, name] of [[0, 0, 'P0'], [0, 1, 'P1'], [1, 1, 'P2']]) {

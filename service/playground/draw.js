@@ -25,12 +25,11 @@ export const kColors = Object.freeze({
   nearest: '#d81b60',
   // One colour per control point P_i and its Bernstein polynomial B_{i,n}.
   points: ['#e6194b', '#3cb44b', '#4363d8', '#f58231', '#911eb4', '#42a5b5', '#f032e6', '#9a6324',
-           '#469990', '#800000', '#808000', '#000075'],
+           '#00695c', '#800000', '#808000', '#000075'],
   // De Casteljau levels r = 1, 2, ...: level 1 in the polar's colour (it is the polar's polygon).
   levels: ['#8a3fd1', '#1e88e5', '#00897b', '#c49000', '#e65100', '#c62828', '#6d4c41', '#37474f'],
 });
 
-/** The colour of control point i (and of B_{i,n}). */
 /** The mark of a cubic's feature at screen point (x, y): a diagonal cross for a cusp, an
  * upright one for an inflection (the canvas and the legend draw the same mark). */
 export function drawFeatureMark(ctx, x, y, cusp) {
@@ -46,7 +45,53 @@ export function drawFeatureMark(ctx, x, y, cusp) {
   ctx.restore();
 }
 
-export const pointColor = (i) => kColors.points[i % kColors.points.length];
+/** [r, g, b] of '#rrggbb'. */
+const rgbOf = (hex) => [1, 3, 5].map((k) => parseInt(hex.slice(k, k + 2), 16));
+
+/** [r, g, b] of hue h (degrees), saturation s and lightness l (percent). */
+function rgbOfHsl(h, s, l) {
+  const a = (s / 100) * Math.min(l / 100, 1 - l / 100);
+  const f = (n) => {
+    const k = (n + h / 30) % 12;
+    return Math.round(255 * (l / 100 - a * Math.max(-1, Math.min(k - 3, 9 - k, 1))));
+  };
+  return [f(0), f(8), f(4)];
+}
+
+/** How different two colours look: RGB distance weighted by the mean red ("redmean"), a cheap
+ * approximation of perceived difference. */
+function colorDistance(a, b) {
+  const r = (a[0] + b[0]) / 2;
+  const [dr, dg, db] = a.map((v, k) => v - b[k]);
+  return Math.sqrt((2 + r / 256) * dr * dr + 4 * dg * dg + (2 + (255 - r) / 256) * db * db);
+}
+
+// Past the twelve listed colours, each next one is the candidate (hues 6 degrees apart at
+// three lightnesses dark enough to read on white) farthest from every colour before it:
+// a greedy farthest-point choice, so no two control points share a colour at any degree.
+const kCandidates = [];
+for (let h = 0; h < 360; h += 6) for (const l of [28, 38, 48]) kCandidates.push(rgbOfHsl(h, 75, l));
+const chosen = kColors.points.map(rgbOf);
+
+/** The colour of control point i (and of B_{i,n}). */
+export function pointColor(i) {
+  while (chosen.length <= i) {
+    let best = kCandidates[0];
+    let farthest = -1;
+    for (const c of kCandidates) {
+      const d = Math.min(...chosen.map((p) => colorDistance(p, c)));
+      if (d > farthest) {
+        farthest = d;
+        best = c;
+      }
+    }
+    chosen.push(best);
+  }
+  return i < kColors.points.length ? kColors.points[i] : `rgb(${chosen[i].join(', ')})`;
+}
+
+/** The distance between the colours of points i and j (for tests: the palette's spread). */
+export const pointColorDistance = (i, j) => (pointColor(Math.max(i, j)), colorDistance(chosen[i], chosen[j]));
 /** The colour of de Casteljau level r >= 1. */
 export const levelColor = (r) => kColors.levels[(r - 1) % kColors.levels.length];
 
@@ -64,6 +109,24 @@ function polyline(ctx, view, points) {
   });
 }
 
+/** The segments of a path (control points of degree 1 to 3, from /segments) as canvas
+ * path commands, a closed subpath closed: the canvas draws each Bézier segment itself. */
+export function tracePath(ctx, view, path) {
+  ctx.beginPath();
+  for (const subpath of path.subpaths) {
+    const first = subpath.first_segment;
+    if (subpath.segment_count === 0) continue;
+    ctx.moveTo(...view.toScreen(path.segments[first][0]));
+    for (let k = first; k < first + subpath.segment_count; ++k) {
+      const q = path.segments[k].slice(1).flatMap((p) => view.toScreen(p));
+      if (q.length === 2) ctx.lineTo(...q);
+      else if (q.length === 4) ctx.quadraticCurveTo(...q);
+      else ctx.bezierCurveTo(...q);
+    }
+    if (subpath.closed) ctx.closePath();
+  }
+}
+
 function dot(ctx, view, p, radius, fill, stroke) {
   const [x, y] = view.toScreen(p);
   ctx.beginPath();
@@ -78,9 +141,15 @@ function dot(ctx, view, p, radius, fill, stroke) {
   }
 }
 
+/** Keeps a mark's disc at world point p clear of labels. */
+function keepClear(labels, view, p, radius) {
+  const [x, y] = view.toScreen(p);
+  labels.keepClear(x, y, radius);
+}
+
 function label(labels, view, p, text, color, rank) {
   const [x, y] = view.toScreen(p);
-  labels.add(x, y, text, color, rank);
+  labels.add(x, y, text, color, rank, rank >= kRank.area);
 }
 
 /** The name b_i^r of a de Casteljau point. */
@@ -145,11 +214,23 @@ function drawLoops(ctx, view, labels, state, answers, i) {
     ctx.closePath();
     ctx.fill('evenodd');
   }
+  const closedPath = curve.path && typeof curve.loopArea?.closed_area === 'number';
+  if (closedPath) {
+    tracePath(ctx, view, curve.path);
+    ctx.fill('nonzero');
+  }
   ctx.restore();
+  if (closedPath) {
+    const box = answers.measure?.curve === i && answers.measure.bounds;
+    const c = box ? [(box.min[0] + box.max[0]) / 2, (box.min[1] + box.max[1]) / 2] : curve.path.segments[0][0];
+    label(labels, view, c, `encloses signed ${areaText(curve.loopArea.closed_area)}`, color, kRank.area);
+  }
   for (const {loop, points} of curve.loopPaths) {
     ctx.lineWidth = 1.5;
     dot(ctx, view, loop.point, 3.5, '#ffffff', color);  // the double point B(t1) = B(t2)
-    label(labels, view, centroid(points), areaText(loop.area), color, kRank.area);
+    // At the loop's centre, or beside its boundary when the centre is taken (by the osculating circle, say).
+    const anchors = [centroid(points), ...points.filter((p, k) => k % 12 === 6)].map((p) => view.toScreen(p));
+    labels.addAnywhere(anchors, areaText(loop.area), color, kRank.area, true);
   }
   if (closed && typeof curve.loopArea.closed_area === 'number') {
     const c = centroid(curve.evaluate.results.map((r) => r.point));
@@ -214,13 +295,14 @@ function drawBox(ctx, view, state, measure) {
 }
 
 /** Tangent and normal arrows at B(t0) and the osculating circle there. */
-function drawFrame(ctx, view, frame) {
+function drawFrame(ctx, view, labels, frame) {
   if (!frame.tangent) return;  // a cusp: no direction
   const circle = osculatingCircle(frame);
   if (circle) {
     const [cx, cy] = view.toScreen(circle.centre);
     const r = circle.radius * view.scale;
     if (r < 1e5) {
+      labels.keepOffRing(cx, cy, r);
       ctx.save();
       ctx.strokeStyle = kColors.osculating;
       ctx.globalAlpha = 0.8;
@@ -260,6 +342,23 @@ function drawNearest(ctx, view, labels, state, nearest) {
   }
 }
 
+/** Labels closer together than this (CSS pixels, about a label's width) would stand in a row
+ * that hides the drawing: a level whose neighbouring points are closer keeps its marks and
+ * colour but not its names (the legend says what each level is). */
+const kLabelSpacing = 26;
+
+/** Whether the points of one level are far enough apart (on average) to be labelled one by one. */
+function roomForLabels(view, points) {
+  if (points.length < 2) return true;
+  let total = 0;
+  for (let k = 1; k < points.length; ++k) {
+    const [x0, y0] = view.toScreen(points[k - 1]);
+    const [x1, y1] = view.toScreen(points[k]);
+    total += Math.hypot(x1 - x0, y1 - y0);
+  }
+  return total / (points.length - 1) >= kLabelSpacing;
+}
+
 /** De Casteljau's levels 1..n at t0: each level's polygon and points, labelled b_i^r. */
 function drawConstruction(ctx, view, labels, state, levels) {
   const n = levels.length - 1;
@@ -272,16 +371,21 @@ function drawConstruction(ctx, view, labels, state, levels) {
     ctx.restore();
   }
   for (let r = 2; r < n; ++r) {
+    const named = roomForLabels(view, levels[r]);
     levels[r].forEach((p, i) => {
       ctx.lineWidth = 1.25;
       dot(ctx, view, p, 4, levelColor(r), '#ffffff');
-      if (state.show.labels) label(labels, view, p, levelName(i, r), levelColor(r), kRank.level + r);
+      keepClear(labels, view, p, 4);
+      if (!state.show.labels) return;
+      if (named) label(labels, view, p, levelName(i, r), levelColor(r), kRank.level + r);
+      else labels.omit(levelName(i, r));
     });
   }
 }
 
 /** Level-1 points: the first polar's control points b_i^1, drawn as squares. */
 function drawPolarPoints(ctx, view, labels, state, points) {
+  const named = roomForLabels(view, points);
   points.forEach((p, i) => {
     const [x, y] = view.toScreen(p);
     ctx.fillStyle = kColors.polar;
@@ -289,7 +393,10 @@ function drawPolarPoints(ctx, view, labels, state, points) {
     ctx.lineWidth = 1;
     ctx.fillRect(x - 4, y - 4, 8, 8);
     ctx.strokeRect(x - 4, y - 4, 8, 8);
-    if (state.show.labels) label(labels, view, p, levelName(i, 1), kColors.polar, kRank.level + 1);
+    labels.keepClear(x, y, 4);
+    if (!state.show.labels) return;
+    if (named) label(labels, view, p, levelName(i, 1), kColors.polar, kRank.level + 1);
+    else labels.omit(levelName(i, 1));
   });
 }
 
@@ -341,15 +448,12 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
       polyline(ctx, view, evaluated.results.map((r) => r.point));
       ctx.stroke();
     }
-    const segments = answers?.curves[i].pathSegments;
-    if (state.show.curve && segments) {
+    const path = answers?.curves[i].path;
+    if (state.show.curve && path && state.curves[i].path) {
       ctx.strokeStyle = kColors.curves[i];
       ctx.lineWidth = i === state.active ? 3 : 2.25;
-      for (const samples of segments) {
-        if (!samples) continue;
-        polyline(ctx, view, samples);
-        ctx.stroke();
-      }
+      tracePath(ctx, view, path);
+      ctx.stroke();
     }
   }
 
@@ -377,10 +481,11 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
       drawPolarPoints(ctx, view, labels, state, polar.control_points);
     }
   }
-  if (measured && state.show.frame && measure.frame) drawFrame(ctx, view, measure.frame);
+  if (measured && state.show.frame && measure.frame) drawFrame(ctx, view, labels, measure.frame);
   if (polar && used.includes(polar.curve) && (state.show.polar || state.show.casteljau)) {
     ctx.lineWidth = 2;
     dot(ctx, view, polar.curve_point, 5, '#ffffff', kColors.polar);
+    keepClear(labels, view, polar.curve_point, 5);
     if (state.show.labels) label(labels, view, polar.curve_point, `B(${state.t0.toFixed(2)})`, kColors.polar, kRank.curvePoint);
   }
 
@@ -402,6 +507,7 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
       if (state.show.points || hovered || selected) {
         ctx.lineWidth = 2;
         dot(ctx, view, p, 5.5, i === state.active ? pointColor(k) : '#ffffff', kColors.curves[i]);
+        keepClear(labels, view, p, 6);
       }
       if (selected) {
         ctx.save();
@@ -439,6 +545,15 @@ export function drawScene(view, state, answers, hover, hoverMark, nearest = null
     }
   }
 
+  if (state.show.loops && answers) {
+    // A path's self-intersections (/intersections of the path alone).
+    for (const i of used) {
+      for (const hit of answers.curves[i].selfIntersections?.intersections ?? []) {
+        const [x, y] = view.toScreen(hit.point);
+        drawKindMarker(ctx, x, y, hit.kind, 5, false);
+      }
+    }
+  }
   if (state.show.intersections && answers?.intersections) {
     answers.intersections.intersections.forEach((hit, k) => {
       const [x, y] = view.toScreen(hit.point);

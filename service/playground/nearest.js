@@ -1,60 +1,39 @@
-// The nearest point of the edited curve to the pointer (/nearest). The pointer moves
-// far more often than the service can answer, so at most one request is out at a time:
-// a position that arrives meanwhile waits, replacing any older waiting one, and is
-// sent when the answer comes. An answer counts only while the curve it was asked for
-// is still the one on screen.
+// The nearest point of the edited curve (its control points, or a path's data) to the
+// pointer (/nearest). The pointer moves far more often than the service can answer, so
+// the requests follow it one at a time (LatestRequest: a position that arrives meanwhile
+// waits, replacing any older waiting one), and an answer counts only while the curve it
+// was asked about is still the one on screen.
 
-import {post} from './api.js';
+import {LatestRequest} from './latest.js';
 
 export class NearestTracker {
   /** onChange() is called whenever the answer or the request state changes. */
   constructor(onChange) {
-    this.onChange = onChange;
-    this.inFlight = false;
-    this.waiting = null;  // {points, target} to send when the current request returns
-    this.result = null;  // {points, target, answer} of the last answer, or null
-    this.error = null;  // the ApiError of the last request, or null
-    this.sent = 0;  // requests sent, for tests and diagnostics
-    this.generation = 0;  // bumped by clear(), so an answer already on its way is dropped
+    this.latest = new LatestRequest('/nearest', onChange);
   }
 
-  /** Asks for the point of `points` nearest to `target` (world units). */
-  request(points, target) {
-    this.waiting = {points: structuredClone(points), target: [...target]};
-    if (!this.inFlight) this.#sendWaiting();
+  /** Asks for the point of `input` ({points} or {path}) nearest to `target` (world units). */
+  request(input, target) {
+    this.latest.request(JSON.stringify(input), {...input, targets: [[...target]]});
   }
 
   /** Forgets the answer (the pointer left, or the feature was turned off). */
   clear() {
-    this.waiting = null;
-    this.result = null;
-    ++this.generation;
-    this.onChange();
+    this.latest.clear();
   }
 
-  /** The last answer if it is for `points`, else null. */
-  current(points) {
-    if (!this.result || JSON.stringify(this.result.points) !== JSON.stringify(points)) return null;
-    return this.result;
+  /** The last answer ({input, target, answer}) if it is for `input`, else null. */
+  current(input) {
+    const result = input ? this.latest.current(JSON.stringify(input)) : null;
+    return result && {input, target: result.body.targets[0], answer: result.answer.results[0]};
   }
 
-  async #sendWaiting() {
-    while (this.waiting) {
-      const {points, target} = this.waiting;
-      this.waiting = null;
-      this.inFlight = true;
-      ++this.sent;
-      const generation = this.generation;
-      try {
-        const answer = await post('/nearest', {points, targets: [target]});
-        if (generation === this.generation) this.result = {points, target, answer: answer.results[0]};
-        this.error = null;
-      } catch (error) {
-        this.result = null;
-        this.error = error;
-      }
-      this.inFlight = false;
-      this.onChange();
-    }
+  /** Requests sent, for tests and diagnostics. */
+  get sent() {
+    return this.latest.sent;
+  }
+
+  get inFlight() {
+    return this.latest.inFlight;
   }
 }

@@ -3,7 +3,6 @@
 // answers of the last round; numbers shown rounded, the full answers are on
 // window.playground for whoever needs every digit.
 
-import {drawable} from './compute.js';
 import {kColors, kPointNames, formatNumber, levelName, osculatingCircle} from './draw.js';
 
 const fmt = formatNumber;
@@ -33,9 +32,25 @@ export function renderValues(container, state, answers, nearest) {
   const active = state.active;
   const curve = state.curves[active];
   const name = kPointNames[active];
-  add('Editing', curve.path ? `curve ${curve.name}, an SVG path (path mode: no control points, so no values below)`
+  const path = answers?.curves[active]?.path;
+  add('Editing', curve.path ? `curve ${curve.name}, an SVG path${path ? ` of ${path.segments.length} segments in ${path.subpaths.length} subpath${path.subpaths.length > 1 ? 's' : ''}` : ''} (path mode)`
                             : `curve ${curve.name}, ${curve.points.length} control point${curve.points.length === 1 ? '' : 's'}` +
                               (curve.points.length >= 2 ? `, degree ${curve.points.length - 1}` : ''), 'value-degree');
+  if (curve.path) {
+    const m = answers?.measure && answers.measure.curve === active ? answers.measure : null;
+    const loops = answers?.curves[active]?.loopArea;
+    const self = answers?.curves[active]?.selfIntersections;
+    add('Length', m?.length ? fmt(m.length.length) : '—', 'value-length');
+    add('Box', m?.bounds ? `${pt(m.bounds.min)} to ${pt(m.bounds.max)}` : '—', 'value-box');
+    add('Enclosed area', typeof loops?.closed_area === 'number' ? `${fmt(loops.closed_area)} (signed, counter-clockwise positive)`
+                                                                : (loops ? 'none (no closed subpath)' : '—'), 'value-area');
+    add('Loops', loops ? `${loops.loops.length}${loops.loops.length ? `, total area ${fmt(loops.area)}` : ''}` : '—', 'value-loops');
+    add('Self-intersections', self ? String(self.intersections.length) : '—', 'value-self');
+    add('Nearest to pointer', nearest ? `${pt(nearest.answer.point)} on segment ${nearest.answer.segment} at t = ${fmt(nearest.answer.t)}, ` +
+                                        `distance ${fmt(nearest.answer.distance)}` : 'point at the drawing', 'value-nearest');
+    replace(container, rows);
+    return;
+  }
   add('t0', state.t0.toFixed(2), 'value-t0');
   const polar = answers?.polar && answers.polar.curve === active ? answers.polar : null;
   add(`B(t0)`, polar ? pt(polar.curve_point) : '—', 'value-curve-point');
@@ -94,6 +109,9 @@ export function segmentsText(state, hit) {
   return `A segment ${hit.segments[0]} × B segment ${hit.segments[1]}: `;
 }
 
+/** Whether the service can take the curve: a path, or at least two control points. */
+const drawable = (curve) => Boolean(curve.path) || curve.points.length >= 2;
+
 export function renderIntersections(container, state, answers) {
   if (!state.second) {
     replace(container, [el('li', {class: 'muted'}, 'Turn on "Second curve (B)" and add its points.')]);
@@ -134,18 +152,26 @@ export function renderLoops(container, state, answers) {
       continue;
     }
     for (const loop of a.loops) {
+      const where = loop.segments ? `from segment ${loop.segments[0]} at t = ${fmt(loop.t[0])} to segment ${loop.segments[1]} at ` +
+                                    `t = ${fmt(loop.t[1])}` : `t ∈ [${loop.t.map(fmt).join(', ')}]`;
       items.push(el('li', {'data-curve': c.name},
           el('strong', {style: `color:${kColors.curves[i]}`}, `${c.name}: `),
-          `${loop.kind && loop.kind !== 'transversal' ? `${loop.kind} ` : ''}loop t ∈ [${loop.t.map(fmt).join(', ')}] ` +
+          `${loop.kind && loop.kind !== 'transversal' ? `${loop.kind} ` : ''}loop ${where} ` +
           `at ${pt(loop.point)}, area ${fmt(loop.area)} (signed ${fmt(loop.signed_area)})`));
+    }
+    for (const hit of answers.curves[i].selfIntersections?.intersections ?? []) {
+      items.push(el('li', {'data-curve': c.name, 'data-kind': 'self'},
+          el('strong', {style: `color:${kColors.curves[i]}`}, `${c.name}: `),
+          `crosses itself (${hit.kind}): segment ${hit.segments[0]} at t = ${fmt(hit.t)} and segment ${hit.segments[1]} ` +
+          `at s = ${fmt(hit.s)}, at ${pt(hit.point)}`));
     }
     for (const o of a.overlaps ?? []) {
       items.push(el('li', {'data-curve': c.name, 'data-kind': 'overlap'},
           el('strong', {style: `color:${kColors.curves[i]}`}, `${c.name}: `),
           `retraces itself: t ∈ [${o.t_interval.map(fmt).join(', ')}] and [${o.s_interval.map(fmt).join(', ')}]`));
     }
-    if (a.closed) {
-      items.push(el('li', {'data-curve': c.name}, el('strong', {style: `color:${kColors.curves[i]}`}, `${c.name}: `),
+    if (a.closed && typeof a.closed_area === 'number') {
+      items.push(el('li', {'data-curve': c.name, 'data-kind': 'closed'}, el('strong', {style: `color:${kColors.curves[i]}`}, `${c.name}: `),
           `closed curve, signed area ${fmt(a.closed_area)}`));
     }
     if (a.loops.length > 1) items.push(el('li', {class: 'small'}, `${c.name}: total loop area ${fmt(a.area)}`));

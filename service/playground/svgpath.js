@@ -1,108 +1,27 @@
-// Curves typed or pasted as text: a list of points ("100,120 240,480 …", or JSON
-// [[100, 120], …]) in the drawing's units (y up), or SVG path data made of M, L, Q and C
-// commands, absolute or relative (m, l, q, c), in SVG's y-down units of the same
-// 800 x 600 drawing (so a path drawn in an 800 x 600 SVG lands where it was drawn).
-// Every L, Q or C is one Bézier segment (degree 1, 2 or 3). Other commands (H, V, S,
-// T, A, Z) have no single Bézier curve to give and are refused with a message.
-// Also the way back: the path data of a curve of degree 1 to 3.
+// Text typed or pasted as curves. SVG path data is read by the service (POST /segments:
+// one grammar, the service's, with every command SVG has, arcs as cubics): its segments
+// come back in SVG's y-down units of the 800 x 600 drawing, are turned into the drawing's
+// y-up units here, and are written back as path data of degree-1 to 3 commands (Z where
+// a subpath is closed), which every path route then reads the same way. A point list
+// ("100,120 240,480 …", or JSON [[100, 120], …]) is in the drawing's units and needs no
+// grammar. Also the way back: the path data of a curve of degree 1 to 3 (SVG export).
 
+import {ApiError, post} from './api.js';
 import {kWorld} from './view.js';
 
 export class InputError extends Error {}
-
-const kNumber = /[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?/y;
-const kCommand = /[A-Za-z]/y;
-const kSeparator = /[\s,]*/y;
-
-/** SVG path data to tokens: {command} or {number}; throws InputError on other text. */
-function tokens(text) {
-  const out = [];
-  let at = 0;
-  const skip = () => {
-    kSeparator.lastIndex = at;
-    kSeparator.exec(text);
-    at = kSeparator.lastIndex;
-  };
-  skip();
-  while (at < text.length) {
-    kCommand.lastIndex = at;
-    kNumber.lastIndex = at;
-    let m;
-    if ((m = kCommand.exec(text))) {
-      out.push({command: m[0]});
-      at = kCommand.lastIndex;
-    } else if ((m = kNumber.exec(text))) {
-      out.push({number: Number(m[0])});
-      at = kNumber.lastIndex;
-    } else {
-      throw new InputError(`unexpected "${text.slice(at, at + 8)}" at character ${at + 1} of the path data`);
-    }
-    skip();
-  }
-  return out;
-}
-
-const kPointsPerSegment = {L: 1, Q: 2, C: 3};
-
-/** The Bézier segments of SVG path data, each as control points in SVG units (y down). */
-export function parsePathData(text) {
-  const list = tokens(text);
-  const segments = [];
-  let current = null;
-  let k = 0;
-  if (!list.length || !list[0].command || list[0].command.toUpperCase() !== 'M') {
-    throw new InputError('path data starts with M (or m)');
-  }
-  while (k < list.length) {
-    const letter = list[k].command;
-    if (!letter) throw new InputError(`number ${list[k].number} without a command`);
-    const upper = letter.toUpperCase();
-    if (!'MLQC'.includes(upper)) {
-      throw new InputError(`the ${letter} command is not supported: only M, L, Q and C (and m, l, q, c) give Bézier curves`);
-    }
-    const relative = letter !== upper && current !== null;
-    ++k;
-    const numbers = [];
-    while (k < list.length && list[k].number !== undefined) numbers.push(list[k++].number);
-    if (numbers.length === 0 || numbers.length % 2) throw new InputError(`${letter} needs pairs of numbers`);
-    const pairs = [];
-    for (let j = 0; j < numbers.length; j += 2) pairs.push([numbers[j], numbers[j + 1]]);
-    let segmentType = upper;
-    if (upper === 'M') {
-      const [first, ...rest] = pairs;
-      current = relative ? [current[0] + first[0], current[1] + first[1]] : first;
-      if (!rest.length) continue;
-      pairs.splice(0, pairs.length, ...rest);  // further pairs are an implicit L (or l)
-      segmentType = 'L';
-    }
-    const per = kPointsPerSegment[segmentType];
-    if (pairs.length % per) throw new InputError(`${letter} needs ${per * 2} numbers per segment`);
-    if (current === null) throw new InputError('path data starts with M (or m)');
-    for (let j = 0; j < pairs.length; j += per) {
-      const origin = current;
-      const points = pairs.slice(j, j + per).map((p) => (relative ? [origin[0] + p[0], origin[1] + p[1]] : p));
-      segments.push([origin, ...points]);
-      current = points[points.length - 1];
-    }
-  }
-  if (!segments.length) throw new InputError('the path draws nothing: add an L, Q or C after M');
-  return segments;
-}
 
 /** SVG units (y down) and the drawing's (y up). */
 export const fromSvg = ([x, y]) => [x, kWorld.height - y];
 export const toSvg = ([x, y]) => [x, kWorld.height - y];
 
-/**
- * Text to curves (drawing units): {curves: [points, ...], source: 'path' | 'list'}.
- * Throws InputError with a message for the user.
- */
-export function parseCurveText(text) {
+/** Whether pasted text is SVG path data (it starts with a command letter) rather than a point list. */
+export const isPathData = (text) => /^\s*[A-Za-z]/.test(text);
+
+/** A point list as the control points of one curve (drawing units); throws InputError. */
+export function parsePointList(text) {
   const trimmed = text.trim();
   if (!trimmed) throw new InputError('nothing to read: paste points or SVG path data');
-  if (/^[A-Za-z]/.test(trimmed)) {
-    return {curves: parsePathData(trimmed).map((segment) => segment.map(fromSvg)), source: 'path'};
-  }
   let numbers;
   if (trimmed.startsWith('[')) {
     let parsed;
@@ -128,32 +47,65 @@ export function parseCurveText(text) {
   const points = [];
   for (let k = 0; k < numbers.length; k += 2) points.push([numbers[k], numbers[k + 1]]);
   if (points.length < 2) throw new InputError('a curve needs at least two points');
-  return {curves: [points], source: 'list'};
-}
-
-/** SVG path data for a curve of degree 1, 2 or 3 (drawing units in, SVG units out); else null. */
-export function pathData(points) {
-  const command = {2: 'L', 3: 'Q', 4: 'C'}[points.length];
-  if (!command) return null;
-  const [first, ...rest] = points.map(toSvg);
-  return `M ${first.join(' ')} ${command} ${rest.map((p) => p.join(' ')).join(' ')}`;
+  return points;
 }
 
 const kSegmentCommand = {2: 'L', 3: 'Q', 4: 'C'};
+const commandFor = (points) => `${kSegmentCommand[points.length]} ${points.slice(1).map((p) => p.join(' ')).join(' ')}`;
+
+/** SVG path data for a curve of degree 1, 2 or 3 (drawing units in, SVG units out); else null. */
+export function pathData(points) {
+  if (!kSegmentCommand[points.length]) return null;
+  const svg = points.map(toSvg);
+  return `M ${svg[0].join(' ')} ${commandFor(svg)}`;
+}
 
 /**
- * Pasted SVG path data (SVG units, y down) as a path of the drawing: {segments (control
- * points in drawing units, y up, numbered as the service numbers them), data (the same
- * path as SVG path data in drawing units, for the service)}. Throws InputError.
+ * The /segments answer for SVG path data (SVG units) as a path of the drawing:
+ * {segments (control points, drawing units, numbered as the service numbers them),
+ * closing (per segment: the closing line of a Z), subpaths (the answer's), data (path
+ * data in drawing units for the path routes: the same segments, Z for a closed subpath),
+ * arcTolerance (the answer's arc_tolerance or null)}.
+ */
+export function pathFromSegments(answer) {
+  const segments = answer.segments.map((s) => s.points.map(fromSvg));
+  const parts = [];
+  for (const subpath of answer.subpaths) {
+    const first = subpath.first_segment;
+    parts.push(`M ${segments[first][0].join(' ')}`);
+    for (let k = first; k < first + subpath.segment_count; ++k) {
+      if (answer.segments[k].closing) continue;  // Z draws it
+      parts.push(commandFor(segments[k]));
+    }
+    if (subpath.closed) parts.push('Z');
+  }
+  return {segments, closing: answer.segments.map((s) => s.closing), subpaths: answer.subpaths, data: parts.join(' '),
+          arcTolerance: answer.arc_tolerance ?? null};
+}
+
+const cache = new Map();  // pasted text -> Promise of pathFromSegments(...), oldest first
+const kCacheSize = 64;  // texts kept: the paths of a session's drawings, links and examples
+
+/**
+ * Pasted SVG path data (SVG units) as a path of the drawing (see pathFromSegments),
+ * from the service's /segments; answers are kept per text. Rejects with the ApiError
+ * the service sent (its message names the offset in the text).
  */
 export function pathInDrawing(text) {
-  const segments = parsePathData(text.trim()).map((segment) => segment.map(fromSvg));
-  const parts = [];
-  let end = null;
-  for (const [first, ...rest] of segments) {
-    if (!end || end[0] !== first[0] || end[1] !== first[1]) parts.push(`M ${first.join(' ')}`);
-    parts.push(`${kSegmentCommand[rest.length + 1]} ${rest.map((p) => p.join(' ')).join(' ')}`);
-    end = rest[rest.length - 1];
+  const key = text.trim();
+  if (!cache.has(key)) {
+    const promise = post('/segments', {path: key}).then(pathFromSegments);
+    promise.catch(() => cache.delete(key));  // a refusal is asked again, e.g. after a token is entered
+    cache.set(key, promise);
+    if (cache.size > kCacheSize) cache.delete(cache.keys().next().value);
   }
-  return {segments, data: parts.join(' ')};
+  return cache.get(key);
+}
+
+/** The message of a /segments refusal for the user: the service's own, field by field. */
+export function pathProblemText(error) {
+  if (!(error instanceof ApiError)) return String(error?.message ?? error);
+  const fields = error.problem?.errors ?? [];
+  if (fields.length) return `the service could not read the path data: ${fields.map((e) => e.message).join('; ')}`;
+  return `${error.status || 'no answer'} ${error.problem?.title ?? ''}: ${error.problem?.detail ?? ''}`.trim();
 }

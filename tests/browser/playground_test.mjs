@@ -183,6 +183,20 @@ test('GET / serves the page and its files with their content types', async () =>
   await page.goto(baseUrl + '/');
   await settle();
   assert.equal(await page.title(), 'Bézier playground · bezier-service');
+  // With no drawing in the link, the page opens on an example: two curves, drawn and intersected.
+  const opened = await pageState();
+  assert.equal(opened.second, true);
+  assert.ok(opened.curves.every((c) => c.points.length >= 2), 'both curves have control points');
+  const openedAnswers = await pageAnswers();
+  assert.ok(openedAnswers.curves[0].evaluate && openedAnswers.curves[1].evaluate, 'both curves are drawn');
+  assertSameAnswer(openedAnswers.intersections,
+                   await api('/intersections', {curves: opened.curves.map((c) => ({points: c.points}))}), 'the example\'s intersections');
+  assert.ok(openedAnswers.intersections.intersections.length >= 1, 'the example curves cross');
+  assert.ok(await page.locator('#hint').isHidden(), 'no "click to add" hint over an example');
+  // A link with an empty drawing opens an empty grid.
+  await page.goto(baseUrl + '/#a=&t0=0.5');
+  await page.waitForFunction(() => window.playground.state().curves[0].points.length === 0 && !window.playground.state().second);
+  await settle();
   assert.deepEqual((await pageState()).curves.map((c) => c.points), [[], []]);
 });
 
@@ -467,6 +481,8 @@ test('loops shaded with their area; the cubic\'s type and canonical point', asyn
   const canonical = numbersIn((await page.locator('#types li[data-curve=A] .small').textContent()).split('canonical P3')[1]);
   assertClose(canonical[0], type.canonical_point[0], 'canonical x');
   assertClose(canonical[1], type.canonical_point[1], 'canonical y');
+  assert.equal(await page.locator('#canonical').getAttribute('data-edges'), 'cusp; loop at t = 0; loop at t = 1; inflection at t = 1',
+               'the map names its edges');
   assert.deepEqual(await pageErrorsShown(), []);
 });
 
@@ -595,6 +611,29 @@ test('Bernstein basis: a colour per B_{i,n} matching its control point, a legend
   }, [t0, value]);
   assert.ok(plot.width > 0);
   assert.ok(near(mark, swatch, 40), `B_${i},${n}(t0) marked in its colour, got ${mark}`);
+});
+
+test('control point colours stay distinct past twelve points, up to the service\'s default degree limit (20)', async () => {
+  // The page's palette, asked of the module the page runs (the service here stops at degree 5).
+  const colors = await page.evaluate(async () => {
+    const {pointColor} = await import('/playground/draw.js');
+    const probe = document.createElement('span');
+    document.body.append(probe);
+    const out = [];
+    for (let i = 0; i <= 20; ++i) {
+      probe.style.color = pointColor(i);
+      out.push(getComputedStyle(probe).color);
+    }
+    probe.remove();
+    return out;
+  });
+  const rgb = colors.map(rgbOf);
+  assert.equal(new Set(colors).size, colors.length, 'no two points share a colour');
+  let least = Infinity;
+  for (let i = 0; i < rgb.length; ++i) {
+    for (let j = i + 1; j < rgb.length; ++j) least = Math.min(least, Math.hypot(...rgb[i].map((v, k) => v - rgb[j][k])));
+  }
+  assert.ok(least >= 40, `the closest two colours are ${least.toFixed(1)} apart in RGB`);
 });
 
 test('explanations: a legend entry for every mark shown, a line per panel, search statistics folded', async () => {
@@ -727,6 +766,8 @@ test('overlapping curves: the overlap is listed and highlighted', async () => {
 async function paste(text) {
   await page.locator('#paste-text').fill(text);
   await page.locator('#paste-form button[type=submit]').click();
+  // Path data goes to the service (/segments) first: the message comes with its answer.
+  await page.locator('#paste-message').waitFor({state: 'visible'});
   return page.locator('#paste-message').textContent();
 }
 
@@ -773,11 +814,14 @@ test('exact input: the table, pasted points and SVG path data, undo and redo, th
   assert.deepEqual(state.curves.map((c) => c.points), [[[100, 100], [300, 500], [500, 100]], [[500, 100], [700, 700]]]);
   assert.equal(state.second, true);
   const pasted = state.curves.map((c) => c.points);
-  for (const [text, pattern] of [['M 0 0 H 100', /the H command is not supported/], ['M 0 0 L 10 10 Z', /the Z command/],
-                                 ['M 0 0 C 1 2 3', /C needs/], ['L 5 5', /starts with M/], ['1 2 3', /3 numbers/]]) {
+  // Path data the service cannot read is refused with its message; three segments are too many as points.
+  for (const [text, pattern] of [['M 0 0 C 1 2 3', /could not read the path data: offset/],
+                                 ['L 5 5', /could not read the path data/], ['1 2 3', /3 numbers/],
+                                 ['M 0 0 H 10 V 10 Z', /4 segments|3 segments/]]) {
     assert.match(await paste(text), pattern, text);
     assert.deepEqual((await pageState()).curves.map((c) => c.points), pasted, `${text} changes nothing`);
   }
+
   await page.locator('#paste-as').selectOption('auto');
   await settle();
 
@@ -979,13 +1023,26 @@ test('a 1280 x 800 screen holds the main controls; a refused request is shown on
   const seven = [[100, 100], [200, 300], [300, 100], [400, 300], [500, 100], [600, 300], [700, 100]];
   await laptop.goto(`${baseUrl}/#a=${seven.map((p) => p.join(',')).join(';')}&t0=0.5`);
   await settle(laptop);
+  // The curve is sampled alone first (the page has not drawn one of 7 points yet): one refusal, nothing else sent.
   const failed = await pageErrorsShown(laptop);
-  assert.ok(failed.length >= 3, `several requests failed (${failed.length})`);
+  assert.deepEqual(failed.map((e) => [e.route, e.status]), [['/evaluate', 422]], 'one request, refused');
   const listed = laptop.locator('#points-errors li[data-status="422"]');
   assert.equal(await listed.count(), 1, 'one entry for one cause');
   assert.match(await listed.textContent(), new RegExp(`limit of ${kMaxDegree}`));
-  assert.match(await listed.textContent(), /Asked for: .*, .*/);
+  assert.match(await listed.textContent(), /Asked for: curve A\./);
   assert.equal(await laptop.locator('#errors li').count(), 0, 'nothing in the general list');
+  // The view says why there is no curve, and shows the link's control points.
+  const said = laptop.locator('#canvas-message');
+  await said.waitFor({state: 'visible'});
+  assert.match(await said.textContent(), new RegExp(`degree at most ${kMaxDegree}.*curve A has 7, so only its control points are drawn`));
+  const dots = await pixelsAt(seven, 0, laptop);
+  assert.ok(dots.every((px) => px[3] > 0), 'every control point of the link is drawn');
+  const sentBefore = failed.length;
+  await laptop.locator('#t0-number').fill('0.4');
+  await laptop.locator('#t0-number').press('Tab');
+  await settle(laptop);
+  assert.equal((await pageErrorsShown(laptop)).length, 0, 'known past the limit: nothing more is asked about the curve');
+  assert.ok(sentBefore > 0);
 
   // A link that cannot be read says so beside the canvas and changes nothing.
   await laptop.goto(`${baseUrl}/#a=1,2;3&t0=0.5`);
@@ -1010,7 +1067,7 @@ test('phone width: no sideways scrolling, and a tap adds a point', async () => {
   phone.on('pageerror', (e) => pageErrors.push(e.message));
   recordPolicyViolations(phone);
   await phone.setViewportSize({width: 390, height: 844});
-  await phone.goto(baseUrl + '/');
+  await phone.goto(baseUrl + '/#a=&t0=0.5');
   await settle(phone);
   const widths = await phone.evaluate(() => ({page: document.documentElement.scrollWidth, view: window.innerWidth}));
   assert.ok(widths.page <= widths.view, `page ${widths.page} px wide in a ${widths.view} px viewport`);
@@ -1037,13 +1094,39 @@ test('phone width: no sideways scrolling, and a tap adds a point', async () => {
     return state.curves.length >= 2 && state.curves[0].points.length === 4 && state.curves[0].points[0][0] === 250;
   }, null, {timeout: kTimeout});
   await settle(phone);
-  const {placed} = await phone.evaluate(() => window.playground.labels());
+  const {placed, marks} = await phone.evaluate(() => window.playground.labels());
   const canvasBox = await phone.locator('#scene').boundingBox();
   assert.ok(placed.length >= 12, `${placed.length} labels placed`);
   const overlapping = (a, b) => a.x < b.x + b.w - 0.5 && b.x < a.x + a.w - 0.5 && a.y < b.y + b.h - 0.5 && b.y < a.y + a.h - 0.5;
   for (const [k, a] of placed.entries()) {
     assert.ok(a.x >= 0 && a.y >= 0 && a.x + a.w <= canvasBox.width && a.y + a.h <= canvasBox.height, `${a.text} inside`);
     for (const b of placed.slice(k + 1)) assert.ok(!overlapping(a, b), `canvas labels ${a.text} and ${b.text} overlap`);
+  }
+  // No label covers a mark: every control point, B(t0) and construction point is kept clear,
+  // each of them checked here from the state and the answers, not from the page's list.
+  const crowded = await pageState(phone);
+  const crowdedAnswers = await pageAnswers(phone);
+  const markPoints = [...crowded.curves[0].points, ...crowded.curves[1].points, crowdedAnswers.polar.curve_point,
+                      ...crowdedAnswers.casteljau.levels.slice(1, -1).flat()];
+  assert.ok(marks.length >= markPoints.length, 'the page keeps each mark clear');
+  for (const p of markPoints) {
+    const x = p[0] * canvasBox.width / kWorld.width;
+    const y = (kWorld.height - p[1]) * canvasBox.height / kWorld.height;
+    const disc = {x: x - 3, y: y - 3, w: 6, h: 6};
+    for (const a of placed) assert.ok(!overlapping(a, disc), `label ${a.text} covers the mark at (${p})`);
+  }
+  // A tight row of points: the construction's names would stand in a row over it, so they are left
+  // out (each level keeps its colour, the legend names it) and nothing placed overlaps.
+  const row = [...Array(kMaxDegree + 1).keys()].map((k) => [300 + 20 * k, k % 2 ? 320 : 300]);
+  await phone.goto(`${baseUrl}/#a=${row.map((p) => p.join(',')).join(';')}&t0=0.5`);
+  await phone.waitForFunction(() => window.playground.state().curves[0].points.length === 6 && !window.playground.state().second,
+                              null, {timeout: kTimeout});
+  await settle(phone);
+  const tight = await phone.evaluate(() => window.playground.labels());
+  assert.ok(!tight.placed.some((b) => /^b/.test(b.text)), 'no construction name placed in the row');
+  assert.ok(tight.dropped.filter((text) => /^b/.test(text)).length >= kMaxDegree, 'they are left out');
+  for (const [k, a] of tight.placed.entries()) {
+    for (const b of tight.placed.slice(k + 1)) assert.ok(!overlapping(a, b), `canvas labels ${a.text} and ${b.text} overlap`);
   }
   const boxes = await phone.locator('h1, .lede, .segmented legend, .segmented span, .actions > button, select, .status, ' +
                                     '.t0-row > *, .checks label, summary, h2, #points-table th, #points-table input')
@@ -1056,6 +1139,295 @@ test('phone width: no sideways scrolling, and a tap adds a point', async () => {
     for (const b of boxes.slice(k + 1)) assert.ok(!overlapping(a, b), `${a.what} and ${b.what} overlap`);
   }
   await phone.close();
+});
+
+/** The signed area of a polygon (shoelace), counter-clockwise positive. */
+const shoelace = (corners) => corners.reduce((sum, p, k) => {
+  const q = corners[(k + 1) % corners.length];
+  return sum + (p[0] * q[1] - q[0] * p[1]) / 2;
+}, 0);
+
+/** Distance from p to the segment [a, b]. */
+function segmentDistance(p, [a, b]) {
+  const d = [b[0] - a[0], b[1] - a[1]];
+  const t = Math.max(0, Math.min(1, ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / (d[0] * d[0] + d[1] * d[1])));
+  return Math.hypot(p[0] - a[0] - t * d[0], p[1] - a[1] - t * d[1]);
+}
+
+const emptyDrawing = async () => {
+  await page.goto(baseUrl + '/#a=&t0=0.5');
+  await page.waitForFunction(() => window.playground.state().curves[0].points.length === 0 && !window.playground.state().curves[0].path);
+  await settle();
+};
+
+test('path mode: the issue\'s Z path is read by /segments and drawn with its area, length, box, loops and nearest point', async () => {
+  await emptyDrawing();
+  await page.locator('#paste-as').selectOption('auto');
+  // Every command SVG has is read (by /segments): H, V, S, T and A give segments too.
+  assert.match(await paste('M 100 500 H 300'), /Read 2 control points from SVG path data/);
+  assert.deepEqual((await pageState()).curves[0].points, [[100, 100], [300, 100]]);
+  assert.match(await paste('M 100 500 Q 200 300 300 500 T 500 500'), /2 segments/);
+  await settle();
+  assert.deepEqual((await pageAnswers()).curves[0].path.segments[1], [[300, 100], [400, -100], [500, 100]], 'T reflects Q\'s control point');
+  // A square in SVG units (y down) closed by Z: the drawing has it at y = 600 - y.
+  assert.match(await paste('M 200 100 L 600 100 L 600 500 L 200 500 Z'), /4 segments/);
+  await settle();
+  const corners = [[200, 500], [600, 500], [600, 100], [200, 100]];
+  const edges = corners.map((p, k) => [p, corners[(k + 1) % 4]]);
+  const answers = await pageAnswers();
+  const path = answers.curves[0].path;
+  assert.deepEqual(path.segments, edges, 'four lines, the last the closing line of Z');
+  assert.deepEqual(path.closing, [false, false, false, true]);
+  assert.deepEqual(await pageErrorsShown(), []);
+  // Area (Green's theorem = the shoelace for lines), length, box: the path routes' answers, shown.
+  assert.equal(answers.curves[0].loopArea.closed_area, shoelace(corners));
+  assertClose(numbersIn(await page.locator('#value-area').textContent())[0], shoelace(corners), 'enclosed area');
+  assertClose(answers.measure.length.length, 1600, 'length');
+  assertClose(numbersIn(await page.locator('#value-length').textContent())[0], 1600, 'length shown');
+  assert.deepEqual([answers.measure.bounds.min, answers.measure.bounds.max], [[200, 100], [600, 500]]);
+  assert.deepEqual(numbersIn(await page.locator('#value-box').textContent()), [200, 100, 600, 500]);
+  assert.equal(answers.curves[0].selfIntersections.intersections.length, 0);
+  // Drawn: each edge's middle in curve A's colour.
+  for (const [a, b] of edges) {
+    const px = await pixelAt([(a[0] + b[0]) / 2, (a[1] + b[1]) / 2]);
+    assert.ok(near(px, rgbOf('#1f6fd1'), 60), `edge ${a} to ${b} drawn: ${px}`);
+  }
+  // The nearest point of the path to the pointer (/nearest with the path).
+  const [x, y] = await client([400, 330]);
+  await page.mouse.move(x, y);
+  const result = await page.waitForFunction(() => {
+    const n = window.playground.nearest();
+    return !n.inFlight && n.result && n;
+  }, null, {timeout: kTimeout}).then((h) => h.jsonValue());
+  const {target, answer} = result.result;
+  assertClose(answer.distance, Math.min(...edges.map((e) => segmentDistance(target, e))), 'distance to the square');
+  assert.match(await page.locator('#value-nearest').textContent(), /on segment \d/);
+  await page.mouse.move(5, 5);
+
+  // A bow tie: the path crosses itself once, at the middle; its loops are listed.
+  assert.match(await paste('M 200 100 L 600 500 L 600 100 L 200 500 Z'), /4 segments/);
+  await settle();
+  const bow = await pageAnswers();
+  const self = bow.curves[0].selfIntersections.intersections;
+  assert.equal(self.length, 1);
+  self[0].point.forEach((v, k) => assert.ok(Math.abs(v - [400, 300][k]) <= 1e-9 * 800));
+  assert.equal(await page.locator('#loops li[data-kind=self]').count(), 1);
+  assert.ok(near(await pixelAt([400, 300]), rgbOf('#c0392b')), 'the crossing is marked');
+  assert.equal(bow.curves[0].loopArea.loops.length, await page.locator('#loops li[data-curve=A]:not([data-kind])').count());
+});
+
+test('the permalink keeps the layers shown', async () => {
+  await page.locator('#show-polar').uncheck();
+  await page.locator('#show-box').uncheck();
+  await page.waitForFunction(() => location.hash.includes('hide=polar,box'));
+  const other = await context.newPage();
+  other.on('pageerror', (e) => pageErrors.push(e.message));
+  recordPolicyViolations(other);
+  await other.goto(page.url());
+  await settle(other);
+  const opened = await pageState(other);
+  assert.equal(opened.show.polar, false);
+  assert.equal(opened.show.box, false);
+  assert.equal(opened.show.curve, true);
+  assert.equal(await other.locator('#show-polar').isChecked(), false);
+  assert.equal(await other.locator('#show-box').isChecked(), false);
+  assert.equal(opened.curves[0].path, (await pageState()).curves[0].path, 'and the path');
+  await other.close();
+  await page.locator('#show-polar').check();
+  await page.locator('#show-box').check();
+  await page.waitForFunction(() => !location.hash.includes('hide='));
+});
+
+test('regions: the operation\'s result filled, segments coloured by source, the winding numbers under the pointer', async () => {
+  await page.locator('#views input[value=regions]').check({force: true});
+  await settle();
+  assert.equal((await pageState()).view, 'regions');
+  assert.ok(await page.locator('#regions-panel').isVisible());
+  assert.ok(await page.locator('#t0-range').isHidden(), 'the curves\' controls are out of the way');
+  await page.locator('#region-examples').selectOption('squares');
+  await settle();
+  // Squares A (150..450 both ways) and B (x 320..650, y 80..370 in the drawing, y up).
+  const a = [[150, 450], [450, 450], [450, 150], [150, 150]];
+  const b = [[320, 370], [650, 370], [650, 80], [320, 80]];
+  const areaA = Math.abs(shoelace(a));
+  const areaB = Math.abs(shoelace(b));
+  const common = (450 - 320) * (370 - 150);
+  const expected = {union: areaA + areaB - common, intersection: common, difference: areaA - common,
+                    xor: areaA + areaB - 2 * common};
+  for (const op of ['intersection', 'difference', 'xor', 'union']) {
+    await page.locator('#region-op').selectOption(op);
+    await settle();
+    const answers = await pageAnswers();
+    assert.equal(answers.boolean.area, expected[op], `${op}: area`);
+    assertClose(numbersIn(await page.locator('#region-values dd[data-term=area]').textContent())[0], expected[op], `${op} shown`);
+    // Every result segment is a piece of the shape it names.
+    for (const segment of answers.boolean.segments) {
+      const box = segment.source === 'a' ? a : b;
+      const xs = box.map((p) => p[0]);
+      const ys = box.map((p) => p[1]);
+      for (const p of segment.points) {
+        const onEdge = (p[0] === Math.min(...xs) || p[0] === Math.max(...xs)) || (p[1] === Math.min(...ys) || p[1] === Math.max(...ys));
+        assert.ok(onEdge, `${op}: ${p} lies on the edge of shape ${segment.source}`);
+      }
+    }
+  }
+  const answers = await pageAnswers();
+  assert.deepEqual(await pageErrorsShown(), []);
+  // Filled where the union is, not elsewhere; each segment in its source's colour.
+  assert.ok((await pixelAt([200, 400]))[3] > 0, 'A alone is in the union');
+  assert.ok((await pixelAt([600, 120]))[3] > 0, 'B alone is in the union');
+  assert.equal((await pixelAt([720, 540]))[3], 0, 'outside both: nothing drawn');
+  for (const source of ['a', 'b']) {
+    const segment = answers.boolean.segments.find((s) => s.source === source && s.degree === 1 &&
+        Math.hypot(s.points[1][0] - s.points[0][0], s.points[1][1] - s.points[0][1]) > 60);
+    const middle = [(segment.points[0][0] + segment.points[1][0]) / 2, (segment.points[0][1] + segment.points[1][1]) / 2];
+    assert.ok(near(await pixelAt(middle), rgbOf(source === 'a' ? '#1f6fd1' : '#d35400'), 60), `a segment from ${source} in its colour`);
+  }
+  // The point under the pointer: inside both squares; winding numbers by the orientation of each (y up).
+  const [x, y] = await client([400, 300]);
+  await page.mouse.move(x, y);
+  const readout = page.locator('#winding');
+  await page.waitForFunction(() => /result: winding/.test(document.getElementById('winding').textContent));
+  const text = await readout.textContent();
+  const sign = (corners) => Math.sign(shoelace(corners));
+  assert.match(text, new RegExp(`A: winding ${sign(a)}, inside; B: winding ${sign(b)}, inside; result: winding 1, inside`));
+  // The picture of the regions view for the README (beside the main one): the union, the pointer in both squares.
+  if (screenshotPath) await page.screenshot({path: screenshotPath.replace(/(\.png)?$/, '-regions.png')});
+  await page.mouse.move(5, 5);
+
+  // The link opens the same regions.
+  await page.waitForFunction(() => location.hash.includes('view=regions') && location.hash.includes('op=union'));
+  const other = await context.newPage();
+  other.on('pageerror', (e) => pageErrors.push(e.message));
+  recordPolicyViolations(other);
+  await other.goto(page.url());
+  await settle(other);
+  assert.deepEqual((await pageState(other)).regions, (await pageState()).regions);
+  assert.equal((await pageAnswers(other)).boolean.area, expected.union);
+  await other.close();
+
+  // Pasted shapes, arcs included: a disc of radius 100 (two arcs) cut by the half-plane right of its centre.
+  await page.locator('#region-op').selectOption('intersection');
+  await page.locator('#region-a').fill('M 300 300 A 100 100 0 1 1 500 300 A 100 100 0 1 1 300 300 Z');
+  await page.locator('#region-b').fill('M 400 100 H 700 V 500 H 400 Z');
+  await page.locator('#region-form button[type=submit]').click();
+  await page.waitForFunction(() => window.playground.state().regions.a.includes('A 100 100'));
+  await settle();
+  const half = await pageAnswers();
+  // The arcs keep within 1e-6 of the radius (the default arc_tolerance) of the circle, so the area is within
+  // the half circle's length times that band.
+  assert.ok(Math.abs(half.boolean.area - Math.PI * 100 * 100 / 2) <= Math.PI * 100 * 1e-6 * 100, `half a disc: ${half.boolean.area}`);
+  assert.ok(half.boolean.segments.some((s) => s.source === 'a' && s.degree === 3) &&
+            half.boolean.segments.some((s) => s.source === 'b' && s.degree === 1), 'arcs from A, the cut from B');
+  // Path data the service cannot read: its refusal is listed, the view waits for a readable shape.
+  await page.locator('#region-b').fill('M 400 100 H');
+  await page.locator('#region-form button[type=submit]').click();
+  await page.waitForFunction(() => window.playground.state().regions.b === 'M 400 100 H');
+  await settle();
+  const refused = await pageErrorsShown();
+  assert.deepEqual(refused.map((e) => [e.route, e.status]), [['/segments', 422]]);
+  assert.equal((await pageAnswers()).boolean, null);
+  await page.locator('#region-op').selectOption('union');
+
+  // Simplify a glyph whose strokes overlap: the result has no crossing left (its area is less than the sum).
+  await page.locator('#region-examples').selectOption('glyph');
+  await settle();
+  const glyph = await pageAnswers();
+  assert.equal((await pageState()).regions.op, 'simplify');
+  assert.ok(glyph.boolean.contours.length >= 1);
+  assert.deepEqual(await pageErrorsShown(), []);
+  const self = await api('/intersections', {curves: [{path: glyph.boolean.path}]});
+  assert.equal(self.intersections.length, 0, 'the simplified outline does not cross itself');
+});
+
+test('outline: the flattened path\'s vertices on the path and the offset, following the sliders', async () => {
+  await page.locator('#views input[value=outline]').check({force: true});
+  await settle();
+  assert.ok(await page.locator('#outline-panel').isVisible());
+  const state = await pageState();
+  const answers = await pageAnswers();
+  const read = await api('/segments', {path: state.outline.path});
+  assert.deepEqual(answers.path.segments, read.segments.map((s) => s.points.map(([px, py]) => [px, kWorld.height - py])));
+  const onPath = (vertices, polylines, segments) => polylines.forEach((line, k) => line.forEach((p, j) => {
+    const v = vertices[k][j];
+    casteljau(segments[v.segment], v.t).forEach((c, axis) => assert.ok(Math.abs(c - p[axis]) <= 1e-9 * 800, `vertex ${k}.${j} on the path`));
+  }));
+  onPath(answers.flatten.vertices, answers.flatten.polylines, answers.path.segments);
+  const coarse = answers.flatten.count;
+  assert.match(await page.locator('#outline-values dd[data-term=vertices]').textContent(), new RegExp(`^${coarse} in`));
+  const vertex = answers.flatten.polylines[0][Math.floor(answers.flatten.polylines[0].length / 2)];
+  assert.ok(near(await pixelAt(vertex), rgbOf('#8a3fd1'), 50), 'a vertex is marked');
+  // The offset: its points at |d| from the path, within the tolerance.
+  // Each cubic's ends and middle lie at |d| from the segment it stands for (measured by /nearest on that segment).
+  const checkOffset = async (offset, d, tolerance) => {
+    assert.ok(offset.segments.length >= answers.path.segments.length);
+    for (const s of offset.segments) {
+      const targets = [s.points[0], casteljau(s.points, 0.5), s.points[3]];
+      const nearest = await api('/nearest', {points: answers.path.segments[s.source_segment], targets});
+      nearest.results.forEach((r) => assert.ok(Math.abs(r.distance - Math.abs(d)) <= tolerance + 1e-9 * 800,
+                                               `offset of segment ${s.source_segment} at ${r.distance}, not ${Math.abs(d)}`));
+    }
+  };
+  await checkOffset(answers.offset, state.outline.distance, state.outline.tolerance);
+  // The sliders: a finer tolerance, more vertices; distance 0, no offset; then the other side.
+  const slide = async (id, value) => page.locator(id).evaluate((input, v) => {
+    input.value = v;
+    input.dispatchEvent(new Event('input', {bubbles: true}));
+  }, String(value));
+  await slide('#tolerance', -1.5);
+  await settle();
+  const fine = await pageAnswers();
+  assert.equal((await pageState()).outline.tolerance, 0.0316);
+  assert.ok(fine.flatten.count > coarse, `${fine.flatten.count} vertices at 0.0316 against ${coarse}`);
+  onPath(fine.flatten.vertices, fine.flatten.polylines, fine.path.segments);
+  assert.equal(await page.locator('#tolerance-value').textContent(), '0.0316');
+  await slide('#distance', 0);
+  await settle();
+  assert.equal((await pageAnswers()).offset, null);
+  await slide('#distance', 45);
+  await settle();
+  const outside = await pageAnswers();
+  await checkOffset(outside.offset, 45, 0.0316);
+  assert.deepEqual(await pageErrorsShown(), []);
+  await page.waitForFunction(() => location.hash.includes('view=outline') && location.hash.includes('d=45'));
+  const other = await context.newPage();
+  other.on('pageerror', (e) => pageErrors.push(e.message));
+  recordPolicyViolations(other);
+  await other.goto(page.url());
+  await settle(other);
+  assert.deepEqual((await pageState(other)).outline, (await pageState()).outline);
+  assert.equal(await other.locator('#distance').inputValue(), '45');
+  await other.close();
+
+  // Stroking: the /stroke route's outline, read back by /segments, or, on a service without
+  // /stroke, its 404 shown in the view (the rest of the view stands either way).
+  await page.locator('#stroke-on').check();
+  await settle();
+  const stroked = await pageAnswers();
+  const {tolerance} = (await pageState()).outline;
+  const probe = await fetch(baseUrl + '/stroke', {
+    method: 'POST', headers: {'Content-Type': 'application/json'},
+    body: JSON.stringify({path: stroked.path.data, width: 40, join: 'round', cap: 'round', tolerance}),
+  });
+  const strokeShown = await page.locator('#outline-values dd[data-term=stroke]').textContent();
+  if (probe.status === 404) {
+    assert.equal(stroked.strokeMissing, true);
+    assert.match(strokeShown, /no \/stroke route/);
+    assert.deepEqual((await pageErrorsShown()).map((e) => [e.route, e.status]), [['/stroke', 404]]);
+  } else {
+    assert.equal(probe.status, 200, 'the service strokes the path');
+    const read = await api('/segments', {path: (await probe.json()).path});
+    assert.deepEqual(stroked.stroke.segments, read.segments.map((s) => s.points));
+    assert.match(strokeShown, /width 40, round joins, round caps/);
+    assert.deepEqual(await pageErrorsShown(), []);
+  }
+  assert.ok(stroked.flatten && stroked.offset, 'flattening and offset are drawn all the same');
+  await page.waitForFunction(() => location.hash.includes('sw=40&join=round&cap=round'));
+  await page.locator('#stroke-on').uncheck();
+  await settle();
+  assert.deepEqual(await pageErrorsShown(), []);
+  await page.locator('#views input[value=curves]').check({force: true});
+  await settle();
 });
 
 test('no script errors on the page, and nothing blocked by its security policy', () => {
