@@ -44,15 +44,7 @@ class ViolationGenerator {
   /// `location`). Only requests the schema really rejects are returned.
   [[nodiscard]] std::vector<SchemaViolation> violations(const std::string& location,
                                                         const nlohmann::json& example) const {
-    std::vector<SchemaViolation> candidates;
-    std::vector<SchemaViolation> edges;
-    Walk walk{example, candidates, edges};
-    generate(walk, location, "", "", {}, 0);
-    std::vector<SchemaViolation> out;
-    for (auto& c : candidates) {
-      if (!contract_.schema_errors(location, c.request).empty()) out.push_back(std::move(c));
-    }
-    return out;
+    return candidates(location, example, /*accepted=*/false);
   }
 
   /// Requests breaking one constraint each, made from `example`, that the schema at
@@ -62,15 +54,7 @@ class ViolationGenerator {
   /// must take them too; they are how such a constraint is exercised.
   [[nodiscard]] std::vector<SchemaViolation> crossings(const std::string& location,
                                                        const nlohmann::json& example) const {
-    std::vector<SchemaViolation> candidates;
-    std::vector<SchemaViolation> edges;
-    Walk walk{example, candidates, edges};
-    generate(walk, location, "", "", {}, 0);
-    std::vector<SchemaViolation> out;
-    for (auto& c : candidates) {
-      if (contract_.schema_errors(location, c.request).empty()) out.push_back(std::move(c));
-    }
-    return out;
+    return candidates(location, example, /*accepted=*/true);
   }
 
   /// Requests exactly at one bound each (a minimum or maximum value, an array of
@@ -148,6 +132,21 @@ class ViolationGenerator {
     std::vector<SchemaViolation>& out;    ///< constraint broken
     std::vector<SchemaViolation>& edges;  ///< exactly at a bound
   };
+
+  /// The requests made from `example` that break one constraint each, those the schema
+  /// at `location` rejects (accepted false) or accepts all the same (accepted true).
+  [[nodiscard]] std::vector<SchemaViolation> candidates(const std::string& location,
+                                                        const nlohmann::json& example, bool accepted) const {
+    std::vector<SchemaViolation> made;
+    std::vector<SchemaViolation> edges;
+    Walk walk{example, made, edges};
+    generate(walk, location, "", "", {}, 0);
+    std::vector<SchemaViolation> out;
+    for (auto& c : made) {
+      if (contract_.schema_errors(location, c.request).empty() == accepted) out.push_back(std::move(c));
+    }
+    return out;
+  }
 
   static constexpr int kMaxDepth = 40;
   static constexpr const char* kUnknownMember = "unexpected_member";
@@ -357,13 +356,14 @@ class ViolationGenerator {
       nlohmann::json all = value;
       for (std::size_t i = 0; i < node.at("oneOf").size(); ++i) {
         const std::string branch = contract_.resolve(loc + "/oneOf/" + std::to_string(i));
-        const std::string properties = member_or_empty(contract_.at(branch), "properties").is_object()
-                                           ? branch + "/properties/"
-                                           : loc + "/properties/";
+        const nlohmann::json& own = member_or_empty(contract_.at(branch), "properties");
         for (const auto& name : member_or_empty(contract_.at(branch), "required")) {
           const std::string key = name.get<std::string>();
           deciding.push_back(pointer + "/" + pointer_token(key));
-          if (value.is_object() && !value.contains(key)) all[key] = synthesize(properties + pointer_token(key));
+          if (value.is_object() && !value.contains(key)) {
+            const std::string owner = own.is_object() && own.contains(key) ? branch : loc;
+            all[key] = synthesize(owner + "/properties/" + pointer_token(key));
+          }
         }
       }
       if (value.is_object() && all != value) {
