@@ -44,15 +44,17 @@ class ViolationGenerator {
   /// `location`). Only requests the schema really rejects are returned.
   [[nodiscard]] std::vector<SchemaViolation> violations(const std::string& location,
                                                         const nlohmann::json& example) const {
-    std::vector<SchemaViolation> candidates;
-    std::vector<SchemaViolation> edges;
-    Walk walk{example, candidates, edges};
-    generate(walk, location, "", "", {}, 0);
-    std::vector<SchemaViolation> out;
-    for (auto& c : candidates) {
-      if (!contract_.schema_errors(location, c.request).empty()) out.push_back(std::move(c));
-    }
-    return out;
+    return candidates(location, example, /*accepted=*/false);
+  }
+
+  /// Requests breaking one constraint each, made from `example`, that the schema at
+  /// `location` accepts all the same: the constraint told one whole shape of the request
+  /// (a oneOf branch) from another, and the request has the other shape (a /polar at
+  /// parameters without its `t` is a /polar of neither `t` nor `samples`). The service
+  /// must take them too; they are how such a constraint is exercised.
+  [[nodiscard]] std::vector<SchemaViolation> crossings(const std::string& location,
+                                                       const nlohmann::json& example) const {
+    return candidates(location, example, /*accepted=*/true);
   }
 
   /// Requests exactly at one bound each (a minimum or maximum value, an array of
@@ -131,6 +133,21 @@ class ViolationGenerator {
     std::vector<SchemaViolation>& edges;  ///< exactly at a bound
   };
 
+  /// The requests made from `example` that break one constraint each, those the schema
+  /// at `location` rejects (accepted false) or accepts all the same (accepted true).
+  [[nodiscard]] std::vector<SchemaViolation> candidates(const std::string& location,
+                                                        const nlohmann::json& example, bool accepted) const {
+    std::vector<SchemaViolation> made;
+    std::vector<SchemaViolation> edges;
+    Walk walk{example, made, edges};
+    generate(walk, location, "", "", {}, 0);
+    std::vector<SchemaViolation> out;
+    for (auto& c : made) {
+      if (contract_.schema_errors(location, c.request).empty() == accepted) out.push_back(std::move(c));
+    }
+    return out;
+  }
+
   static constexpr int kMaxDepth = 40;
   static constexpr const char* kUnknownMember = "unexpected_member";
 
@@ -168,9 +185,12 @@ class ViolationGenerator {
     return false;
   }
 
-  /// A branch that only admits null stands for "the same as absent": nothing to break.
+  /// A schema that only admits null (a oneOf branch, or a member of a request's other
+  /// shape, `Absent`) stands for "the same as absent": nothing to break.
   static bool is_null_only(const nlohmann::json& node) {
-    return node.is_object() && node.size() == 1 && node.contains("type") && node.at("type") == "null";
+    if (!node.is_object() || !node.contains("type") || node.at("type") != "null") return false;
+    return std::all_of(node.items().begin(), node.items().end(),
+                       [](const auto& member) { return member.key() == "type" || member.key() == "description"; });
   }
 
   void collect_sites(const std::string& location, const std::string& pattern,
@@ -178,7 +198,7 @@ class ViolationGenerator {
     if (depth > kMaxDepth) return;
     const std::string loc = contract_.resolve(location);
     const nlohmann::json& node = contract_.at(loc);
-    if (!node.is_object()) return;
+    if (!node.is_object() || is_null_only(node)) return;
     for (const char* k : {"type", "enum", "const", "minimum", "maximum", "exclusiveMinimum",
                           "exclusiveMaximum", "minItems", "maxItems", "oneOf", "not"}) {
       if (node.contains(k)) out.insert(site(pattern, loc + "/" + k));
@@ -199,8 +219,7 @@ class ViolationGenerator {
     for (const char* k : {"oneOf", "anyOf", "allOf"}) {
       if (!node.contains(k)) continue;
       for (std::size_t i = 0; i < node.at(k).size(); ++i) {
-        const std::string branch = loc + "/" + k + "/" + std::to_string(i);
-        if (!is_null_only(contract_.at(contract_.resolve(branch)))) collect_sites(branch, pattern, out, depth + 1);
+        collect_sites(loc + "/" + k + "/" + std::to_string(i), pattern, out, depth + 1);
       }
     }
   }
@@ -331,14 +350,19 @@ class ViolationGenerator {
     if (node.contains("oneOf")) {
       // Members that decide the branch ("exactly one of t and samples"): the service may
       // point at any of them when a branch's rule is broken.
+      // A branch may be a whole schema ($ref): its required members, synthesized from its
+      // own properties ("points or path": both given).
       std::vector<std::string> deciding = also;
       nlohmann::json all = value;
-      for (const auto& branch : node.at("oneOf")) {
-        for (const auto& name : member_or_empty(branch, "required")) {
+      for (std::size_t i = 0; i < node.at("oneOf").size(); ++i) {
+        const std::string branch = contract_.resolve(loc + "/oneOf/" + std::to_string(i));
+        const nlohmann::json& own = member_or_empty(contract_.at(branch), "properties");
+        for (const auto& name : member_or_empty(contract_.at(branch), "required")) {
           const std::string key = name.get<std::string>();
           deciding.push_back(pointer + "/" + pointer_token(key));
           if (value.is_object() && !value.contains(key)) {
-            all[key] = synthesize(loc + "/properties/" + pointer_token(key));
+            const std::string owner = own.is_object() && own.contains(key) ? branch : loc;
+            all[key] = synthesize(owner + "/properties/" + pointer_token(key));
           }
         }
       }

@@ -9,6 +9,13 @@
 //     fails.
 // An answer that is a problem answers a request the service refused, so that request is
 // sent untyped; its answer is typed all the same.
+// Then the mistakes the types must catch (kMistakes, each under `@ts-expect-error`: a body
+// with neither or both of `points` and `path`, `t: null`, no curves, a /classify of other
+// than four points, a /batch item naming no route or carrying another route's body...),
+// the near misses they must accept (kAccepted: a member of the other shape set to null),
+// and functions that tell answers apart by the members that distinguish them (a path's
+// `segment_count`, the interval's `interval`, a path search's `candidate_pairs`), which
+// compile only while those members discriminate the unions.
 //
 // The examples are found as tests/integration/readme_examples_test.cpp finds them: a line
 // starting `curl -s localhost:8080`, with `\` continuation lines, `-d '<body>'`, then
@@ -68,6 +75,95 @@ function withRaggedPoint(body) {
 }
 
 const literal = (value) => JSON.stringify(value);  // one line: @ts-expect-error covers one
+
+const cubic = [[0, 0], [1, 2], [3, 2], [4, 0]];
+const segment = [[0, 0], [3, 4]];
+
+// [route, why, body]: bodies the generated types must refuse.
+const kMistakes = [
+  ["/length", "neither points nor path", {}],
+  ["/length", "both points and path", { points: segment, path: "M0 0 L3 4" }],
+  ["/length", "an interval with a path", { path: "M0 0 L3 4", interval: [0, 0.5] }],
+  ["/length", "arc_tolerance with points", { points: segment, arc_tolerance: 0.001 }],
+  ["/bounds", "neither points nor path", { interval: [0, 1] }],
+  ["/loop-area", "both points and path", { points: cubic, path: "M0 0 C1 2 3 2 4 0" }],
+  ["/nearest", "3-D targets with a path", { path: "M0 0 L3 4", targets: [[1, 1, 1]] }],
+  ["/flatten", "both points and path", { points: segment, path: "M0 0 L3 4", tolerance: 0.1 }],
+  ["/offset", "neither points nor path", { distance: 1, tolerance: 0.1 }],
+  ["/offset", "arc_tolerance with points", { points: segment, distance: 1, tolerance: 0.1, arc_tolerance: 0.001 }],
+  ["/evaluate", "t null and no samples", { points: segment, t: null }],
+  ["/evaluate", "neither t nor samples", { points: segment }],
+  ["/evaluate", "both t and samples", { points: segment, t: 0.5, samples: 3 }],
+  ["/evaluate", "samples null and no t", { points: segment, samples: null }],
+  ["/polar", "both t and samples", { points: cubic, t0: 0.5, t: 0.5, samples: 3 }],
+  ["/intersections", "no curves", { curves: [] }],
+  ["/intersections", "three curves", { curves: [{ points: segment }, { points: segment }, { points: segment }] }],
+  ["/intersections", "a curve with both points and path", { curves: [{ points: segment, path: "M0 0 L3 4" }] }],
+  ["/classify", "three points", { points: [[0, 0], [1, 2], [2, 0]] }],
+  ["/classify", "five points", { points: [...cubic, [5, 1]] }],
+  ["/contains", "a region with both path and curves", { path: "M0 0 H1 V1 Z", curves: [], targets: [[0, 0]] }],
+  ["/boolean", "an operand with both path and curves", { op: "simplify", a: { path: "M0 0 H1 V1 Z", curves: [] } }],
+  ["/batch", "an item naming no route", { requests: [{ path: "/no-such-route", body: { points: cubic } }] }],
+  ["/batch", "an item naming the batch", { requests: [{ path: "/batch", body: { requests: [] } }] }],
+  ["/batch", "an item with another route's body", { requests: [{ path: "/classify", body: { points: segment, t: 0.5 } }] }],
+];
+
+// [route, why, body]: bodies the service takes, which the types must take too.
+const kAccepted = [
+  ["/length", "points null beside a path", { path: "M0 0 L3 4", points: null, interval: null }],
+  ["/length", "arc_tolerance null beside points", { points: segment, arc_tolerance: null }],
+  ["/evaluate", "t null beside samples", { points: segment, samples: 3, t: null }],
+  ["/flatten", "arc_tolerance with a path", { path: "M0 0 A1 1 0 0 1 2 0", tolerance: 0.1, arc_tolerance: 0.001 }],
+  ["/polar", "neither t nor samples", { points: cubic, t0: [0.25, 0.5] }],
+  ["/intersections", "one curve", { curves: [{ path: "M0 0 C4 4 0 4 4 0", points: null }] }],
+  ["/intersections", "two curves", { curves: [{ points: segment }, { path: "M0 4 L3 0" }] }],
+  ["/batch", "one item per kind of body", {
+    requests: [{ path: "/evaluate", body: { points: cubic, samples: 2 } }, { path: "/length", body: { path: "M0 0 L3 4" } }],
+  }],
+];
+
+// Functions that read what only one answer has after telling the answers apart.
+const kDiscriminations = `/** A curve's answer has \`degree\`, a path's \`segment_count\`. */
+export function describeLength(a: Answer<"/length", 200>): string {
+  return a.segment_count !== undefined ? \`\${a.segment_lengths.length} segments\` : \`degree \${a.degree} on \${a.interval.join("..")}\`;
+}
+export function describeBounds(a: Answer<"/bounds", 200>): string {
+  return a.segment_count !== undefined ? \`\${a.critical[0].map((c) => c.segment).join(",")}\` : \`degree \${a.degree} on \${a.interval.join("..")}\`;
+}
+export function describeNearest(a: Answer<"/nearest", 200>): number {
+  return a.segment_count !== undefined ? a.results[0].segment : a.interval[0] + a.degree;
+}
+/** A path's loops, an interval's area, or a curve's loops. */
+export function describeLoopArea(a: Answer<"/loop-area", 200>): number {
+  if (a.segment_count !== undefined) return a.loops.reduce((n, loop) => n + loop.segments[0], a.segment_count);
+  if (a.interval !== undefined) return a.signed_area + a.chord[0][0];
+  return a.loops.length + a.stats.max_depth;
+}
+/** A path search's stats, one curve's, or two curves'. */
+export function describeIntersectionStats(a: Answer<"/intersections", 200>): number {
+  const stats = a.stats;
+  if (stats.candidate_pairs !== undefined) return stats.candidate_pairs;
+  if (stats.certification_iterations !== undefined) return stats.certification_iterations;
+  return stats.iterations;
+}
+// @ts-expect-error a curve's member read before the answers are told apart
+export const lengthDegree = (a: Answer<"/length", 200>): number => a.degree;
+`;
+
+function typeChecks() {
+  const out = ["// The mistakes the types refuse."];
+  kMistakes.forEach(([path, why, body], i) => {
+    out.push(`// @ts-expect-error ${path}: ${why}`);
+    out.push(`export const mistake_${i}: Body<${JSON.stringify(path)}> = ${literal(body)};`);
+  });
+  out.push("", "// What the service takes and the types take too.");
+  kAccepted.forEach(([path, why, body], i) => {
+    out.push(`// ${path}: ${why}`);
+    out.push(`export const accepted_${i}: Body<${JSON.stringify(path)}> = ${literal(body)};`);
+  });
+  out.push("", kDiscriminations);
+  return out.join("\n");
+}
 
 function client(examples) {
   const out = [];
@@ -135,6 +231,7 @@ export async function postRefused<P extends PostPath>(baseUrl: string, path: P, 
     out.push(`export const ${name}_answer_unknown: ${answerType} = ${literal(withUnknownMember(ex.answer))};`);
     out.push("");
   }
+  out.push(typeChecks());
   out.push(`/** Sends every README example, in the README's order. */
 export async function sendReadmeExamples(baseUrl: string): Promise<unknown[]> {
   return [

@@ -2,8 +2,11 @@
 # The contract as a TypeScript client sees it: generates types from api/openapi.yaml with
 # the pinned openapi-typescript, writes a client that sends every README.md example
 # through them (typed_client.mjs), and compiles both with the pinned TypeScript under
-# --strict. Fails when a README example stops matching its generated type, or when the
-# types stop refusing an unknown member or a ragged point. Both tools come from
+# --strict. Fails when a README example stops matching its generated type, when the
+# types stop refusing an unknown member, a ragged point or one of the mistakes the client
+# lists (a body with neither or both of `points` and `path`, `t: null`, `curves: []`, a
+# /classify of other than four points, a /batch item naming no route...), or when the
+# answers' unions stop being told apart by the members that distinguish them. Both tools come from
 # package-lock.json here (`npm ci` in this directory, see tools/test.sh): no network.
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -38,4 +41,4 @@ if ! "$tsc" --project "$work/tsconfig.json" --pretty false; then
   echo "typed client: README.md examples against the types generated from api/openapi.yaml (above)" >&2
   exit 1
 fi
-echo "typed client: $(grep -c '^// README.md line' "$work/client.ts") README examples compile against the generated types"
+echo "typed client: $(grep -c '^// README.md line' "$work/client.ts") README examples compile against the generated types, which refuse $(grep -c '^export const mistake_' "$work/client.ts") mistakes"
