@@ -9,6 +9,7 @@
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/intersect/clip/bezier_clip.hpp"
 #include "core/intersect/common_arc.hpp"
+#include "core/intersect/high_order_contact.hpp"
 #include "core/intersect/clip/hybrid.hpp"
 #include "core/intersect/clip/implicit_clip.hpp"
 #include "core/intersect/kind.hpp"
@@ -235,6 +236,7 @@ class Searcher {
   Next step(Box& box, Tried& tried) {
     const bool td = t_done(box), sd = s_done(box);
     if (!in_.overlaps.empty() && covered(box)) return Next::finished;
+    if (in_.contacts != nullptr && in_.contacts->isolates(box.t, box.s)) return Next::finished;
     make_pieces(box);
     if (box.compensated) ++out_.stats.compensated_steps;
     if (bounding_boxes_disjoint(f_piece_, g_piece_)) return Next::finished;
@@ -248,6 +250,10 @@ class Searcher {
   /// again on compensated ones. False when its pieces are compensated already.
   bool retry_compensated(Box& box) {
     if (box.compensated) return false;
+    // Where rounding decides, a high-order contact may be the reason: certified, it drops
+    // this box (the step's first test) when its isolating box holds it.
+    if (in_.contacts != nullptr)
+      out_.stats.work += in_.contacts->try_box(box.t, box.s, in_.max_work - out_.stats.work);
     box.compensated = true;
     f_ok_ = g_ok_ = false;
     return true;
