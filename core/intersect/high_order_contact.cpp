@@ -196,18 +196,28 @@ std::optional<HighOrderContact> certify_high_order_contact(const Curve& f, const
   Expansion bn(1.0), bm(1.0);  // b^n, b'^m
   for (int i = 0; i < n; ++i) bn = ar.mul(bn, t.den);
   for (int i = 0; i < m; ++i) bm = ar.mul(bm, s.den);
-  const std::array<Poly, 2> P = shifted_power_form(f, origin, shift_scale, t, bm, ar);
-  const std::array<Poly, 2> Q = shifted_power_form(g, origin, shift_scale, s, bn, ar);
+  std::array<Poly, 2> P = shifted_power_form(f, origin, shift_scale, t, bm, ar);
+  std::array<Poly, 2> Q = shifted_power_form(g, origin, shift_scale, s, bn, ar);
+  if (!ar.ok()) return done();
+  // Both sides scaled by one power of two that centres c (below) on 1, its least significant
+  // bit as far below as its leading bit is above: E's coefficient of z^j carries c^(2j),
+  // whose bits (2j times c's) must fit inside the exponent window up to j = m k.
+  const int c_axis = std::fabs(Q[0][1].estimate()) >= std::fabs(Q[1][1].estimate()) ? 0 : 1;
+  if (Q[c_axis][1].sign() == 0) return done();
+  const ExponentRange c_bits = exponent_range(Q[c_axis][1]);
+  const double c_scale = power_of_two(-(c_bits.lsb + c_bits.top) / 2);
+  for (std::array<Poly, 2>* side : {&P, &Q})
+    for (Poly& axis : *side)
+      for (Expansion& coefficient : axis) coefficient = ar.mul(coefficient, c_scale);
   if (!ar.ok()) return done();
   // 1. The curves meet there.
   for (int axis = 0; axis < 2; ++axis)
     if ((P[axis][0] - Q[axis][0]).sign() != 0) return done();
 
   // 2. The reparametrisation, along the larger component e of Q'(0).
-  const int e = std::fabs(Q[0][1].estimate()) >= std::fabs(Q[1][1].estimate()) ? 0 : 1;
+  const int e = c_axis;
   const int o = 1 - e;
   const Expansion c = Q[e][1];
-  if (c.sign() == 0) return done();
   const int max_order = std::min(n * m, kMaxContactOrder);
   Poly cpow{Expansion(1.0)};
   const auto c_power = [&](int i) -> const Expansion& {
@@ -323,8 +333,10 @@ std::optional<HighOrderContact> certify_high_order_contact(const Curve& f, const
 std::int64_t HighOrderContactFinder::try_box(ParamInterval t, ParamInterval s,
                                              std::int64_t budget) {
   const double width = std::max(t.width(), s.width());
-  if (width > kContactTryWidth || tried_.size() >= static_cast<std::size_t>(kContactAttempts))
+  if (width > kContactTryWidth || tried_.size() >= static_cast<std::size_t>(kContactAttempts) ||
+      calls_ >= kContactCalls)
     return 0;
+  ++calls_;
   // The box lies somewhere on the stretch where the curves agree to within rounding, not
   // necessarily at the contact: the proposals come from the box widened by growing margins.
   const std::int64_t precheck = 2 * newton_cost(wf_.degree, wg_.degree);

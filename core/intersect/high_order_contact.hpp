@@ -95,11 +95,13 @@ class HighOrderContactFinder {
                          const WorkingCurve& wg) noexcept
       : f_(f), g_(g), wf_(wf), wg_(wg) {}
 
-  /// A box the search is about to take to double-double pieces (rounding decides its tests).
-  /// When it is narrow enough (kContactTryWidth), the simplest rationals in it widened by its
-  /// width on each side are tried once each (at most kContactAttempts pairs per call): a
-  /// double evaluation first, the exact certificate when the curves meet there to within
-  /// kContactPrecheck. Returns the work units spent, never more than `budget`.
+  /// A box where the curves may touch: one the search is about to take to double-double
+  /// pieces (rounding decides its tests), or, in the subdivision method, one whose nearly
+  /// parallel pieces the implicit clip could not separate. When it is narrow enough
+  /// (kContactTryWidth), the simplest rationals in it widened by growing margins are tried
+  /// once each (at most kContactAttempts pairs and kContactCalls boxes per intersection
+  /// call): a double evaluation first, the exact certificate when the curves meet there to
+  /// within kContactPrecheck. Returns the work units spent, never more than `budget`.
   std::int64_t try_box(ParamInterval t, ParamInterval s, std::int64_t budget);
 
   /// The box lies in a certified contact's isolating box: it holds no other solution.
@@ -120,6 +122,7 @@ class HighOrderContactFinder {
     RationalParameter t, s;
   };
   std::vector<Tried> tried_;
+  int calls_ = 0;
   std::vector<HighOrderContact> found_;
 };
 

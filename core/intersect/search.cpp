@@ -319,6 +319,11 @@ class Searcher {
       if (!implicit_clip(f_piece_, g_piece_, fit2(false)).kept ||
           !implicit_clip(g_piece_, f_piece_, fit2(true)).kept)
         return Next::finished;
+      // Halving alone reaches rounding late on a high-order contact's stretch: propose here.
+      if (in_.contacts != nullptr) {
+        out_.stats.work += in_.contacts->try_box(box.t, box.s, in_.max_work - out_.stats.work);
+        if (in_.contacts->isolates(box.t, box.s)) return Next::finished;
+      }
     }
     if (sep.noisy) {
       if (retry_compensated(box)) return Next::again;

@@ -229,6 +229,10 @@ inline constexpr double kContactMarginGrowth = 16.0;
 /// contact's stretch propose the same simplest rationals, so a few find it; a tangency at
 /// irrational parameters proposes new ones at every level, and this bounds what it spends.
 inline constexpr int kContactAttempts = 32;
+/// Boxes that may propose per call: each costs a few hundred flops even when its proposals
+/// were tried already, and the first boxes near a contact (at most kContactTryWidth wide)
+/// propose it.
+inline constexpr int kContactCalls = 64;
 /// Largest denominator of a proposed parameter: contacts built at rational parameters have
 /// small ones; 256 keeps the exact coefficients (b^n) small.
 inline constexpr int kMaxContactDenominator = 256;
