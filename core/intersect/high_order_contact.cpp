@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "core/bernstein/exact_casteljau.hpp"
+#include "core/intersect/kind.hpp"
 #include "core/intersect/tuning.hpp"
 #include "core/intersect/work_cost.hpp"
 #include "core/numeric/binomial.hpp"
@@ -343,7 +344,8 @@ std::int64_t HighOrderContactFinder::try_box(ParamInterval t, ParamInterval s,
   std::int64_t spent = 0;
   for (double margin = std::max(width, kContactFirstMargin); margin <= kContactTryWidth;
        margin *= kContactMarginGrowth) {
-    // The proposal (up to two loops over the denominators) and the precheck.
+    // The proposal (two loops over the denominators, charged at their longest) and the
+    // precheck.
     const std::int64_t cost = 2 * kMaxContactDenominator + precheck;
     if (spent + cost > budget || tried_.size() >= static_cast<std::size_t>(kContactAttempts))
       break;
@@ -360,9 +362,13 @@ std::int64_t HighOrderContactFinder::try_box(ParamInterval t, ParamInterval s,
     if (std::any_of(tried_.begin(), tried_.end(), [&](const Tried& x) { return same(x.t, x.s); }))
       continue;
     tried_.push_back({*p, *q});
-    const Point2 a = evaluate_with_tangent(wf_, p->num / p->den).point;
-    const Point2 b = evaluate_with_tangent(wg_, q->num / q->den).point;
-    if (!(std::fabs(a.x - b.x) <= kContactPrecheck && std::fabs(a.y - b.y) <= kContactPrecheck))
+    // A contact of order >= 3 has parallel tangents: a crossing at rational parameters (a
+    // common case) is turned away here, before any exact arithmetic.
+    const PointAndTangent a = evaluate_with_tangent(wf_, p->num / p->den);
+    const PointAndTangent b = evaluate_with_tangent(wg_, q->num / q->den);
+    if (!(std::fabs(a.point.x - b.point.x) <= kContactPrecheck &&
+          std::fabs(a.point.y - b.point.y) <= kContactPrecheck &&
+          sine_between(a.tangent, b.tangent) <= kContactPrecheck))
       continue;
     std::int64_t products = 0;
     const auto contact = certify_high_order_contact(

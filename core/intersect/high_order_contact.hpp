@@ -101,7 +101,8 @@ class HighOrderContactFinder {
   /// (kContactTryWidth), the simplest rationals in it widened by growing margins are tried
   /// once each (at most kContactAttempts pairs and kContactCalls boxes per intersection
   /// call): a double evaluation first, the exact certificate when the curves meet there to
-  /// within kContactPrecheck. Returns the work units spent, never more than `budget`.
+  /// within kContactPrecheck with parallel tangents. Returns the work units spent, never
+  /// more than `budget`.
   std::int64_t try_box(ParamInterval t, ParamInterval s, std::int64_t budget);
 
   /// The box lies in a certified contact's isolating box: it holds no other solution.

@@ -250,9 +250,10 @@ class Searcher {
   /// again on compensated ones. False when its pieces are compensated already.
   bool retry_compensated(Box& box) {
     if (box.compensated) return false;
-    // Where rounding decides, a high-order contact may be the reason: certified, it drops
-    // this box (the step's first test) when its isolating box holds it.
-    if (in_.contacts != nullptr)
+    // Where rounding decides on nearly parallel pieces, a high-order contact may be the
+    // reason: certified, it drops this box (the step's first test) when its isolating box
+    // holds it.
+    if (in_.contacts != nullptr && nearly_parallel(f_piece_, g_piece_))
       out_.stats.work += in_.contacts->try_box(box.t, box.s, in_.max_work - out_.stats.work);
     box.compensated = true;
     f_ok_ = g_ok_ = false;

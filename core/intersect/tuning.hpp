@@ -237,8 +237,9 @@ inline constexpr int kContactCalls = 64;
 /// small ones; 256 keeps the exact coefficients (b^n) small.
 inline constexpr int kMaxContactDenominator = 256;
 /// The double precheck: f and g at the proposed parameters, in the working frame (magnitude
-/// about 1), closer than this in each coordinate. At a true contact they agree to within the
-/// rounding of the parameters and the evaluations (about 1e-15).
+/// about 1), closer than this in each coordinate, and the sine of the angle between their
+/// tangents below it. At a true contact of order >= 2 both agree to within the rounding of
+/// the parameters and the evaluations (about 1e-15).
 inline constexpr double kContactPrecheck = 0x1p-30;
 /// The least half-width of an isolating box worth reporting: narrower ones keep nothing
 /// from the search (and the inward rounding of the box needs a few ulps of room).
