@@ -333,10 +333,8 @@ std::optional<HighOrderContact> certify_high_order_contact(const Curve& f, const
 
 std::int64_t HighOrderContactFinder::try_box(ParamInterval t, ParamInterval s,
                                              std::int64_t budget) {
+  if (!worth_trying(t, s)) return 0;
   const double width = std::max(t.width(), s.width());
-  if (width > kContactTryWidth || tried_.size() >= static_cast<std::size_t>(kContactAttempts) ||
-      calls_ >= kContactCalls)
-    return 0;
   ++calls_;
   // The box lies somewhere on the stretch where the curves agree to within rounding, not
   // necessarily at the contact: the proposals come from the box widened by growing margins.

@@ -7,6 +7,7 @@
 
 #include "core/base/curve.hpp"
 #include "core/base/interval.hpp"
+#include "core/intersect/tuning.hpp"
 #include "core/intersect/working_curve.hpp"
 
 namespace bezier::core {
@@ -104,6 +105,15 @@ class HighOrderContactFinder {
   /// within kContactPrecheck with parallel tangents. Returns the work units spent, never
   /// more than `budget`.
   std::int64_t try_box(ParamInterval t, ParamInterval s, std::int64_t budget);
+
+  /// Whether try_box would look at the box: its larger width between kContactLeastWidth and
+  /// kContactTryWidth, and calls and attempts left. Inline, for the search's hot path.
+  [[nodiscard]] bool worth_trying(ParamInterval t, ParamInterval s) const noexcept {
+    const double w = t.width() > s.width() ? t.width() : s.width();
+    return w <= intersect_tuning::kContactTryWidth && w >= intersect_tuning::kContactLeastWidth &&
+           calls_ < intersect_tuning::kContactCalls &&
+           tried_.size() < static_cast<std::size_t>(intersect_tuning::kContactAttempts);
+  }
 
   /// The box lies in a certified contact's isolating box: it holds no other solution.
   [[nodiscard]] bool isolates(ParamInterval t, ParamInterval s) const noexcept {

@@ -219,6 +219,10 @@ inline constexpr int kMaxContactOrder = 16;
 /// double-double pieces in boxes about u^(1/k) wide (2^-17 at order 3, 2^-10 at order 5),
 /// and wider boxes whose tests rounding decides are not near one.
 inline constexpr double kContactTryWidth = 0x1p-6;
+/// Nor boxes narrower than this: an ordinary tangency (order 2), the common near-tangent
+/// case, goes to double-double pieces only in boxes about u^(1/2) wide (2^-26) or less,
+/// where proposing would only cost.
+inline constexpr double kContactLeastWidth = 0x1p-24;
 /// A box proposes the simplest rationals in itself widened by margins from
 /// max(its width, kContactFirstMargin) up to kContactTryWidth, growing by
 /// kContactMarginGrowth: the contact lies somewhere on the stretch where the curves agree to
