@@ -8,6 +8,7 @@
 #include "core/intersect/collinear.hpp"
 #include "core/intersect/common_arc.hpp"
 #include "core/intersect/clip/fat_curve.hpp"
+#include "core/intersect/high_order_contact.hpp"
 #include "core/intersect/kind.hpp"
 #include "core/intersect/merge.hpp"
 #include "core/intersect/overlap.hpp"
@@ -121,6 +122,21 @@ std::vector<ExactRoot> exact_end_roots(const Curve& f, const Curve& g,
   return roots;
 }
 
+/// The certified high-order contacts in the searched ranges: exact roots when their
+/// parameters are doubles, else resolved boxes one or two ulps wide around them.
+void add_certified_contacts(std::span<const HighOrderContact> certified, ParamInterval t_range,
+                            ParamInterval s_range, std::vector<ExactRoot>& exact,
+                            std::vector<SearchCandidate>& candidates) {
+  for (const HighOrderContact& c : certified) {
+    if (t_range.hi < c.t.lo || c.t.hi < t_range.lo || s_range.hi < c.s.lo || c.s.hi < s_range.lo)
+      continue;
+    if (c.t.width() == 0.0 && c.s.width() == 0.0)
+      exact.push_back({c.t.lo, c.s.lo});
+    else
+      candidates.push_back({c.t, c.s, true});
+  }
+}
+
 }  // namespace
 
 IntersectionResult intersect(const Curve& f, const Curve& g, const IntersectOptions& options) {
@@ -215,8 +231,11 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
     in.op_f = &op_f;
     in.op_g = &op_g;
   }
+  HighOrderContactFinder high_order(f, g, wf, wg);
+  if (!wf.is_point && !wg.is_point) in.contacts = &high_order;
   in.max_work = options.max_work - result.stats.work;
   SearchOutput found = search(in);
+  add_certified_contacts(high_order.contacts(), t_range, s_range, exact, found.candidates);
   found.stats.work += result.stats.work;
   result.stats = found.stats;
   if (found.capped) result.status = IntersectStatus::work_cap_reached;

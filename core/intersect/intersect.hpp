@@ -32,6 +32,9 @@ namespace bezier::core {
 ///  4. End points equal bit for bit are exact roots (zero-width intervals).
 ///  5. The search narrows boxes of the parameter square with rigorous error bounds, so no
 ///     root is lost to rounding; near tangencies it switches to double-double pieces.
+///     A contact of order >= 3 at rational parameters is certified exactly with a box in
+///     which it is the only solution (high_order_contact.hpp), and the search drops the
+///     boxes inside it; the contact is an exact root when its parameters are doubles.
 ///  6. Touching boxes merge into one contact (merge.hpp); Newton's method with double-double
 ///     residuals, or on the tangency system, refines each (refine.hpp); the kind comes from
 ///     the derivatives there (kind.hpp).

@@ -9,6 +9,7 @@
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/intersect/clip/bezier_clip.hpp"
 #include "core/intersect/common_arc.hpp"
+#include "core/intersect/high_order_contact.hpp"
 #include "core/intersect/clip/hybrid.hpp"
 #include "core/intersect/clip/implicit_clip.hpp"
 #include "core/intersect/kind.hpp"
@@ -190,6 +191,18 @@ class Searcher {
     return false;
   }
 
+  /// The box lies in an overlap or in a certified contact's isolating box: nothing else there.
+  [[nodiscard]] bool excluded(const Box& b) const {
+    return (!in_.overlaps.empty() && covered(b)) ||
+           (in_.contacts != nullptr && in_.contacts->isolates(b.t, b.s));
+  }
+
+  /// try_box on the contact finder, charged; a certified contact starts the exclusions.
+  void propose_contact(const Box& b) {
+    out_.stats.work += in_.contacts->try_box(b.t, b.s, in_.max_work - out_.stats.work);
+    if (!in_.contacts->contacts().empty()) excluding_ = true;
+  }
+
   /// coincide_at_precision on the box, charged by the evaluations it made.
   bool coincides(const Box& b) {
     const CoincidenceTest test = coincide_at_precision(
@@ -234,7 +247,7 @@ class Searcher {
   /// it is narrow enough, otherwise let the method shrink or split it.
   Next step(Box& box, Tried& tried) {
     const bool td = t_done(box), sd = s_done(box);
-    if (!in_.overlaps.empty() && covered(box)) return Next::finished;
+    if (excluding_ && excluded(box)) return Next::finished;
     make_pieces(box);
     if (box.compensated) ++out_.stats.compensated_steps;
     if (bounding_boxes_disjoint(f_piece_, g_piece_)) return Next::finished;
@@ -248,6 +261,12 @@ class Searcher {
   /// again on compensated ones. False when its pieces are compensated already.
   bool retry_compensated(Box& box) {
     if (box.compensated) return false;
+    // Where rounding decides on nearly parallel pieces, a high-order contact may be the
+    // reason: certified, it drops this box (the step's first test) when its isolating box
+    // holds it.
+    if (in_.contacts != nullptr && in_.contacts->worth_trying(box.t, box.s) &&
+        nearly_parallel(f_piece_, g_piece_))
+      propose_contact(box);
     box.compensated = true;
     f_ok_ = g_ok_ = false;
     return true;
@@ -313,6 +332,11 @@ class Searcher {
       if (!implicit_clip(f_piece_, g_piece_, fit2(false)).kept ||
           !implicit_clip(g_piece_, f_piece_, fit2(true)).kept)
         return Next::finished;
+      // Halving alone reaches rounding late on a high-order contact's stretch: propose here.
+      if (in_.contacts != nullptr && in_.contacts->worth_trying(box.t, box.s)) {
+        propose_contact(box);
+        if (in_.contacts->isolates(box.t, box.s)) return Next::finished;
+      }
     }
     if (sep.noisy) {
       if (retry_compensated(box)) return Next::again;
@@ -435,6 +459,8 @@ class Searcher {
   /// exact around a parameter on the 2^-52 grid, and at most half the search width.
   double krawczyk_radius_;
   bool use_krawczyk_;
+  /// Some boxes are excluded: there are overlaps, or a certified contact (one test per step).
+  bool excluding_ = !in_.overlaps.empty();
   SearchOutput out_;
   BoxStack stack_;
   Piece f_piece_, g_piece_;

@@ -11,6 +11,8 @@
 
 namespace bezier::core {
 
+class HighOrderContactFinder;
+
 /// A box t x s of the parameter square that may hold an intersection.
 struct SearchCandidate {
   ParamInterval t;
@@ -37,6 +39,9 @@ struct SearchInput {
   /// The part of the parameter square searched (default all of it).
   ParamInterval t_range{0.0, 1.0};
   ParamInterval s_range{0.0, 1.0};
+  /// Certifies high-order contacts near boxes that go to double-double pieces, and drops
+  /// the boxes their isolating boxes cover (high_order_contact.hpp); none when null.
+  HighOrderContactFinder* contacts = nullptr;
 };
 
 struct SearchOutput {
@@ -71,7 +76,8 @@ struct SearchOutput {
 /// stay within rounding of each other), the box switches to compensated pieces
 /// (double-double, in a frame centred on the box); when even those cannot decide, the box
 /// is returned unresolved. Boxes covered by an overlap are dropped (covered_by_overlap,
-/// covered_by_arc).
+/// covered_by_arc), and so are boxes inside a certified high-order contact's isolating box
+/// (input.contacts, which each box about to go to double-double pieces may first propose).
 [[nodiscard]] SearchOutput search(const SearchInput& input);
 
 }  // namespace bezier::core

@@ -206,4 +206,47 @@ inline constexpr double kPreimageAccuracy = 0x1p-32;
 /// ends it earlier).
 inline constexpr int kFactorRefineSteps = 3;
 
+// High-order contacts (high_order_contact.hpp).
+
+/// Contacts of order 1 (crossings) and 2 (ordinary tangencies) are the search's: they
+/// converge there, and their answers stay those of the search and refinement.
+inline constexpr int kLeastCertifiedOrder = 3;
+/// The highest order tried. Bezout bounds it by n m for proper curves (9 for cubics); the
+/// exact terms grow with it (order 16 of two degree-4 curves is a few thousand exact
+/// products), and higher orders need degrees beyond what such contacts come from.
+inline constexpr int kMaxContactOrder = 16;
+/// Only boxes at most this wide try a contact: a contact of order k >= 3 sends the search to
+/// double-double pieces in boxes about u^(1/k) wide (2^-17 at order 3, 2^-10 at order 5),
+/// and wider boxes whose tests rounding decides are not near one.
+inline constexpr double kContactTryWidth = 0x1p-6;
+/// Nor boxes narrower than this: an ordinary tangency (order 2), the common near-tangent
+/// case, goes to double-double pieces only in boxes about u^(1/2) wide (2^-26) or less,
+/// where proposing would only cost.
+inline constexpr double kContactLeastWidth = 0x1p-24;
+/// A box proposes the simplest rationals in itself widened by margins from
+/// max(its width, kContactFirstMargin) up to kContactTryWidth, growing by
+/// kContactMarginGrowth: the contact lies somewhere on the stretch where the curves agree to
+/// within rounding (about u^(1/k) long), not necessarily in the box. Five margins at most.
+inline constexpr double kContactFirstMargin = 0x1p-24;
+inline constexpr double kContactMarginGrowth = 16.0;
+/// Distinct pairs of rationals tried (each a double precheck) per call: the boxes of one
+/// contact's stretch propose the same simplest rationals, so a few find it; a tangency at
+/// irrational parameters proposes new ones at every level, and this bounds what it spends.
+inline constexpr int kContactAttempts = 32;
+/// Boxes that may propose per call: each costs a few hundred flops even when its proposals
+/// were tried already, and the first boxes near a contact (at most kContactTryWidth wide)
+/// propose it.
+inline constexpr int kContactCalls = 64;
+/// Largest denominator of a proposed parameter: contacts built at rational parameters have
+/// small ones; 256 keeps the exact coefficients (b^n) small.
+inline constexpr int kMaxContactDenominator = 256;
+/// The double precheck: f and g at the proposed parameters, in the working frame (magnitude
+/// about 1), closer than this in each coordinate, and the sine of the angle between their
+/// tangents below it. At a true contact of order >= 2 both agree to within the rounding of
+/// the parameters and the evaluations (about 1e-15).
+inline constexpr double kContactPrecheck = 0x1p-30;
+/// The least half-width of an isolating box worth reporting: narrower ones keep nothing
+/// from the search (and the inward rounding of the box needs a few ulps of room).
+inline constexpr double kLeastIsolation = 0x1p-40;
+
 }  // namespace bezier::core::intersect_tuning

@@ -87,6 +87,29 @@ TEST(IntersectionsRoute, TangencyIsReportedOnce) {
   EXPECT_EQ(r["intersections"][0]["t"].get<double>(), 0.5);
 }
 
+TEST(IntersectionsRoute, HighOrderTangencyAnswersByEveryMethod) {
+  // Issue 29: A(t) - B(t) = (2t - 1)^3 (1, -1) along A's tangent at 1/2, a contact of order
+  // 5 at t = s = 1/2, the point (3.5, 3.5) (core/intersect/high_order_contact_test.cpp).
+  const std::string curves =
+      R"({"curves":[{"points":[[1,4],[4,5],[3,2],[6,3]]},{"points":[[2,3],[3,6],[4,1],[5,4]]}])";
+  for (const std::string options :
+       {R"("method":"hybrid","fat_curve_degree":3)", R"("method":"hybrid","fat_curve_degree":2)",
+        R"("method":"bezier-clipping")", R"("method":"subdivision")"}) {
+    SCOPED_TRACE(options);
+    const json r = call(curves + "," + options + "}", 200);
+    ASSERT_EQ(r["intersections"].size(), 1u);
+    const json& x = r["intersections"][0];
+    EXPECT_EQ(x["t"].get<double>(), 0.5);
+    EXPECT_EQ(x["s"].get<double>(), 0.5);
+    EXPECT_EQ(x["t_interval"], json::array({0.5, 0.5}));
+    EXPECT_EQ(x["s_interval"], json::array({0.5, 0.5}));
+    EXPECT_EQ(x["point"], json::array({3.5, 3.5}));
+    EXPECT_EQ(x["kind"], "tangent");
+    EXPECT_EQ(x["resolved"], true);
+    EXPECT_LT(r["stats"]["work"].get<std::int64_t>(), Limits{}.max_work / 10);
+  }
+}
+
 TEST(IntersectionsRoute, OverlapsAreIntervalPairs) {
   const json r = call(R"({"curves":[{"points":[[0,0],[2,0]]},{"points":[[1,0],[3,0]]}]})", 200);
   EXPECT_TRUE(r["intersections"].empty());
