@@ -94,5 +94,33 @@ TEST(CertifySelfIntersections, ThePairsShareTheBudgetInOrder) {
   EXPECT_TRUE(r.out_of_work);
 }
 
+TEST(CertifiedSelfIntersections, OneCallSearchesAndCertifiesUnderOneBudget) {
+  const Curve c = symmetric_loop();
+  WorkBudget budget(100000);
+  const CertifiedSelfIntersectionResult r = certified_self_intersections(c, {}, budget);
+  ASSERT_EQ(r.found.pairs.size(), 1u);
+  ASSERT_EQ(r.certified.intersections.size(), 1u);
+  EXPECT_TRUE(r.certified.intersections[0].resolved);
+  EXPECT_TRUE(r.certified.intersections[0].t_interval.contains(0.25));
+  EXPECT_TRUE(r.certified.intersections[0].s_interval.contains(0.75));
+  EXPECT_EQ(r.certified.uncertified, 0u);
+  EXPECT_FALSE(budget.exhausted());
+  EXPECT_EQ(budget.spent(), r.found.stats.work_units + r.certified.work);
+}
+
+TEST(CertifiedSelfIntersections, ACertificationThatFallsShortLeavesTheBudgetUnexhausted) {
+  // A cubic's pairs come from its closed form, which takes no parameter box: with no work
+  // unit at all the pair is found, reported as found, and counted uncertified; the answer
+  // is complete, so the budget did not run out.
+  const Curve c = symmetric_loop();
+  WorkBudget budget(0);
+  const CertifiedSelfIntersectionResult r = certified_self_intersections(c, {}, budget);
+  ASSERT_EQ(r.found.pairs.size(), 1u);
+  ASSERT_EQ(r.certified.intersections.size(), 1u);
+  EXPECT_FALSE(r.certified.intersections[0].resolved);
+  EXPECT_EQ(r.certified.uncertified, 1u);
+  EXPECT_FALSE(budget.exhausted());
+}
+
 }  // namespace
 }  // namespace bezier::core
