@@ -57,6 +57,7 @@
 #include "api/write_json.hpp"
 #include "core/intersect/intersect.hpp"
 #include "core/path/path_intersections.hpp"
+#include "core/path/segment_boxes.hpp"
 #include "core/self_intersect/certify.hpp"
 #include "core/self_intersect/self_intersection.hpp"
 
@@ -140,10 +141,10 @@ Reply work_cap_reply(std::int64_t steps, const Limits& limits) {
 }
 
 Reply two_curves_answer(const IntersectionsRequest& request, const Limits& limits) {
+  core::WorkBudget budget = request_budget(limits);
   const core::IntersectionResult r =
-      core::intersect(request.curve(0), request.curve(1), request.options);
-  if (r.status == core::IntersectStatus::work_cap_reached)
-    return work_cap_reply(r.stats.iterations, limits);
+      core::intersect(request.curve(0), request.curve(1), request.options, budget);
+  if (budget.exhausted()) return work_cap_reply(r.stats.iterations, limits);
   if (r.status == core::IntersectStatus::tolerance_too_small) {
     return tolerance_too_small_reply();
   }
@@ -162,15 +163,14 @@ Reply two_curves_answer(const IntersectionsRequest& request, const Limits& limit
 }
 
 Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits) {
-  const core::Curve& curve = request.curve(0);
-  const core::SelfIntersectionResult r = core::self_intersections(
-      curve, core::self_intersection_options(limits.max_work, curve.degree()));
-  if (r.status == core::IntersectStatus::work_cap_reached)
-    return self_intersection_work_cap_reply(r.stats.work, limits.max_work);
-  // The certification searches share what the self-intersection search left of the budget;
-  // a pair they cannot certify within it is reported as found, unresolved.
-  const core::CertifiedSelfIntersections certified = core::certify_self_intersections(
-      curve, r.pairs, request.options, limits.max_work - r.stats.work_units);
+  // The certification shares what the self-intersection search left of the budget; a pair
+  // it cannot certify within it is reported as found, unresolved.
+  core::WorkBudget budget = request_budget(limits);
+  const core::CertifiedSelfIntersectionResult c =
+      core::certified_self_intersections(request.curve(0), request.options, budget);
+  const core::SelfIntersectionResult& r = c.found;
+  const core::CertifiedSelfIntersections& certified = c.certified;
+  if (budget.exhausted()) return self_intersection_work_cap_reply(r.stats.work, limits.max_work);
   JsonWriter w;
   w.begin_object();
   w.key("intersections").begin_array();
@@ -190,12 +190,22 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   w.end_object();
   Reply reply = json_reply(std::move(w));
   // A pair left unresolved for want of work units is an answer the cap decided.
-  reply.limit_reached = certified.out_of_work;
-  reply.decided_by_work_cap = certified.out_of_work;
+  reply.limit_reached = certified.uncertified > 0;
+  reply.decided_by_work_cap = certified.uncertified > 0;
   return reply;
 }
 
-Reply path_work_cap_reply(const path::PathSearchStats& stats, const Limits& limits) {
+/// The problem of a path search whose budget ran out: work-cap, or memory-cap at `input`
+/// (the JSON Pointer of the path whose segment pairs passed the memory limit).
+Reply path_budget_reply(const core::WorkBudget& budget, const path::PathSearchStats& stats,
+                        const Limits& limits, const std::string& input) {
+  if (budget.exhaustion() == core::Exhaustion::memory) {
+    return memory_cap_reply(input,
+                            "the segment pairs whose boxes meet need more than the per-request "
+                            "memory limit of " +
+                                std::to_string(limits.max_request_memory) + " bytes (" +
+                                std::to_string(path::kStoredPairBytes) + " bytes a pair)");
+  }
   return problem_reply(ProblemKind::work_cap,
                        "the path intersection search spent " + std::to_string(stats.work) +
                            " work units on " + std::to_string(stats.candidate_pairs) +
@@ -205,21 +215,14 @@ Reply path_work_cap_reply(const path::PathSearchStats& stats, const Limits& limi
                            "boxes meet, and each segment's own search)");
 }
 
-void sort_contacts(std::vector<path::PathContact>& contacts) {
-  std::sort(contacts.begin(), contacts.end(),
-            [](const path::PathContact& p, const path::PathContact& q) {
-              return std::tuple(p.segment_t, p.intersection.t, p.segment_s, p.intersection.s) <
-                     std::tuple(q.segment_t, q.intersection.t, q.segment_s, q.intersection.s);
-            });
-}
-
 Reply two_paths_answer(const IntersectionsRequest& request, const Limits& limits) {
   const path::Path a = as_path(request.inputs[0]);
   const path::Path b = as_path(request.inputs[1]);
-  const path::PathIntersectionResult r = path::intersect(a, b, request.options);
+  core::WorkBudget budget = request_budget(limits);
+  const path::PathIntersectionResult r = path::intersect(a, b, request.options, budget);
   std::optional<double> arc_tolerance = a.arc_tolerance;
   if (b.arc_tolerance) arc_tolerance = std::max(arc_tolerance.value_or(0.0), *b.arc_tolerance);
-  if (r.status == core::IntersectStatus::work_cap_reached) return path_work_cap_reply(r.stats, limits);
+  if (budget.exhausted()) return path_budget_reply(budget, r.stats, limits, "/curves");
   if (r.status == core::IntersectStatus::tolerance_too_small) {
     return tolerance_too_small_reply();
   }
@@ -240,43 +243,29 @@ Reply two_paths_answer(const IntersectionsRequest& request, const Limits& limits
 
 Reply one_path_answer(const IntersectionsRequest& request, const Limits& limits) {
   const path::Path p = as_path(request.inputs[0]);
-  const path::PathSelfIntersectionResult r = path::self_intersections(p, request.options);
-  if (r.status == core::IntersectStatus::work_cap_reached) return path_work_cap_reply(r.stats, limits);
+  core::WorkBudget budget = request_budget(limits);
+  const path::PathSelfIntersectionResult r =
+      path::certified_self_intersections(p, request.options, budget);
+  if (budget.exhausted()) return path_budget_reply(budget, r.stats, limits, "/curves/0");
   if (r.status == core::IntersectStatus::tolerance_too_small) {
     return tolerance_too_small_reply();
   }
-  // The pairs within segments are certified as one curve's are, with what the search left.
-  std::vector<path::PathContact> contacts = r.intersections;
-  std::int64_t certification_work = 0, certification_steps = 0;
-  bool out_of_work = false;
-  for (const path::SegmentSelfIntersections& within : r.within_segments) {
-    const core::CertifiedSelfIntersections c = core::certify_self_intersections(
-        p.segments[within.segment], within.result.pairs, request.options,
-        limits.max_work - r.stats.work - certification_work);
-    certification_work += c.work;
-    certification_steps += c.steps;
-    out_of_work = out_of_work || c.out_of_work;
-    for (const core::Intersection& x : c.intersections) {
-      contacts.push_back({within.segment, within.segment, x});
-    }
-  }
-  sort_contacts(contacts);
   JsonWriter w;
   w.begin_object();
   write_arc_tolerance(w, p.arc_tolerance);
   w.key("intersections").begin_array();
-  for (const path::PathContact& c : contacts) write_path_intersection(w, c);
+  for (const path::PathContact& c : r.intersections) write_path_intersection(w, c);
   w.end_array();
   w.key("overlaps").begin_array();
   write_path_overlaps(w, r.overlaps, r.within_segments, OverlapDirection::written);
   w.end_array();
-  write_search_stats(w, r.stats.pairs, request.options, r.stats.work + certification_work,
-                     r.stats.candidate_pairs, certification_steps);
+  write_search_stats(w, r.stats.pairs, request.options, r.stats.work, r.stats.candidate_pairs,
+                     r.stats.certification_steps);
   w.key("tolerance").value(request.options.tolerance);
   w.end_object();
   Reply reply = json_reply(std::move(w));
-  reply.limit_reached = out_of_work;
-  reply.decided_by_work_cap = out_of_work;
+  reply.limit_reached = r.uncertified_pairs > 0;
+  reply.decided_by_work_cap = r.uncertified_pairs > 0;
   return reply;
 }
 
@@ -289,7 +278,6 @@ Reply intersections_route(const nlohmann::json& request, const Limits& limits) {
   IntersectionsRequest parsed;
   const std::optional<double> arc_tolerance = read_arc_tolerance(reader, request);
   bool any_path = false;
-  parsed.options.max_work = limits.max_work;
   if (const auto* curves = reader.required(request, "curves", "")) {
     if (!curves->is_array() || curves->empty() || curves->size() > 2) {
       reader.fail("/curves", "expected an array of 1 or 2 curves {\"points\": [[x, y], ...]} "

@@ -17,7 +17,7 @@
 //    "segment_count", "segment_lengths": [...]}
 //   parameters   the segment holding length l from the path's start (the first one whose
 //                cumulative length reaches l) and its t there.
-//   The segments' quadratures are charged to the work cap (arc_length_work below).
+//   The segments' quadratures are charged to the work cap (core::arc_length_work, core/measure/arc_length.hpp).
 // A path's elliptical arcs are cubics within "arc_tolerance" (a request field, > 0; default
 // 1e-6 of each arc's larger radius), and the answer then begins with "arc_tolerance": the
 // distance they keep (api/curve_or_path.hpp).
@@ -101,29 +101,18 @@ Reply length_answer(RequestReader& reader, const core::BasicCurve<P>& curve,
   return json_reply(std::move(w));
 }
 
-/// The work units (core/intersect/work_cost.hpp: about one coordinate update of de
-/// Casteljau's algorithm each) a segment's arc length cost, estimated from its partition:
-/// each final piece's 15-point rule, each point an evaluation of |B'|^2, a polynomial of
-/// degree d = 2n - 2, by de Casteljau's triangle (d (d + 1) / 2 updates).
-std::int64_t arc_length_work(int degree, const core::ArcLength& measured) {
-  const std::int64_t d = 2 * static_cast<std::int64_t>(degree) - 2;
-  const auto pieces = static_cast<std::int64_t>(std::max<std::size_t>(measured.pieces.size(), 1));
-  return pieces * 15 * std::max<std::int64_t>(d * (d + 1) / 2, 1);
-}
-
 Reply path_length_answer(RequestReader& reader, const path::Path& p,
                          const std::optional<std::vector<double>>& at_lengths) {
   std::vector<core::ArcLength> measured;
   measured.reserve(p.segments.size());
   double total = 0.0, error_bound = 0.0;
-  std::int64_t work = 0;
+  core::WorkBudget budget = request_budget(reader.limits());
   for (std::size_t k = 0; k < p.segments.size(); ++k) {
     measured.push_back(core::arc_length(p.segments[k], 0.0, 1.0));
-    work += arc_length_work(p.segments[k].degree(), measured.back());
-    if (work > reader.limits().max_work) {
+    if (!budget.spend(core::arc_length_work(p.segments[k].degree(), measured.back()))) {
       return problem_reply(ProblemKind::work_cap,
                            "the arc lengths of the path's first " + std::to_string(k + 1) +
-                               " segments took about " + std::to_string(work) +
+                               " segments took about " + std::to_string(budget.spent()) +
                                " work units, beyond the per-request work cap of " +
                                std::to_string(reader.limits().max_work) +
                                " units: send a shorter path per request");

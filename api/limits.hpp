@@ -3,6 +3,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "core/base/work_budget.hpp"
+
 namespace bezier::api {
 
 /// Per-request limits. The service fills them from flags and environment variables;
@@ -31,6 +33,14 @@ struct Limits {
   /// request of every method at this cap and the command that measures it; hitting it
   /// answers 422, never a hang.
   std::int64_t max_work = 22000000;
+  /// Most bytes a request's kernel call may store in proportion to how its input meets
+  /// itself (core::WorkBudget::charge_memory): the segment pairs whose boxes meet, of one
+  /// path or two (16 bytes each), and the copy a path's self-intersection search keeps;
+  /// 422 memory-cap above (docs/OPERATIONS.md). At the default work cap a path search
+  /// pays at least 80 units a pair it searches (two lines: a step and the overlap test),
+  /// so 275 000 pairs (4.4 MB) already exceed max_work: 4 MiB refuses only what the work
+  /// cap would, before the pairs are stored rather than after.
+  std::int64_t max_request_memory = std::int64_t{4} << 20;
   /// Most items in one POST /batch (its 422 above, before any item is computed).
   int max_batch_items = 1000;
   /// Work cap of a whole batch, in the units of max_work: the batch is refused before any
@@ -47,5 +57,10 @@ struct Limits {
   /// inside a 512 MiB pod.
   std::size_t max_batch_answer_bytes = std::size_t{8} << 20;
 };
+
+/// One request's budget: max_work work units and max_request_memory bytes.
+[[nodiscard]] constexpr core::WorkBudget request_budget(const Limits& limits) noexcept {
+  return core::WorkBudget(limits.max_work, limits.max_request_memory);
+}
 
 }  // namespace bezier::api

@@ -45,15 +45,6 @@ namespace bezier::api {
 
 namespace {
 
-/// Work units of one target (the units of Limits::max_work): isolating
-/// and bisecting the roots of a degree 2n - 1 polynomial, each piece and each bisection step
-/// O(n^2), and polishing each root; 250 (2n)^2 is an upper estimate of what random curves of
-/// degrees 3 to 20 take.
-std::int64_t work_per_target(int degree) {
-  const std::int64_t m = 2 * static_cast<std::int64_t>(degree);
-  return 250 * m * m;
-}
-
 // {"degree", "interval", "results": [{"distance", "point", "t", "target", "ties"}]}, members
 // in key order (the text a document of the answer would dump to).
 template <class P>
@@ -89,7 +80,7 @@ Reply read_and_answer(RequestReader& reader, const core::BasicCurve<P>& curve,
     targets = read_targets<P>(reader, *value, ", the curve's dimension");
   }
   if (!reader.ok()) return reader.refusal();
-  const std::int64_t work = static_cast<std::int64_t>(targets->size()) * work_per_target(curve.degree());
+  const std::int64_t work = static_cast<std::int64_t>(targets->size()) * core::nearest_work(curve.degree());
   if (work > reader.limits().max_work) {
     return problem_reply(ProblemKind::work_cap,
                          std::to_string(targets->size()) + " targets on a curve of degree " +
@@ -177,7 +168,7 @@ Reply read_path_and_answer(RequestReader& reader, const Json& request) {
   }
   if (!reader.ok()) return reader.refusal();
   std::int64_t per_target = 0;
-  for (const core::Curve& segment : p->segments) per_target += work_per_target(segment.degree());
+  for (const core::Curve& segment : p->segments) per_target += core::nearest_work(segment.degree());
   const std::int64_t work = static_cast<std::int64_t>(targets->size()) * per_target;
   if (work > reader.limits().max_work) {
     return problem_reply(ProblemKind::work_cap,

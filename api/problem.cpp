@@ -22,6 +22,8 @@ ProblemInfo info_of(ProblemKind kind) noexcept {
       return {422, "validation", "Request failed validation"};
     case ProblemKind::work_cap:
       return {422, "work-cap", "Request needs more work than the per-request cap allows"};
+    case ProblemKind::memory_cap:
+      return {422, "memory-cap", "Request needs more memory than the per-request limit allows"};
     case ProblemKind::result_overflow:
       return {422, "result-overflow", "The answer overflows the double range"};
     case ProblemKind::payload_too_large:
@@ -115,6 +117,20 @@ Reply json_reply(JsonWriter&& answer) {
                              answer.first_non_finite_pointer() + "')");
   }
   return {200, "application/json", std::move(answer).take()};
+}
+
+Reply memory_cap_reply(const std::string& pointer, std::string why) {
+  std::string detail = "'";
+  detail += excerpt(pointer, kQuotedPointerBytes);
+  detail += "': ";
+  detail += why;
+  detail +=
+      ". To finish within the limit, split the path or run the service with a larger "
+      "--max-request-memory (BEZIER_MAX_REQUEST_MEMORY)";
+  Reply reply =
+      problem_reply(ProblemKind::memory_cap, std::move(detail), {{pointer, std::move(why)}});
+  reply.limit_reached = true;
+  return reply;
 }
 
 Reply self_intersection_work_cap_reply(std::int64_t boxes, std::int64_t max_work) {

@@ -42,6 +42,7 @@ enum class ProblemKind {
   malformed_json,           ///< 400: body is not JSON, or not an object
   validation,               ///< 422: wrong types, missing fields, out of range, limits
   work_cap,                 ///< 422: the request needs more work than the cap allows
+  memory_cap,               ///< 422: the request would store more than the memory limit
   result_overflow,          ///< 422: a valid request whose answer is beyond the double range
   payload_too_large,        ///< 413
   unsupported_media_type,   ///< 415
@@ -61,6 +62,11 @@ enum class ProblemKind {
 /// The work-cap problem of a self-intersection search (/intersections with one curve,
 /// /loop-area), which counts parameter boxes.
 [[nodiscard]] Reply self_intersection_work_cap_reply(std::int64_t boxes, std::int64_t max_work);
+
+/// The memory-cap problem: the input at `pointer` (a JSON Pointer into the request) would
+/// make the kernel store more than the per-request memory limit; `why` says what. Sets
+/// limit_reached (not decided_by_work_cap).
+[[nodiscard]] Reply memory_cap_reply(const std::string& pointer, std::string why);
 
 /// 422 with every field error found in the request (limit_reached not set: a field refused
 /// by a limit is RequestReader::refusal()'s).

@@ -111,6 +111,10 @@ ParsedConfig parse_config(int argc, char** argv) {
       ->envname("BEZIER_MAX_PATH_SEGMENTS")->check(CLI::Range(1, 10000000))->capture_default_str();
   app.add_option("--max-work", config.limits.max_work, "Per-request work cap of iterative kernels (work units, about 3-6 ns each)")
       ->envname("BEZIER_MAX_WORK")->check(CLI::Range(std::int64_t{1000}, std::int64_t{1} << 40))->capture_default_str();
+  app.add_option("--max-request-memory", config.limits.max_request_memory,
+                 "Most bytes a request's kernel call may store for the segment pairs its paths meet in (422 above)")
+      ->envname("BEZIER_MAX_REQUEST_MEMORY")->check(CLI::Range(std::int64_t{1024}, std::int64_t{1} << 40))
+      ->capture_default_str();
   app.add_option("--max-batch-items", config.limits.max_batch_items, "Most items in one POST /batch (422 above)")
       ->envname("BEZIER_MAX_BATCH_ITEMS")->check(CLI::Range(1, 1000000))->capture_default_str();
   app.add_option("--max-batch-work", config.limits.max_batch_work,

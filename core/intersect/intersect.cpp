@@ -139,12 +139,21 @@ void add_certified_contacts(std::span<const HighOrderContact> certified, ParamIn
 
 }  // namespace
 
+IntersectionResult intersect(const Curve& f, const Curve& g, const IntersectOptions& options,
+                             WorkBudget& budget) {
+  return intersect_in(f, g, {0.0, 1.0}, {0.0, 1.0}, options, budget);
+}
+
 IntersectionResult intersect(const Curve& f, const Curve& g, const IntersectOptions& options) {
-  return intersect_in(f, g, {0.0, 1.0}, {0.0, 1.0}, options);
+  WorkBudget budget(options.max_work);
+  IntersectionResult result = intersect(f, g, options, budget);
+  if (budget.exhausted()) result.status = IntersectStatus::work_cap_reached;
+  return result;
 }
 
 IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_range,
-                                ParamInterval s_range, const IntersectOptions& options) {
+                                ParamInterval s_range, const IntersectOptions& options,
+                                WorkBudget& budget) {
   IntersectionResult result;
   result.stats.method = options.method;
   if (!(options.tolerance >= kMinTolerance)) {
@@ -171,11 +180,10 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   }
   // What comes before the search (the collinear case, the overlaps) is bounded by the
   // degrees: charged at once, and not started when the budget does not cover it.
-  result.stats.work = overlap_search_cost(wf.degree, wg.degree);
-  if (result.stats.work > options.max_work) {
-    result.status = IntersectStatus::work_cap_reached;
-    return result;
-  }
+  const std::int64_t spent_before = budget.spent();
+  const bool covered = budget.spend(overlap_search_cost(wf.degree, wg.degree));
+  result.stats.work = budget.spent() - spent_before;
+  if (!covered) return result;
   // Two curves on one line: a one-dimensional problem.
   if (!wf.is_point && !wg.is_point) {
     if (const auto line = collinear_intersections(wf, wg, exact_end_roots(f, g, {}))) {
@@ -233,34 +241,25 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
   }
   HighOrderContactFinder high_order(f, g, wf, wg);
   if (!wf.is_point && !wg.is_point) in.contacts = &high_order;
-  in.max_work = options.max_work - result.stats.work;
-  SearchOutput found = search(in);
+  SearchOutput found = search(in, budget);
   add_certified_contacts(high_order.contacts(), t_range, s_range, exact, found.candidates);
-  found.stats.work += result.stats.work;
   result.stats = found.stats;
-  if (found.capped) result.status = IntersectStatus::work_cap_reached;
 
   const KindTolerances kind_tol;
-  const MergedContacts merged =
-      merge_candidates(found.candidates, exact, in.width, options.max_work - result.stats.work);
-  result.stats.work += merged.work;
-  if (merged.capped) result.status = IntersectStatus::work_cap_reached;
+  const MergedContacts merged = merge_candidates(found.candidates, exact, in.width, budget);
   const std::vector<Contact>& contacts = merged.contacts;
   const PairScales scales = contacts.empty() ? PairScales{frame} : pair_scales(wf, wg, frame);
   result.intersections.reserve(contacts.size());
   for (Contact c : contacts) {
     // A refinement starts only when the budget covers its most iterations.
-    if (max_contact_cost(wf.degree, wg.degree) > options.max_work - result.stats.work) {
-      result.status = IntersectStatus::work_cap_reached;
-      break;
-    }
+    if (!budget.reserve(max_contact_cost(wf.degree, wg.degree))) break;
     if (in.t_free) c.t = {0.0, 1.0};
     if (in.s_free) c.s = {0.0, 1.0};
     const Refinement r = refine_contact(wf, wg, c, in.t_free, in.s_free, kind_tol.tangent_sine);
     result.stats.newton_iterations += r.iterations;
     // The point and the kind (two evaluations with tangents) cost less than one of the
     // iterations' charges, which every contact but an exact root's takes.
-    result.stats.work += r.iterations * newton_cost(wf.degree, wg.degree);
+    budget.charge(r.iterations * newton_cost(wf.degree, wg.degree));
     Intersection x =
         r.f_at_t && r.g_at_s
             ? make_intersection(*r.f_at_t, *r.g_at_s, scales, r.t, r.s, c.t, c.s)
@@ -271,6 +270,7 @@ IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_
     x.resolved = c.resolved && c.t.width() < options.tolerance && c.s.width() < options.tolerance;
     result.intersections.push_back(x);
   }
+  result.stats.work = budget.spent() - spent_before;
   sort_result(result);
   return result;
 }

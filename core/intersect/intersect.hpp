@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/base/curve.hpp"
+#include "core/base/work_budget.hpp"
 #include "core/intersect/options.hpp"
 #include "core/intersect/result.hpp"
 
@@ -14,9 +15,10 @@ namespace bezier::core {
 /// `resolved`), with a best estimate (t, s) refined to full double precision, the point and
 /// the kind; every overlap (coincident pieces) as an interval pair instead of points.
 /// Intersections are sorted by t then s, overlaps by t. A tangency or any other contact is
-/// reported once. Status work_cap_reached when options.max_work work units were not enough
-/// (the lists then hold what was found), tolerance_too_small when options.tolerance is
-/// below kMinTolerance (nothing is computed).
+/// reported once. Every phase charges `budget` (work_cost.hpp); when it runs out
+/// (budget.exhausted()) the lists hold what was found, maybe not all. stats.work is what
+/// the call charged. Status tolerance_too_small when options.tolerance is below
+/// kMinTolerance (nothing is computed).
 ///
 /// Method (options.method; see search.hpp): hybrid clipping with fat lines and fat curves
 /// of degree options.fat_curve_degree (default), Bézier clipping (Sederberg & Nishita 1990)
@@ -40,6 +42,11 @@ namespace bezier::core {
 ///     the derivatives there (kind.hpp).
 /// Precondition: finite coordinates (api/ validates them).
 [[nodiscard]] IntersectionResult intersect(const Curve& f, const Curve& g,
+                                           const IntersectOptions& options, WorkBudget& budget);
+
+/// The same with a budget of options.max_work units of its own, its running out reported
+/// as status work_cap_reached.
+[[nodiscard]] IntersectionResult intersect(const Curve& f, const Curve& g,
                                            const IntersectOptions& options = {});
 
 /// The same, restricted to t in t_range and s in s_range (closed sub-intervals of [0, 1];
@@ -48,6 +55,6 @@ namespace bezier::core {
 /// from the diagonal t = s). Overlaps are still reported whole.
 [[nodiscard]] IntersectionResult intersect_in(const Curve& f, const Curve& g, ParamInterval t_range,
                                               ParamInterval s_range,
-                                              const IntersectOptions& options = {});
+                                              const IntersectOptions& options, WorkBudget& budget);
 
 }  // namespace bezier::core

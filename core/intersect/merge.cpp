@@ -52,7 +52,7 @@ ClosedBox grown(const Contact& c) noexcept {
 /// until nothing changes, as joined contacts grow. Each round is one box_components over
 /// the unresolved contacts (O(u log u)), charged before it runs; the contacts joined keep
 /// the place of the first of them.
-void merge_unresolved(MergedContacts& merged, std::int64_t budget) {
+void merge_unresolved(MergedContacts& merged, WorkBudget& budget) {
   std::vector<Contact>& contacts = merged.contacts;
   for (;;) {
     std::vector<std::size_t> unresolved;
@@ -61,11 +61,8 @@ void merge_unresolved(MergedContacts& merged, std::int64_t budget) {
     }
     if (unresolved.size() < 2) return;
     const std::int64_t cost = merge_cost(static_cast<std::int64_t>(unresolved.size()));
-    if (cost > budget - merged.work) {
-      merged.capped = true;
-      return;
-    }
-    merged.work += cost;
+    if (!budget.reserve(cost)) return;
+    budget.charge(cost);
     std::vector<ClosedBox> boxes;
     boxes.reserve(unresolved.size());
     for (const std::size_t i : unresolved) boxes.push_back(grown(contacts[i]));
@@ -111,16 +108,13 @@ bool each_its_own_contact(std::span<const SearchCandidate> candidates, double ga
 
 MergedContacts merge_candidates(std::span<const SearchCandidate> candidates,
                                 std::span<const ExactRoot> exact_roots, double gap,
-                                std::int64_t budget) {
+                                WorkBudget& budget) {
   MergedContacts merged;
   if (candidates.empty() && exact_roots.empty()) return merged;
   const std::int64_t cost =
       merge_cost(static_cast<std::int64_t>(candidates.size() + exact_roots.size()));
-  if (cost > budget) {
-    merged.capped = true;
-    return merged;
-  }
-  merged.work = cost;
+  if (!budget.reserve(cost)) return merged;
+  budget.charge(cost);
   std::vector<Contact>& contacts = merged.contacts;
   // The common cases, without the sweep's bookkeeping.
   if (exact_roots.empty() && each_its_own_contact(candidates, gap)) {

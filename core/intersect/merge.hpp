@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "core/base/work_budget.hpp"
 #include "core/intersect/result.hpp"
 #include "core/intersect/search.hpp"
 
@@ -25,13 +26,9 @@ struct Contact {
   ExactRoot exact_root;
 };
 
-/// The contacts, sorted by t.lo, and what grouping them cost.
+/// The contacts, sorted by t.lo.
 struct MergedContacts {
   std::vector<Contact> contacts;
-  std::int64_t work = 0;  ///< work units charged (merge_cost, work_cost.hpp)
-  /// The budget ran out: `contacts` is empty when it did not cover the first grouping, and
-  /// otherwise not every unresolved contact that should be one has been joined.
-  bool capped = false;
 };
 
 /// Groups candidate boxes into contacts, so that a root found from several boxes (a root
@@ -40,10 +37,12 @@ struct MergedContacts {
 /// when their t intervals and their s intervals both overlap or lie within `gap` of each
 /// other; the relation is closed transitively (box_components.hpp: O(k log k) whatever the
 /// number of touching pairs). Unresolved contacts are then joined as merge.cpp describes.
-/// Each grouping is charged before it runs, and none runs that `budget` (work units)
-/// does not cover.
+/// Each grouping (merge_cost, work_cost.hpp) is reserved from `budget` before it runs, and
+/// none runs that the budget does not cover: when it runs out, `contacts` is empty if it
+/// did not cover the first grouping, and otherwise not every unresolved contact that
+/// should be one has been joined.
 [[nodiscard]] MergedContacts merge_candidates(std::span<const SearchCandidate> candidates,
                                               std::span<const ExactRoot> exact_roots, double gap,
-                                              std::int64_t budget);
+                                              WorkBudget& budget);
 
 }  // namespace bezier::core

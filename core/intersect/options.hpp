@@ -19,9 +19,9 @@ struct IntersectOptions {
   /// the shared benchmark (tests/bench/intersect_bench.cpp) it needs fewer steps than 2
   /// for cubics and is no slower for higher degrees.
   int fat_curve_degree = 3;
-  /// Most work units (work_cost.hpp: each box step and Newton iteration charged by its
-  /// degrees and arithmetic, so that units are proportional to time) before giving up with
-  /// IntersectStatus::work_cap_reached. Transversal cubic pairs need a few thousand.
+  /// The budget (work units, work_cost.hpp) of intersect() without a WorkBudget: its own,
+  /// its running out reported as IntersectStatus::work_cap_reached. A caller with a budget
+  /// passes it instead. Transversal cubic pairs need a few thousand.
   std::int64_t max_work = 100000000;
 };
 

@@ -100,8 +100,9 @@ class BoxStack {
 /// outlives the call.
 class Searcher {
  public:
-  explicit Searcher(const SearchInput& input)
+  Searcher(const SearchInput& input, WorkBudget& budget)
       : in_(input),
+        budget_(budget),
         krawczyk_radius_(power_of_two_at_most(input.width / 2)),
         use_krawczyk_(input.method == IntersectMethod::hybrid && !input.t_free && !input.s_free &&
                       krawczyk_radius_ >= 0x1p-52 && krawczyk_radius_ <= 0x1p-2) {
@@ -113,7 +114,7 @@ class Searcher {
     first.t = in_.t_range;
     first.s = in_.s_range;
     stack_.push(first);
-    while (!stack_.empty() && !out_.capped) {
+    while (!stack_.empty() && !stopped_) {
       const Box box = stack_.pop();
       process(box);
     }
@@ -129,7 +130,7 @@ class Searcher {
   }
 
   void emit(const Box& b, bool resolved) {
-    out_.stats.work += kCandidateCost;
+    budget_.charge(kCandidateCost);
     out_.candidates.push_back({b.t, b.s, resolved && t_done(b) && s_done(b)});
     ++out_.stats.candidate_boxes;
   }
@@ -199,7 +200,7 @@ class Searcher {
 
   /// try_box on the contact finder, charged; a certified contact starts the exclusions.
   void propose_contact(const Box& b) {
-    out_.stats.work += in_.contacts->try_box(b.t, b.s, in_.max_work - out_.stats.work);
+    budget_.charge(in_.contacts->try_box(b.t, b.s, budget_.remaining()));
     if (!in_.contacts->contacts().empty()) excluding_ = true;
   }
 
@@ -207,7 +208,7 @@ class Searcher {
   bool coincides(const Box& b) {
     const CoincidenceTest test = coincide_at_precision(
         *in_.f, *in_.g, b.t, b.s, evaluate_with_tangent(*in_.f, b.t.lo).point);
-    out_.stats.work += coincidence_test_cost(in_.f->degree, in_.g->degree, test.evaluations);
+    budget_.charge(coincidence_test_cost(in_.f->degree, in_.g->degree, test.evaluations));
     return test.coincide;
   }
 
@@ -229,16 +230,16 @@ class Searcher {
     }
   }
 
-  /// Charges one step on the box to the budget; false (and the search capped) when it would
-  /// exceed it.
+  /// Charges one step on the box to the budget; false (and the search stopped, the budget
+  /// exhausted) when what is left does not cover it.
   bool charge_step(const Box& box) {
     const std::int64_t cost = step_cost(in_.f->degree, in_.g->degree, box.compensated);
-    if (out_.stats.work + cost > in_.max_work) {
-      out_.capped = true;
+    if (!budget_.reserve(cost)) {
+      stopped_ = true;
       return false;
     }
     ++out_.stats.iterations;
-    out_.stats.work += cost;
+    budget_.charge(cost);
     out_.stats.max_depth = std::max(out_.stats.max_depth, box.depth);
     return true;
   }
@@ -324,11 +325,11 @@ class Searcher {
   /// The subdivision method's step: drop the box when its pieces are separated (bounding
   /// boxes, fat lines, and the implicit clip when they run nearly parallel), else halve it.
   Next separate_or_subdivide(Box& box, bool td, bool sd) {
-    out_.stats.work += subdivision_test_cost(in_.f->degree, in_.g->degree);
+    budget_.charge(subdivision_test_cost(in_.f->degree, in_.g->degree));
     const Separation sep = separation(f_piece_, g_piece_);
     if (sep.separated) return Next::finished;
     if (nearly_parallel(f_piece_, g_piece_)) {
-      out_.stats.work += implicit_clip_cost(in_.f->degree) + implicit_clip_cost(in_.g->degree);
+      budget_.charge(implicit_clip_cost(in_.f->degree) + implicit_clip_cost(in_.g->degree));
       if (!implicit_clip(f_piece_, g_piece_, fit2(false)).kept ||
           !implicit_clip(g_piece_, f_piece_, fit2(true)).kept)
         return Next::finished;
@@ -375,7 +376,7 @@ class Searcher {
         nearly_parallel(x, other)) {
       const Clip fine = implicit_clip(x, other, fit2(clip_s));
       ++out_.stats.clipping_steps;
-      out_.stats.work += implicit_clip_cost(x.degree());
+      budget_.charge(implicit_clip_cost(x.degree()));
       clip.kept = intersect_kept(clip.kept, fine.kept);
       if (!clip.kept) return Next::finished;
       // The finer test decides whether rounding is what keeps the pieces together.
@@ -455,6 +456,8 @@ class Searcher {
   }
 
   const SearchInput& in_;
+  WorkBudget& budget_;
+  bool stopped_ = false;  ///< a step was not covered by the budget
   /// Half-width of the boxes the Krawczyk test reports: a power of two, so that they are
   /// exact around a parameter on the 2^-52 grid, and at most half the search width.
   double krawczyk_radius_;
@@ -470,11 +473,11 @@ class Searcher {
 
 }  // namespace
 
-SearchOutput search(const SearchInput& input) {
+SearchOutput search(const SearchInput& input, WorkBudget& budget) {
   assert(input.f != nullptr && input.g != nullptr);
   assert(input.method == IntersectMethod::subdivision ||
          (input.op_f != nullptr && input.op_g != nullptr));
-  return Searcher(input).run();
+  return Searcher(input, budget).run();
 }
 
 }  // namespace bezier::core

@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "core/base/work_budget.hpp"
 #include "core/intersect/clip/fat_curve.hpp"
 #include "core/intersect/overlap.hpp"
 #include "core/intersect/result.hpp"
@@ -30,7 +31,6 @@ struct SearchInput {
   const WorkingCurve* g = nullptr;
   IntersectMethod method = IntersectMethod::hybrid;
   double width = 0x1p-42;  ///< boxes narrower than this in t and s are done (search_width)
-  std::int64_t max_work = 1000000;
   const FatCurveOperator* op_f = nullptr;  ///< fat curves of f's pieces (hybrid)
   const FatCurveOperator* op_g = nullptr;  ///< fat curves of g's pieces (hybrid)
   std::span<const OverlapFinding> overlaps;
@@ -46,13 +46,14 @@ struct SearchInput {
 
 struct SearchOutput {
   std::vector<SearchCandidate> candidates;
+  /// The search's counts (its work is in the budget it charged, not in stats.work).
   IntersectStats stats;
-  bool capped = false;  ///< the work budget ran out
 };
 
 /// Every box of [0,1]^2 that may hold an intersection, narrowed to the search width, by
-/// the chosen method. Boxes are kept on an explicit stack; each step is charged against
-/// max_work by its cost (work_cost.hpp).
+/// the chosen method. Boxes are kept on an explicit stack; each step reserves its cost
+/// (work_cost.hpp) from `budget` and the search stops at the first step it does not cover
+/// (the budget is then exhausted; the candidates found so far are returned).
 ///
 ///  - hybrid: clip the pieces in turn against each other's fat line with fat curves;
 ///    when a clip keeps more than half of its interval, halve both intervals (after Lou & Liu 2012).
@@ -78,6 +79,6 @@ struct SearchOutput {
 /// is returned unresolved. Boxes covered by an overlap are dropped (covered_by_overlap,
 /// covered_by_arc), and so are boxes inside a certified high-order contact's isolating box
 /// (input.contacts, which each box about to go to double-double pieces may first propose).
-[[nodiscard]] SearchOutput search(const SearchInput& input);
+[[nodiscard]] SearchOutput search(const SearchInput& input, WorkBudget& budget);
 
 }  // namespace bezier::core

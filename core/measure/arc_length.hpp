@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -44,6 +45,17 @@ struct ArcLength {
   /// parameter_at_length inverts.
   std::vector<LengthPiece> pieces;
 };
+
+/// The work units (core/intersect/work_cost.hpp's unit) a measured arc length is charged,
+/// estimated from its partition: each final piece's 15-point rule, each point an
+/// evaluation of |B'|^2, a polynomial of degree d = 2n - 2, by de Casteljau's triangle
+/// (d (d + 1) / 2 updates); at least one piece and one update.
+[[nodiscard]] inline std::int64_t arc_length_work(int degree, const ArcLength& measured) noexcept {
+  const std::int64_t d = 2 * static_cast<std::int64_t>(degree) - 2;
+  const auto pieces = static_cast<std::int64_t>(measured.pieces.size() > 1 ? measured.pieces.size() : 1);
+  const std::int64_t updates = d * (d + 1) / 2;
+  return pieces * 15 * (updates > 1 ? updates : 1);
+}
 
 /// The arc length of B on [a, b], ∫_a^b |B'(t)| dt, for any degree, 2-D or 3-D, to the
 /// relative tolerance asked for (the API asks 1e-12; looser tolerances cost less).

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "core/base/curve.hpp"
@@ -64,5 +65,16 @@ struct NearestPoint {
 /// minimum of multiplicity m. Precondition: 0 <= a <= b <= 1, finite coordinates.
 [[nodiscard]] NearestPoint<Point2> nearest(const Curve& curve, Point2 target, double a, double b);
 [[nodiscard]] NearestPoint<Point3> nearest(const Curve3& curve, Point3 target, double a, double b);
+
+/// The work units (core/intersect/work_cost.hpp's unit, about one coordinate update of de
+/// Casteljau's algorithm) nearest() is charged for one target on a curve of degree n:
+/// isolating and bisecting the roots of a degree 2n - 1 polynomial, each piece and each
+/// bisection step O(n^2), and polishing each root; 250 (2n)^2 is an upper estimate of what
+/// random curves of degrees 3 to 20 take. A caller checks targets x this against its
+/// budget before it starts (nearest() itself is bounded by the degree).
+[[nodiscard]] constexpr std::int64_t nearest_work(int degree) noexcept {
+  const std::int64_t m = 2 * static_cast<std::int64_t>(degree);
+  return 250 * m * m;
+}
 
 }  // namespace bezier::core

@@ -6,6 +6,7 @@
 
 #include "core/intersect/intersect.hpp"
 #include "core/intersect/work_cost.hpp"
+#include "core/self_intersect/certify.hpp"
 #include "core/path/joint_copies.hpp"
 #include "core/path/segment_boxes.hpp"
 #include "core/self_intersect/work_cost.hpp"
@@ -48,119 +49,155 @@ void sort_results(std::vector<PathContact>& contacts, std::vector<PathOverlap>& 
   });
 }
 
-/// The start of both searches: the segment pairs whose control boxes meet (found by
-/// `sweep`), the stats with the method asked and the sweep's work, and the status that ends
-/// the search before any pair when not ok: tolerance_too_small (checked first, nothing is
-/// swept) or work_cap_reached (the sweep stopped at its limit).
-struct SweptPairs {
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  PathSearchStats stats;
-  core::IntersectStatus status = core::IntersectStatus::ok;
-
-  /// A result (PathIntersectionResult, PathSelfIntersectionResult) that starts from these
-  /// stats and status.
-  template <class Result>
-  [[nodiscard]] Result start() const {
-    Result out;
-    out.stats = stats;
-    out.status = status;
-    return out;
-  }
-};
-
+/// The segment pairs whose control boxes meet, found by `sweep` (empty when the budget ran
+/// out during the sweep).
 template <class Sweep>
-SweptPairs swept_pairs(const core::IntersectOptions& options, Sweep&& sweep) {
-  SweptPairs out;
-  out.stats.pairs.method = options.method;
-  if (!(options.tolerance >= core::kMinTolerance)) {
-    out.status = core::IntersectStatus::tolerance_too_small;
-    return out;
-  }
+std::vector<std::pair<std::size_t, std::size_t>> swept_pairs(core::WorkBudget& budget,
+                                                             Sweep&& sweep) {
   MeetingBoxes meeting = sweep();
-  out.stats.work = meeting.work;
-  if (!meeting.complete) {
-    out.status = core::IntersectStatus::work_cap_reached;
-    return out;
-  }
-  out.pairs = std::move(meeting.pairs);
-  return out;
+  if (budget.exhausted()) return {};
+  return std::move(meeting.pairs);
 }
 
 /// The two-curve searches of the pairs (first segment of path_t, second of path_s) that
-/// shares one budget, adding what they find and cost to the lists and stats.
-core::IntersectStatus search_pairs(const Path& path_t, const Path& path_s,
-                                   const std::vector<std::pair<std::size_t, std::size_t>>& pairs,
-                                   const core::IntersectOptions& options,
-                                   std::vector<PathContact>& contacts,
-                                   std::vector<PathOverlap>& overlaps, PathSearchStats& stats) {
+/// share `budget`, adding what they find and cost to the lists and stats; stops when the
+/// budget runs out.
+void search_pairs(const Path& path_t, const Path& path_s,
+                  const std::vector<std::pair<std::size_t, std::size_t>>& pairs,
+                  const core::IntersectOptions& options, core::WorkBudget& budget,
+                  std::vector<PathContact>& contacts, std::vector<PathOverlap>& overlaps,
+                  PathSearchStats& stats) {
   for (const auto& [i, j] : pairs) {
     const core::Curve& f = path_t.segments[i];
     const core::Curve& g = path_s.segments[j];
     // Each search sets up its working frame and pieces before its first step: charged as
     // one plain step of the two degrees.
-    stats.work += core::step_cost(f.degree(), g.degree(), false);
-    if (stats.work > options.max_work) return core::IntersectStatus::work_cap_reached;
-    core::IntersectOptions local = options;
-    local.max_work = options.max_work - stats.work;
-    const core::IntersectionResult r = core::intersect(f, g, local);
+    if (!budget.spend(core::step_cost(f.degree(), g.degree(), false))) return;
+    const core::IntersectionResult r = core::intersect(f, g, options, budget);
     ++stats.candidate_pairs;
-    stats.work += r.stats.work;
     add_stats(stats.pairs, r.stats);
     for (const core::Intersection& x : r.intersections) contacts.push_back({i, j, x});
     for (const core::Overlap& o : r.overlaps) overlaps.push_back({i, j, o});
-    if (r.status != core::IntersectStatus::ok) return r.status;
+    if (budget.exhausted()) return;
   }
-  return core::IntersectStatus::ok;
+}
+
+/// A result (PathIntersectionResult, PathSelfIntersectionResult) with the method asked and,
+/// when the tolerance is too small, that status.
+template <class Result>
+Result started(const core::IntersectOptions& options) {
+  Result out;
+  out.stats.pairs.method = options.method;
+  if (!(options.tolerance >= core::kMinTolerance)) {
+    out.status = core::IntersectStatus::tolerance_too_small;
+  }
+  return out;
 }
 
 }  // namespace
 
 PathIntersectionResult intersect(const Path& a, const Path& b,
-                                 const core::IntersectOptions& options) {
-  const SweptPairs swept = swept_pairs(
-      options, [&] { return meeting_boxes(boxes_of(a), boxes_of(b), options.max_work); });
-  auto out = swept.start<PathIntersectionResult>();
+                                 const core::IntersectOptions& options, core::WorkBudget& budget) {
+  auto out = started<PathIntersectionResult>(options);
   if (out.status != core::IntersectStatus::ok) return out;
-  out.status = search_pairs(a, b, swept.pairs, options, out.intersections, out.overlaps,
-                            out.stats);
+  const std::int64_t spent_before = budget.spent();
+  const auto pairs =
+      swept_pairs(budget, [&] { return meeting_boxes(boxes_of(a), boxes_of(b), budget); });
+  search_pairs(a, b, pairs, options, budget, out.intersections, out.overlaps, out.stats);
+  out.stats.work = budget.spent() - spent_before;
+  if (budget.exhausted()) return out;
   out.intersections = without_joint_copies(std::move(out.intersections), a, b, false);
+  sort_results(out.intersections, out.overlaps);
+  return out;
+}
+
+PathIntersectionResult intersect(const Path& a, const Path& b,
+                                 const core::IntersectOptions& options) {
+  core::WorkBudget budget(options.max_work);
+  PathIntersectionResult out = intersect(a, b, options, budget);
+  if (budget.exhausted()) out.status = core::IntersectStatus::work_cap_reached;
+  return out;
+}
+
+namespace {
+
+/// self_intersections() before its contacts are sorted.
+PathSelfIntersectionResult unsorted_self_intersections(const Path& path,
+                                                       const core::IntersectOptions& options,
+                                                       core::WorkBudget& budget) {
+  auto out = started<PathSelfIntersectionResult>(options);
+  if (out.status != core::IntersectStatus::ok) return out;
+  const std::int64_t spent_before = budget.spent();
+  const auto swept = swept_pairs(budget, [&] { return meeting_boxes(boxes_of(path), budget); });
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (const auto& [i, j] : swept) {
+    if (is_point(path.segments[i]) || is_point(path.segments[j])) continue;
+    // The copy is charged as the sweep's pairs are.
+    if (!budget.charge_memory(kStoredPairBytes)) break;
+    pairs.emplace_back(i, j);
+  }
+  search_pairs(path, path, pairs, options, budget, out.intersections, out.overlaps, out.stats);
+  // A segment against itself: a line (or a point) has no self-intersection.
+  for (std::size_t k = 0; k < path.segments.size() && !budget.exhausted(); ++k) {
+    const core::Curve& segment = path.segments[k];
+    if (segment.degree() < 2 || is_point(segment)) continue;
+    // The search counts parameter boxes: as many as what is left buys, and not started
+    // when that is not one.
+    const std::int64_t box_cost = core::self_intersection_box_cost(segment.degree());
+    if (!budget.reserve(box_cost)) break;
+    core::SelfIntersectionOptions self_options;
+    self_options.max_work = core::self_intersection_box_budget(budget.remaining(), segment.degree());
+    core::SelfIntersectionResult r = core::self_intersections(segment, self_options);
+    budget.charge(r.stats.work * box_cost);
+    if (r.status == core::IntersectStatus::work_cap_reached) budget.exhaust();
+    if (!r.pairs.empty() || !r.overlaps.empty()) out.within_segments.push_back({k, std::move(r)});
+  }
+  out.stats.work = budget.spent() - spent_before;
+  if (budget.exhausted()) return out;
+  out.intersections = without_joint_copies(std::move(out.intersections), path, path, true);
+  return out;
+}
+
+}  // namespace
+
+PathSelfIntersectionResult self_intersections(const Path& path,
+                                              const core::IntersectOptions& options,
+                                              core::WorkBudget& budget) {
+  PathSelfIntersectionResult out = unsorted_self_intersections(path, options, budget);
+  if (out.status == core::IntersectStatus::ok && !budget.exhausted()) {
+    sort_results(out.intersections, out.overlaps);
+  }
+  return out;
+}
+
+PathSelfIntersectionResult certified_self_intersections(const Path& path,
+                                                        const core::IntersectOptions& options,
+                                                        core::WorkBudget& budget) {
+  PathSelfIntersectionResult out = unsorted_self_intersections(path, options, budget);
+  if (out.status != core::IntersectStatus::ok || budget.exhausted()) return out;
+  // The certification spends what the search left, as a part of its own: falling short
+  // leaves pairs as found (uncertified_pairs), not the answer incomplete.
+  core::WorkBudget part = budget.share();
+  for (const SegmentSelfIntersections& within : out.within_segments) {
+    const core::CertifiedSelfIntersections c = core::certify_self_intersections(
+        path.segments[within.segment], within.result.pairs, options, part);
+    out.stats.certification_steps += c.steps;
+    out.uncertified_pairs += c.uncertified;
+    for (const core::Intersection& x : c.intersections) {
+      out.intersections.push_back({within.segment, within.segment, x});
+    }
+  }
+  budget.charge(part.spent());
+  out.stats.work += part.spent();
   sort_results(out.intersections, out.overlaps);
   return out;
 }
 
 PathSelfIntersectionResult self_intersections(const Path& path,
                                               const core::IntersectOptions& options) {
-  const SweptPairs swept =
-      swept_pairs(options, [&] { return meeting_boxes(boxes_of(path), options.max_work); });
-  auto out = swept.start<PathSelfIntersectionResult>();
-  if (out.status != core::IntersectStatus::ok) return out;
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  for (const auto& [i, j] : swept.pairs) {
-    if (!is_point(path.segments[i]) && !is_point(path.segments[j])) pairs.emplace_back(i, j);
-  }
-  out.status = search_pairs(path, path, pairs, options, out.intersections, out.overlaps,
-                            out.stats);
-  // A segment against itself: a line (or a point) has no self-intersection.
-  for (std::size_t k = 0; k < path.segments.size() && out.status == core::IntersectStatus::ok;
-       ++k) {
-    const core::Curve& segment = path.segments[k];
-    if (segment.degree() < 2 || is_point(segment)) continue;
-    core::SelfIntersectionOptions self_options;
-    self_options.max_work =
-        core::self_intersection_box_budget(options.max_work - out.stats.work, segment.degree());
-    if (self_options.max_work <= 0) {
-      out.status = core::IntersectStatus::work_cap_reached;
-      break;
-    }
-    core::SelfIntersectionResult r = core::self_intersections(segment, self_options);
-    out.stats.work += r.stats.work * core::self_intersection_box_cost(segment.degree());
-    if (r.status == core::IntersectStatus::work_cap_reached) {
-      out.status = core::IntersectStatus::work_cap_reached;
-    }
-    if (!r.pairs.empty() || !r.overlaps.empty()) out.within_segments.push_back({k, std::move(r)});
-  }
-  out.intersections = without_joint_copies(std::move(out.intersections), path, path, true);
-  sort_results(out.intersections, out.overlaps);
+  core::WorkBudget budget(options.max_work);
+  PathSelfIntersectionResult out = self_intersections(path, options, budget);
+  if (budget.exhausted()) out.status = core::IntersectStatus::work_cap_reached;
   return out;
 }
 

@@ -134,12 +134,16 @@ struct Entry {
   int set;
 };
 
-void report_pair(MeetingBoxes& out, int sets, const Entry& e, const Entry& o) {
+/// Stores the pair when the memory budget covers it; false (nothing stored) when not.
+bool report_pair(MeetingBoxes& out, int sets, const Entry& e, const Entry& o,
+                 core::WorkBudget& budget) {
+  if (!budget.charge_memory(kStoredPairBytes)) return false;
   if (sets == 1) {
     out.pairs.emplace_back(std::min(e.index, o.index), std::max(e.index, o.index));
   } else {
     out.pairs.emplace_back(e.set == 0 ? e.index : o.index, e.set == 0 ? o.index : e.index);
   }
+  return true;
 }
 
 /// Which set's open boxes a box of `set` is compared with.
@@ -165,7 +169,7 @@ std::int64_t x_overlapping_pairs(const std::vector<Entry>& entries, int sets) {
 
 /// Sort and sweep: each box compared with every open box of the other set, O(P) for the P
 /// pairs whose x ranges overlap.
-void plain_sweep(const std::vector<Entry>& entries, int sets, std::int64_t max_work,
+void plain_sweep(const std::vector<Entry>& entries, int sets, core::WorkBudget& budget,
                  MeetingBoxes& out) {
   const std::int64_t log_n = std::bit_width(entries.size());
   std::vector<Entry> open[2];
@@ -173,16 +177,12 @@ void plain_sweep(const std::vector<Entry>& entries, int sets, std::int64_t max_w
     std::vector<Entry>& other = open[other_set(sets, e.set)];
     // Boxes that end before this one starts never meet it nor any later one.
     std::erase_if(other, [&](const Entry& o) { return o.box.x_hi < e.box.x_lo; });
-    out.work += static_cast<std::int64_t>(other.size()) + 1;
-    if (out.work > max_work) {
-      out.complete = false;
-      return;
-    }
+    if (!budget.spend(static_cast<std::int64_t>(other.size()) + 1)) return;
     for (const Entry& o : other) {
       if (e.box.y_lo <= o.box.y_hi && o.box.y_lo <= e.box.y_hi) {
         // Each pair pays its share of the final sort: log2 of at most N^2 pairs.
-        out.work += 2 * log_n;
-        report_pair(out, sets, e, o);
+        budget.charge(2 * log_n);
+        if (!report_pair(out, sets, e, o, budget)) return;
       }
     }
     open[sets == 1 ? 0 : e.set].push_back(e);
@@ -191,7 +191,7 @@ void plain_sweep(const std::vector<Entry>& entries, int sets, std::int64_t max_w
 
 /// Bentley-Wood: the open boxes in OpenBoxes, each box's query reporting only the boxes it
 /// meets. O(N log N + K) for the K pairs that meet.
-void tree_sweep(const std::vector<Entry>& entries, int sets, std::int64_t max_work,
+void tree_sweep(const std::vector<Entry>& entries, int sets, core::WorkBudget& budget,
                 MeetingBoxes& out) {
   const std::size_t n = entries.size();
   std::vector<double> ys;
@@ -220,19 +220,18 @@ void tree_sweep(const std::vector<Entry>& entries, int sets, std::int64_t max_wo
       const std::size_t id = closing.top().second;
       closing.pop();
       open[static_cast<std::size_t>(sets == 1 ? 0 : entries[id].set)].remove(id);
-      out.work += log_n;
+      budget.charge(log_n);
     }
-    out.work += open[other_set(sets, e.set)].query(e.box.y_lo, e.box.y_hi, [&](std::size_t id) {
+    bool stored = true;
+    budget.charge(open[other_set(sets, e.set)].query(e.box.y_lo, e.box.y_hi, [&](std::size_t id) {
       // Each pair pays its share of the final sort: log2 of at most N^2 pairs.
-      out.work += 2 * log_n;
-      report_pair(out, sets, e, entries[id]);
-    });
-    out.work += open[static_cast<std::size_t>(sets == 1 ? 0 : e.set)].insert(k, e.box) + log_n;
+      budget.charge(2 * log_n);
+      stored = stored && report_pair(out, sets, e, entries[id], budget);
+    }));
+    if (!stored) return;
+    budget.charge(open[static_cast<std::size_t>(sets == 1 ? 0 : e.set)].insert(k, e.box) + log_n);
     closing.emplace(e.box.x_hi, k);
-    if (out.work > max_work) {
-      out.complete = false;
-      return;
-    }
+    if (!budget.spend(0)) return;
   }
 }
 
@@ -245,26 +244,23 @@ constexpr std::int64_t kPlainSweepPairsPerBoxAndLog = 8;
 /// All pairs of boxes that meet, over one or two sets: the boxes sorted by x_lo, then
 /// whichever sweep costs less, the plain one when the x-overlapping pairs are at most
 /// kPlainSweepPairsPerBoxAndLog N log2 N (so O(N log N) in all), else the tree's.
-MeetingBoxes sweep(std::vector<Entry> entries, int sets, std::int64_t max_work) {
+MeetingBoxes sweep(std::vector<Entry> entries, int sets, core::WorkBudget& budget) {
   MeetingBoxes out;
   const std::size_t n = entries.size();
   if (n == 0) return out;
-  out.work = 3 * sort_work(n);
-  if (out.work > max_work) {
-    out.complete = false;
-    return out;
-  }
+  if (!budget.spend(3 * sort_work(n))) return out;
   std::sort(entries.begin(), entries.end(), [](const Entry& p, const Entry& q) {
     return std::tie(p.box.x_lo, p.set, p.index) < std::tie(q.box.x_lo, q.set, q.index);
   });
   const std::int64_t log_n = std::bit_width(n);
   if (x_overlapping_pairs(entries, sets) <=
       kPlainSweepPairsPerBoxAndLog * static_cast<std::int64_t>(n) * log_n) {
-    plain_sweep(entries, sets, max_work, out);
+    plain_sweep(entries, sets, budget, out);
   } else {
-    out.work += sort_work(2 * n);
-    tree_sweep(entries, sets, max_work, out);
+    budget.charge(sort_work(2 * n));
+    tree_sweep(entries, sets, budget, out);
   }
+  if (budget.exhausted()) return out;
   std::sort(out.pairs.begin(), out.pairs.end());
   return out;
 }
@@ -283,19 +279,19 @@ Box control_box(const core::Curve& segment) noexcept {
 }
 
 MeetingBoxes meeting_boxes(std::span<const Box> a, std::span<const Box> b,
-                           std::int64_t max_work) {
+                           core::WorkBudget& budget) {
   std::vector<Entry> entries;
   entries.reserve(a.size() + b.size());
   for (std::size_t i = 0; i < a.size(); ++i) entries.push_back({a[i], i, 0});
   for (std::size_t j = 0; j < b.size(); ++j) entries.push_back({b[j], j, 1});
-  return sweep(std::move(entries), 2, max_work);
+  return sweep(std::move(entries), 2, budget);
 }
 
-MeetingBoxes meeting_boxes(std::span<const Box> boxes, std::int64_t max_work) {
+MeetingBoxes meeting_boxes(std::span<const Box> boxes, core::WorkBudget& budget) {
   std::vector<Entry> entries;
   entries.reserve(boxes.size());
   for (std::size_t i = 0; i < boxes.size(); ++i) entries.push_back({boxes[i], i, 0});
-  return sweep(std::move(entries), 1, max_work);
+  return sweep(std::move(entries), 1, budget);
 }
 
 }  // namespace bezier::path

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/base/curve.hpp"
+#include "core/base/work_budget.hpp"
 
 namespace bezier::path {
 
@@ -23,18 +24,15 @@ struct Box {
 /// no rounding, so two segments whose boxes are disjoint certainly do not meet.
 [[nodiscard]] Box control_box(const core::Curve& segment) noexcept;
 
-/// Pairs of boxes that meet (closed boxes: touching counts), and what finding them cost.
+/// Pairs of boxes that meet (closed boxes: touching counts).
 struct MeetingBoxes {
-  /// (i, j) pairs, sorted.
+  /// (i, j) pairs, sorted (unsorted, and maybe not all, when the budget ran out).
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  /// Work units (core/intersect/work_cost.hpp: about one coordinate update each) charged
-  /// for the sweep: its sorts by their estimated comparisons (the pairs' sort as each pair
-  /// is found), one per pair of boxes compared in the plain sweep, and in the tree's each
-  /// insertion, removal and query by the nodes and entries it reads.
-  std::int64_t work = 0;
-  /// False when the sweep stopped at its work limit: `pairs` may then miss some.
-  bool complete = true;
 };
+
+/// The memory a stored pair is charged (core::WorkBudget::charge_memory), in bytes.
+inline constexpr std::int64_t kStoredPairBytes =
+    static_cast<std::int64_t>(sizeof(std::pair<std::size_t, std::size_t>));
 
 /// Every (i, j) with a[i] and b[j] meeting. The boxes are sorted by x_lo and swept along x:
 /// at each box, the boxes that end before it are closed, the open boxes of the other set
@@ -44,11 +42,17 @@ struct MeetingBoxes {
 /// segment tree, so that a box's query reads only the boxes it meets (Bentley & Wood, "An
 /// optimal worst case algorithm for reporting intersections of rectangles", IEEE Trans.
 /// Computers C-29, 1980). Cost O(N log N + K) for N boxes in all and K pairs that meet.
-/// Stops early (complete = false) once the work exceeds `max_work`.
+///
+/// Charged to `budget` in work units (core/intersect/work_cost.hpp: about one coordinate
+/// update each): the sorts by their estimated comparisons (the pairs' sort as each pair is
+/// found), one per pair of boxes compared in the plain sweep, and in the tree's each
+/// insertion, removal and query by the nodes and entries it reads; and in memory,
+/// kStoredPairBytes per pair as it is found, before it is stored. Stops early, the budget
+/// exhausted, once the work passes its limit or a pair would pass the memory limit.
 [[nodiscard]] MeetingBoxes meeting_boxes(std::span<const Box> a, std::span<const Box> b,
-                                         std::int64_t max_work);
+                                         core::WorkBudget& budget);
 
 /// Every (i, j), i < j, with boxes[i] and boxes[j] meeting: the same sweep over one set.
-[[nodiscard]] MeetingBoxes meeting_boxes(std::span<const Box> boxes, std::int64_t max_work);
+[[nodiscard]] MeetingBoxes meeting_boxes(std::span<const Box> boxes, core::WorkBudget& budget);
 
 }  // namespace bezier::path

@@ -80,7 +80,8 @@ void BM_PathOutlinesKernelOnMeetingPairs(benchmark::State& state) {
   std::vector<bezier::path::Box> boxes_a, boxes_b;
   for (const Curve& c : a.segments) boxes_a.push_back(bezier::path::control_box(c));
   for (const Curve& c : b.segments) boxes_b.push_back(bezier::path::control_box(c));
-  const auto pairs = bezier::path::meeting_boxes(boxes_a, boxes_b, 1 << 30).pairs;
+  bezier::core::WorkBudget sweep_budget;
+  const auto pairs = bezier::path::meeting_boxes(boxes_a, boxes_b, sweep_budget).pairs;
   std::size_t found = 0;
   for (auto _ : state) {
     found = 0;

@@ -144,7 +144,9 @@ TEST(ArcOverlap, ASearchWindowKeepsTheOverlapsThatMeetIt) {
     SCOPED_TRACE(std::string(to_string(m)));
     IntersectOptions options;
     options.method = m;
-    expect_overlaps(intersect_in(f, f, {0.1, 0.2}, {0.8, 0.9}, options), {{0, 0.5, 0.5, 1, true}});
+    WorkBudget budget;
+    expect_overlaps(intersect_in(f, f, {0.1, 0.2}, {0.8, 0.9}, options, budget),
+                    {{0, 0.5, 0.5, 1, true}});
   }
 }
 

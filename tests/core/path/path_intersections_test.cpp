@@ -5,10 +5,12 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/curve/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
+#include "core/path/segment_boxes.hpp"
 #include "tests/support/mulberry32.hpp"
 #include "tests/support/parsed_path.hpp"
 
@@ -252,6 +254,64 @@ TEST(PathIntersections, WorkCapIsSharedByThePairs) {
   const PathIntersectionResult capped = intersect(parsed_path(a), parsed_path(b), options);
   EXPECT_EQ(capped.status, core::IntersectStatus::work_cap_reached);
   EXPECT_LE(capped.stats.work, options.max_work + full.stats.work / 40);
+}
+
+TEST(PathSelfIntersections, CertifiedOnesAddTheLoopsWithinSegmentsInOneSortedList) {
+  // The cubic (-9, 0) (13, 16) (-13, 16) (9, 0), whose double point (0, 9) is at t = 1/4,
+  // s = 3/4 (x(t) = -9 + 66 t - 144 t^2 + 96 t^3 vanishes at 1/4 and 3/4, y = 48 t (1 - t)
+  // is 9 at both), then the line from (9, 0) to (-9, 18), x + y = 9: it meets the cubic
+  // where 16 t^3 - 32 t^2 + 19 t - 3 = (t - 1)(4 t - 1)(4 t - 3) vanishes, at its joint
+  // t = 1 (not an intersection) and at t = 1/4 and 3/4, both its own s = 1/2. Three contacts:
+  // the segment's own pair, certified, and the two of the line.
+  const Path p = parsed_path("M-9 0 C13 16 -13 16 9 0 L-9 18");
+  core::WorkBudget budget;
+  const PathSelfIntersectionResult r = certified_self_intersections(p, {}, budget);
+  ASSERT_FALSE(budget.exhausted());
+  ASSERT_EQ(r.status, core::IntersectStatus::ok);
+  EXPECT_EQ(r.uncertified_pairs, 0u);
+  std::size_t within = 0;
+  for (const PathContact& c : r.intersections) {
+    if (c.segment_t != c.segment_s) continue;
+    ++within;
+    EXPECT_EQ(c.segment_t, 0u);
+    EXPECT_TRUE(c.intersection.resolved);
+    EXPECT_TRUE(c.intersection.t_interval.contains(0.25));
+    EXPECT_TRUE(c.intersection.s_interval.contains(0.75));
+    EXPECT_LT(c.intersection.t_interval.width(), 1e-12);
+  }
+  EXPECT_EQ(within, 1u);
+  EXPECT_EQ(r.intersections.size(), 3u);
+  EXPECT_GT(r.stats.certification_steps, 0);
+  // The other contacts are the plain search's, and the whole list is sorted.
+  core::WorkBudget plain_budget;
+  const PathSelfIntersectionResult plain = self_intersections(p, {}, plain_budget);
+  EXPECT_EQ(r.intersections.size(), plain.intersections.size() + 1);
+  for (std::size_t k = 1; k < r.intersections.size(); ++k) {
+    const PathContact& a = r.intersections[k - 1];
+    const PathContact& b = r.intersections[k];
+    EXPECT_LE(std::tuple(a.segment_t, a.intersection.t, a.segment_s, a.intersection.s),
+              std::tuple(b.segment_t, b.intersection.t, b.segment_s, b.intersection.s));
+  }
+  // Every unit the certification spent is in the budget and in stats.work.
+  EXPECT_EQ(r.stats.work, budget.spent());
+  EXPECT_GT(budget.spent(), plain_budget.spent());
+}
+
+TEST(PathSelfIntersections, TheSweepsPairsAreChargedToTheMemoryLimit) {
+  // Twelve equal zero-length segments at the origin: all 66 pairs of their boxes meet.
+  // A limit of 65 pairs' bytes stops the sweep at the 66th; 66 admits them, and the copy
+  // of the pairs without a point segment is empty.
+  std::string data = "M0 0";
+  for (int k = 0; k < 12; ++k) data += " L0 0";
+  const Path p = parsed_path(data);
+  core::WorkBudget short_of_one(core::WorkBudget::kUnlimited, 65 * kStoredPairBytes);
+  (void)self_intersections(p, {}, short_of_one);
+  EXPECT_EQ(short_of_one.exhaustion(), core::Exhaustion::memory);
+  core::WorkBudget enough(core::WorkBudget::kUnlimited, 66 * kStoredPairBytes);
+  const PathSelfIntersectionResult r = self_intersections(p, {}, enough);
+  EXPECT_FALSE(enough.exhausted());
+  EXPECT_EQ(enough.memory(), 66 * kStoredPairBytes);
+  EXPECT_TRUE(r.intersections.empty());
 }
 
 }  // namespace

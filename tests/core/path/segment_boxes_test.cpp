@@ -44,8 +44,9 @@ TEST(SegmentBoxes, TwoSetsGiveExactlyThePairsThatMeet) {
         if (meet(a[i], b[j])) expected.emplace_back(i, j);
       }
     }
-    const MeetingBoxes found = meeting_boxes(a, b, 1 << 30);
-    EXPECT_TRUE(found.complete);
+    core::WorkBudget budget;
+    const MeetingBoxes found = meeting_boxes(a, b, budget);
+    EXPECT_FALSE(budget.exhausted());
     EXPECT_EQ(found.pairs, expected) << "round " << round;
   }
 }
@@ -60,7 +61,8 @@ TEST(SegmentBoxes, OneSetGivesEachMeetingPairOnce) {
         if (meet(boxes[i], boxes[j])) expected.emplace_back(i, j);
       }
     }
-    EXPECT_EQ(meeting_boxes(boxes, 1 << 30).pairs, expected) << "round " << round;
+    core::WorkBudget budget;
+    EXPECT_EQ(meeting_boxes(boxes, budget).pairs, expected) << "round " << round;
   }
 }
 
@@ -69,13 +71,32 @@ TEST(SegmentBoxes, StopsAtItsWorkLimit) {
   // 3000 units the sweep stops within one box's query of the cap: its entries (at most
   // 2 x 100), its pairs (at most 100, 2 log2 N = 14 units each) and its tree path.
   std::vector<Box> boxes(100, Box{0, 1, 0, 1});
-  const MeetingBoxes capped = meeting_boxes(boxes, 3000);
-  EXPECT_FALSE(capped.complete);
-  EXPECT_LE(capped.work, 3000 + 2 * 100 + 100 * 14 + 64);
-  EXPECT_FALSE(meeting_boxes(boxes, 500).complete);
-  const MeetingBoxes full = meeting_boxes(boxes, 1 << 30);
-  EXPECT_TRUE(full.complete);
+  core::WorkBudget capped(3000);
+  (void)meeting_boxes(boxes, capped);
+  EXPECT_EQ(capped.exhaustion(), core::Exhaustion::work);
+  EXPECT_LE(capped.spent(), 3000 + 2 * 100 + 100 * 14 + 64);
+  core::WorkBudget small(500);
+  (void)meeting_boxes(boxes, small);
+  EXPECT_TRUE(small.exhausted());
+  core::WorkBudget unlimited;
+  const MeetingBoxes full = meeting_boxes(boxes, unlimited);
+  EXPECT_FALSE(unlimited.exhausted());
   EXPECT_EQ(full.pairs.size(), 100u * 99 / 2);
+  EXPECT_EQ(unlimited.memory(), static_cast<std::int64_t>(full.pairs.size()) * kStoredPairBytes);
+}
+
+TEST(SegmentBoxes, StopsBeforeStoringPastItsMemoryLimit) {
+  // The same 4950 pairs against a limit of 1000 pairs' bytes: exactly 1000 are stored, the
+  // 1001st is charged and refused, whichever sweep runs (the plain one for 100 boxes, the
+  // tree's for 1000).
+  for (const std::size_t n : {std::size_t{100}, std::size_t{1000}}) {
+    std::vector<Box> boxes(n, Box{0, 1, 0, 1});
+    core::WorkBudget budget(core::WorkBudget::kUnlimited, 1000 * kStoredPairBytes);
+    const MeetingBoxes found = meeting_boxes(boxes, budget);
+    EXPECT_EQ(budget.exhaustion(), core::Exhaustion::memory) << n;
+    EXPECT_EQ(found.pairs.size(), 1000u) << n;
+    EXPECT_EQ(budget.memory(), 1001 * kStoredPairBytes) << n;
+  }
 }
 
 TEST(SegmentBoxes, WorkGrowsWithThePairsThatMeetNotWithTheirXOverlaps) {
@@ -84,9 +105,10 @@ TEST(SegmentBoxes, WorkGrowsWithThePairsThatMeetNotWithTheirXOverlaps) {
   // x alone would compare (the tree's sweep runs).
   std::vector<Box> boxes;
   for (int k = 0; k < 200; ++k) boxes.push_back({0, 1, 2.0 * k, 2.0 * k + 1});
-  const MeetingBoxes found = meeting_boxes(boxes, 1 << 30);
+  core::WorkBudget budget;
+  const MeetingBoxes found = meeting_boxes(boxes, budget);
   EXPECT_TRUE(found.pairs.empty());
-  EXPECT_LT(found.work, 19900);
+  EXPECT_LT(budget.spent(), 19900);
 }
 
 /// Random boxes that all span most of one x range, on a coarse grid in y: every pair
@@ -114,9 +136,11 @@ TEST(SegmentBoxes, TreeSweepGivesExactlyThePairsThatMeet) {
         if (meet(a[i], a[j])) expected_one.emplace_back(i, j);
       }
     }
-    const MeetingBoxes two = meeting_boxes(a, b, 1 << 30);
+    core::WorkBudget budget;
+    const MeetingBoxes two = meeting_boxes(a, b, budget);
     EXPECT_EQ(two.pairs, expected) << "round " << round;
-    EXPECT_EQ(meeting_boxes(a, 1 << 30).pairs, expected_one) << "round " << round;
+    EXPECT_EQ(meeting_boxes(a, budget).pairs, expected_one) << "round " << round;
+    EXPECT_FALSE(budget.exhausted());
   }
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/self_intersect/self_intersection.hpp"
@@ -14,13 +15,26 @@ namespace {
 // 3/4 (and 1/2), y(t) = 48 t (1 - t) is 9 at both: the double point (0, 9) at (1/4, 3/4).
 Curve symmetric_loop() { return Curve(std::vector<Point2>{{-9, 0}, {13, 16}, {-13, 16}, {9, 0}}); }
 
+/// The certification with a budget of `units` work units, and whether it ran out.
+struct Certified : CertifiedSelfIntersections {
+  bool out_of_work = false;
+};
+
+Certified certify(const Curve& c, std::span<const SelfIntersection> pairs,
+                  const IntersectOptions& options, std::int64_t units) {
+  WorkBudget budget(units);
+  Certified out{{certify_self_intersections(c, pairs, options, budget)}};
+  out.out_of_work = budget.exhausted();
+  return out;
+}
+
 TEST(CertifySelfIntersections, IntervalsNarrowerThanTheToleranceContainTheExactPair) {
   const Curve c = symmetric_loop();
   const SelfIntersectionResult found = self_intersections(c);
   ASSERT_EQ(found.pairs.size(), 1u);
   IntersectOptions options;
   options.tolerance = 1e-12;
-  const CertifiedSelfIntersections r = certify_self_intersections(c, found.pairs, options, 100000);
+  const Certified r = certify(c, found.pairs, options, 100000);
   ASSERT_EQ(r.intersections.size(), 1u);
   const Intersection& x = r.intersections[0];
   EXPECT_TRUE(x.resolved);
@@ -38,7 +52,7 @@ TEST(CertifySelfIntersections, NoBudgetReportsThePairAsFoundAndSaysSo) {
   const Curve c = symmetric_loop();
   const SelfIntersectionResult found = self_intersections(c);
   ASSERT_EQ(found.pairs.size(), 1u);
-  const CertifiedSelfIntersections r = certify_self_intersections(c, found.pairs, {}, 0);
+  const Certified r = certify(c, found.pairs, {}, 0);
   ASSERT_EQ(r.intersections.size(), 1u);
   const Intersection& x = r.intersections[0];
   EXPECT_FALSE(x.resolved);
@@ -56,10 +70,10 @@ TEST(CertifySelfIntersections, ThePairsShareTheBudgetInOrder) {
   const SelfIntersectionResult found = self_intersections(c);
   ASSERT_EQ(found.pairs.size(), 1u);
   const std::vector<SelfIntersection> twice{found.pairs[0], found.pairs[0]};
-  const CertifiedSelfIntersections one = certify_self_intersections(c, found.pairs, {}, 100000);
+  const Certified one = certify(c, found.pairs, {}, 100000);
   ASSERT_TRUE(one.intersections[0].resolved);
   // Enough for both: the same search twice, at twice the cost.
-  const CertifiedSelfIntersections both = certify_self_intersections(c, twice, {}, 100000);
+  const Certified both = certify(c, twice, {}, 100000);
   EXPECT_TRUE(both.intersections[0].resolved);
   EXPECT_TRUE(both.intersections[1].resolved);
   EXPECT_EQ(both.work, 2 * one.work);
@@ -70,14 +84,42 @@ TEST(CertifySelfIntersections, ThePairsShareTheBudgetInOrder) {
   std::int64_t lo = 0, hi = 100000;  // certify_self_intersections fails at lo, works at hi
   while (hi - lo > 1) {
     const std::int64_t mid = lo + (hi - lo) / 2;
-    (certify_self_intersections(c, found.pairs, {}, mid).intersections[0].resolved ? hi : lo) =
+    (certify(c, found.pairs, {}, mid).intersections[0].resolved ? hi : lo) =
         mid;
   }
-  const CertifiedSelfIntersections r = certify_self_intersections(c, twice, {}, hi);
+  const Certified r = certify(c, twice, {}, hi);
   ASSERT_EQ(r.intersections.size(), 2u);
   EXPECT_TRUE(r.intersections[0].resolved);
   EXPECT_FALSE(r.intersections[1].resolved);
   EXPECT_TRUE(r.out_of_work);
+}
+
+TEST(CertifiedSelfIntersections, OneCallSearchesAndCertifiesUnderOneBudget) {
+  const Curve c = symmetric_loop();
+  WorkBudget budget(100000);
+  const CertifiedSelfIntersectionResult r = certified_self_intersections(c, {}, budget);
+  ASSERT_EQ(r.found.pairs.size(), 1u);
+  ASSERT_EQ(r.certified.intersections.size(), 1u);
+  EXPECT_TRUE(r.certified.intersections[0].resolved);
+  EXPECT_TRUE(r.certified.intersections[0].t_interval.contains(0.25));
+  EXPECT_TRUE(r.certified.intersections[0].s_interval.contains(0.75));
+  EXPECT_EQ(r.certified.uncertified, 0u);
+  EXPECT_FALSE(budget.exhausted());
+  EXPECT_EQ(budget.spent(), r.found.stats.work_units + r.certified.work);
+}
+
+TEST(CertifiedSelfIntersections, ACertificationThatFallsShortLeavesTheBudgetUnexhausted) {
+  // A cubic's pairs come from its closed form, which takes no parameter box: with no work
+  // unit at all the pair is found, reported as found, and counted uncertified; the answer
+  // is complete, so the budget did not run out.
+  const Curve c = symmetric_loop();
+  WorkBudget budget(0);
+  const CertifiedSelfIntersectionResult r = certified_self_intersections(c, {}, budget);
+  ASSERT_EQ(r.found.pairs.size(), 1u);
+  ASSERT_EQ(r.certified.intersections.size(), 1u);
+  EXPECT_FALSE(r.certified.intersections[0].resolved);
+  EXPECT_EQ(r.certified.uncertified, 1u);
+  EXPECT_FALSE(budget.exhausted());
 }
 
 }  // namespace
