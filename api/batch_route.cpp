@@ -137,6 +137,21 @@ BatchRun::BatchRun(nlohmann::json request, const Limits& limits) : request_(std:
   }
   count_ = requests->size();
 
+  // Charged before any item runs: each item's cost model bounds what it may spend, so their
+  // sum is the most the batch may spend. Each bound is at most a few times max_work and
+  // there are at most max_batch_items, so the sum cannot overflow. A work-cap problem names
+  // no field (ValidationProblem in api/openapi.yaml): the detail says what to do.
+  std::int64_t work = 0;
+  for (std::size_t i = 0; i < count_; ++i) work += item_work_bound(item_at(*requests, i), limits);
+  if (work > limits.max_batch_work) {
+    finish(problem_reply(ProblemKind::work_cap,
+                                "the batch's " + std::to_string(count_) + " items may spend up to " +
+                                    std::to_string(work) + " work units (each item by its route's sizes; " +
+                                    std::to_string(limits.max_work) +
+                                    " for a route the per-item work cap bounds), above the batch's work cap of " +
+                                    std::to_string(limits.max_batch_work) + ": send them in smaller batches"));
+    return;
+  }
   // Refused before any item is computed when the answers certainly exceed the cap: at the
   // item where their lower bounds do (the answer itself would cross it there or earlier).
   std::size_t at_least = 0;
@@ -154,21 +169,6 @@ BatchRun::BatchRun(nlohmann::json request, const Limits& limits) : request_(std:
     }
   }
 
-  // Charged before any item runs: each item's cost model bounds what it may spend, so their
-  // sum is the most the batch may spend. Each bound is at most a few times max_work and
-  // there are at most max_batch_items, so the sum cannot overflow. A work-cap problem names
-  // no field (ValidationProblem in api/openapi.yaml): the detail says what to do.
-  std::int64_t work = 0;
-  for (std::size_t i = 0; i < count_; ++i) work += item_work_bound(item_at(*requests, i), limits);
-  if (work > limits.max_batch_work) {
-    finish(problem_reply(ProblemKind::work_cap,
-                                "the batch's " + std::to_string(count_) + " items may spend up to " +
-                                    std::to_string(work) + " work units (each item by its route's sizes; " +
-                                    std::to_string(limits.max_work) +
-                                    " for a route the per-item work cap bounds), above the batch's work cap of " +
-                                    std::to_string(limits.max_batch_work) + ": send them in smaller batches"));
-    return;
-  }
   out_ = R"({"responses":[)";
   if (count_ == 0) finish_with_answers();
 }

@@ -31,12 +31,12 @@ using BatchItemObserver = std::function<void(std::string_view path, const Reply&
 /// The whole batch is refused, before any item is computed, with a 422 whose pointers
 /// point into the batch's body: when it is not {"requests": [...]} with every item an
 /// object of a string `path` and a `body`; when it has more than limits.max_batch_items
-/// items; when the answers of its items certainly exceed limits.max_batch_answer_bytes
-/// (lower bounds of the /evaluate and /polar answers; a 422 at the item where they cross
-/// it); and when the work its items may spend exceeds limits.max_batch_work (a work-cap
+/// items; when the work its items may spend exceeds limits.max_batch_work (a work-cap
 /// problem): every item is charged its route's cost model (api/route_cost.hpp; for a
 /// route whose kernel charges the per-item cap, limits.max_work and its path data), the
-/// most it may spend, so the batch's CPU time is bounded by its work cap. It is refused
+/// most it may spend, so the batch's CPU time is bounded by its work cap; and when the
+/// answers of its items certainly exceed limits.max_batch_answer_bytes (lower bounds of
+/// the /evaluate and /polar answers; a 422 at the item where they cross it). It is refused
 /// as well, as soon as it is known, when the answers of its items exceed
 /// limits.max_batch_answer_bytes (a 422 that points at the item that crossed it). Every
 /// item is computed under `limits` as it stands, so each answer, a work-cap problem

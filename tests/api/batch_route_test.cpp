@@ -257,12 +257,14 @@ TEST(BatchLimits, ItemsOfRoutesBoundedByTheirSizesAreChargedByTheirSizes) {
             charge({"/segments", R"({"path":"M0 0 L1 1 2 2 3 3 4 4"})"}, defaults));
   EXPECT_EQ(charge({"/segments", R"({"path":"M0 0 A1 1 0 0 1 2 0"})"}, defaults),
             charge({"/segments", R"({"path":")" + std::string(defaults.max_path_segments, 'L') + R"("})"}, defaults));
-  // Small answers (one number per sample would still fit the answer cap), large charges.
+  // With room for their answers, as many as their charges fit are computed, one more is
+  // refused by its work alone, before any item runs.
   const std::size_t fit = static_cast<std::size_t>(defaults.max_batch_work / charge(all_t_derivatives, defaults));
   ASSERT_GE(fit, 1u);
   ASSERT_LT(fit, 100u);
   Limits roomy_answers = defaults;
   roomy_answers.max_batch_answer_bytes = std::size_t{1} << 32;
+  EXPECT_EQ(handle("/batch", batch_body(std::vector<Item>(fit, all_t_derivatives)), roomy_answers).status, 200);
   Seen seen;
   const Reply refused =
       handle("/batch", batch_body(std::vector<Item>(fit + 1, all_t_derivatives)), roomy_answers, seen.observer());
@@ -300,8 +302,12 @@ TEST(BatchLimits, AnswersThatCertainlyExceedTheCapAreRefusedBeforeAnyItemIsCompu
   points += "]";
   const std::vector<Item> items(70, Item{"/evaluate", R"({"points":)" + points + R"(,"samples":10000})"});
   const Limits defaults;
+  // The batch's work cap, which refuses these items first at the defaults, set aside.
+  Limits roomy_work = defaults;
+  roomy_work.max_batch_work = std::int64_t{1} << 50;
+  EXPECT_NE(handle("/batch", batch_body(items), defaults).body.find("work-cap"), std::string::npos);
   Seen seen;
-  const Reply refused = handle("/batch", batch_body(items), defaults, seen.observer());
+  const Reply refused = handle("/batch", batch_body(items), roomy_work, seen.observer());
   EXPECT_EQ(refused.status, 422);
   EXPECT_TRUE(refused.limit_reached);
   EXPECT_TRUE(seen.items.empty());
@@ -313,10 +319,7 @@ TEST(BatchLimits, AnswersThatCertainlyExceedTheCapAreRefusedBeforeAnyItemIsCompu
   roomy.max_batch_answer_bytes = std::size_t{1} << 30;
   const std::vector<Item> two(items.begin(), items.begin() + 2);
   EXPECT_EQ(handle("/batch", batch_body(two), defaults).body, expected_answer(two, roomy));
-  // A body the route refuses is not counted: its answer is a short problem (the work cap,
-  // which charges it by its sizes, is set aside here).
-  Limits roomy_work = defaults;
-  roomy_work.max_batch_work = std::int64_t{1} << 50;
+  // A body the route refuses is not counted: its answer is a short problem.
   const std::vector<Item> refused_items(70, Item{"/evaluate", R"({"points":)" + points + R"(,"samples":10000,"x":1})"});
   EXPECT_EQ(handle("/batch", batch_body(refused_items), roomy_work).status, 200);
 }
