@@ -70,18 +70,6 @@ bool is_compute_route(std::string_view path) {
              kItemPaths.begin() + kComputeRoutes;
 }
 
-// What a batch charges its items (README, "POST /batch"): each its route's cost model
-// (api/route_cost.hpp, named in api/route_table.hpp), from its body as the batch parses it.
-std::int64_t batch_charge(const std::vector<Item>& items, const bezier::api::Limits& limits) {
-  std::int64_t work = 0;
-  for (const Item& item : items) {
-    if (const bezier::api::ComputeRoute* route = bezier::api::find_compute_route(item.path)) {
-      work += route->work_bound(bezier::api::parse_json(item.body).value, limits);
-    }
-  }
-  return work;
-}
-
 // The other API targets' limits (api_limits.hpp) with a batch's: the defaults, with room
 // for 32 items of the work-capped routes; or at most 4 items, 2 of them charged, segments
 // and an answer cap that small requests reach.
@@ -101,6 +89,18 @@ bezier::api::Limits tight_limits(std::size_t answer_bytes) {
 }
 
 using Item = bezier::test::BatchItem;
+
+// What a batch charges its items (README, "POST /batch"): each its route's cost model
+// (api/route_cost.hpp, named in api/route_table.hpp), from its body as the batch parses it.
+std::int64_t batch_charge(const std::vector<Item>& items, const bezier::api::Limits& limits) {
+  std::int64_t work = 0;
+  for (const Item& item : items) {
+    if (const bezier::api::ComputeRoute* route = bezier::api::find_compute_route(item.path)) {
+      work += route->work_bound(bezier::api::parse_json(item.body).value, limits);
+    }
+  }
+  return work;
+}
 
 std::vector<Item> split_items(std::string_view text) {
   std::vector<Item> items;
