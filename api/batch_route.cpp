@@ -17,29 +17,7 @@ namespace {
 
 constexpr double kAnyFinite = std::numeric_limits<double>::max();
 
-// Whether an item of `path` is charged to the batch's work cap: the routes the per-item
-// work cap bounds (api/route_table.hpp). The others' cost the degree and t-value limits
-// bound; their answers are bounded by max_batch_answer_bytes.
-bool charged_to_work_cap(std::string_view path) {
-  const ComputeRoute* route = find_compute_route(path);
-  return route != nullptr && route->cost == CostBound::work_cap;
-}
-
 bool is_batch_item_route(std::string_view path) { return find_compute_route(path) != nullptr; }
-
-// The routes whose items the batch's work cap is not charged for, as a sentence names them.
-std::string uncharged_routes_text() {
-  std::vector<std::string_view> routes;
-  for (const ComputeRoute& route : kComputeRoutes) {
-    if (route.cost != CostBound::work_cap) routes.push_back(route.path);
-  }
-  std::string text;
-  for (std::size_t i = 0; i < routes.size(); ++i) {
-    if (i > 0) text += i + 1 == routes.size() ? " and " : ", ";
-    text += routes[i];
-  }
-  return text;
-}
 
 std::string item_routes_text() {
   std::string text;
@@ -105,12 +83,27 @@ Reply item_answer(const Item& item, const Limits& limits) {
   return compute_route_answer(item.path, *item.body, limits);
 }
 
+// The most work units an item may spend: its route's cost model; an item of a path no
+// item may name is answered 404 at once.
+std::int64_t item_work_bound(const Item& item, const Limits& limits) {
+  const ComputeRoute* route = find_compute_route(item.path);
+  return route == nullptr ? 0 : route->work_bound(*item.body, limits);
+}
+
+// The items of a batch that passed validation: where its path and body are.
+Item item_at(const Json& requests, std::size_t i) {
+  const Json& entry = requests[i];
+  return {entry.find("path")->get_ref<const std::string&>(), &*entry.find("body")};
+}
+
 }  // namespace
 
-Reply batch_route(const nlohmann::json& request, const Limits& limits, const BatchItemObserver& observer) {
+BatchRun::BatchRun(Reply answer) { finish(std::move(answer)); }
+
+BatchRun::BatchRun(nlohmann::json request, const Limits& limits) : request_(std::move(request)), limits_(limits) {
   RequestReader reader(limits);
-  reader.reject_unknown_fields(request, {"requests"}, "");
-  const Json* requests = reader.required(request, "requests", "");
+  reader.reject_unknown_fields(request_, {"requests"}, "");
+  const Json* requests = reader.required(request_, "requests", "");
   if (requests != nullptr && !requests->is_array()) {
     reader.fail("/requests", "must be an array of {\"path\", \"body\"} items");
     requests = nullptr;
@@ -118,12 +111,10 @@ Reply batch_route(const nlohmann::json& request, const Limits& limits, const Bat
   if (requests != nullptr && requests->size() > static_cast<std::size_t>(limits.max_batch_items)) {
     reader.fail_limit("/requests", "at most " + std::to_string(limits.max_batch_items) + " items in a batch, got " +
                                        std::to_string(requests->size()));
-    return reader.refusal();
+    finish(reader.refusal());
+    return;
   }
-  std::vector<Item> items;
-  std::int64_t charged_items = 0;
   if (requests != nullptr) {
-    items.reserve(requests->size());
     for (std::size_t i = 0; i < requests->size(); ++i) {
       const Json& entry = (*requests)[i];
       const std::string pointer = pointer_to("/requests", i);
@@ -135,37 +126,37 @@ Reply batch_route(const nlohmann::json& request, const Limits& limits, const Bat
       const Json* path = reader.required(entry, "path", pointer);
       if (path != nullptr && !path->is_string()) {
         reader.fail(pointer_to(pointer, "path"), "must be a string: the route's path, such as \"/classify\"");
-        path = nullptr;
       }
       // A null body is a body (the route answers it 400, as it would alone).
-      const auto body = entry.find("body");
-      if (body == entry.end()) reader.fail(pointer_to(pointer, "body"), "required field is missing");
-      if (path == nullptr || body == entry.end()) continue;
-      items.push_back({path->get_ref<const std::string&>(), &*body});
-      if (charged_to_work_cap(items.back().path)) ++charged_items;
+      if (entry.find("body") == entry.end()) reader.fail(pointer_to(pointer, "body"), "required field is missing");
     }
   }
-  if (!reader.ok()) return reader.refusal();
-
-  // Charged before any item runs: an item may spend up to max_work, so this is the most
-  // the batch may spend. Compared by division, which cannot overflow. A work-cap problem
-  // names no field (ValidationProblem in api/openapi.yaml): the detail says what to do.
-  if (charged_items > 0 && limits.max_batch_work / charged_items < limits.max_work) {
-    return problem_reply(ProblemKind::work_cap,
-                         "the batch has " + std::to_string(charged_items) +
-                             " items of routes the per-item work cap of " + std::to_string(limits.max_work) +
-                             " units bounds, which may spend up to " + std::to_string(charged_items) + " x " +
-                             std::to_string(limits.max_work) + " units, above the batch's work cap of " +
-                             std::to_string(limits.max_batch_work) +
-                             ": send them in smaller batches (items of " + uncharged_routes_text() +
-                             " are not charged)");
+  if (!reader.ok()) {
+    finish(reader.refusal());
+    return;
   }
+  count_ = requests->size();
 
+  // Charged before any item runs: each item's cost model bounds what it may spend, so their
+  // sum is the most the batch may spend. Each bound is at most a few times max_work and
+  // there are at most max_batch_items, so the sum cannot overflow. A work-cap problem names
+  // no field (ValidationProblem in api/openapi.yaml): the detail says what to do.
+  std::int64_t work = 0;
+  for (std::size_t i = 0; i < count_; ++i) work += item_work_bound(item_at(*requests, i), limits);
+  if (work > limits.max_batch_work) {
+    finish(problem_reply(ProblemKind::work_cap,
+                                "the batch's " + std::to_string(count_) + " items may spend up to " +
+                                    std::to_string(work) + " work units (each item by its route's sizes; " +
+                                    std::to_string(limits.max_work) +
+                                    " for a route the per-item work cap bounds), above the batch's work cap of " +
+                                    std::to_string(limits.max_batch_work) + ": send them in smaller batches"));
+    return;
+  }
   // Refused before any item is computed when the answers certainly exceed the cap: at the
   // item where their lower bounds do (the answer itself would cross it there or earlier).
   std::size_t at_least = 0;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    at_least += answer_bytes_at_least(items[i], limits);
+  for (std::size_t i = 0; i < count_; ++i) {
+    at_least += answer_bytes_at_least(item_at(*requests, i), limits);
     if (at_least > limits.max_batch_answer_bytes) {
       Reply refused = validation_reply(
           {{pointer_to("/requests", i), "the answers of items 0 to " + std::to_string(i) + " take at least " +
@@ -173,40 +164,65 @@ Reply batch_route(const nlohmann::json& request, const Limits& limits, const Bat
                                             std::to_string(limits.max_batch_answer_bytes) +
                                             " bytes: send the items in smaller batches"}});
       refused.limit_reached = true;
-      return refused;
+      finish(std::move(refused));
+      return;
     }
   }
 
-  std::string out = R"({"responses":[)";
+  out_ = R"({"responses":[)";
+  if (count_ == 0) finish_with_answers();
+}
+
+void BatchRun::compute_next(const BatchItemObserver& observer) {
   // The answer's last bytes: the cap is on the whole answer, so the answers so far are
   // measured as if closed after each item.
   constexpr std::string_view kClosing = "]}";
-  bool limit_reached = false;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    const Reply reply = item_answer(items[i], limits);
-    if (observer) observer(items[i].path, reply);
-    limit_reached = limit_reached || reply.limit_reached;
-    if (i > 0) out += ',';
-    out += R"({"body":)";
-    out += reply.body;
-    out += R"(,"status":)";
-    out += std::to_string(reply.status);
-    out += '}';
-    if (out.size() + kClosing.size() > limits.max_batch_answer_bytes) {
-      Reply refused = validation_reply(
-          {{pointer_to("/requests", i), "the answers of items 0 to " + std::to_string(i) + " take " +
-                                            std::to_string(out.size() + kClosing.size()) +
-                                            " bytes, above the batch's answer cap of " +
-                                            std::to_string(limits.max_batch_answer_bytes) +
-                                            " bytes: send the items in smaller batches"}});
-      refused.limit_reached = true;
-      return refused;
-    }
+  const std::size_t i = next_++;
+  const Item item = item_at(request_["requests"], i);
+  const Reply reply = item_answer(item, limits_);
+  if (observer) observer(item.path, reply);
+  limit_reached_ = limit_reached_ || reply.limit_reached;
+  if (i > 0) out_ += ',';
+  out_ += R"({"body":)";
+  out_ += reply.body;
+  out_ += R"(,"status":)";
+  out_ += std::to_string(reply.status);
+  out_ += '}';
+  if (out_.size() + kClosing.size() > limits_.max_batch_answer_bytes) {
+    Reply refused = validation_reply(
+        {{pointer_to("/requests", i), "the answers of items 0 to " + std::to_string(i) + " take " +
+                                          std::to_string(out_.size() + kClosing.size()) +
+                                          " bytes, above the batch's answer cap of " +
+                                          std::to_string(limits_.max_batch_answer_bytes) +
+                                          " bytes: send the items in smaller batches"}});
+    refused.limit_reached = true;
+    out_.clear();
+    out_.shrink_to_fit();
+    finish(std::move(refused));
+    return;
   }
-  out += kClosing;
-  Reply reply{200, "application/json", std::move(out)};
-  reply.limit_reached = limit_reached;
-  return reply;
+  if (next_ == count_) finish_with_answers();
+}
+
+void BatchRun::finish_with_answers() {
+  out_ += "]}";
+  Reply reply{200, "application/json", std::move(out_)};
+  reply.limit_reached = limit_reached_;
+  finish(std::move(reply));
+}
+
+void BatchRun::finish(Reply answer) {
+  answer_ = std::move(answer);
+  finished_ = true;
+  request_ = nullptr;
+}
+
+Reply BatchRun::take_answer() { return std::move(answer_); }
+
+Reply batch_route(const nlohmann::json& request, const Limits& limits, const BatchItemObserver& observer) {
+  BatchRun run(request, limits);
+  while (!run.finished()) run.compute_next(observer);
+  return run.take_answer();
 }
 
 }  // namespace bezier::api

@@ -2,6 +2,8 @@
 
 #include <array>
 #include <string>
+#include <utility>
+#include <variant>
 
 #include "api/nearest_name.hpp"
 #include "api/parse_json.hpp"
@@ -43,15 +45,17 @@ Reply compute_route_answer(std::string_view path, const nlohmann::json& body, co
   return problem_reply(ProblemKind::not_found, "no route " + std::string(path) + did_you_mean(path, kPaths));
 }
 
-Reply handle(std::string_view path, std::string_view body, const Limits& limits,
-             const BatchItemObserver& observer) {
+namespace {
+
+// The body parsed, or the problem a body that does not parse is answered.
+std::variant<Reply, nlohmann::json> parse_body(std::string_view body) {
   if (body.find_first_not_of(" \t\r\n") == std::string_view::npos) {
     return problem_reply(ProblemKind::malformed_json,
                          std::string(body.empty() ? "the body is empty" : "the body is only whitespace") +
                              ": send a JSON object, e.g. {\"points\": [[0, 0], [1, 2], [2, 0]], \"t\": 0.5} "
                              "for /evaluate (the routes and their fields: GET /openapi.yaml)");
   }
-  const ParsedJson parsed = parse_json(body);
+  ParsedJson parsed = parse_json(body);
   // Nested too deeply to parse: a body that is not an object is a 400 like any other; an
   // object is a request this service will not take.
   if (parsed.too_deep && parsed.root_is_object) {
@@ -63,9 +67,29 @@ Reply handle(std::string_view path, std::string_view body, const Limits& limits,
                                                           std::to_string(parsed.error_offset) + ", " +
                                                           parsed.error);
   }
-  const nlohmann::json& request = parsed.value;
-  if (path == kBatchPath && request.is_object()) return batch_route(request, limits, observer);
-  return compute_route_answer(path, request, limits);
+  return std::move(parsed.value);
+}
+
+}  // namespace
+
+BatchRun start_batch(std::string_view body, const Limits& limits) {
+  auto parsed = parse_body(body);
+  if (Reply* refused = std::get_if<Reply>(&parsed)) return BatchRun(std::move(*refused));
+  nlohmann::json& request = std::get<nlohmann::json>(parsed);
+  if (!request.is_object()) return BatchRun(compute_route_answer(kBatchPath, request, limits));
+  return BatchRun(std::move(request), limits);
+}
+
+Reply handle(std::string_view path, std::string_view body, const Limits& limits,
+             const BatchItemObserver& observer) {
+  if (path == kBatchPath) {
+    BatchRun run = start_batch(body, limits);
+    while (!run.finished()) run.compute_next(observer);
+    return run.take_answer();
+  }
+  auto parsed = parse_body(body);
+  if (Reply* refused = std::get_if<Reply>(&parsed)) return std::move(*refused);
+  return compute_route_answer(path, std::get<nlohmann::json>(parsed), limits);
 }
 
 }  // namespace bezier::api

@@ -29,6 +29,10 @@ namespace bezier::api {
 [[nodiscard]] Reply handle(std::string_view path, std::string_view body, const Limits& limits,
                            const BatchItemObserver& observer = {});
 
+/// handle(kBatchPath, body, limits) as a run computed one item at a time
+/// (api/batch_route.hpp): the same answer, byte for byte, once every item is computed.
+[[nodiscard]] BatchRun start_batch(std::string_view body, const Limits& limits);
+
 /// The answer of compute route `path` to a parsed body, as handle() gives it after
 /// parsing: 400 when the body is not a JSON object, 404 when `path` is not one of
 /// batch_item_routes().

@@ -44,10 +44,11 @@ struct Limits {
   /// Most items in one POST /batch (its 422 above, before any item is computed).
   int max_batch_items = 1000;
   /// Work cap of a whole batch, in the units of max_work: the batch is refused before any
-  /// item is computed when its items may spend more (each item of a route the per-item cap
-  /// bounds is charged max_work; api/batch_route.hpp). The default admits 10 such items at
-  /// the default max_work: a batch's kernel time about 1 s (docs/WORK_CAPS.md), the time
-  /// it holds one compute thread.
+  /// item is computed when its items may spend more (each item is charged its route's cost
+  /// model, api/route_cost.hpp: max_work for a route the per-item cap bounds, its sizes for
+  /// the others; api/batch_route.hpp). The default admits 10 work-capped items at the
+  /// default max_work: a batch's CPU time about 1 s (docs/WORK_CAPS.md), spread over
+  /// compute-pool tasks of one item each.
   std::int64_t max_batch_work = 10 * std::int64_t{22000000};
   /// Largest answer of a whole batch in bytes (the items' answers bound the memory a batch
   /// holds, since each may be much larger than its request: a batch is refused when they

@@ -30,11 +30,21 @@ ComputePool::Ticket ComputePool::submit(std::function<void()> task) {
   return ticket;
 }
 
+void ComputePool::requeue(std::function<void()> step) {
+  {
+    const std::lock_guard lock(mutex_);
+    // Withdrawal finds no ticket of a step: nobody holds it (0 is never a task's).
+    tasks_.push_back({0, std::move(step)});
+  }
+  ready_.notify_one();
+}
+
 bool ComputePool::withdraw(Ticket ticket) {
+  if (ticket == 0) return false;  // a step's
   std::function<void()> dropped;  // destroyed after the lock is released
   {
     const std::lock_guard lock(mutex_);
-    // The queue holds at most max_queued tasks, in ticket order.
+    // The queue holds at most max_queued tasks and a step per worker.
     const auto found = std::find_if(tasks_.begin(), tasks_.end(), [ticket](const Queued& q) { return q.ticket == ticket; });
     if (found == tasks_.end()) return false;
     dropped = std::move(found->task);

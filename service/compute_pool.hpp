@@ -17,7 +17,9 @@ namespace bezier::service {
 /// submit() refuses, and the caller answers 503 with Retry-After rather than letting
 /// waiting work (and its memory) grow without bound. A task no worker has taken yet can
 /// be withdrawn (its deadline passed, its client went away): it then never runs and
-/// frees its place in the queue at once, whatever the workers are doing.
+/// frees its place in the queue at once, whatever the workers are doing. A task may run
+/// in steps (requeue()), each queued behind the tasks waiting when the last one ended, so
+/// that a long task shares the workers with the requests that arrive while it runs.
 class ComputePool {
  public:
   /// Names a queued task for withdraw(); 0 is never a task.
@@ -32,6 +34,12 @@ class ComputePool {
   /// Queues `task`; its ticket, or 0 (and `task` is dropped) when max_queued tasks are
   /// waiting.
   [[nodiscard]] Ticket submit(std::function<void()> task);
+  /// Queues the next step of a task a worker is running (a batch's next item), behind the
+  /// tasks that wait, whatever their number: it was admitted when its first step was
+  /// submitted. Steps count in the queue's length, which submit() compares with
+  /// max_queued, and a worker queues at most one step per task it takes, so the queue
+  /// holds at most max_queued plus one per worker. A step cannot be withdrawn.
+  void requeue(std::function<void()> step);
   /// Takes the task out of the queue if no worker has taken it yet: true when it was
   /// there (it will never run, and is destroyed before this returns), false when a
   /// worker runs or ran it.

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <optional>
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -392,10 +393,30 @@ void EventLoop::run_on_pool(std::uint64_t connection, const std::shared_ptr<Pend
     // deadline passes): answered the same way.
     router.metrics().overloaded(Overload::queue_deadline);
     response = queue_deadline_problem();
+  } else if (pending->path == api::kBatchPath) {
+    // One item per step: the deadline was the batch's wait for its first thread.
+    return run_batch_item(connection, pending, std::make_shared<api::BatchRun>(router.start_batch(body, config_.limits)));
   } else {
     response = router.compute(pending->path, body, config_.limits);
     if (work_cap_reached(response)) router.metrics().work_cap_hit();
   }
+  complete(connection, pending, std::move(response));
+}
+
+void EventLoop::run_batch_item(std::uint64_t connection, const std::shared_ptr<Pending>& pending,
+                               const std::shared_ptr<api::BatchRun>& batch) {
+  Router& router = shared_.router;
+  if (pending->connection_gone.load()) return router.abandon(pending->exchange, pending->method, pending->path);
+  std::optional<Response> response = router.compute_batch_item(*batch);
+  if (!response) {
+    shared_.pool.requeue([this, connection, pending, batch] { run_batch_item(connection, pending, batch); });
+    return;
+  }
+  if (work_cap_reached(*response)) router.metrics().work_cap_hit();
+  complete(connection, pending, std::move(*response));
+}
+
+void EventLoop::complete(std::uint64_t connection, const std::shared_ptr<Pending>& pending, Response response) {
   release_free_memory();  // what a costly request freed goes back to the system
   {
     const std::lock_guard lock(completions_mutex_);

@@ -69,6 +69,13 @@ class EventLoop {
   void dispatch(Connection& c);
   /// On a compute thread: the answer to a queued request, posted back to the loop.
   void run_on_pool(std::uint64_t connection, const std::shared_ptr<Pending>& pending, std::string_view body);
+  /// On a compute thread: the next item of a /batch, then its next step queued behind the
+  /// requests waiting for a thread (ComputePool::requeue), or its answer posted back once
+  /// every item is computed. A batch whose connection went away stops at its next item.
+  void run_batch_item(std::uint64_t connection, const std::shared_ptr<Pending>& pending,
+                      const std::shared_ptr<api::BatchRun>& batch);
+  /// On a compute thread: posts the answer of a request back to the loop.
+  void complete(std::uint64_t connection, const std::shared_ptr<Pending>& pending, Response response);
   /// Takes the connection's request out of the compute queue if no thread has taken it
   /// (the connection is no longer busy then; on_pool is left to the caller): whether it
   /// was there.

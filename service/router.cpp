@@ -235,16 +235,47 @@ Response Router::answer_other_method(const RequestView& request) const {
 }
 
 Response Router::compute(std::string_view path, std::string_view body, const api::Limits& limits) {
+  if (path == api::kBatchPath) {
+    api::BatchRun batch = start_batch(body, limits);
+    for (;;) {
+      if (auto response = compute_batch_item(batch)) return std::move(*response);
+    }
+  }
+  return guarded(path, [&] { return to_response(api::handle(path, body, limits)); });
+}
+
+api::BatchRun Router::start_batch(std::string_view body, const api::Limits& limits) {
+  std::optional<api::BatchRun> batch;
+  const Response failed = guarded(api::kBatchPath, [&] {
+    batch.emplace(api::start_batch(body, limits));
+    return Response{};
+  });
+  if (!batch) return api::BatchRun(api::Reply{failed.status, failed.content_type, failed.body});
+  return std::move(*batch);
+}
+
+std::optional<Response> Router::compute_batch_item(api::BatchRun& batch) {
+  const auto count_item = [this](std::string_view item_path, const api::Reply& reply) {
+    metrics_.batch_item_finished(item_path, reply.status);
+    if (reply.decided_by_work_cap) metrics_.work_cap_hit();
+  };
+  if (!batch.finished()) {
+    bool computed = false;
+    Response failure = guarded(api::kBatchPath, [&] {
+      batch.compute_next(count_item);
+      computed = true;
+      return Response{};
+    });
+    if (!computed) return failure;
+  }
+  if (!batch.finished()) return std::nullopt;
+  return to_response(batch.take_answer());
+}
+
+Response Router::guarded(std::string_view path, const std::function<Response()>& compute_answer) {
   std::string what = "unknown exception";
   try {
-    if (path == api::kBatchPath) {
-      const auto count_item = [this](std::string_view item_path, const api::Reply& reply) {
-        metrics_.batch_item_finished(item_path, reply.status);
-        if (reply.decided_by_work_cap) metrics_.work_cap_hit();
-      };
-      return to_response(api::handle(path, body, limits, count_item));
-    }
-    return to_response(api::handle(path, body, limits));
+    return compute_answer();
   } catch (const std::exception& e) {
     what = e.what();
   } catch (...) {

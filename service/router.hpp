@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "api/batch_route.hpp"
 #include "api/limits.hpp"
 #include "api/problem.hpp"
 #include "service/config.hpp"
@@ -84,6 +85,16 @@ class Router {
   [[nodiscard]] Response compute(std::string_view path, std::string_view body,
                                  const api::Limits& limits);
 
+  /// A /batch to be computed one item per compute_batch_item() call (api::BatchRun), so
+  /// that the engine can queue its items behind other requests instead of holding a
+  /// compute thread for the whole batch. Parsing, validation and the batch's own refusals
+  /// happen here; an exception becomes a finished run answering 500, as in compute().
+  [[nodiscard]] api::BatchRun start_batch(std::string_view body, const api::Limits& limits);
+  /// Computes the next item of `batch`, counted in the metrics as compute() counts a
+  /// batch's items; the batch's Response once it is finished (compute()'s, byte for byte),
+  /// nullopt while items remain.
+  [[nodiscard]] std::optional<Response> compute_batch_item(api::BatchRun& batch);
+
   /// Ends a request begun with begin(): metrics and the access line, which gives the
   /// bytes of its answer on the wire (status line, headers and body).
   void finish(const Exchange& exchange, std::string_view method, std::string_view path, int status,
@@ -118,6 +129,8 @@ class Router {
   /// Access-Control-Allow-Origin for a request with this Origin header, empty for none.
   [[nodiscard]] std::string allowed_origin(std::string_view origin) const;
   [[nodiscard]] bool authorized(const RequestView& request) const;
+  /// compute_answer(), or a logged 500 when an exception (a bug, or bad_alloc) escapes it.
+  [[nodiscard]] Response guarded(std::string_view path, const std::function<Response()>& compute_answer);
   void log_access(std::string_view method, std::string_view path, int status, double seconds,
                   std::string_view id, std::string_view client, std::size_t bytes_sent);
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "api/handler.hpp"
+#include "api/route_table.hpp"
 #include "tests/support/batch_body.hpp"
 
 namespace bezier::api {
@@ -30,6 +31,14 @@ std::string expected_answer(const std::vector<Item>& items, const Limits& limits
     text += R"({"body":)" + alone.body + R"(,"status":)" + std::to_string(alone.status) + '}';
   }
   return text + "]}";
+}
+
+// Limits under which the mixed items fit one batch: ten of them are of routes the per-item
+// work cap bounds, each charged the whole cap, and the others are charged too.
+Limits roomy_batch_work() {
+  Limits limits;
+  limits.max_batch_work = 100 * limits.max_work;
+  return limits;
 }
 
 const std::vector<Item>& mixed_items() {
@@ -63,7 +72,7 @@ const std::vector<Item>& mixed_items() {
 }
 
 TEST(Batch, EveryItemIsTheRoutesAnswerAloneByteForByte) {
-  const Limits limits;
+  const Limits limits = roomy_batch_work();
   const std::vector<Item>& items = mixed_items();
   const Reply batch = handle("/batch", batch_body(items), limits);
   ASSERT_EQ(batch.status, 200) << batch.body;
@@ -145,7 +154,7 @@ struct Seen {
 TEST(Batch, TheObserverSeesEveryItemInOrder) {
   const std::vector<Item>& items = mixed_items();
   Seen seen;
-  const Reply batch = handle("/batch", batch_body(items), Limits{}, seen.observer());
+  const Reply batch = handle("/batch", batch_body(items), roomy_batch_work(), seen.observer());
   ASSERT_EQ(batch.status, 200);
   ASSERT_EQ(seen.items.size(), items.size());
   const json answer = json::parse(batch.body);
@@ -181,33 +190,86 @@ TEST(BatchLimits, MoreItemsThanTheLimitAreRefusedWholeBeforeAnyWork) {
   EXPECT_TRUE(seen.items.empty());
 }
 
-TEST(BatchLimits, TheBatchWorkCapChargesEachWorkCappedItemThePerItemCap) {
+// What the batch charges an item: its route's cost model (api/route_table.hpp).
+std::int64_t charge(const Item& item, const Limits& limits) {
+  return find_compute_route(item.path)->work_bound(json::parse(item.body), limits);
+}
+
+TEST(BatchLimits, TheBatchWorkCapChargesEveryItemItsRoutesCostModel) {
   Limits limits;
   limits.max_work = 100000;
-  limits.max_batch_work = 3 * limits.max_work;
   const Item pair{"/intersections", R"({"curves":[{"points":[[0,0],[1,2],[2,-1],[3,1]]},{"points":[[0,1],[3,0]]}]})"};
   const Item length{"/length", R"({"points":[[0,0],[3,4]]})"};
-  // Three charged items (and any number of uncharged ones) fit.
-  std::vector<Item> items = classify_items(50);
+  std::vector<Item> items = classify_items(5);
   items.push_back(pair);
   items.push_back(length);
   items.push_back(pair);
   items.push_back({"/evaluate", R"({"points":[[0,0],[1,1]],"t":0.5})"});
   items.push_back({"/bounds", R"({"points":[[0,0],[1,1]]})"});
   items.push_back({"/polar", R"({"points":[[0,0],[1,1]],"t0":0.5})"});
+  items.push_back({"/segments", R"({"path":"M0 0 L1 1"})"});
+  std::int64_t total = 0;
+  for (const Item& item : items) {
+    EXPECT_GT(charge(item, limits), 0) << item.path;
+    total += charge(item, limits);
+  }
+  // An item of a route the per-item cap bounds is charged that cap: the most it may spend.
+  EXPECT_EQ(charge(pair, limits), limits.max_work);
+  EXPECT_EQ(charge(length, limits), limits.max_work);
+  // Charges that add up to the batch's cap fit.
+  limits.max_batch_work = total;
   Seen seen;
   const Reply fits = handle("/batch", batch_body(items), limits, seen.observer());
   EXPECT_EQ(fits.status, 200);
   EXPECT_EQ(fits.body, expected_answer(items, limits));
-  // A fourth is refused whole, before any item is computed.
-  items.push_back({"/nearest", R"({"points":[[0,0],[1,1]],"targets":[[0,1]]})"});
+  // One unit less, and the batch is refused whole, before any item is computed.
+  limits.max_batch_work = total - 1;
   seen.items.clear();
   const Reply refused = handle("/batch", batch_body(items), limits, seen.observer());
   EXPECT_EQ(refused.status, 422);
   EXPECT_NE(refused.body.find("\"urn:bezier-service:problem:work-cap\""), std::string::npos) << refused.body;
   EXPECT_TRUE(refused.limit_reached);
   EXPECT_TRUE(pointers_of(refused).empty());
-  EXPECT_NE(refused.body.find("4 items of routes"), std::string::npos) << refused.body;
+  EXPECT_NE(refused.body.find("up to " + std::to_string(total) + " work units"), std::string::npos) << refused.body;
+  EXPECT_TRUE(seen.items.empty());
+}
+
+// Items cheap one by one but large (what the per-item limits admit) add up: charged by their
+// sizes, not only by the per-item work cap, so a batch of them is refused at the defaults.
+TEST(BatchLimits, ItemsOfRoutesBoundedByTheirSizesAreChargedByTheirSizes) {
+  const Limits defaults;
+  std::string points = "[";
+  for (int i = 0; i <= 20; ++i) points += (i > 0 ? ",[" : "[") + std::to_string(i) + ",1]";
+  points += "]";
+  const Item one_t{"/evaluate", R"({"points":)" + points + R"(,"t":0.5})"};
+  const Item all_t{"/evaluate", R"({"points":)" + points + R"(,"samples":10000})"};
+  const Item all_t_derivatives{"/evaluate", R"({"points":)" + points + R"(,"samples":500,"derivatives":19})"};
+  // More t values, more derivatives, a frame, a higher degree: each costs more.
+  EXPECT_LT(charge(one_t, defaults), charge(all_t, defaults));
+  EXPECT_LT(charge({"/evaluate", R"({"points":[[0,0],[1,1]],"samples":10000})"}, defaults), charge(all_t, defaults));
+  EXPECT_LT(charge(all_t, defaults),
+            charge({"/evaluate", R"({"points":)" + points + R"(,"samples":10000,"frame":true})"}, defaults));
+  EXPECT_LT(charge({"/evaluate", R"({"points":)" + points + R"(,"samples":500})"}, defaults),
+            charge(all_t_derivatives, defaults));
+  // The route refuses more t values than the limit before computing any: charged at the limit.
+  EXPECT_EQ(charge({"/evaluate", R"({"points":)" + points + R"(,"samples":1e9})"}, defaults), charge(all_t, defaults));
+  EXPECT_LT(charge({"/segments", R"({"path":"M0 0 L1 1"})"}, defaults),
+            charge({"/segments", R"({"path":"M0 0 L1 1 2 2 3 3 4 4"})"}, defaults));
+  EXPECT_EQ(charge({"/segments", R"({"path":"M0 0 A1 1 0 0 1 2 0"})"}, defaults),
+            charge({"/segments", R"({"path":")" + std::string(defaults.max_path_segments, 'L') + R"("})"}, defaults));
+  // With room for their answers, as many as their charges fit are computed, one more is
+  // refused by its work alone, before any item runs.
+  const std::size_t fit = static_cast<std::size_t>(defaults.max_batch_work / charge(all_t_derivatives, defaults));
+  ASSERT_GE(fit, 1u);
+  ASSERT_LT(fit, 100u);
+  Limits roomy_answers = defaults;
+  roomy_answers.max_batch_answer_bytes = std::size_t{1} << 32;
+  EXPECT_EQ(handle("/batch", batch_body(std::vector<Item>(fit, all_t_derivatives)), roomy_answers).status, 200);
+  Seen seen;
+  const Reply refused =
+      handle("/batch", batch_body(std::vector<Item>(fit + 1, all_t_derivatives)), roomy_answers, seen.observer());
+  EXPECT_EQ(refused.status, 422);
+  EXPECT_NE(refused.body.find("work-cap"), std::string::npos) << refused.body;
   EXPECT_TRUE(seen.items.empty());
 }
 
@@ -240,8 +302,12 @@ TEST(BatchLimits, AnswersThatCertainlyExceedTheCapAreRefusedBeforeAnyItemIsCompu
   points += "]";
   const std::vector<Item> items(70, Item{"/evaluate", R"({"points":)" + points + R"(,"samples":10000})"});
   const Limits defaults;
+  // The batch's work cap, which refuses these items first at the defaults, set aside.
+  Limits roomy_work = defaults;
+  roomy_work.max_batch_work = std::int64_t{1} << 50;
+  EXPECT_NE(handle("/batch", batch_body(items), defaults).body.find("work-cap"), std::string::npos);
   Seen seen;
-  const Reply refused = handle("/batch", batch_body(items), defaults, seen.observer());
+  const Reply refused = handle("/batch", batch_body(items), roomy_work, seen.observer());
   EXPECT_EQ(refused.status, 422);
   EXPECT_TRUE(refused.limit_reached);
   EXPECT_TRUE(seen.items.empty());
@@ -255,7 +321,7 @@ TEST(BatchLimits, AnswersThatCertainlyExceedTheCapAreRefusedBeforeAnyItemIsCompu
   EXPECT_EQ(handle("/batch", batch_body(two), defaults).body, expected_answer(two, roomy));
   // A body the route refuses is not counted: its answer is a short problem.
   const std::vector<Item> refused_items(70, Item{"/evaluate", R"({"points":)" + points + R"(,"samples":10000,"x":1})"});
-  EXPECT_EQ(handle("/batch", batch_body(refused_items), defaults).status, 200);
+  EXPECT_EQ(handle("/batch", batch_body(refused_items), roomy_work).status, 200);
 }
 
 // The cap is on the whole answer, its closing "]}" included: an answer one or two bytes

@@ -18,8 +18,8 @@
 // (then the batch holds exactly those items): the answer the contract (api/batch_route.hpp,
 // README "POST /batch") gives, computed here from each item sent alone to its route:
 //   - more items than max_batch_items: 422 at /requests;
-//   - items of /loop-area, /intersections, /length, /nearest, /contains, /boolean times max_work above
-//     max_batch_work: the work-cap 422;
+//   - items whose cost models (api/route_cost.hpp: max_work for the work-capped routes) add
+//     up above max_batch_work: the work-cap 422;
 //   - an answer longer than max_batch_answer_bytes: 422 at the first item whose answer
 //     makes it longer (the answer of that item and those before it, closed), or at a
 //     later item with none computed (lower bounds of /evaluate and /polar answers);
@@ -44,6 +44,7 @@
 #include "api/handler.hpp"
 #include "api/limits.hpp"
 #include "api/parse_json.hpp"
+#include "api/route_table.hpp"
 #include "tests/fuzz/api_limits.hpp"
 #include "tests/fuzz/fuzz_support.hpp"
 #include "tests/fuzz/reply_checks.hpp"
@@ -63,18 +64,10 @@ constexpr std::array<std::string_view, 13> kItemPaths = {
     "/boolean"};
 constexpr std::size_t kComputeRoutes = 8;
 
-// The routes whose items a batch charges max_work each (README, "POST /batch").
-constexpr std::array<std::string_view, 6> kChargedRoutes = {"/loop-area", "/intersections", "/length",
-                                                            "/nearest", "/contains", "/boolean"};
-
 bool is_compute_route(std::string_view path) {
   return path == "/contains" || path == "/boolean" ||
          std::find(kItemPaths.begin(), kItemPaths.begin() + kComputeRoutes, path) !=
              kItemPaths.begin() + kComputeRoutes;
-}
-
-bool is_charged(std::string_view path) {
-  return std::find(kChargedRoutes.begin(), kChargedRoutes.end(), path) != kChargedRoutes.end();
 }
 
 // The other API targets' limits (api_limits.hpp) with a batch's: the defaults, with room
@@ -96,6 +89,18 @@ bezier::api::Limits tight_limits(std::size_t answer_bytes) {
 }
 
 using Item = bezier::test::BatchItem;
+
+// What a batch charges its items (README, "POST /batch"): each its route's cost model
+// (api/route_cost.hpp, named in api/route_table.hpp), from its body as the batch parses it.
+std::int64_t batch_charge(const std::vector<Item>& items, const bezier::api::Limits& limits) {
+  std::int64_t work = 0;
+  for (const Item& item : items) {
+    if (const bezier::api::ComputeRoute* route = bezier::api::find_compute_route(item.path)) {
+      work += route->work_bound(bezier::api::parse_json(item.body).value, limits);
+    }
+  }
+  return work;
+}
 
 std::vector<Item> split_items(std::string_view text) {
   std::vector<Item> items;
@@ -203,11 +208,11 @@ void check_against_items_alone(const std::vector<Item>& items, const bezier::api
     check(observed.empty(), "items computed in a batch refused for its items' count");
     return;
   }
-  const auto charged = std::count_if(items.begin(), items.end(), [](const Item& item) { return is_charged(item.path); });
-  if (charged > 0 && limits.max_batch_work / charged < limits.max_work) {
+  const std::int64_t charged = batch_charge(items, limits);
+  if (charged > limits.max_batch_work) {
     check(reply.status == 422 && reply.limit_reached &&
               answer.value("type", "") == "urn:bezier-service:problem:work-cap",
-          [&] { return std::to_string(charged) + " charged items, answered " + reply.body; });
+          [&] { return std::to_string(charged) + " units charged to the items, answered " + reply.body; });
     check(observed.empty(), "items computed in a batch refused for its work");
     return;
   }

@@ -235,3 +235,39 @@ work_bound_seed("wide_quartic_loop_area", [[(1, Fraction(1, 2)), (Fraction(1, 2)
                                             ("-74e-17", "-61e-2")]], route=2, budget_index=1)
 work_bound_seed("tiny_and_huge", [[("1e-300", "1e300"), ("-1e300", "1e-300"), (1, 1)],
                                   [("1e300", "1e300"), ("-1e-300", "-1e300")]], budget_index=2)
+
+
+# request_cost_fuzzer: byte 0 the route (0 /batch, k the k-th compute route of
+# api/route_table.hpp), byte 1 the work cap index (22e6 / 10^i), then the body as it is
+# (read from the front, not through FuzzedDataProvider).
+COST_ROUTES = ["/batch", "/evaluate", "/polar", "/classify", "/loop-area", "/intersections", "/length",
+               "/bounds", "/nearest", "/contains", "/boolean", "/flatten", "/offset", "/segments"]
+
+
+def request_cost_seed(name, path, body, budget_index=0):
+    folder = os.path.join(HERE, "corpus", "request_cost_fuzzer")
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "seed_" + name), "wb") as f:
+        f.write(bytes([COST_ROUTES.index(path), budget_index]) + body.encode())
+
+
+EXTREME_PAIR = ('{"curves":[{"points":[[-3e-300,2e-300],[8.5e+307,1e-310],[-3e-300,1.7e+308],[8.5e+307,1e-300]]},'
+                '{"points":[[1e-310,1e-300],[1e-310,-1e-300],[1.7e+308,1e-300],[-3e-300,-1e-300]]}],'
+                '"method":"subdivision"}')
+SPACE_CURVE_20 = "[" + ",".join("[%d,1,-1]" % i for i in range(21)) + "]"
+request_cost_seed("extreme_subdivision", "/intersections", EXTREME_PAIR)
+request_cost_seed("extreme_subdivision_batch", "/batch",
+                  '{"requests":[' + ",".join(['{"path":"/intersections","body":' + EXTREME_PAIR + "}"] * 10) + "]}",
+                  budget_index=2)
+request_cost_seed("zero_length_path", "/intersections", '{"curves":[{"path":"M0 0' + "-0-0" * 1200 + '"}]}',
+                  budget_index=1)
+request_cost_seed("evaluate_samples", "/evaluate", '{"points":' + SPACE_CURVE_20 + ',"samples":10000}')
+request_cost_seed("evaluate_batch", "/batch",
+                  '{"requests":[' + ",".join(['{"path":"/evaluate","body":{"points":' + SPACE_CURVE_20 +
+                                              ',"samples":500,"derivatives":19,"frame":true}}'] * 12) + "]}")
+request_cost_seed("polar_samples", "/polar", '{"points":' + SPACE_CURVE_20 + ',"t0":[0.1,0.2,0.3],"samples":10000}')
+request_cost_seed("classify", "/classify", '{"points":[[0,0],[1e-310,1e308],[0,1],[1,0]]}')
+request_cost_seed("bounds_path", "/bounds",
+                  '{"path":"M0 0' + "".join(" C%d 1 %d -1 %d 0" % (3 * i + 1, 3 * i + 2, 3 * i + 3) for i in range(500)) +
+                  '"}')
+request_cost_seed("segments_arcs", "/segments", '{"path":"M0 0 A1e300 1e300 0 0 1 1 0","arc_tolerance":1e-300}')

@@ -13,10 +13,7 @@
 // few ulps away, a dyadic fraction, or raw IEEE bits (finite ones).
 //
 // What a unit costs is measured once, at start-up, on a request that spends its whole
-// budget in plain search steps (seconds_per_unit): the largest CPU time per unit of seven
-// runs. The runs differ by up to half as the allocator's state decides how many pages the
-// search's memory first touches (each a page fault, dear on a virtual machine); an input
-// pays them too, so the unit includes them. An input fails when
+// budget in plain search steps (seconds_per_unit in unit_cpu_time.hpp). An input fails when
 //   cpu > kMultiple * unit * (budget + kFixedUnits),
 // kFixedUnits standing for what every request costs whatever its budget: the JSON, the
 // phases bounded by the degrees (factorisations of improper curves, up to about a
@@ -44,6 +41,7 @@
 #include "api/handler.hpp"
 #include "api/limits.hpp"
 #include "tests/fuzz/fuzz_support.hpp"
+#include "tests/fuzz/unit_cpu_time.hpp"
 
 namespace {
 
@@ -54,12 +52,6 @@ constexpr double kMultiple = 3.0;
 constexpr double kFixedUnits = 500000.0;
 constexpr std::array<std::int64_t, 4> kBudgets = {22000000, 2200000, 220000, 22000};
 
-double thread_cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
 struct Timed {
   bezier::api::Reply reply;
   double cpu = 0.0;
@@ -68,37 +60,10 @@ struct Timed {
 Timed timed_handle(const std::string& path, const std::string& body, std::int64_t budget) {
   bezier::api::Limits limits;
   limits.max_work = budget;
-  const double start = thread_cpu_seconds();
+  const double start = bezier::fuzz::thread_cpu_seconds();
   bezier::api::Reply reply = bezier::api::handle(path, body, limits);
-  const double cpu = thread_cpu_seconds() - start;
+  const double cpu = bezier::fuzz::thread_cpu_seconds() - start;
   return {std::move(reply), cpu};
-}
-
-/// CPU seconds per work unit on a request that spends its budget in plain search steps: a
-/// parabola 1e14 tall against a steep line, by subdivision (every box at the search width
-/// along the crossing stays undecided in doubles, so the search runs into the cap).
-double seconds_per_unit() {
-  static const double unit = [] {
-    const Json body = {{"curves",
-                        {{{"points", {{2.0, -2.0}, {-1.0, 1e14}, {-1.0, -1.0}}}},
-                         {{"points", {{-0.5, 0.0}, {-2.0, 1e6}}}}}},
-                       {"method", "subdivision"}};
-    constexpr std::int64_t kBudget = 2200000;
-    std::array<double, 7> per_unit{};
-    for (double& t_unit : per_unit) {
-      const Timed t = timed_handle("/intersections", body.dump(), kBudget);
-      if (t.reply.status != 422) {
-        std::fprintf(stderr, "work_bound_fuzzer: the reference request did not reach the cap\n");
-        std::abort();
-      }
-      t_unit = t.cpu / static_cast<double>(kBudget);
-    }
-    const double slowest = *std::max_element(per_unit.begin(), per_unit.end());
-    std::fprintf(stderr, "work_bound_fuzzer: %.3g ns per work unit; limit %.0fx\n", slowest * 1e9,
-                 kMultiple);
-    return slowest;
-  }();
-  return unit;
 }
 
 /// Coordinates of every magnitude a request can carry.
@@ -164,7 +129,7 @@ Json curve(FuzzedDataProvider& data, HostileNumbers& numbers) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t size) {
-  const double unit = seconds_per_unit();
+  const double unit = bezier::fuzz::seconds_per_unit("work_bound_fuzzer");
   FuzzedDataProvider data(bytes, size);
   const std::int64_t budget = kBudgets[data.ConsumeIntegralInRange<std::size_t>(0, 3)];
   const int route = data.ConsumeIntegralInRange<int>(0, 2);
