@@ -52,10 +52,14 @@ void count_crossings(const core::Curve& piece, const Ray& ray, OriginEnd origin,
     const Point2 v = pts[static_cast<std::size_t>(i)] - ray.origin;
     const double c = core::cross(ray.direction, v);
     const double r = core::dot(ray.direction, v);
-    min_c = std::fmin(min_c, c);
-    max_c = std::fmax(max_c, c);
-    min_r = std::fmin(min_r, r);
-    max_r = std::fmax(max_r, r);
+    // Comparisons rather than std::fmin / std::fmax, which are library calls here: the
+    // extremes start infinite and only ever take a compared value, so a NaN c or r (only
+    // from a coordinate difference that overflows) is passed over as fmin / fmax pass it
+    // over, and a zero's sign does not matter to the tests below.
+    if (c < min_c) min_c = c;
+    if (c > max_c) max_c = c;
+    if (r < min_r) min_r = r;
+    if (r > max_r) max_r = r;
     if (i > 0) {
       rising = rising && c >= previous;
       falling = falling && c <= previous;
