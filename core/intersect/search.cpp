@@ -1,6 +1,7 @@
 #include "core/intersect/search.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cmath>
 #include <cstdint>
@@ -158,14 +159,30 @@ class Searcher {
 
   void make_pieces(const Box& b) {
     if (!b.compensated) {
-      if (!f_ok_) fast_piece_into(*in_.f, b.t.lo, b.t.hi, f_piece_);
-      if (!g_ok_) fast_piece_into(*in_.g, b.s.lo, b.s.hi, g_piece_);
+      if (!f_ok_) {
+        fast_piece_into(*in_.f, b.t.lo, b.t.hi, f_piece_);
+        f_compensated_.reset();
+      }
+      if (!g_ok_) {
+        fast_piece_into(*in_.g, b.s.lo, b.s.hi, g_piece_);
+        g_compensated_.reset();
+      }
     } else {
       // A frame centred near the box, so the rounded local coordinates are as small as
-      // the pieces themselves; both pieces must share it.
+      // the pieces themselves; both pieces must share it. A compensated piece depends only
+      // on its interval and the centre, so one still in place for the same ones is kept
+      // (a clip of the other interval, or a sibling box on the same interval).
       const Point2 center = evaluate_with_tangent(*in_.f, b.t.lo).point;
-      f_piece_ = compensated_piece(*in_.f, b.t.lo, b.t.hi, center);
-      g_piece_ = compensated_piece(*in_.g, b.s.lo, b.s.hi, center);
+      const CompensatedKey f_key{b.t.lo, b.t.hi, center};
+      const CompensatedKey g_key{b.s.lo, b.s.hi, center};
+      if (!(f_compensated_ && *f_compensated_ == f_key)) {
+        f_piece_ = compensated_piece(*in_.f, b.t.lo, b.t.hi, center);
+        f_compensated_ = f_key;
+      }
+      if (!(g_compensated_ && *g_compensated_ == g_key)) {
+        g_piece_ = compensated_piece(*in_.g, b.s.lo, b.s.hi, center);
+        g_compensated_ = g_key;
+      }
     }
     f_ok_ = g_ok_ = true;
   }
@@ -466,8 +483,25 @@ class Searcher {
   bool excluding_ = !in_.overlaps.empty();
   SearchOutput out_;
   BoxStack stack_;
+  /// The interval and centre of a compensated piece (compensated_piece's arguments), compared
+  /// bit for bit (a zero's sign included): the same doubles give the same piece.
+  struct CompensatedKey {
+    double lo, hi;
+    Point2 center;
+    bool operator==(const CompensatedKey& o) const noexcept {
+      const auto same = [](double a, double b) {
+        return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+      };
+      return same(lo, o.lo) && same(hi, o.hi) && same(center.x, o.center.x) &&
+             same(center.y, o.center.y);
+    }
+  };
+
   Piece f_piece_, g_piece_;
   bool f_ok_ = false, g_ok_ = false;
+  /// What f_piece_ / g_piece_ hold when they are compensated pieces; empty when they are fast
+  /// ones.
+  std::optional<CompensatedKey> f_compensated_, g_compensated_;
   std::optional<FatCurveOperator> f_fit2_, g_fit2_;
 };
 

@@ -147,7 +147,7 @@ BEZIER_FMA_CLONES void fast_piece_into(const WorkingCurve& f, double a, double b
   out.error = f.frame_error + 3.02 * f.degree * kUnitRoundoff * f.magnitude + 0x1p-1000;
 }
 
-Piece compensated_piece(const WorkingCurve& f, double a, double b, Point2 center) {
+BEZIER_FMA_CLONES Piece compensated_piece(const WorkingCurve& f, double a, double b, Point2 center) {
   const SmallArray<dd::Real> x_exact = exact_coordinates(f.x, f.x_lo);
   const SmallArray<dd::Real> y_exact = exact_coordinates(f.y, f.y_lo);
   const SmallArray<dd::Real> xs = bernstein::portion<dd::Real>(x_exact, a, b);

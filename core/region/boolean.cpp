@@ -27,10 +27,11 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
     return keeps(op, fills(a.fill_rule, w[0]), fills(rule_b, w[1]));
   };
 
+  const SideWindingIndex index(arrangement);
   std::vector<DirectedEdge> kept;
   std::vector<bool> kept_reversed;
   for (std::size_t g = 0; g < arrangement.groups.size(); ++g) {
-    const SideWindingResult sides = side_windings(arrangement, g, budget);
+    const SideWindingResult sides = side_windings(arrangement, index, g, budget);
     if (sides.status == SideWindingStatus::work_cap_reached) {
       result.work = budget.spent;
       result.status = BooleanStatus::work_cap_reached;

@@ -1,5 +1,6 @@
 #include "core/region/side_winding.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <span>
 #include <vector>
@@ -51,10 +52,14 @@ void count_crossings(const core::Curve& piece, const Ray& ray, OriginEnd origin,
     const Point2 v = pts[static_cast<std::size_t>(i)] - ray.origin;
     const double c = core::cross(ray.direction, v);
     const double r = core::dot(ray.direction, v);
-    min_c = std::fmin(min_c, c);
-    max_c = std::fmax(max_c, c);
-    min_r = std::fmin(min_r, r);
-    max_r = std::fmax(max_r, r);
+    // Comparisons rather than std::fmin / std::fmax, which are library calls here: the
+    // extremes start infinite and only ever take a compared value, so a NaN c or r (only
+    // from a coordinate difference that overflows) is passed over as fmin / fmax pass it
+    // over, and a zero's sign does not matter to the tests below.
+    if (c < min_c) min_c = c;
+    if (c > max_c) max_c = c;
+    if (r < min_r) min_r = r;
+    if (r > max_r) max_r = r;
     if (i > 0) {
       rising = rising && c >= previous;
       falling = falling && c <= previous;
@@ -105,6 +110,49 @@ void count_crossings(const core::Curve& piece, const Ray& ray, OriginEnd origin,
                   false, depth + 1, count, budget);
 }
 
+/// Whether an edge whose control points lie in `box` may change the ray's count: false only
+/// when count_crossings' first pass over those points would return at once with no crossing
+/// and the ray still clear, i.e. every c_i = cross(d, P_i - m) > clearance, or every
+/// c_i < -clearance, or every r_i = dot(d, P_i - m) < -clearance (then no end of the edge is
+/// near the ray either). c and r computed in doubles are monotone in each coordinate of P
+/// (each subtraction, product by a fixed factor and difference rounds monotonically, and
+/// -ffp-contract=off keeps them separate), so their extremes over the box's points are
+/// bounded by their values at the box's corners chosen by the signs of d; the margin of
+/// twice the clearance leaves room beyond that. Only called when no value can overflow
+/// (SideWindingIndex::prune).
+bool may_meet(const EdgeBox& box, const Ray& ray) {
+  const Point2 d = ray.direction;
+  const Point2 c_low{d.y >= 0.0 ? box.x_hi : box.x_lo, d.x >= 0.0 ? box.y_lo : box.y_hi};
+  const Point2 c_high{d.y >= 0.0 ? box.x_lo : box.x_hi, d.x >= 0.0 ? box.y_hi : box.y_lo};
+  const Point2 r_high{d.x >= 0.0 ? box.x_hi : box.x_lo, d.y >= 0.0 ? box.y_hi : box.y_lo};
+  const double margin = 2.0 * ray.clearance;
+  if (core::cross(d, c_low - ray.origin) > margin) return false;
+  if (core::cross(d, c_high - ray.origin) < -margin) return false;
+  if (core::dot(d, r_high - ray.origin) < -margin) return false;
+  return true;
+}
+
+/// Charges the first control-point pass (n + 1 units) of every edge in [from, until) outside
+/// `group`, as testing them one by one would; false, with the budget spent up to and
+/// including the edge that passed the cap, when the cap is reached.
+bool charge_skipped(const Arrangement& arrangement, const SideWindingIndex& index,
+                    std::size_t group, std::size_t from, std::size_t until, WorkBudget& budget) {
+  if (from >= until) return true;
+  std::int64_t cost = index.pass_cost_before[until] - index.pass_cost_before[from];
+  for (const std::size_t e : arrangement.groups[group].edges) {
+    if (e >= from && e < until) cost -= arrangement.edges[e].piece.degree() + 1;
+  }
+  if (budget.spent + cost <= budget.cap) {
+    budget.spent += cost;
+    return true;
+  }
+  for (std::size_t e = from; e < until; ++e) {
+    if (arrangement.edges[e].group == group) continue;
+    if (!budget.charge(arrangement.edges[e].piece.degree() + 1)) return false;
+  }
+  return true;
+}
+
 /// The first nonzero derivative of the curve at t (its tangent direction there).
 Point2 tangent_at(const core::Curve& curve, double t) {
   const std::vector<Point2> d = core::derivatives_at(curve, t, curve.degree());
@@ -116,9 +164,20 @@ Point2 tangent_at(const core::Curve& curve, double t) {
 
 }  // namespace
 
-SideWindingResult side_windings(const Arrangement& arrangement, std::size_t group,
-                                WorkBudget& budget) {
+SideWindingIndex::SideWindingIndex(const Arrangement& arrangement)
+    : boxes(arrangement), prune(arrangement.scale <= kPruneScaleLimit) {
+  pass_cost_before.reserve(arrangement.edges.size() + 1);
+  pass_cost_before.push_back(0);
+  for (const ArrangementEdge& edge : arrangement.edges) {
+    pass_cost_before.push_back(pass_cost_before.back() + edge.piece.degree() + 1);
+  }
+}
+
+SideWindingResult side_windings(const Arrangement& arrangement, const SideWindingIndex& index,
+                                std::size_t group, WorkBudget& budget) {
   SideWindingResult result;
+  const std::vector<ArrangementEdge>& edges = arrangement.edges;
+  std::vector<std::size_t> candidates;
   const CoincidentGroup& g = arrangement.groups[group];
   const ArrangementEdge& rep = arrangement.edges[g.representative];
   const core::Split<Point2> halves = core::subdivide(rep.exact, 0.5);
@@ -136,8 +195,23 @@ SideWindingResult side_windings(const Arrangement& arrangement, std::size_t grou
                   kRayClearanceRel * arrangement.scale};
     std::array<int, 2> left{0, 0};
     bool clear = true;
-    for (std::size_t e = 0; e < arrangement.edges.size() && clear; ++e) {
-      const ArrangementEdge& edge = arrangement.edges[e];
+    candidates.clear();
+    index.boxes.collect(
+        [&](const EdgeBox& box) { return !index.prune || may_meet(box, ray); }, candidates);
+    std::sort(candidates.begin(), candidates.end());
+    // Edges before `next` not yet charged: the skipped ones are charged what their first
+    // control-point pass costs, so the work (and where the cap is met) stays that of
+    // testing every edge in order.
+    std::size_t next = 0;
+    for (std::size_t k = 0; k <= candidates.size() && clear; ++k) {
+      const std::size_t until = k < candidates.size() ? candidates[k] : edges.size();
+      if (!charge_skipped(arrangement, index, group, next, until, budget)) {
+        result.status = SideWindingStatus::work_cap_reached;
+        return result;
+      }
+      if (k == candidates.size()) break;
+      next = until + 1;
+      const ArrangementEdge& edge = edges[until];
       if (edge.group == group) continue;
       Count count;
       count_crossings(edge.piece, ray, OriginEnd::none, true, 0, count, budget);

@@ -4,8 +4,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "core/region/arrangement.hpp"
+#include "core/region/edge_box_index.hpp"
 
 namespace bezier::region {
 
@@ -35,6 +37,22 @@ struct SideWindingResult {
   SideWindingStatus status = SideWindingStatus::ok;
 };
 
+/// What side_windings shares between the groups of one arrangement.
+struct SideWindingIndex {
+  /// Rays skip the edges whose boxes show they cannot matter only while the scale is below
+  /// 2^1000: then no difference or product of coordinates overflows.
+  static constexpr double kPruneScaleLimit = 0x1p1000;
+
+  explicit SideWindingIndex(const Arrangement& arrangement);
+
+  /// The edges' boxes.
+  EdgeBoxIndex boxes;
+  /// pass_cost_before[e]: the work of the first control-point pass of edges 0 .. e - 1, the
+  /// sum of their (n + 1).
+  std::vector<std::int64_t> pass_cost_before;
+  bool prune = true;
+};
+
 /// Each operand's winding number on both sides of group g, by a ray from the middle m of the
 /// representative edge (its exact piece at t = 1/2) into its left side.
 ///
@@ -58,7 +76,13 @@ struct SideWindingResult {
 /// kRayMaxDepth halvings (a tangency to the ray). Directions: the left normal of the
 /// representative at m, then turned by fixed angles up to +-1.4 radians (still on the left).
 /// Each control-point pass is charged (n + 1) units and each halving (n + 1)^2.
-[[nodiscard]] SideWindingResult side_windings(const Arrangement& arrangement, std::size_t group,
+///
+/// The edges are counted in their order in the arrangement, stopping at the first unclear
+/// one. An edge whose control-point box shows at once that it neither crosses the ray nor
+/// comes near it (`index`) is not looked at, but its first pass is still charged: the
+/// answer, the work and where the cap is met are those of counting every edge.
+[[nodiscard]] SideWindingResult side_windings(const Arrangement& arrangement,
+                                              const SideWindingIndex& index, std::size_t group,
                                               WorkBudget& budget);
 
 }  // namespace bezier::region

@@ -130,6 +130,13 @@ struct PieceTest {
   bool far = false;
 };
 
+/// The smaller and the larger of two values that are not NaN, by a comparison: std::fmin and
+/// std::fmax compile to library calls. The pieces' values are finite (control points below 2
+/// in magnitude after scaling, targets within kFar), and where the two differ only in a zero's
+/// sign the result is only compared or added to a positive bound, so the tests decide the same.
+double smaller(double a, double b) { return b < a ? b : a; }
+double larger(double a, double b) { return b > a ? b : a; }
+
 /// The tests of winding.hpp on one piece `q` (control points, within `error` of the exact
 /// piece in each coordinate) against `target` and the band; `far` when an ancestor showed
 /// the piece beyond the band.
@@ -143,11 +150,11 @@ PieceTest test_piece(std::span<const DdPoint> q, Point2 target, double band, dou
   for (std::size_t i = 0; i <= n; ++i) {
     w[i] = {dd::to_double(dd::sub(q[i].x, dd::from(target.x))),
             dd::to_double(dd::sub(q[i].y, dd::from(target.y)))};
-    e[i] = 4.0 * u * std::fmax(std::fabs(w[i].x), std::fabs(w[i].y)) + error + kTiny;
-    x_lo = std::fmin(x_lo, w[i].x - e[i]);
-    x_hi = std::fmax(x_hi, w[i].x + e[i]);
-    y_lo = std::fmin(y_lo, w[i].y - e[i]);
-    y_hi = std::fmax(y_hi, w[i].y + e[i]);
+    e[i] = 4.0 * u * larger(std::fabs(w[i].x), std::fabs(w[i].y)) + error + kTiny;
+    x_lo = smaller(x_lo, w[i].x - e[i]);
+    x_hi = larger(x_hi, w[i].x + e[i]);
+    y_lo = smaller(y_lo, w[i].y - e[i]);
+    y_hi = larger(y_hi, w[i].y + e[i]);
   }
   PieceTest out;
   out.far = far;
@@ -196,8 +203,8 @@ PieceTest test_piece(std::span<const DdPoint> q, Point2 target, double band, dou
     // relative to the target has fallen below the band.
     double w_max = 0.0, e_max = 0.0;
     for (std::size_t i = 0; i <= n; ++i) {
-      w_max = std::fmax(w_max, std::fmax(std::fabs(w[i].x), std::fabs(w[i].y)));
-      e_max = std::fmax(e_max, e[i]);
+      w_max = larger(w_max, larger(std::fabs(w[i].x), std::fabs(w[i].y)));
+      e_max = larger(e_max, e[i]);
     }
     if (foot_within_band(std::span<const Point2>(w.data(), n + 1), t, w_max, e_max, band)) {
       out.outcome = PieceOutcome::boundary;
