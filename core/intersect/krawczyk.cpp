@@ -12,9 +12,7 @@ namespace bezier::core {
 
 namespace {
 
-/// Relative slack on every bound assembled from rounded sums and products of nonnegative
-/// terms (a handful of roundings of at most u each, far below 2^-40).
-constexpr double kSlack = 1 + 0x1p-40;
+constexpr double kSlack = intersect_tuning::kKrawczykSlack;
 /// The degree up to which curves are evaluated on the stack.
 constexpr std::size_t kMaxDegree = numeric_tuning::kInlineEntries - 1;
 using namespace intersect_tuning;

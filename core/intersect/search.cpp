@@ -86,7 +86,7 @@ class BoxStack {
   [[nodiscard]] bool empty() const noexcept { return size_ == 0; }
 
  private:
-  static constexpr std::size_t kInline = 32;
+  static constexpr std::size_t kInline = intersect_tuning::kSearchStackInline;
   /// Left unconstructed (Box has member initialisers): a slot is written before it is read.
   union Slot {
     Slot() {}  // NOLINT(modernize-use-equals-default): = default would initialise the Box
@@ -106,7 +106,8 @@ class Searcher {
         budget_(budget),
         krawczyk_radius_(power_of_two_at_most(input.width / 2)),
         use_krawczyk_(input.method == IntersectMethod::hybrid && !input.t_free && !input.s_free &&
-                      krawczyk_radius_ >= 0x1p-52 && krawczyk_radius_ <= 0x1p-2) {
+                      krawczyk_radius_ >= intersect_tuning::kKrawczykSmallestRadius &&
+                      krawczyk_radius_ <= intersect_tuning::kKrawczykLargestRadius) {
     out_.stats.method = input.method;
   }
 

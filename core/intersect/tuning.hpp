@@ -51,6 +51,22 @@ inline constexpr double kUnevenPieces = 8;
 /// this wide.)
 inline constexpr double kKrawczykWidth = 0x1p-4;
 
+/// The Krawczyk test certifies a root within the radius it is given (half the tolerance,
+/// rounded down to a power of two); it is used only for radii in this window: above 2^-2 the
+/// box is most of the parameter square and the test's linearisation is too coarse to pay
+/// off, below 2^-52 the radius is under one ulp of a parameter near 1 and the test could not
+/// shrink the box.
+inline constexpr double kKrawczykSmallestRadius = 0x1p-52;
+inline constexpr double kKrawczykLargestRadius = 0x1p-2;
+
+/// Relative slack on every Krawczyk bound assembled from rounded sums and products of
+/// nonnegative terms: a handful of roundings of at most u = 2^-53 each, far below 2^-40.
+inline constexpr double kKrawczykSlack = 1 + 0x1p-40;
+
+/// Boxes the search holds on the stack before its stack spills to the heap (the depth of a
+/// typical search stays below it).
+inline constexpr std::size_t kSearchStackInline = 32;
+
 // The clipping methods (clip/).
 
 /// A piece is a point for the search (is_point_like, and fat_line's choice of line) when

@@ -68,7 +68,7 @@ class Speed {
     assert(ts.size() <= kBatch);
     const std::span<const P> h = hodograph();
     const std::size_t m = h.size();
-    constexpr std::size_t kInlinePoints = 24;
+    constexpr std::size_t kInlinePoints = measure_tuning::kSpeedInlinePoints;
     std::array<double, kInlinePoints * kBatch> inline_row;
     std::vector<double> heap_row;
     double* row = inline_row.data();
@@ -98,7 +98,7 @@ class Speed {
       }
     }
     for (std::size_t j = 0; j < ts.size(); ++j) {
-      if (squared[j] >= 0x1p-960) {
+      if (squared[j] >= measure_tuning::kPlainSquaredSpeed) {
         out[j] = std::sqrt(squared[j]);
       } else {
         P at;

@@ -74,4 +74,14 @@ inline constexpr int kPolishIterations = 8;
 /// (w / h)^2 log(h / w), below 1e-14 of it (arc_length.cpp, grade_toward).
 inline constexpr double kUngradedWidth = 1e-8;
 
+/// Hodograph control points the speed evaluation keeps on the stack (degree 24 curves and
+/// below); longer hodographs take a heap row.
+inline constexpr std::size_t kSpeedInlinePoints = 24;
+
+/// Below this sum of squared components, the speed is taken as a scaled length
+/// (core::length) instead of the square root of the sum: above it the largest component
+/// is at least 2^-481 / sqrt(3), so the squares the sum loses to underflow (below 2^-1022)
+/// are under 2^-60 of it, far below a rounding.
+inline constexpr double kPlainSquaredSpeed = 0x1p-960;
+
 }  // namespace bezier::core::measure_tuning
