@@ -44,6 +44,7 @@ inline constexpr std::array kComputeRoutes = {
     ComputeRoute{"/boolean", &boolean_route, CostBound::work_cap},
     ComputeRoute{"/flatten", &flatten_route, CostBound::work_cap},
     ComputeRoute{"/offset", &offset_route, CostBound::work_cap},
+    ComputeRoute{"/stroke", &stroke_route, CostBound::work_cap},
     ComputeRoute{"/segments", &segments_route, CostBound::request_size},
 };
 
