@@ -96,24 +96,38 @@ void cover_tight_side(const core::Curve& q, double side, const CoverSizes& sizes
   }
 }
 
-/// The edge of one side of the piece q, in the direction of q: its parallel curve at signed
-/// distance d as cubics, or (d = 0) the piece itself when it is at most a cubic.
-bool side_edge(const core::Curve& q, double d, const CoverSizes& sizes, OutlineSink& sink,
-               std::vector<core::Curve>& edge) {
-  if (d == 0.0 && q.degree() <= 3) {
+/// The piece q itself as one side's edge when it is at most a cubic, else its fit at distance 0.
+bool curve_edge(const core::Curve& q, const CoverSizes& sizes, OutlineSink& sink,
+                std::vector<core::Curve>& edge) {
+  if (q.degree() <= 3) {
     edge.push_back(q);
     return true;
   }
-  const CurveOffset offset = offset_curve(q, d, sizes.fit_tolerance, sink.work_left());
-  if (!sink.charge(offset.work) || offset.status != OffsetStatus::ok) {
+  const CurveOffset fit = offset_curve(q, 0.0, sizes.fit_tolerance, sink.work_left());
+  if (!sink.charge(fit.work) || fit.status != OffsetStatus::ok) {
     sink.fail_work();
     return false;
   }
-  if (!sink.reserve(offset.cubics.size())) return false;
-  for (const OffsetCubic& c : offset.cubics) {
+  for (const OffsetCubic& c : fit.cubics) {
     edge.push_back(core::Curve({c.points[0], c.points[1], c.points[2], c.points[3]}));
   }
   return true;
+}
+
+/// The cubics of `offset` (a whole segment's parallel curve) for the parameters [a, b]: those
+/// inside it, and the parts of those that straddle a or b (the cubic's sub-curve between the
+/// parameters that the fit's linear correspondence u = (t - t0) / (t1 - t0) assigns to a and b,
+/// which keeps the cubic's bound for that part).
+void offset_edge(const CurveOffset& offset, double a, double b, std::vector<core::Curve>& edge) {
+  for (const OffsetCubic& c : offset.cubics) {
+    const double lo = std::max(a, c.t0), hi = std::min(b, c.t1);
+    if (!(hi > lo)) continue;
+    core::Curve cubic({c.points[0], c.points[1], c.points[2], c.points[3]});
+    if (lo > c.t0 || hi < c.t1) {
+      cubic = core::portion(cubic, (lo - c.t0) / (c.t1 - c.t0), (hi - c.t0) / (c.t1 - c.t0));
+    }
+    edge.push_back(std::move(cubic));
+  }
 }
 
 }  // namespace
@@ -134,6 +148,23 @@ void cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
     if (!sink.add(circle(core::evaluate(segment, t), sizes.reach, sizes.circle_pieces))) return;
   }
 
+  // The parallel curves at ±R of the whole segment, fitted once (offset.hpp cuts them at the
+  // same cusps and zeros of B' as above), each side's cubics taken by the pieces where that
+  // side is loose.
+  std::optional<CurveOffset> parallel[2];
+  auto loose_edge = [&](int side, double a, double b, std::vector<core::Curve>& edge) {
+    if (!parallel[side]) {
+      parallel[side] = offset_curve(segment, side == 0 ? sizes.reach : -sizes.reach,
+                                    sizes.fit_tolerance, sink.work_left());
+      if (!sink.charge(parallel[side]->work) || parallel[side]->status != OffsetStatus::ok) {
+        sink.fail_work();
+        return false;
+      }
+    }
+    offset_edge(*parallel[side], a, b, edge);
+    return true;
+  };
+
   for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
     if (!(cuts[k + 1] > cuts[k])) continue;
     const core::Curve q = core::portion(segment, cuts[k], cuts[k + 1]);
@@ -143,11 +174,18 @@ void cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
     const bool tight_right = -kappa * sizes.reach > 1.0;
 
     std::vector<core::Curve> left, right;
-    if (!side_edge(q, tight_left ? 0.0 : sizes.reach, sizes, sink, left)) return;
-    if (!side_edge(q, tight_right ? 0.0 : -sizes.reach, sizes, sink, right)) return;
+    if (!(tight_left ? curve_edge(q, sizes, sink, left)
+                     : loose_edge(0, cuts[k], cuts[k + 1], left))) {
+      return;
+    }
+    if (!(tight_right ? curve_edge(q, sizes, sink, right)
+                      : loose_edge(1, cuts[k], cuts[k + 1], right))) {
+      return;
+    }
+    // Counter-clockwise (y up): the right edge forward, the left edge backward.
     Contour chain;
-    for (core::Curve& c : left) append_to_chain(chain, std::move(c), sizes.snap);
-    for (auto it = right.rbegin(); it != right.rend(); ++it) {
+    for (core::Curve& c : right) append_to_chain(chain, std::move(c), sizes.snap);
+    for (auto it = left.rbegin(); it != left.rend(); ++it) {
       append_to_chain(chain, core::reversed(*it), sizes.snap);
     }
     close_chain(chain, sizes.snap);

@@ -27,9 +27,12 @@ struct CoverSizes {
 /// the radius of curvature ρ = 1 / |κ| equals R, offset_cusps.hpp), so that on each piece
 /// each side is either loose (ρ >= R on that side: the map (t, s) -> B(t) + s N(t) has
 /// Jacobian |B'| (1 - s κ) >= 0 for s up to R) or tight (ρ < R, decided at the piece's middle).
-/// Each piece gives one contour: the left edge forward and the right edge backward, joined by
+/// Each piece gives one contour, counter-clockwise: the right edge forward and the left edge
+/// backward, joined by
 /// the normal segments at the piece's ends, where a loose side's edge is its parallel curve at
-/// distance R (offset.hpp, within fit_tolerance) and a tight side's edge is the piece itself
+/// distance R (offset.hpp, within fit_tolerance; fitted once for the whole segment, whose
+/// cubics are cut at the same cusps, and a cubic that straddles a cut of the other side split
+/// there by its fit's linear correspondence of parameters) and a tight side's edge is the piece itself
 /// (its control points; for degree above 3, its fit at distance 0). A tight side is covered by
 /// disks of radius R instead: the piece is halved until on each part P, with c = P(1/2) and
 /// ℓ = max |P_i - c| (so |B(t) - c| <= ℓ on P, convex hull), ρ_max an upper bound of ρ on P

@@ -42,10 +42,12 @@ namespace bezier::outline {
 //    of a bend, where the parallel curve at R folds into a swallowtail and its folded part
 //    would wind -1), not by the folded ribbon but by disks of radius R, each holding every
 //    B(t) + s N(t) with 0 <= s <= min(ρ(t), r) for t in its part of the piece.
-// The ribbon's far edge is the parallel curve fitted within ε/2 (offset.hpp: the bound is
+// The ribbon's far edge is the parallel curve fitted within 0.49 ε (offset.hpp: the bound is
 // for the linear correspondence of parameters, so the fitted contour is a homotopy of the
-// exact one through curves within ε/2 of it); the disks are circles of cubics outside the
-// exact circle by at most ε/2 (Goldapp's bound). The margin R - r = ε/2 is what keeps the
+// exact one through curves within 0.49 ε of it), and where two fitted pieces meet with a
+// rounding gap (at most 0.01 ε) one control point is moved onto the other's end; the disks
+// are circles of cubics outside the exact circle by at most 0.49 ε (Goldapp's bound). So
+// every contour stays within R + ε/2 = r + ε of the path. The margin R - r = ε/2 is what keeps the
 // points at distance < r of the path inside after the far edges move by up to ε/2: the
 // winding about p changes only where a contour passes within ε/2 of p, and the ribbon's exact
 // far edge is at distance R from the curve where p's own preimage is at s < r. That step is
@@ -64,10 +66,11 @@ namespace bezier::outline {
 // first nonzero derivative's (tangent_limits.hpp). A subpath is closed when it ends exactly
 // where it starts (path::Subpath::closed): a join there, no caps.
 //
-// The error bound: each point of the outline is within ε of the exact stroke's boundary where
-// it is a boundary of the region (the far edges and circles are within ε/2 of curves at
-// distance R = r + ε/2; polygons and miter tips are exact), and inside the exact stroke
-// otherwise.
+// The error bound: each point of the outline where it bounds the region is within ε of the
+// exact stroke's boundary (the far edges and circles are within ε/2 of curves at distance
+// R = r + ε/2 from the path; polygons, miter tips and square caps are exact), and the region
+// holds the exact stroke: the Hausdorff distance between the two regions is at most ε, and
+// the region is never smaller.
 
 /// SVG 2's stroke-linejoin values this service draws.
 enum class LineJoin { miter, round, bevel };
