@@ -1,6 +1,7 @@
 #include "core/outline/stroke_shapes.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -47,8 +48,14 @@ std::size_t circle_pieces(double radius, double tolerance) {
 Contour circle(Point2 centre, double radius, std::size_t pieces) {
   const double delta = 2.0 * std::numbers::pi / static_cast<double>(pieces);
   const double k = 4.0 / 3.0 * std::tan(delta / 4.0);
+  // The quarter turns exactly (cos(π/2) is not 0 in doubles), the other angles as rounded.
   auto on_circle = [&](std::size_t i) {
-    const double angle = static_cast<double>(i % pieces) * delta;
+    i %= pieces;
+    if ((4 * i) % pieces == 0) {
+      constexpr std::array<Point2, 4> kAxes{Point2{1, 0}, Point2{0, 1}, Point2{-1, 0}, Point2{0, -1}};
+      return kAxes[(4 * i) / pieces];
+    }
+    const double angle = static_cast<double>(i) * delta;
     return Point2{std::cos(angle), std::sin(angle)};
   };
   Contour out;
