@@ -41,6 +41,12 @@ struct CoverSizes {
 /// side), min(ρ_max, r) + ℓ < R: then every point B(t) + s N(t) with 0 <= s <= min(ρ(t), r) is
 /// within min(ρ_max, r) + ℓ < R of c, inside the disk about c.
 ///
+/// The count of disks: where ρ_max is well below r a part may be as long as R - ρ_max; next
+/// to an end where ρ reaches R, or a zero of B' (where the bound of ρ is lost because
+/// cross(B', B'') vanishes there too), the parts shrink geometrically to a spread of ε/2,
+/// a few disks per halving; a curve whose ρ stays within about ε/2 of r over a long stretch
+/// needs about its length / ε disks, and may be refused by the segment limit.
+///
 /// Work is charged to `sink` (de Casteljau coordinate updates), and so are the contours'
 /// segments; a part still failing the test after 64 halvings stops with work_cap_reached.
 void cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineSink& sink);
