@@ -61,8 +61,11 @@ double radius_of_curvature_bound(std::span<const Point2> q, double side) {
 }
 
 /// The disks of radius R that cover the tight side `side` of the piece q (segment_cover.hpp).
+/// A disk already drawn (about a zero of B', or for an earlier part) is reused when it holds
+/// the part by the same test, so that parts crowding towards a zero of B' add no nearly
+/// coincident circles; `centres` are the centres of the segment's disks of radius R so far.
 void cover_tight_side(const core::Curve& q, double side, const CoverSizes& sizes,
-                      OutlineSink& sink) {
+                      OutlineSink& sink, std::vector<Point2>& centres) {
   struct Part {
     double a, b;
     int depth;
@@ -77,13 +80,19 @@ void cover_tight_side(const core::Curve& q, double side, const CoverSizes& sizes
     if (!sink.charge(16 * (n + 1) * (n + 1))) return;
     const core::Curve piece = core::portion(q, part.a, part.b);
     const Point2 centre = core::evaluate(piece, 0.5);
-    double spread = 0.0;
-    for (const Point2 p : piece.points()) spread = std::max(spread, core::length(p - centre));
-    const double reach_needed =
-        std::min(radius_of_curvature_bound(piece.points(), side), sizes.radius) + spread + margin;
-    if (reach_needed < sizes.reach) {
+    const double depth =
+        std::min(radius_of_curvature_bound(piece.points(), side), sizes.radius) + margin;
+    auto holds = [&](Point2 c) {
+      double spread = 0.0;
+      for (const Point2 p : piece.points()) spread = std::max(spread, core::length(p - c));
+      return depth + spread < sizes.reach;
+    };
+    if (!sink.charge(static_cast<std::int64_t>(centres.size()) * (n + 1))) return;
+    if (std::any_of(centres.begin(), centres.end(), holds)) continue;
+    if (holds(centre)) {
       if (!sink.charge(16 * static_cast<std::int64_t>(sizes.circle_pieces))) return;
       sink.add(circle(centre, sizes.reach, sizes.circle_pieces));
+      centres.push_back(centre);
       continue;
     }
     if (part.depth >= kMostHalvings) {
@@ -143,9 +152,11 @@ void cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
 
+  std::vector<Point2> centres;
   for (const double t : stationary) {
     if (!sink.charge(16 * static_cast<std::int64_t>(sizes.circle_pieces))) return;
-    if (!sink.add(circle(core::evaluate(segment, t), sizes.reach, sizes.circle_pieces))) return;
+    centres.push_back(core::evaluate(segment, t));
+    if (!sink.add(circle(centres.back(), sizes.reach, sizes.circle_pieces))) return;
   }
 
   // The parallel curves at ±R of the whole segment, fitted once (offset.hpp cuts them at the
@@ -191,8 +202,8 @@ void cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
     close_chain(chain, sizes.snap);
     if (!sink.add(std::move(chain))) return;
 
-    if (tight_left) cover_tight_side(q, 1.0, sizes, sink);
-    if (tight_right) cover_tight_side(q, -1.0, sizes, sink);
+    if (tight_left) cover_tight_side(q, 1.0, sizes, sink, centres);
+    if (tight_right) cover_tight_side(q, -1.0, sizes, sink, centres);
     if (!sink.ok()) return;
   }
 }

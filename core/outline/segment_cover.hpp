@@ -39,7 +39,9 @@ struct CoverSizes {
 /// (|B'|^3 / |cross(B', B'')| with |B'| <= the first hodograph's largest control point and
 /// |cross| >= the least Bernstein coefficient of cross(B', B''), all of one sign on a tight
 /// side), min(ρ_max, r) + ℓ < R: then every point B(t) + s N(t) with 0 <= s <= min(ρ(t), r) is
-/// within min(ρ_max, r) + ℓ < R of c, inside the disk about c.
+/// within min(ρ_max, r) + ℓ < R of c, inside the disk about c. A disk of the segment already
+/// drawn (about a zero of B', or for an earlier part) serves instead of a new one when the
+/// same test holds with its centre for c.
 ///
 /// The count of disks: where ρ_max is well below r a part may be as long as R - ρ_max; next
 /// to an end where ρ reaches R, or a zero of B' (where the bound of ρ is lost because
