@@ -91,7 +91,7 @@ void cover_tight_side(const core::Curve& q, double side, const CoverSizes& sizes
     if (std::any_of(centres.begin(), centres.end(), holds)) continue;
     if (holds(centre)) {
       if (!sink.charge(16 * static_cast<std::int64_t>(sizes.circle_pieces))) return;
-      sink.add(circle(centre, sizes.reach, sizes.circle_pieces));
+      sink.add(circle(centre, sizes.disk_radius, sizes.circle_pieces));
       centres.push_back(centre);
       continue;
     }
@@ -156,7 +156,7 @@ void cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
   for (const double t : stationary) {
     if (!sink.charge(16 * static_cast<std::int64_t>(sizes.circle_pieces))) return;
     centres.push_back(core::evaluate(segment, t));
-    if (!sink.add(circle(centres.back(), sizes.reach, sizes.circle_pieces))) return;
+    if (!sink.add(circle(centres.back(), sizes.disk_radius, sizes.circle_pieces))) return;
   }
 
   // The parallel curves at ±R of the whole segment, fitted once (offset.hpp cuts them at the

@@ -13,8 +13,12 @@ namespace bezier::outline {
 struct CoverSizes {
   double radius = 0.0;        ///< r
   double reach = 0.0;         ///< R
-  double fit_tolerance = 0.0; ///< offsets' and circles' tolerance
-  std::size_t circle_pieces = 4;
+  double fit_tolerance = 0.0; ///< offsets' tolerance
+  /// The disks' radius: R and a little more (stroke.cpp), so that a circle crosses the
+  /// parallel curves that end on it instead of touching them, a contact of high order that
+  /// /stroke's simplify could not always decide.
+  double disk_radius = 0.0;
+  std::size_t circle_pieces = 4;  ///< cubics per circle
   double snap = 0.0;
 };
 

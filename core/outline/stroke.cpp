@@ -38,7 +38,8 @@ StrokeOutline stroke(const path::Path& path, const StrokeStyle& style, double to
   sizes.reach = r + tolerance / 2.0;
   sizes.fit_tolerance = 0.49 * tolerance;
   sizes.snap = 0.01 * tolerance;
-  sizes.circle_pieces = circle_pieces(sizes.reach, sizes.fit_tolerance);
+  sizes.disk_radius = sizes.reach + 0.005 * tolerance;
+  sizes.circle_pieces = circle_pieces(sizes.disk_radius, 0.485 * tolerance);
   const bool round_join = style.join == LineJoin::round;
 
   // The joins', caps' and dots' segments, counted before anything is built.
@@ -60,7 +61,7 @@ StrokeOutline stroke(const path::Path& path, const StrokeStyle& style, double to
 
   auto add_cap = [&](Point2 point, Point2 outward) {
     if (style.cap == LineCap::round) {
-      sink.add(circle(point, sizes.reach, sizes.circle_pieces));
+      sink.add(circle(point, sizes.disk_radius, sizes.circle_pieces));
     } else if (style.cap == LineCap::square) {
       sink.add(square_cap(point, outward, r));
     }
@@ -68,7 +69,7 @@ StrokeOutline stroke(const path::Path& path, const StrokeStyle& style, double to
   auto add_join = [&](const core::Curve& in, const core::Curve& out) {
     const Point2 point = out.front();
     if (round_join) {
-      sink.add(circle(point, sizes.reach, sizes.circle_pieces));
+      sink.add(circle(point, sizes.disk_radius, sizes.circle_pieces));
       return;
     }
     const std::optional<Contour> polygon =

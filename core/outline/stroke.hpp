@@ -46,8 +46,9 @@ namespace bezier::outline {
 // for the linear correspondence of parameters, so the fitted contour is a homotopy of the
 // exact one through curves within 0.49 ε of it), and where two fitted pieces meet with a
 // rounding gap (at most 0.01 ε) one control point is moved onto the other's end; the disks
-// are circles of cubics outside the exact circle by at most 0.49 ε (Goldapp's bound). So
-// every contour stays within R + ε/2 = r + ε of the path. The margin R - r = ε/2 is what keeps the
+// have radius R + 0.005 ε (so that their circles cross the parallel curves ending on them
+// rather than touch them) and are circles of cubics outside the exact circle by at most
+// 0.485 ε (Goldapp's bound). So every contour stays within R + ε/2 = r + ε of the path. The margin R - r = ε/2 is what keeps the
 // points at distance < r of the path inside after the far edges move by up to ε/2: the
 // winding about p changes only where a contour passes within ε/2 of p, and the ribbon's exact
 // far edge is at distance R from the curve where p's own preimage is at s < r. That step is
