@@ -9,6 +9,7 @@
 #include <string>
 
 #include "api/handler.hpp"
+#include "core/measure/nearest.hpp"
 #include "core/path/svg_path_data.hpp"
 #include "core/region/region.hpp"
 #include "core/region/winding.hpp"
@@ -63,6 +64,38 @@ TEST(StrokeRoute, SimplifiedOutlineIsTheSameRegionWithWindingOne) {
   EXPECT_EQ(winding_at(r, {5, 5}), 0);
   const json plain = call(R"({"path":"M0 0 L10 0 L10 10","width":2,"join":"round","cap":"round","tolerance":1e-3})", 200);
   EXPECT_GT(winding_at(plain, {9.9, -0.1}), 1);
+}
+
+TEST(StrokeRoute, SimplifiedRoundStrokeOfACurveIsItsDistanceSet) {
+  // Every point closer than 1 to the arch winds once, every point farther than 1 + 1e-3 not
+  // at all (distances from the nearest-point kernel).
+  const core::Curve arch({{0, 0}, {5, 5}, {5, 5}, {10, 0}});
+  const json r = call(
+      R"({"points":[[0,0],[5,5],[5,5],[10,0]],"width":2,"join":"round","cap":"round","tolerance":1e-3,"simplify":true})",
+      200);
+  path::PathDataParse parse = path::parse_svg_path_data(r["path"].get<std::string>(), 100000);
+  ASSERT_FALSE(parse.error);
+  const region::RegionWinding winding(
+      region::region_from_path(std::move(parse.path), region::FillRule::nonzero));
+  int judged = 0;
+  for (double x = -1.5; x <= 11.5; x += 0.13) {
+    for (double y = -1.5; y <= 5.5; y += 0.11) {
+      std::int64_t work = std::int64_t{1} << 40;
+      const std::optional<region::Winding> w = winding.at({x, y}, work);
+      ASSERT_TRUE(w);
+      if (w->boundary) continue;
+      EXPECT_TRUE(w->winding == 0 || w->winding == 1) << x << " " << y;
+      const double d = core::nearest(arch, {x, y}, 0, 1).distance;
+      if (d < 1 - 1e-12) {
+        EXPECT_EQ(w->winding, 1) << x << " " << y;
+        ++judged;
+      } else if (d > 1 + 1e-3 + 1e-12) {
+        EXPECT_EQ(w->winding, 0) << x << " " << y;
+        ++judged;
+      }
+    }
+  }
+  EXPECT_GT(judged, 5000);
 }
 
 TEST(StrokeRoute, TakesControlPointsToo) {
