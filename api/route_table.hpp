@@ -39,6 +39,7 @@ inline constexpr std::array kComputeRoutes = {
     ComputeRoute{"/boolean", &boolean_route, &work_capped_cost},
     ComputeRoute{"/flatten", &flatten_route, &work_capped_cost},
     ComputeRoute{"/offset", &offset_route, &work_capped_cost},
+    ComputeRoute{"/stroke", &stroke_route, &work_capped_cost},
     ComputeRoute{"/segments", &segments_route, &segments_cost},
 };
 

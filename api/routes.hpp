@@ -23,6 +23,7 @@ namespace bezier::api {
 [[nodiscard]] Reply boolean_route(const nlohmann::json& request, const Limits& limits);
 [[nodiscard]] Reply flatten_route(const nlohmann::json& request, const Limits& limits);
 [[nodiscard]] Reply offset_route(const nlohmann::json& request, const Limits& limits);
+[[nodiscard]] Reply stroke_route(const nlohmann::json& request, const Limits& limits);
 [[nodiscard]] Reply segments_route(const nlohmann::json& request, const Limits& limits);
 
 }  // namespace bezier::api

@@ -5,10 +5,10 @@
 #include <limits>
 #include <numbers>
 
-#include "core/bernstein/roots.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/curve/polar.hpp"
 #include "core/outline/offset_cusps.hpp"
+#include "core/outline/tangent_limits.hpp"
 
 namespace bezier::outline {
 
@@ -41,23 +41,6 @@ double largest_norm(const std::vector<Point2>& q) {
 
 Point2 left_normal(Point2 unit) {
   return {-unit.y, unit.x};
-}
-
-/// The unit tangent of the piece at u = 0 (from the right, side = +1) or u = 1 (from the
-/// left, side = -1): the first nonzero derivative's direction, times side^(k - 1) for the k-th
-/// (B'(u0 + ε) ≈ ε^(k-1) / (k-1)! B^(k)(u0)).
-Point2 end_tangent(std::span<const Point2> p, bool at_start) {
-  std::vector<Point2> h(p.begin(), p.end());
-  double sign = 1.0;
-  const double scale = std::max(largest_norm(h), std::numeric_limits<double>::min());
-  while (h.size() > 1) {
-    h = hodograph(h);
-    const Point2 v = at_start ? h.front() : h.back();
-    const double len = core::length(v);
-    if (len > 1e-12 * scale * static_cast<double>(p.size())) return (sign / len) * v;
-    if (!at_start) sign = -sign;
-  }
-  return {1.0, 0.0};  // a point: any direction
 }
 
 struct PieceBound {
@@ -174,26 +157,6 @@ std::array<Point2, 4> fit(const std::vector<Point2>& q, double d, Point2 t0, Poi
     beta = (a11 * r2 - a12 * r1) / det;
   }
   return {p0, p0 + alpha * d0, p3 - beta * d3, p3};
-}
-
-/// The zeros of B' inside (0, 1): roots of x' (or of y' when x' is zero) where the other
-/// coordinate of B' vanishes too, to 1e-9 of the hodograph's scale.
-std::vector<double> stationary_points(const core::Curve& curve) {
-  const std::vector<Point2> h = hodograph(curve.points());
-  const double scale = largest_norm(h);
-  if (h.size() < 2 || scale == 0.0) return {};
-  std::vector<double> xs, ys;
-  for (const Point2 p : h) {
-    xs.push_back(p.x);
-    ys.push_back(p.y);
-  }
-  const bool use_x = std::any_of(xs.begin(), xs.end(), [](double v) { return v != 0.0; });
-  std::vector<double> out;
-  for (const double t : core::bernstein_roots(use_x ? xs : ys).roots) {
-    if (!(t > 0.0 && t < 1.0)) continue;
-    if (core::length(plain_point(h, t)) <= 1e-9 * scale) out.push_back(t);
-  }
-  return out;
 }
 
 }  // namespace

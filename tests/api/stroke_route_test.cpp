@@ -1,0 +1,147 @@
+// Tests of POST /stroke at the handler level: the answer's shape (SVG path data of closed
+// contours, `simplified`), the round stroke's region checked at points whose distance to the
+// path is known in closed form, the simplified outline's region, and the validation rules.
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "api/handler.hpp"
+#include "core/measure/nearest.hpp"
+#include "core/path/svg_path_data.hpp"
+#include "core/region/region.hpp"
+#include "core/region/winding.hpp"
+#include "tests/support/route_answers.hpp"
+
+namespace bezier::api {
+namespace {
+
+using nlohmann::json;
+
+json call(const std::string& body, int expected_status, const Limits& limits = {}) {
+  return test::route_answer("/stroke", body, expected_status, limits);
+}
+
+/// The winding number of the answer's path about p.
+long winding_at(const json& answer, core::Point2 p) {
+  path::PathDataParse parse = path::parse_svg_path_data(answer["path"].get<std::string>(), 100000);
+  EXPECT_FALSE(parse.error);
+  const region::Region region = region::region_from_path(std::move(parse.path), region::FillRule::nonzero);
+  const std::optional<region::Winding> w = region::winding(region, p, std::int64_t{1} << 40);
+  EXPECT_TRUE(w && !w->boundary);
+  return w ? w->winding : 0;
+}
+
+TEST(StrokeRoute, RoundStrokeOfAPolylineHoldsThePointsCloserThanHalfTheWidth) {
+  // Half width 1 about M0 0 L10 0 L10 10: the distance to the path is |y| on 0 <= x <= 10,
+  // y <= 0; the distance to the corner (10, 0) beyond it.
+  const json r = call(
+      R"({"path":"M0 0 L10 0 L10 10","width":2,"join":"round","cap":"round","tolerance":1e-3})",
+      200);
+  EXPECT_EQ(r["simplified"], false);
+  EXPECT_NE(winding_at(r, {5, -0.99}), 0);
+  EXPECT_EQ(winding_at(r, {5, -1.01}), 0);
+  EXPECT_NE(winding_at(r, {10.7, -0.7}), 0);   // 0.99 from the corner
+  EXPECT_EQ(winding_at(r, {10.72, -0.72}), 0);  // 1.018 from it
+  EXPECT_NE(winding_at(r, {-0.99, 0}), 0);      // the round cap
+  EXPECT_EQ(winding_at(r, {-1.01, 0}), 0);
+}
+
+TEST(StrokeRoute, SimplifiedOutlineIsTheSameRegionWithWindingOne) {
+  // The ribbons of the two lines and the disks at their ends overlap (winding 2 and 3 about
+  // the corner before simplify); simplified, every point inside winds once.
+  const std::string body =
+      R"({"path":"M0 0 L10 0 L10 10","width":2,"join":"round","cap":"round","tolerance":1e-3,"simplify":true})";
+  const json r = call(body, 200);
+  EXPECT_EQ(r["simplified"], true);
+  EXPECT_EQ(winding_at(r, {9.9, -0.1}), 1);
+  EXPECT_EQ(winding_at(r, {5, -0.99}), 1);
+  EXPECT_EQ(winding_at(r, {5, -1.01}), 0);
+  EXPECT_EQ(winding_at(r, {10.7, -0.7}), 1);
+  EXPECT_EQ(winding_at(r, {10.72, -0.72}), 0);
+  EXPECT_EQ(winding_at(r, {5, 5}), 0);
+  const json plain = call(R"({"path":"M0 0 L10 0 L10 10","width":2,"join":"round","cap":"round","tolerance":1e-3})", 200);
+  EXPECT_GT(winding_at(plain, {9.9, -0.1}), 1);
+}
+
+TEST(StrokeRoute, SimplifiedRoundStrokeOfACurveIsItsDistanceSet) {
+  // Every point closer than 1 to the arch winds once, every point farther than 1 + 1e-3 not
+  // at all (distances from the nearest-point kernel).
+  const core::Curve arch({{0, 0}, {5, 5}, {5, 5}, {10, 0}});
+  const json r = call(
+      R"({"points":[[0,0],[5,5],[5,5],[10,0]],"width":2,"join":"round","cap":"round","tolerance":1e-3,"simplify":true})",
+      200);
+  path::PathDataParse parse = path::parse_svg_path_data(r["path"].get<std::string>(), 100000);
+  ASSERT_FALSE(parse.error);
+  const region::RegionWinding winding(
+      region::region_from_path(std::move(parse.path), region::FillRule::nonzero));
+  int judged = 0;
+  for (double x = -1.5; x <= 11.5; x += 0.13) {
+    for (double y = -1.5; y <= 5.5; y += 0.11) {
+      std::int64_t work = std::int64_t{1} << 40;
+      const std::optional<region::Winding> w = winding.at({x, y}, work);
+      ASSERT_TRUE(w);
+      if (w->boundary) continue;
+      EXPECT_TRUE(w->winding == 0 || w->winding == 1) << x << " " << y;
+      const double d = core::nearest(arch, {x, y}, 0, 1).distance;
+      if (d < 1 - 1e-12) {
+        EXPECT_EQ(w->winding, 1) << x << " " << y;
+        ++judged;
+      } else if (d > 1 + 1e-3 + 1e-12) {
+        EXPECT_EQ(w->winding, 0) << x << " " << y;
+        ++judged;
+      }
+    }
+  }
+  EXPECT_GT(judged, 5000);
+}
+
+TEST(StrokeRoute, TakesControlPointsToo) {
+  const json r = call(R"({"points":[[0,0],[4,0]],"width":1,"tolerance":1e-6})", 200);
+  EXPECT_NE(winding_at(r, {2, 0.49}), 0);
+  EXPECT_EQ(winding_at(r, {2, 0.51}), 0);
+  EXPECT_EQ(winding_at(r, {-0.01, 0}), 0);  // butt caps by default
+}
+
+TEST(StrokeRoute, ValidationPointers) {
+  const std::string path = R"("path":"M0 0 L10 0",)";
+  EXPECT_EQ(test::error_pointers(call("{" + path + R"("width":0,"tolerance":1e-3})", 422)),
+            std::vector<std::string>{"/width"});
+  EXPECT_EQ(test::error_pointers(call("{" + path + R"("tolerance":1e-3})", 422)),
+            std::vector<std::string>{"/width"});
+  EXPECT_EQ(test::error_pointers(call("{" + path + R"("width":1,"tolerance":1e-12})", 422)),
+            std::vector<std::string>{"/tolerance"});
+  EXPECT_EQ(test::error_pointers(call("{" + path + R"("width":1,"tolerance":1e-3,"miter_limit":0.5})", 422)),
+            std::vector<std::string>{"/miter_limit"});
+  EXPECT_EQ(test::error_pointers(call("{" + path + R"("width":1,"tolerance":1e-3,"simplify":"yes"})", 422)),
+            std::vector<std::string>{"/simplify"});
+  EXPECT_EQ(test::error_pointers(call("{" + path + R"("width":1,"tolerance":1e-3,"distance":1})", 422)),
+            std::vector<std::string>{"/distance"});
+  EXPECT_EQ(test::error_pointers(call(R"({"width":1,"tolerance":1e-3})", 422)),
+            std::vector<std::string>{"/points"});
+  const json join = call("{" + path + R"("width":1,"tolerance":1e-3,"join":"rond"})", 422);
+  EXPECT_EQ(test::error_pointers(join), std::vector<std::string>{"/join"});
+  EXPECT_NE(join.dump().find("did you mean `round`?"), std::string::npos);
+  const json cap = call("{" + path + R"("width":1,"tolerance":1e-3,"cap":"sqare"})", 422);
+  EXPECT_EQ(test::error_pointers(cap), std::vector<std::string>{"/cap"});
+  EXPECT_NE(cap.dump().find("did you mean `square`?"), std::string::npos);
+}
+
+TEST(StrokeRoute, TooManySegmentsAndWorkCap) {
+  Limits small;
+  small.max_path_segments = 6;
+  EXPECT_EQ(test::error_pointers(call(
+                R"({"path":"M0 0 L10 0 L10 10","width":2,"join":"round","tolerance":1e-6})", 422,
+                small)),
+            std::vector<std::string>{"/tolerance"});
+  Limits tight;
+  tight.max_work = 1000;
+  const json problem = call(
+      R"({"path":"M0 0 C10 10 0 10 10 0","width":2,"join":"round","tolerance":1e-6})", 422, tight);
+  EXPECT_NE(problem["detail"].get<std::string>().find("work cap"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace bezier::api

@@ -1,0 +1,274 @@
+#include "core/outline/stroke.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/curve/evaluate.hpp"
+#include "core/measure/frame.hpp"
+#include "core/region/winding.hpp"
+#include "tests/support/mulberry32.hpp"
+#include "tests/support/parsed_path.hpp"
+#include "tests/support/stroke_checks.hpp"
+
+namespace bezier::outline {
+namespace {
+
+using core::Point2;
+
+constexpr std::int64_t kWork = std::int64_t{1} << 36;
+constexpr std::size_t kSegments = 1000000;
+
+StrokeStyle round_style(double width) {
+  StrokeStyle style;
+  style.width = width;
+  style.join = LineJoin::round;
+  style.cap = LineCap::round;
+  return style;
+}
+
+/// Points to judge: random ones over the path's box widened by r + 1, and chosen ones just
+/// inside r and just beyond r + tolerance along the normals, at the centres of curvature
+/// where the radius of curvature is below r (and next to them), and around every segment end.
+std::vector<Point2> probe_points(const path::Path& path, double r, double tolerance,
+                                 std::uint32_t seed, int random_count) {
+  std::vector<Point2> out;
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  for (const core::Curve& s : path.segments)
+    for (const Point2 p : s.points()) {
+      x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    }
+  test::Mulberry32 rng(seed);
+  for (int i = 0; i < random_count; ++i) {
+    out.push_back({rng.uniform(x0 - r - 1, x1 + r + 1), rng.uniform(y0 - r - 1, y1 + r + 1)});
+  }
+  const std::vector<double> offsets{r - 0.1 * tolerance, r + 1.1 * tolerance, 0.5 * r,
+                                    r - 3 * tolerance};
+  for (const core::Curve& s : path.segments) {
+    for (int i = 0; i <= 40; ++i) {
+      const double t = i / 40.0;
+      const std::optional<core::Frame<Point2>> f = core::frame(s, t);
+      if (!f) continue;
+      const Point2 b = core::evaluate(s, t);
+      for (const double d : offsets) {
+        out.push_back(b + d * *f->normal);
+        out.push_back(b - d * *f->normal);
+      }
+      if (f->curvature != 0.0) {
+        const double rho = 1.0 / f->curvature;  // signed: the centre is at b + rho N
+        if (std::fabs(rho) < r) {
+          for (const double k : {1.0, 0.999, 1.001, 0.99, 1.01}) out.push_back(b + k * rho * *f->normal);
+        }
+      }
+    }
+    for (const Point2 end : {s.front(), s.back()}) {
+      for (int k = 0; k < 24; ++k) {
+        const double a = 2 * std::numbers::pi * k / 24 + 0.1;
+        const Point2 e{std::cos(a), std::sin(a)};
+        for (const double d : {r - 0.1 * tolerance, r + 1.1 * tolerance, 0.7 * r}) out.push_back(end + d * e);
+      }
+    }
+  }
+  return out;
+}
+
+void check_round_stroke(const std::string& data, double width, double tolerance,
+                        std::uint32_t seed = 1) {
+  std::ostringstream trace;
+  trace << data << " width " << width;
+  SCOPED_TRACE(trace.str());
+  const path::Path path = test::parsed_path(data);
+  const StrokeOutline outline = stroke(path, round_style(width), tolerance, kWork, kSegments);
+  ASSERT_EQ(outline.status, StrokeStatus::ok);
+  for (const Contour& c : outline.contours) {
+    ASSERT_FALSE(c.empty());
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      ASSERT_EQ(c[k].back(), c[(k + 1) % c.size()].front()) << "contour not closed exactly";
+    }
+  }
+  const double r = width / 2;
+  const test::MembershipCounts counts = test::check_round_membership(
+      path, outline, r, tolerance, probe_points(path, r, tolerance, seed, 1500));
+  EXPECT_GT(counts.inside, 100);
+  EXPECT_GT(counts.outside, 100);
+}
+
+TEST(Stroke, RoundIsTheDistanceSetAtSharpJoints) {
+  check_round_stroke("M0 0 L10 0 L10 10 L3 2", 3.0, 1e-3);
+}
+
+TEST(Stroke, RoundIsTheDistanceSetAtACuspOfTheCurve) {
+  // B'(1/2) = 0: x' ∝ (1 - 2t)^2, y' ∝ 1 - 2t.
+  check_round_stroke("M0 0 C10 10 0 10 10 0", 2.0, 1e-3);
+}
+
+TEST(Stroke, RoundIsTheDistanceSetWhereTheRadiusOfCurvatureIsBelowHalfTheWidth) {
+  check_round_stroke("M0 0 C12 0 12 4 0 4", 6.0, 1e-3);
+  check_round_stroke("M0 0 Q10 10 20 0", 30.0, 1e-2);
+  check_round_stroke("M0 0 C30 0 -10 10 20 10", 4.0, 1e-4);
+}
+
+TEST(Stroke, ClosedCircleNarrowerThanTheStrokeFillsItsCentre) {
+  // Radius 1, half width 1.5: the centre is at distance 1 < 1.5.
+  const std::string circle = "M1 0 A1 1 0 0 1 -1 0 A1 1 0 0 1 1 0 Z";
+  check_round_stroke(circle, 3.0, 1e-3);
+  const path::Path path = test::parsed_path(circle);
+  const StrokeOutline wide = stroke(path, round_style(3.0), 1e-3, kWork, kSegments);
+  std::int64_t work = kWork;
+  const auto at_centre = region::RegionWinding(test::outline_region(wide)).at({0, 0}, work);
+  ASSERT_TRUE(at_centre);
+  EXPECT_NE(at_centre->winding, 0);
+  // Half width 0.99: the centre is at distance 1 > 0.99 + tolerance: a hole.
+  check_round_stroke(circle, 1.98, 1e-3);
+  const StrokeOutline narrow = stroke(path, round_style(1.98), 1e-3, kWork, kSegments);
+  work = kWork;
+  const auto hole = region::RegionWinding(test::outline_region(narrow)).at({0, 0}, work);
+  ASSERT_TRUE(hole);
+  EXPECT_EQ(hole->winding, 0);
+}
+
+TEST(Stroke, RoundIsTheDistanceSetAcrossZeroLengthSegments) {
+  check_round_stroke("M0 0 L5 0 L5 0 L5 5 C5 5 5 5 5 5 L9 1", 2.0, 1e-3);
+}
+
+TEST(Stroke, RoundIsTheDistanceSetForRandomCubicPaths) {
+  test::Mulberry32 rng(31);
+  for (int i = 0; i < 12; ++i) {
+    std::ostringstream data;
+    for (int sub = 0; sub < 2; ++sub) {
+      data << "M" << rng.uniform(0, 10) << " " << rng.uniform(0, 10);
+      for (int k = 0; k < 2; ++k) {
+        data << " C";
+        for (int j = 0; j < 6; ++j) data << " " << rng.uniform(0, 10);
+      }
+      if (sub == 1) data << " Z";
+    }
+    const double width = rng.uniform(0.5, 6.0);
+    check_round_stroke(data.str(), width, 1e-3, 100 + static_cast<std::uint32_t>(i));
+  }
+}
+
+TEST(Stroke, RoundIsTheDistanceSetForACurveOfDegreeFive) {
+  path::Path path;
+  path.segments.push_back(core::Curve({{0, 0}, {8, 9}, {-4, 6}, {9, -3}, {2, 7}, {10, 10}}));
+  path.subpaths.push_back({0, 1, false});
+  const StrokeOutline outline = stroke(path, round_style(2.5), 1e-3, kWork, kSegments);
+  ASSERT_EQ(outline.status, StrokeStatus::ok);
+  for (const Contour& c : outline.contours)
+    for (const core::Curve& s : c) EXPECT_LE(s.degree(), 3);
+  const test::MembershipCounts counts = test::check_round_membership(
+      path, outline, 1.25, 1e-3, probe_points(path, 1.25, 1e-3, 5, 1500));
+  EXPECT_GT(counts.inside, 100);
+  EXPECT_GT(counts.outside, 100);
+}
+
+TEST(Stroke, ZeroLengthSubpathIsADotWithRoundCapsASquareWithSquareCapsNothingWithButt) {
+  const path::Path path = test::parsed_path("M3 3 L3 3");
+  StrokeStyle style = round_style(2.0);
+  auto winding_at = [&](const StrokeOutline& o, Point2 p) {
+    std::int64_t work = kWork;
+    return region::RegionWinding(test::outline_region(o)).at(p, work)->winding;
+  };
+  const StrokeOutline dot = stroke(path, style, 1e-3, kWork, kSegments);
+  EXPECT_NE(winding_at(dot, {3.7, 3.7}), 0);   // distance 0.99
+  EXPECT_EQ(winding_at(dot, {3.8, 3.8}), 0);   // distance 1.13
+  style.cap = LineCap::square;
+  const StrokeOutline square = stroke(path, style, 1e-3, kWork, kSegments);
+  EXPECT_NE(winding_at(square, {3.9, 3.9}), 0);  // inside the square of side 2
+  EXPECT_EQ(winding_at(square, {4.1, 3.0}), 0);
+  style.cap = LineCap::butt;
+  EXPECT_TRUE(stroke(path, style, 1e-3, kWork, kSegments).contours.empty());
+}
+
+/// The contours' vertices (segment ends).
+std::vector<Point2> vertices(const StrokeOutline& o) {
+  std::vector<Point2> out;
+  for (const Contour& c : o.contours)
+    for (const core::Curve& s : c) out.push_back(s.front());
+  return out;
+}
+
+int winding_at(const StrokeOutline& o, Point2 p) {
+  std::int64_t work = kWork;
+  const auto w = region::RegionWinding(test::outline_region(o)).at(p, work);
+  EXPECT_TRUE(w && !w->boundary);
+  return w ? static_cast<int>(w->winding) : 0;
+}
+
+TEST(Stroke, MiterTipOfARightAngleIsSvgsPoint) {
+  // Left turn by 90° at (10, 0), half width 1: the outer edges y = -1 and x = 11 meet at
+  // (11, -1); the miter ratio is 1 / sin(45°) = √2 <= 4.
+  const path::Path path = test::parsed_path("M0 0 L10 0 L10 10");
+  StrokeStyle style;
+  style.width = 2.0;
+  const StrokeOutline miter = stroke(path, style, 1e-3, kWork, kSegments);
+  const std::vector<Point2> v = vertices(miter);
+  EXPECT_NE(std::find(v.begin(), v.end(), Point2{11.0, -1.0}), v.end());
+  EXPECT_NE(winding_at(miter, {10.95, -0.95}), 0);
+  // A miter limit below √2: a bevel, the line from (10, -1) to (11, 0): x - y = 11.
+  style.miter_limit = 1.41;
+  const StrokeOutline bevel = stroke(path, style, 1e-3, kWork, kSegments);
+  const std::vector<Point2> w = vertices(bevel);
+  EXPECT_EQ(std::find(w.begin(), w.end(), Point2{11.0, -1.0}), w.end());
+  EXPECT_EQ(winding_at(bevel, {10.6, -0.6}), 0);   // x - y = 11.2
+  EXPECT_NE(winding_at(bevel, {10.4, -0.4}), 0);   // x - y = 10.8
+  style.miter_limit = 1.42;
+  EXPECT_NE(winding_at(stroke(path, style, 1e-3, kWork, kSegments), {10.6, -0.6}), 0);
+  style.join = LineJoin::bevel;
+  style.miter_limit = 4.0;
+  EXPECT_EQ(winding_at(stroke(path, style, 1e-3, kWork, kSegments), {10.6, -0.6}), 0);
+}
+
+TEST(Stroke, SquareCapsExtendHalfTheWidthButtCapsNothing) {
+  const path::Path path = test::parsed_path("M0 0 L10 0");
+  StrokeStyle style;
+  style.width = 2.0;
+  style.cap = LineCap::square;
+  const StrokeOutline square = stroke(path, style, 1e-3, kWork, kSegments);
+  const std::vector<Point2> v = vertices(square);
+  for (const Point2 corner : {Point2{-1, 1}, Point2{-1, -1}, Point2{11, 1}, Point2{11, -1}}) {
+    EXPECT_NE(std::find(v.begin(), v.end(), corner), v.end()) << corner.x << " " << corner.y;
+  }
+  EXPECT_NE(winding_at(square, {-0.99, 0.5}), 0);
+  EXPECT_EQ(winding_at(square, {-1.01, 0.0}), 0);
+  EXPECT_NE(winding_at(square, {10.99, -0.99}), 0);
+  style.cap = LineCap::butt;
+  const StrokeOutline butt = stroke(path, style, 1e-3, kWork, kSegments);
+  EXPECT_EQ(winding_at(butt, {-0.01, 0.5}), 0);
+  EXPECT_NE(winding_at(butt, {0.01, 0.5}), 0);
+  EXPECT_EQ(winding_at(butt, {10.01, 0.0}), 0);
+}
+
+TEST(Stroke, ClosedSubpathHasAJoinAndNoCaps) {
+  // Bevel join at (0, 0) between the closing edge (going -y) and the first (going +x): the
+  // triangle (0, 0), (0, -1), (-1, 0); a square cap would have covered (-0.8, -0.8).
+  const path::Path path = test::parsed_path("M0 0 L10 0 L10 10 L0 10 Z");
+  StrokeStyle style;
+  style.width = 2.0;
+  style.join = LineJoin::bevel;
+  style.cap = LineCap::square;
+  const StrokeOutline o = stroke(path, style, 1e-3, kWork, kSegments);
+  EXPECT_EQ(winding_at(o, {-0.8, -0.8}), 0);
+  EXPECT_NE(winding_at(o, {-0.3, -0.3}), 0);
+  // The same corner of an open path gets the caps.
+  const StrokeOutline open = stroke(test::parsed_path("M0 0 L10 0 L10 10 L0 10 L0 1e-3"),
+                                    style, 1e-3, kWork, kSegments);
+  EXPECT_NE(winding_at(open, {-0.8, -0.8}), 0);
+}
+
+TEST(Stroke, RefusesBeyondTheSegmentLimitAndTheWorkCap) {
+  const path::Path path = test::parsed_path("M0 0 C10 10 0 10 10 0 L20 0");
+  EXPECT_EQ(stroke(path, round_style(2.0), 1e-3, kWork, 5).status,
+            StrokeStatus::too_many_segments);
+  EXPECT_EQ(stroke(path, round_style(2.0), 1e-3, 1000, kSegments).status,
+            StrokeStatus::work_cap_reached);
+  EXPECT_TRUE(stroke(path, round_style(2.0), 1e-3, 1000, kSegments).contours.empty());
+}
+
+}  // namespace
+}  // namespace bezier::outline
