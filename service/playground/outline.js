@@ -39,7 +39,7 @@ export const toleranceAt = (exponent) => Number((10 ** exponent).toPrecision(3))
  */
 export async function computeOutline(outline) {
   const errors = [];
-  const answers = {view: 'outline', path: null, flatten: null, offset: null, stroke: null, strokeMissing: false};
+  const answers = {view: 'outline', path: null, flatten: null, offset: null, stroke: null};
   try {
     answers.path = await pathInDrawing(outline.path);
   } catch (error) {
@@ -70,7 +70,6 @@ async function stroke(outline, data, answers, errors) {
   try {
     outlinePath = (await post('/stroke', {path: data, width, join, cap, tolerance: outline.tolerance})).path;
   } catch (error) {
-    answers.strokeMissing = error.status === 404;
     errors.push({what: 'stroke of the path', error});
     return;
   }
@@ -159,9 +158,8 @@ export function outlineSummary(outline, answers) {
                (a?.offset ? `${a.offset.segments.length} cubics at d = ${formatNumber(outline.distance)}, ` +
                             `certified within ${formatNumber(a.offset.error_bound)}` : '—')],
     ['Stroke', !outline.stroke ? 'off' :
-               (a?.strokeMissing ? 'this service has no /stroke route' :
-                (a?.stroke ? `width ${formatNumber(outline.stroke.width)}, ${outline.stroke.join} joins, ${outline.stroke.cap} caps: ` +
-                             `${a.stroke.segments.length} segments in ${a.stroke.subpaths.length} contour${a.stroke.subpaths.length === 1 ? '' : 's'}`
-                           : '—'))],
+               (a?.stroke ? `width ${formatNumber(outline.stroke.width)}, ${outline.stroke.join} joins, ${outline.stroke.cap} caps: ` +
+                            `${a.stroke.segments.length} segments in ${a.stroke.subpaths.length} contour${a.stroke.subpaths.length === 1 ? '' : 's'}`
+                          : '—')],
   ];
 }

@@ -1399,8 +1399,7 @@ test('outline: the flattened path\'s vertices on the path and the offset, follow
   assert.equal(await other.locator('#distance').inputValue(), '45');
   await other.close();
 
-  // Stroking: the /stroke route's outline, read back by /segments, or, on a service without
-  // /stroke, its 404 shown in the view (the rest of the view stands either way).
+  // Stroking: the /stroke route's outline, read back by /segments.
   await page.locator('#stroke-on').check();
   await settle();
   const stroked = await pageAnswers();
@@ -1410,17 +1409,11 @@ test('outline: the flattened path\'s vertices on the path and the offset, follow
     body: JSON.stringify({path: stroked.path.data, width: 40, join: 'round', cap: 'round', tolerance}),
   });
   const strokeShown = await page.locator('#outline-values dd[data-term=stroke]').textContent();
-  if (probe.status === 404) {
-    assert.equal(stroked.strokeMissing, true);
-    assert.match(strokeShown, /no \/stroke route/);
-    assert.deepEqual((await pageErrorsShown()).map((e) => [e.route, e.status]), [['/stroke', 404]]);
-  } else {
-    assert.equal(probe.status, 200, 'the service strokes the path');
-    const read = await api('/segments', {path: (await probe.json()).path});
-    assert.deepEqual(stroked.stroke.segments, read.segments.map((s) => s.points));
-    assert.match(strokeShown, /width 40, round joins, round caps/);
-    assert.deepEqual(await pageErrorsShown(), []);
-  }
+  assert.equal(probe.status, 200, 'the service strokes the path');
+  const read = await api('/segments', {path: (await probe.json()).path});
+  assert.deepEqual(stroked.stroke.segments, read.segments.map((s) => s.points));
+  assert.match(strokeShown, /width 40, round joins, round caps/);
+  assert.deepEqual(await pageErrorsShown(), []);
   assert.ok(stroked.flatten && stroked.offset, 'flattening and offset are drawn all the same');
   await page.waitForFunction(() => location.hash.includes('sw=40&join=round&cap=round'));
   await page.locator('#stroke-on').uncheck();
