@@ -1410,8 +1410,8 @@ test('outline: the flattened path\'s vertices on the path and the offset, follow
   });
   const strokeShown = await page.locator('#outline-values dd[data-term=stroke]').textContent();
   assert.equal(probe.status, 200, 'the service strokes the path');
-  const read = await api('/segments', {path: (await probe.json()).path});
-  assert.deepEqual(stroked.stroke.segments, read.segments.map((s) => s.points));
+  const outlineRead = await api('/segments', {path: (await probe.json()).path});
+  assert.deepEqual(stroked.stroke.segments, outlineRead.segments.map((s) => s.points));
   assert.match(strokeShown, /width 40, round joins, round caps/);
   assert.deepEqual(await pageErrorsShown(), []);
   assert.ok(stroked.flatten && stroked.offset, 'flattening and offset are drawn all the same');
