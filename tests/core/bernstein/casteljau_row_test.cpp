@@ -55,7 +55,8 @@ void check_rows(std::uint32_t seed, int max_degree, double lo, double hi) {
       for (int k = 1; k <= n; ++k) {
         row.casteljau_step(t);
         ts.push_back(Rational(t));
-        for (std::size_t i = 0; i + 1 < plain.size(); ++i) plain[i] = lerp(plain[i], plain[i + 1], t);
+        for (std::size_t i = 0; i + 1 < plain.size(); ++i)
+          plain[i] = lerp(plain[i], plain[i + 1], t);
         plain.pop_back();
         ASSERT_EQ(row.size(), plain.size());
         const auto exact_row = test::exact_polar(exact_pts, ts);

@@ -78,10 +78,12 @@ TEST(Monomial, RandomCoefficientsWithinTheDifferenceRounding) {
       const auto expected = exact_monomial(c);
       ASSERT_EQ(got.size(), c.size());
       for (int k = 0; k <= n; ++k) {
-        const double bound = test::rounding_gamma(k + 2) * static_cast<double>(test::binom(n, k)) *
-                             std::ldexp(m, k);
-        EXPECT_LE((Rational(got[static_cast<std::size_t>(k)]) - expected[static_cast<std::size_t>(k)]).abs(),
-                  Rational(bound))
+        const double bound =
+            test::rounding_gamma(k + 2) * static_cast<double>(test::binom(n, k)) * std::ldexp(m, k);
+        EXPECT_LE(
+            (Rational(got[static_cast<std::size_t>(k)]) - expected[static_cast<std::size_t>(k)])
+                .abs(),
+            Rational(bound))
             << "degree " << n << " k " << k;
       }
       // The top coefficient by its own routine is monomial()'s, bit for bit.
@@ -145,8 +147,8 @@ TEST(Monomial, SignificanceThresholdIsTheStatedBound) {
   // tol = factor C(n,k) 2^k u magnitude; above it (strictly) is significant.
   const int n = 5, k = 3;
   const double magnitude = 2.0;
-  const double tol = bernstein_tuning::kSignificantCoefficientFactor * 10.0 * 8.0 *
-                     kUnitRoundoff * magnitude;
+  const double tol =
+      bernstein_tuning::kSignificantCoefficientFactor * 10.0 * 8.0 * kUnitRoundoff * magnitude;
   EXPECT_FALSE(significant_coefficient(n, k, tol, -tol, magnitude));
   EXPECT_TRUE(significant_coefficient(n, k, std::nextafter(tol, 1.0), 0.0, magnitude));
   EXPECT_TRUE(significant_coefficient(n, k, 0.0, -std::nextafter(tol, 1.0), magnitude));

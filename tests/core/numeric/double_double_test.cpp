@@ -33,7 +33,8 @@ void expect_normalised(Real a) {
 // to half an ulp of hi.
 Real random_real(test::Mulberry32& rng, int e) {
   const double hi = std::ldexp(rng.uniform(-1, 1), static_cast<int>(rng.uniform(-e, e)));
-  const double lo = hi * 0x1p-53 * rng.uniform(-1, 1) * std::ldexp(1.0, -static_cast<int>(rng.uniform(0, 8)));
+  const double lo =
+      hi * 0x1p-53 * rng.uniform(-1, 1) * std::ldexp(1.0, -static_cast<int>(rng.uniform(0, 8)));
   const TwoTerm<double> n = two_sum(hi, lo);
   return {n.hi, n.lo};
 }

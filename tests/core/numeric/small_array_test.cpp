@@ -20,8 +20,8 @@ constexpr std::size_t kInline = Array::kInline;
 // Whether the entries live inside the object (inline) rather than on the heap.
 template <class T>
 bool stored_inline(const SmallArray<T>& a) {
-  const auto* begin = reinterpret_cast<const std::byte*>(&a);
-  const auto* d = reinterpret_cast<const std::byte*>(a.data());
+  const auto begin = reinterpret_cast<std::uintptr_t>(&a);
+  const auto d = reinterpret_cast<std::uintptr_t>(a.data());
   return d >= begin && d < begin + sizeof(a);
 }
 

@@ -57,11 +57,13 @@ TEST(CollinearSelfOverlaps, CubicFoldingTwiceRetracesEachPairOfPieces) {
   struct Expected {
     double t_lo, t_hi, s_lo, s_hi;
   };
-  const Expected expected[] = {{0, 0.25, 0.25, 0.75}, {0, 0.25, 0.75, 1.0}, {0.25, 0.75, 0.75, 1.0}};
+  const Expected expected[] = {
+      {0, 0.25, 0.25, 0.75}, {0, 0.25, 0.75, 1.0}, {0.25, 0.75, 0.75, 1.0}};
   for (const Expected& e : expected) {
-    const bool present = std::any_of(found.overlaps.begin(), found.overlaps.end(), [&](const Overlap& o) {
-      return near(o.t_interval, e.t_lo, e.t_hi) && near(o.s_interval, e.s_lo, e.s_hi);
-    });
+    const bool present =
+        std::any_of(found.overlaps.begin(), found.overlaps.end(), [&](const Overlap& o) {
+          return near(o.t_interval, e.t_lo, e.t_hi) && near(o.s_interval, e.s_lo, e.s_hi);
+        });
     EXPECT_TRUE(present) << e.t_lo << " " << e.t_hi << " x " << e.s_lo << " " << e.s_hi;
   }
   for (std::size_t i = 0; i + 1 < found.overlaps.size(); ++i)

@@ -20,7 +20,7 @@ namespace bezier::core {
 namespace {
 
 const std::vector<Point2> kLoopCubic{{9, -9}, {-7, 13}, {-7, -13}, {9, 9}};
-const std::vector<Point2> kTouchingQuintic{{60, -45}, {-4, 69}, {-36, -89},
+const std::vector<Point2> kTouchingQuintic{{60, -45}, {-4, 69},  {-36, -89},
                                            {-36, 89}, {-4, -69}, {60, 45}};
 
 // The rounding level self_intersections() uses: 4 (n + 1) u times the largest coordinate.
@@ -40,7 +40,7 @@ TEST(CurveJet, ExactAtADyadicParameter) {
   EXPECT_EQ(j.d2, (Point2{96, -144}));
   const CurveJet end = curve_jet(kLoopCubic, 1.0);
   EXPECT_EQ(end.point, (Point2{9, 9}));
-  EXPECT_EQ(end.d1, (Point2{48, 66}));  // 3 (P3 - P2)
+  EXPECT_EQ(end.d1, (Point2{48, 66}));   // 3 (P3 - P2)
   EXPECT_EQ(end.d2, (Point2{96, 288}));  // 6 (P3 - 2 P2 + P1)
   // A line: the second derivative is zero.
   const std::vector<Point2> line{{1, 2}, {5, -2}};
@@ -66,7 +66,8 @@ TEST(RefineDoublePoint, ConvergesToTheClosedFormDoublePoint) {
 TEST(RefineDoublePoint, StopsWhenTheIterateLeavesTheBox) {
   // The only double point is (1/4, 3/4), outside this box.
   const ParameterBox box{{0.5, 0.6}, {0.9, 1.0}};
-  const PairRefinement r = refine_double_point(kLoopCubic, 0.55, 0.95, box, rounding_of(kLoopCubic));
+  const PairRefinement r =
+      refine_double_point(kLoopCubic, 0.55, 0.95, box, rounding_of(kLoopCubic));
   EXPECT_FALSE(r.converged);
 }
 
@@ -98,7 +99,8 @@ TEST(ParameterSeparation, OpenAndClosed) {
 
 TEST(RefineSelfContact, FindsTheTangentialContact) {
   const ParameterBox box{{0.0, 0.5}, {0.5, 1.0}};
-  for (const auto& [u0, v0] : {std::pair{0.24, 0.76}, std::pair{0.26, 0.74}, std::pair{0.2, 0.79}}) {
+  for (const auto& [u0, v0] :
+       {std::pair{0.24, 0.76}, std::pair{0.26, 0.74}, std::pair{0.2, 0.79}}) {
     const PairRefinement r = refine_self_contact(kTouchingQuintic, u0, v0, box);
     EXPECT_NEAR(r.u, 0.25, 1e-12) << u0 << " " << v0;
     EXPECT_NEAR(r.v, 0.75, 1e-12) << u0 << " " << v0;

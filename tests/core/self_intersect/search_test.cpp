@@ -18,7 +18,7 @@ namespace bezier::core {
 namespace {
 
 const std::vector<Point2> kLoopCubic{{9, -9}, {-7, 13}, {-7, -13}, {9, 9}};
-const std::vector<Point2> kTouchingQuintic{{60, -45}, {-4, 69}, {-36, -89},
+const std::vector<Point2> kTouchingQuintic{{60, -45}, {-4, 69},  {-36, -89},
                                            {-36, 89}, {-4, -69}, {60, 45}};
 
 SelfIntersectionSearchSettings settings_for(const std::vector<Point2>& pts,
