@@ -139,6 +139,12 @@ void offset_edge(const CurveOffset& offset, double a, double b, std::vector<core
   }
 }
 
+/// Extends an open chain by a line to `point` when its end is farther than `snap` from it.
+void pass_through(Contour& chain, Point2 point, double snap) {
+  if (chain.empty() || core::length(chain.back().back() - point) <= snap) return;
+  chain.push_back(core::Curve({chain.back().back(), point}));
+}
+
 }  // namespace
 
 void cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineSink& sink) {
@@ -193,12 +199,22 @@ void cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
                       : loose_edge(1, cuts[k], cuts[k + 1], right))) {
       return;
     }
-    // Counter-clockwise (y up): the right edge forward, the left edge backward.
+    // Counter-clockwise (y up): the right edge forward, the left edge backward, joined by the
+    // normal segments at the piece's ends. At a cut inside the segment each normal segment
+    // passes through B there (q's end point, the same double for both pieces at the cut,
+    // core::portion), so that the neighbouring piece's normal segment at that cut, or its half
+    // from B to one side where that piece's side is tight (its edge is the curve itself), is
+    // the same line run backwards, an exact overlap: unsplit, the two would be distinct lines
+    // a few ulps apart along their common length, which the boolean simplify cannot tell
+    // apart. At the segment's ends the neighbour is a disk or a join's polygon, and the
+    // normal segment stays one line.
     Contour chain;
     for (core::Curve& c : right) append_to_chain(chain, std::move(c), sizes.snap);
+    if (cuts[k + 1] < 1.0) pass_through(chain, q.back(), sizes.snap);
     for (auto it = left.rbegin(); it != left.rend(); ++it) {
       append_to_chain(chain, core::reversed(*it), sizes.snap);
     }
+    if (cuts[k] > 0.0) pass_through(chain, q.front(), sizes.snap);
     close_chain(chain, sizes.snap);
     if (!sink.add(std::move(chain))) return;
 

@@ -33,7 +33,9 @@ struct CoverSizes {
 /// Jacobian |B'| (1 - s κ) >= 0 for s up to R) or tight (ρ < R, decided at the piece's middle).
 /// Each piece gives one contour, counter-clockwise: the right edge forward and the left edge
 /// backward, joined by
-/// the normal segments at the piece's ends, where a loose side's edge is its parallel curve at
+/// the normal segments at the piece's ends (at a cut inside the segment, two lines meeting at
+/// B there, so that the two pieces' normal segments at a cut overlap exactly), where a loose
+/// side's edge is its parallel curve at
 /// distance R (offset.hpp, within fit_tolerance; fitted once for the whole segment, whose
 /// cubics are cut at the same cusps, and a cubic that straddles a cut of the other side split
 /// there by its fit's linear correspondence of parameters) and a tight side's edge is the piece itself

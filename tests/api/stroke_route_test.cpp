@@ -98,6 +98,38 @@ TEST(StrokeRoute, SimplifiedRoundStrokeOfACurveIsItsDistanceSet) {
   EXPECT_GT(judged, 5000);
 }
 
+TEST(StrokeRoute, SimplifiedRoundStrokeOfACuspIsItsDistanceSet) {
+  // B'(1/2) = 0: the pieces' normal segments at the cuts lie on common lines; simplify
+  // answers, and the points judged wind once within 1 of the curve, never beyond 1 + 1e-2.
+  const core::Curve cusp({{0, 0}, {10, 10}, {0, 10}, {10, 0}});
+  const json r = call(
+      R"({"path":"M0 0 C10 10 0 10 10 0","width":2,"tolerance":0.01,"join":"round","cap":"round","simplify":true})",
+      200);
+  EXPECT_EQ(r["simplified"], true);
+  path::PathDataParse parse = path::parse_svg_path_data(r["path"].get<std::string>(), 100000);
+  ASSERT_FALSE(parse.error);
+  const region::RegionWinding winding(
+      region::region_from_path(std::move(parse.path), region::FillRule::nonzero));
+  int judged = 0;
+  for (double x = -1.5; x <= 11.5; x += 0.17) {
+    for (double y = -1.5; y <= 9; y += 0.13) {
+      std::int64_t work = std::int64_t{1} << 40;
+      const std::optional<region::Winding> w = winding.at({x, y}, work);
+      ASSERT_TRUE(w);
+      if (w->boundary) continue;
+      const double d = core::nearest(cusp, {x, y}, 0, 1).distance;
+      if (d < 1 - 1e-12) {
+        EXPECT_EQ(w->winding, 1) << x << " " << y;
+        ++judged;
+      } else if (d > 1 + 1e-2 + 1e-12) {
+        EXPECT_EQ(w->winding, 0) << x << " " << y;
+        ++judged;
+      }
+    }
+  }
+  EXPECT_GT(judged, 3000);
+}
+
 TEST(StrokeRoute, TakesControlPointsToo) {
   const json r = call(R"({"points":[[0,0],[4,0]],"width":1,"tolerance":1e-6})", 200);
   EXPECT_NE(winding_at(r, {2, 0.49}), 0);

@@ -11,6 +11,8 @@
 
 #include "core/curve/evaluate.hpp"
 #include "core/measure/frame.hpp"
+#include "core/measure/nearest.hpp"
+#include "core/region/boolean.hpp"
 #include "core/region/winding.hpp"
 #include "tests/support/mulberry32.hpp"
 #include "tests/support/parsed_path.hpp"
@@ -105,6 +107,59 @@ TEST(Stroke, RoundIsTheDistanceSetAtSharpJoints) {
 TEST(Stroke, RoundIsTheDistanceSetAtACuspOfTheCurve) {
   // B'(1/2) = 0: x' ∝ (1 - 2t)^2, y' ∝ 1 - 2t.
   check_round_stroke("M0 0 C10 10 0 10 10 0", 2.0, 1e-3);
+}
+
+TEST(Stroke, SimplifiedOutlineOfACuspIsTheDistanceSetWindingOnce) {
+  // The cusp at t = 1/2 and the cusps of the parallel curves (radius of curvature R) cut the
+  // cubic into pieces whose normal segments at a cut lie on one line; simplify must remove
+  // the overlaps. Every point judged winds once when closer than r to the curve, never when
+  // farther than r + tolerance, and 0 or 1 anywhere.
+  const std::string data = "M0 0 C10 10 0 10 10 0";
+  const core::Curve cubic({{0, 0}, {10, 10}, {0, 10}, {10, 0}});
+  for (const double width : {2.0, 1.0, 3.0}) {
+    for (const double tolerance : {1e-2, 1e-3}) {
+      SCOPED_TRACE(testing::Message() << "width " << width << " tolerance " << tolerance);
+      const path::Path path = test::parsed_path(data);
+      const StrokeOutline outline = stroke(path, round_style(width), tolerance, kWork, kSegments);
+      ASSERT_EQ(outline.status, StrokeStatus::ok);
+      path::Path boundary;
+      for (const Contour& c : outline.contours) {
+        boundary.subpaths.push_back({boundary.segments.size(), c.size(), true});
+        for (const core::Curve& s : c) boundary.segments.push_back(s);
+      }
+      const region::BooleanResult simple =
+          region::simplify(region::Region{std::move(boundary), region::FillRule::nonzero}, kWork);
+      ASSERT_EQ(simple.status, region::BooleanStatus::ok);
+      path::Path result;
+      for (const region::ResultContour& c : simple.contours) {
+        result.subpaths.push_back({result.segments.size(), c.end_segment - c.first_segment, true});
+        for (std::size_t k = c.first_segment; k < c.end_segment; ++k) {
+          result.segments.push_back(simple.segments[k].curve);
+        }
+      }
+      const region::RegionWinding winding(
+          region::Region{std::move(result), region::FillRule::nonzero});
+      const double r = width / 2;
+      int inside = 0, outside = 0;
+      for (const Point2 p : probe_points(path, r, tolerance, 7, 1500)) {
+        std::int64_t work = kWork;
+        const std::optional<region::Winding> w = winding.at(p, work);
+        ASSERT_TRUE(w);
+        if (w->boundary) continue;
+        EXPECT_TRUE(w->winding == 0 || w->winding == 1) << p.x << " " << p.y;
+        const double d = core::nearest(cubic, p, 0, 1).distance;
+        if (d < r - 1e-12) {
+          EXPECT_EQ(w->winding, 1) << p.x << " " << p.y;
+          ++inside;
+        } else if (d > r + tolerance + 1e-12) {
+          EXPECT_EQ(w->winding, 0) << p.x << " " << p.y;
+          ++outside;
+        }
+      }
+      EXPECT_GT(inside, 100);
+      EXPECT_GT(outside, 100);
+    }
+  }
 }
 
 TEST(Stroke, RoundIsTheDistanceSetWhereTheRadiusOfCurvatureIsBelowHalfTheWidth) {
