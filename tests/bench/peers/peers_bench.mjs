@@ -17,7 +17,7 @@
 //   flatten   chords of Paper.js's flatten against ours at the same verified maximum error.
 //   offset    segments of Skia's stroker and paperjs-offset against our offset cubics at the
 //             same verified maximum error.
-//   stroke    the stroke outline (width 0.04): segments of Skia's stroker and paperjs-offset's
+//   stroke    the stroke outline of the glyph outlines (width 0.04): segments of Skia's stroker and paperjs-offset's
 //             offsetStroke against our /stroke kernel at the same verified maximum error, and
 //             CPU time per stroked shape of Skia's stroker and ours (bezier_peer_shapes
 //             stroke-time, a child process) alternating round by round.
@@ -639,8 +639,9 @@ function offset() {
 //    ends, points of the end circles, kept when their distance to the whole path is r within
 //    the sampling's error, with n the outward normal there), the smallest δ with p - δ n in F
 //    (0 when p is in F): how far F falls short of S there.
-// Membership in F is its winding number, computed here from dense polylines of its contours
-// (each segment sampled finely enough that its chords are within 1e-7 of it).
+// Membership in F is its winding number (of F's closure: see `inside`), computed here from
+// dense polylines of its contours (each segment sampled finely enough that its chords are
+// within 1e-7 of it).
 
 /** Samples per segment for chords within `tol` of it: n >= sqrt(max|B''| / (8 tol)). */
 function samplesFor(s, tol = 1e-7) {
@@ -733,7 +734,10 @@ function strokeError(cubics, closed, contours, r) {
     // sagitta and rounding).
     if (source.distance(p, 2) < r - 1e-6) continue;
     ++checked;
-    const inside = (d) => winding.at([p[0] - d * n[0], p[1] - d * n[1]]) !== 0;
+    // Membership in F's closure: a point on an edge two contours share (the normal line where
+    // two pieces of an outline meet) reads winding 0 by the ray's convention, so the point or
+    // one of its neighbours 1e-9 away along the boundary's tangent counts.
+    const inside = (d) => [0, 1e-9, -1e-9].some((e) => winding.at([p[0] - d * n[0] - e * n[1], p[1] - d * n[1] + e * n[0]]) !== 0);
     if (inside(0)) continue;
     let lo = 0, hi = 1e-9;
     while (hi < r && !inside(hi)) { lo = hi; hi *= 2; }
@@ -745,11 +749,6 @@ function strokeError(cubics, closed, contours, r) {
     inward = Math.max(inward, hi);
   }
   return { outward, inward, error: Math.max(outward, inward), checked };
-}
-
-function skiaOpen(flat) {
-  const p = pointsOf(flat);
-  return CK.Path.MakeFromCmds([CK.MOVE_VERB, p[0][0], p[0][1], CK.CUBIC_VERB, p[1][0], p[1][1], p[2][0], p[2][1], p[3][0], p[3][1]]);
 }
 
 function ourStroke(width, tolerance, join, cap) {
