@@ -44,7 +44,7 @@ const PaperOffset = require('paperjs-offset');
 const args = process.argv.slice(2);
 const dumpBinary = args.shift();
 if (!dumpBinary) {
-  console.error('usage: node peers_bench.mjs <bezier_peer_shapes> [booleans|cases|flatten|offset ...] [--rounds N] [--min-ms M]');
+  console.error('usage: node peers_bench.mjs <bezier_peer_shapes> [booleans|cases|flatten|offset|stroke ...] [--rounds N] [--min-ms M]');
   process.exit(2);
 }
 const option = (name, fallback) => {
