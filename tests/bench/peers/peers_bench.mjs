@@ -17,6 +17,10 @@
 //   flatten   chords of Paper.js's flatten against ours at the same verified maximum error.
 //   offset    segments of Skia's stroker and paperjs-offset against our offset cubics at the
 //             same verified maximum error.
+//   stroke    the stroke outline of the glyph outlines (width 0.04): segments of Skia's stroker and paperjs-offset's
+//             offsetStroke against our /stroke kernel at the same verified maximum error, and
+//             CPU time per stroked shape of Skia's stroker and ours (bezier_peer_shapes
+//             stroke-time, a child process) alternating round by round.
 // Option --rounds N (default 5): timing rounds; each round runs every timed configuration once
 // for at least --min-ms milliseconds of CPU time (default 200), in an order rotated each round.
 //
@@ -40,7 +44,7 @@ const PaperOffset = require('paperjs-offset');
 const args = process.argv.slice(2);
 const dumpBinary = args.shift();
 if (!dumpBinary) {
-  console.error('usage: node peers_bench.mjs <bezier_peer_shapes> [booleans|cases|flatten|offset ...] [--rounds N] [--min-ms M]');
+  console.error('usage: node peers_bench.mjs <bezier_peer_shapes> [booleans|cases|flatten|offset|stroke ...] [--rounds N] [--min-ms M]');
   process.exit(2);
 }
 const option = (name, fallback) => {
@@ -52,7 +56,7 @@ const option = (name, fallback) => {
 };
 const rounds = option('--rounds', 5);
 const minMs = option('--min-ms', 200);
-const sections = args.length ? args : ['booleans', 'cases', 'flatten', 'offset'];
+const sections = args.length ? args : ['booleans', 'cases', 'flatten', 'offset', 'stroke'];
 
 const CK = await CanvasKitInit();
 paper.setup(new paper.Size(1000, 1000));
@@ -621,8 +625,240 @@ function offset() {
   }
 }
 
+// ---- stroke ----
+//
+// The exact stroke of the inputs below is S = {p : dist(p, path) <= r}, r = width / 2: with
+// round joins and caps by definition; with miter joins on the glyph outlines too, since they
+// are closed Catmull-Rom splines, tangent-continuous at every joint, where SVG 2's join adds
+// nothing to the segments' ribbons (and a point whose nearest path point is a joint is on that
+// joint's normal, so in a ribbon). The error of an outline F (closed contours, nonzero rule)
+// is the larger of
+//  - outward: max over dense samples q of F's segments of dist(q, path) - r (F never reaches
+//    farther than r + that; the parts of F inside S count nothing);
+//  - inward: over samples p of S's boundary (B(t) ± r N(t) at 257 t per segment and, at open
+//    ends, points of the end circles, kept when their distance to the whole path is r within
+//    the sampling's error, with n the outward normal there), the smallest δ with p - δ n in F
+//    (0 when p is in F): how far F falls short of S there.
+// Membership in F is its winding number (of F's closure: see `inside`), computed here from
+// dense polylines of its contours (each segment sampled finely enough that its chords are
+// within 1e-7 of it).
+
+/** Samples per segment for chords within `tol` of it: n >= sqrt(max|B''| / (8 tol)). */
+function samplesFor(s, tol = 1e-7) {
+  const p = s.points, n = p.length - 1;
+  if (n === 1) return 1;
+  let second = 0;
+  for (let i = 0; i + 2 <= n; ++i) {
+    second = Math.max(second, Math.hypot(p[i + 2][0] - 2 * p[i + 1][0] + p[i][0], p[i + 2][1] - 2 * p[i + 1][1] + p[i][1]));
+  }
+  // A conic of weight w <= 1 bends at most like its quadratic over w (Skia's round joins).
+  const bound = n * (n - 1) * second / (s.weight !== undefined ? Math.min(1, s.weight) : 1);
+  return Math.min(8192, Math.max(4, Math.ceil(Math.sqrt(bound / (8 * tol)))));
+}
+
+/** Winding numbers of closed polylines about points: edges kept in horizontal bands. */
+class WindingIndex {
+  constructor(band) {
+    this.band = band;
+    this.bands = new Map();
+  }
+  addEdge(a, b) {
+    if (a[1] === b[1]) return;
+    const j0 = Math.floor(Math.min(a[1], b[1]) / this.band), j1 = Math.floor(Math.max(a[1], b[1]) / this.band);
+    for (let j = j0; j <= j1; ++j) {
+      if (!this.bands.has(j)) this.bands.set(j, []);
+      this.bands.get(j).push(a[0], a[1], b[0], b[1]);
+    }
+  }
+  /** Winding number about p (counter-clockwise positive, y up): crossings of the ray to +x. */
+  at(p) {
+    const list = this.bands.get(Math.floor(p[1] / this.band));
+    if (!list) return 0;
+    let w = 0;
+    for (let i = 0; i < list.length; i += 4) {
+      const ay = list[i + 1], by = list[i + 3];
+      if ((ay <= p[1]) === (by <= p[1])) continue;
+      const ax = list[i], bx = list[i + 2];
+      const x = ax + ((p[1] - ay) * (bx - ax)) / (by - ay);
+      if (x > p[0]) w += by > ay ? 1 : -1;
+    }
+    return w;
+  }
+}
+
+/** Outward and inward error of an outline (contours of segments) against S = {dist <= r} of a
+ * path of cubics (`closed`: no end circles). */
+function strokeError(cubics, closed, contours, r) {
+  const source = new ChordIndex(r);
+  for (const c of cubics) source.addPolyline(denseSamples({ points: c }));
+  const winding = new WindingIndex(r / 8);
+  let outward = 0;
+  for (const contour of contours) {
+    const poly = [];
+    for (const s of contour) {
+      const dense = denseSamples(s, samplesFor(s));
+      if (poly.length) dense.shift();
+      poly.push(...dense);
+    }
+    for (const q of poly) {
+      let d = source.distance(q, 2);
+      for (let reach = 8; !Number.isFinite(d) && reach <= 4096; reach *= 8) d = source.distance(q, reach);
+      outward = Math.max(outward, d - r);
+    }
+    for (let k = 1; k < poly.length; ++k) winding.addEdge(poly[k - 1], poly[k]);
+    winding.addEdge(poly[poly.length - 1], poly[0]);
+  }
+  const boundary = [];
+  for (const c of cubics) {
+    for (let k = 0; k <= 256; ++k) {
+      const t = k / 256;
+      const b = segmentPoint({ points: c }, t);
+      for (const side of [r, -r]) {
+        const p = offsetPoint(c, t, side);
+        const len = Math.hypot(p[0] - b[0], p[1] - b[1]);
+        if (len > 0) boundary.push([p, [(p[0] - b[0]) / len, (p[1] - b[1]) / len]]);
+      }
+    }
+  }
+  if (!closed) {
+    for (const e of [cubics[0][0], cubics[cubics.length - 1][3]]) {
+      for (let k = 0; k < 256; ++k) {
+        const a = (2 * Math.PI * k) / 256, n = [Math.cos(a), Math.sin(a)];
+        boundary.push([[e[0] + r * n[0], e[1] + r * n[1]], n]);
+      }
+    }
+  }
+  let inward = 0, checked = 0;
+  for (const [p, n] of boundary) {
+    // A point of S's boundary: nothing of the path nearer than r (within the dense chords'
+    // sagitta and rounding).
+    if (source.distance(p, 2) < r - 1e-6) continue;
+    ++checked;
+    // Membership in F's closure: a point on an edge two contours share (the normal line where
+    // two pieces of an outline meet) reads winding 0 by the ray's convention, so the point or
+    // one of its neighbours 1e-9 away along the boundary's tangent counts.
+    const inside = (d) => [0, 1e-9, -1e-9].some((e) => winding.at([p[0] - d * n[0] - e * n[1], p[1] - d * n[1] + e * n[0]]) !== 0);
+    if (inside(0)) continue;
+    let lo = 0, hi = 1e-9;
+    while (hi < r && !inside(hi)) { lo = hi; hi *= 2; }
+    if (hi >= r) { inward = Math.max(inward, r); continue; }
+    for (let k = 0; k < 40; ++k) {
+      const mid = (lo + hi) / 2;
+      if (inside(mid)) hi = mid; else lo = mid;
+    }
+    inward = Math.max(inward, hi);
+  }
+  return { outward, inward, error: Math.max(outward, inward), checked };
+}
+
+function ourStroke(width, tolerance, join, cap) {
+  const out = JSON.parse(execFileSync(dumpBinary, ['stroke', String(width), String(tolerance), join, cap], { maxBuffer: 1 << 30 }).toString());
+  const shape = (contours) => contours.map((c) => c.map((flat) => ({ points: pointsOf(flat) })));
+  return { glyphs: out.glyphs.map(shape), random_cubics: out.random_cubics.map(shape) };
+}
+
+function stroke() {
+  const width = 0.04, r = width / 2;
+  console.log(`## stroke at width ${width}: segments at the same verified maximum error; CPU time per stroked shape`);
+  const sets = [
+    { key: 'glyphs', name: 'glyph outlines (8 x 50 cubics, closed)', closed: true, inputs: shapes.glyphs, skia: skiaOutline, paper: paperOutline },
+  ];
+  const styles = [
+    { join: 'round', cap: 'round', skiaJoin: CK.StrokeJoin.Round, skiaCap: CK.StrokeCap.Round },
+    { join: 'miter', cap: 'butt', skiaJoin: CK.StrokeJoin.Miter, skiaCap: CK.StrokeCap.Butt },
+  ];
+  const t0 = Date.now();
+  const timing = [];
+  for (const set of sets) {
+    for (const style of styles) {
+      // Butt caps on open cubics: S is not {dist <= r} there; only the closed outlines (no caps)
+      // are measured with miter joins.
+      if (!set.closed && style.cap !== 'round') continue;
+      const peers = [];
+      for (const precision of [1e3, 1e4, 1e5]) {
+        const stroked = (path) => path.makeStroked({ width, precision, join: style.skiaJoin, cap: style.skiaCap, miter_limit: 4 });
+        peers.push({
+          name: `skia makeStroked (precision ${precision})`, precision, stroked,
+          run: (f) => {
+            const s = set.skia(f);
+            const o = stroked(s);
+            const segs = skiaContours(o);
+            o.delete();
+            s.delete();
+            return segs;
+          },
+        });
+      }
+      peers.push({
+        name: 'paperjs-offset offsetStroke',
+        run: (f) => {
+          const o = PaperOffset.offsetStroke(set.paper(f), r, { insert: false, join: style.join, cap: style.cap, limit: 4 });
+          const children = o.children ? o.children : [o];
+          return children.map((c) => paperSegments(c));
+        },
+      });
+      for (const peer of peers) {
+        let segments = 0, error = 0, outward = 0, inward = 0;
+        set.inputs.forEach((f) => {
+          const contours = peer.run(f);
+          for (const c of contours) segments += c.length;
+          const e = strokeError(set.closed ? outlineCubics(f) : [pointsOf(f)], set.closed, contours, r);
+          error = Math.max(error, e.error);
+          outward = Math.max(outward, e.outward);
+          inward = Math.max(inward, e.inward);
+        });
+        if (!(error > 0 && error < r)) {
+          console.log(`${set.name}, ${style.join} join, ${style.cap} cap, ${peer.name} [${((Date.now() - t0) / 1000).toFixed(0)} s]: ${segments} segments, verified error ${fmt(error)} (out ${fmt(outward)}, in ${fmt(inward)}): not compared`);
+          continue;
+        }
+        const ours = ourStroke(width, error, style.join, style.cap)[set.key];
+        let ourSegments = 0, ourError = 0, ourOutward = 0, ourInward = 0;
+        set.inputs.forEach((f, i) => {
+          for (const c of ours[i]) ourSegments += c.length;
+          const e = strokeError(set.closed ? outlineCubics(f) : [pointsOf(f)], set.closed, ours[i], r);
+          ourError = Math.max(ourError, e.error);
+          ourOutward = Math.max(ourOutward, e.outward);
+          ourInward = Math.max(ourInward, e.inward);
+        });
+        console.log(`${set.name}, ${style.join} join, ${style.cap} cap, ${peer.name} [${((Date.now() - t0) / 1000).toFixed(0)} s]: ${segments} segments, verified error ${fmt(error)} (out ${fmt(outward)}, in ${fmt(inward)}); ours at that tolerance ${ourSegments} segments, verified error ${fmt(ourError)} (out ${fmt(ourOutward)}, in ${fmt(ourInward)}); ours / peer ${fmt(ourSegments / segments)}`);
+        if (peer.precision) {
+          const skiaPaths = set.inputs.map((f) => set.skia(f));
+          timing.push({
+            label: `${set.name}, ${style.join}/${style.cap}, precision ${peer.precision} (tolerance ${fmt(error)})`,
+            skia: { name: 'skia', items: skiaPaths.length, run: () => { for (const s of skiaPaths) peer.stroked(s).delete(); } },
+            ours: ['stroke-time', set.key, String(width), String(error), style.join, style.cap, String(minMs)],
+          });
+        }
+      }
+    }
+  }
+  // Timing: each round runs Skia's stroker (this process's CPU time) and ours (the child's own
+  // CPU time) for at least minMs each, in an order alternating round by round.
+  console.log('### CPU time per stroked shape (median of rounds): skia | ours | ours / skia (each round\'s ratio)');
+  for (const t of timing) {
+    const skiaUs = [], ourUs = [], ratios = [];
+    for (let round = 0; round < rounds; ++round) {
+      const runSkia = () => {
+        let passes = 0;
+        const start = cpuMs();
+        let elapsed = 0;
+        do { t.skia.run(); ++passes; elapsed = cpuMs() - start; } while (elapsed < minMs);
+        return (elapsed * 1000) / (passes * t.skia.items);
+      };
+      const runOurs = () => JSON.parse(execFileSync(dumpBinary, t.ours).toString()).us_per_shape;
+      let a, b;
+      if (round % 2 === 0) { a = runSkia(); b = runOurs(); } else { b = runOurs(); a = runSkia(); }
+      skiaUs.push(a);
+      ourUs.push(b);
+      ratios.push(b / a);
+    }
+    console.log(`${t.label}: skia ${fmt(median(skiaUs))} us | ours ${fmt(median(ourUs))} us | ${fmt(median(ratios))} (${ratios.map((x) => fmt(x, 2)).join(', ')})`);
+  }
+}
+
 for (const s of sections) {
-  if (s === 'booleans') booleans();
+  if (s === 'stroke') stroke();
+  else if (s === 'booleans') booleans();
   else if (s === 'cases') cases();
   else if (s === 'flatten') flatten();
   else if (s === 'offset') offset();

@@ -10,6 +10,19 @@
 //   bezier_peer_shapes offset D TOL     our offset cubics (outline/offset.hpp) at distance D
 //                                       (left of travel, y up) of every segment of the glyph
 //                                       outlines, within TOL
+//   bezier_peer_shapes stroke W TOL JOIN CAP
+//                                       our stroke outlines (outline/stroke.hpp) of the glyph
+//                                       outlines (closed) and of the random cubics (each an
+//                                       open path), width W, within TOL: per shape its
+//                                       contours, each a list of segments as flat control
+//                                       point lists (2 points a line, 4 a cubic)
+//   bezier_peer_shapes stroke-time SET W TOL JOIN CAP MS
+//                                       CPU time of outline::stroke per shape of SET (glyphs
+//                                       or random_cubics): passes over the set, paths built
+//                                       beforehand, until MS milliseconds of this process's
+//                                       CPU time (CLOCK_PROCESS_CPUTIME_ID); prints
+//                                       {"us_per_shape":..,"passes":..}. Not a certified
+//                                       figure: the machine's load shows in it.
 //
 // Flatten and offset inputs: the A outlines of the 8 pairs of 50 cubics (glyph outlines), and
 // 256 random cubics: mulberry32 seeded with 1 after the 320000 draws of the cubic pairs,
@@ -19,12 +32,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <string>
 #include <vector>
 
 #include "core/base/curve.hpp"
 #include "core/outline/flatten.hpp"
 #include "core/outline/offset.hpp"
+#include "core/outline/stroke.hpp"
 #include "core/path/svg_path_data.hpp"
 #include "core/region/boolean.hpp"
 #include "core/region/region.hpp"
@@ -211,6 +226,108 @@ void dump_offset(double d, double tolerance) {
   std::printf("]}\n");
 }
 
+/// The stroke inputs: the glyph outlines as closed paths, the random cubics as open paths.
+std::vector<bezier::path::Path> stroke_inputs(const std::string& set) {
+  std::vector<bezier::path::Path> paths;
+  if (set == "glyphs") {
+    for (const CubicOutline& g : glyph_outlines()) {
+      bezier::path::Path p;
+      p.segments = cubics_of(g);
+      p.subpaths.push_back({0, p.segments.size(), true});
+      paths.push_back(std::move(p));
+    }
+  } else if (set == "random_cubics") {
+    for (const auto& c : random_cubics()) {
+      bezier::path::Path p;
+      p.segments.emplace_back(c);
+      p.subpaths.push_back({0, 1, false});
+      paths.push_back(std::move(p));
+    }
+  } else {
+    std::fprintf(stderr, "unknown set %s\n", set.c_str());
+    std::exit(2);
+  }
+  return paths;
+}
+
+bezier::outline::StrokeStyle stroke_style(double width, const std::string& join, const std::string& cap) {
+  bezier::outline::StrokeStyle style;
+  style.width = width;
+  style.join = join == "round" ? bezier::outline::LineJoin::round
+               : join == "bevel" ? bezier::outline::LineJoin::bevel
+                                 : bezier::outline::LineJoin::miter;
+  style.cap = cap == "round" ? bezier::outline::LineCap::round
+              : cap == "square" ? bezier::outline::LineCap::square
+                                : bezier::outline::LineCap::butt;
+  return style;
+}
+
+bezier::outline::StrokeOutline stroke_of(const bezier::path::Path& path,
+                                         const bezier::outline::StrokeStyle& style, double tolerance) {
+  auto o = bezier::outline::stroke(path, style, tolerance, INT64_MAX / 4, 100000000);
+  if (o.status != bezier::outline::StrokeStatus::ok) {
+    std::fprintf(stderr, "stroke failed\n");
+    std::exit(1);
+  }
+  return o;
+}
+
+void dump_stroke(double width, double tolerance, const std::string& join, const std::string& cap) {
+  const auto style = stroke_style(width, join, cap);
+  std::printf("{");
+  bool first_set = true;
+  for (const char* set : {"glyphs", "random_cubics"}) {
+    std::printf("%s\"%s\":[", first_set ? "" : ",\n", set);
+    first_set = false;
+    bool first = true;
+    for (const auto& path : stroke_inputs(set)) {
+      std::printf("%s[", first ? "" : ",");
+      first = false;
+      bool first_contour = true;
+      for (const auto& contour : stroke_of(path, style, tolerance).contours) {
+        std::printf("%s[", first_contour ? "" : ",");
+        first_contour = false;
+        for (std::size_t k = 0; k < contour.size(); ++k) {
+          std::printf("%s", k ? "," : "");
+          print_points({contour[k].points().begin(), contour[k].points().end()});
+        }
+        std::printf("]");
+      }
+      std::printf("]");
+    }
+    std::printf("]");
+  }
+  std::printf("}\n");
+}
+
+double cpu_ms() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
+}
+
+void time_stroke(const std::string& set, double width, double tolerance, const std::string& join,
+                 const std::string& cap, double min_ms) {
+  const auto style = stroke_style(width, join, cap);
+  const auto paths = stroke_inputs(set);
+  std::size_t segments = 0;
+  for (const auto& path : paths) segments += stroke_of(path, style, tolerance).segment_count;  // warm-up
+  long passes = 0;
+  const double start = cpu_ms();
+  double elapsed = 0.0;
+  do {
+    for (const auto& path : paths) {
+      const auto o = stroke_of(path, style, tolerance);
+      if (o.segment_count == 0) std::exit(1);
+    }
+    ++passes;
+    elapsed = cpu_ms() - start;
+  } while (elapsed < min_ms);
+  std::printf("{\"us_per_shape\":%.6g,\"passes\":%ld,\"segments\":%zu}\n",
+              elapsed * 1e3 / (static_cast<double>(passes) * static_cast<double>(paths.size())), passes,
+              segments);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -220,8 +337,13 @@ int main(int argc, char** argv) {
     dump_flatten(std::strtod(argv[2], nullptr));
   } else if (argc == 4 && std::strcmp(argv[1], "offset") == 0) {
     dump_offset(std::strtod(argv[2], nullptr), std::strtod(argv[3], nullptr));
+  } else if (argc == 6 && std::strcmp(argv[1], "stroke") == 0) {
+    dump_stroke(std::strtod(argv[2], nullptr), std::strtod(argv[3], nullptr), argv[4], argv[5]);
+  } else if (argc == 8 && std::strcmp(argv[1], "stroke-time") == 0) {
+    time_stroke(argv[2], std::strtod(argv[3], nullptr), std::strtod(argv[4], nullptr), argv[5], argv[6],
+                std::strtod(argv[7], nullptr));
   } else {
-    std::fprintf(stderr, "usage: %s [flatten TOL | offset D TOL]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [flatten TOL | offset D TOL | stroke W TOL JOIN CAP | stroke-time SET W TOL JOIN CAP MS]\n", argv[0]);
     return 2;
   }
   return 0;
