@@ -7,7 +7,6 @@
 #include <thread>
 #include <vector>
 
-#include <poll.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -25,23 +24,6 @@ namespace {
 // allow five times that: a noisy shared machine, or a build with the sanitizers.
 constexpr double kBatchCpuBoundSeconds = 1.0;
 constexpr double kMargin = 5.0;
-
-// Reads the metric until `holds` is true of it (at most 20 s); its last value.
-template <class Holds>
-double await_metric(int port, std::string_view series, Holds holds) {
-  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-  double value = metric(port, series).value_or(-1);
-  while (!holds(value) && std::chrono::steady_clock::now() < give_up) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    value = metric(port, series).value_or(-1);
-  }
-  return value;
-}
-
-bool answer_arrived(const Connection& c) {
-  pollfd p{c.fd(), POLLIN, 0};
-  return poll(&p, 1, 0) > 0;
-}
 
 // An /intersections item of the kind issue 28 reported: two cubics whose coordinates mix
 // 1e-300 and subnormals with values next to the largest double, by subdivision, whose

@@ -24,24 +24,6 @@ namespace {
 constexpr std::string_view kDepth = "bezier_compute_queue_depth";
 constexpr std::string_view kInFlight = "bezier_requests_in_flight";
 
-// Reads the metric until `holds` is true of it (at most 20 s); its last value.
-template <class Holds>
-double await_metric(int port, std::string_view series, Holds holds) {
-  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-  double value = metric(port, series).value_or(-1);
-  while (!holds(value) && std::chrono::steady_clock::now() < give_up) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    value = metric(port, series).value_or(-1);
-  }
-  return value;
-}
-
-// Whether an answer has arrived on `c` (without waiting for one).
-bool answer_arrived(const Connection& c) {
-  pollfd p{c.fd(), POLLIN, 0};
-  return poll(&p, 1, 0) > 0;
-}
-
 // Sends the costly request on a new connection and waits until a compute thread runs it:
 // in flight (it and the metrics request) and not in the queue.
 std::unique_ptr<Connection> start_costly_request(int port) {

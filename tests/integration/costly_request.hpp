@@ -35,4 +35,16 @@ inline std::string work_cap_bound_intersections() {
   return R"({"curves":[{"points":)" + wave + R"(]},{"points":)" + mirrored + R"(]}],"method":"subdivision"})";
 }
 
+/// SVG path data of a unit circle of four cubics traced 1000 times: every segment meets its
+/// 999 copies, so a path's self-intersection sweep finds millions of candidate pairs
+/// (what the memory limit and the memory returned after a burst are tested with).
+inline std::string circle_traced_1000_times_path() {
+  const std::string k = "0.5522847498";
+  const std::string turn = "C1 " + k + " " + k + " 1 0 1 C-" + k + " 1 -1 " + k + " -1 0 C-1 -" + k + " -" + k +
+                           " -1 0 -1 C" + k + " -1 1 -" + k + " 1 0 ";
+  std::string path = "M1 0 ";
+  for (int i = 0; i < 1000; ++i) path += turn;
+  return path;
+}
+
 }  // namespace bezier::test

@@ -10,22 +10,16 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/integration/costly_request.hpp"
 #include "tests/support/raw_http.hpp"
 #include "tests/support/service_process.hpp"
 
 namespace bezier::test {
 namespace {
 
-// A unit circle of four cubics, traced 1000 times: every segment meets its 999 copies, so
-// the path's self-intersection sweep finds millions of candidate pairs before the work
-// cap stops it.
+// The circle traced 1000 times (costly_request.hpp) against itself.
 std::string circle_traced_1000_times() {
-  const std::string k = "0.5522847498";
-  const std::string turn = "C1 " + k + " " + k + " 1 0 1 C-" + k + " 1 -1 " + k + " -1 0 C-1 -" + k + " -" + k +
-                           " -1 0 -1 C" + k + " -1 1 -" + k + " 1 0 ";
-  std::string path = "M1 0 ";
-  for (int i = 0; i < 1000; ++i) path += turn;
-  return nlohmann::json{{"curves", {{{"path", path}}}}}.dump();
+  return nlohmann::json{{"curves", {{{"path", circle_traced_1000_times_path()}}}}}.dump();
 }
 
 TEST(MemoryRelease, ResidentSetReturnsNearItsLevelAfterABurst) {
@@ -34,7 +28,10 @@ TEST(MemoryRelease, ResidentSetReturnsNearItsLevelAfterABurst) {
   // in quarantine: resident memory says nothing about the service's release there.
   GTEST_SKIP() << "resident memory under AddressSanitizer is its allocator's";
 #endif
-  ServiceProcess service({"--threads", "8", "--io-threads", "1"});
+  // The per-request memory limit (request_memory_test.cpp) would cap each sweep at a few
+  // MiB, leaving a burst too small to tell release from the pool threads' own arenas: it is
+  // raised here, so that each request holds what its work cap allows.
+  ServiceProcess service({"--threads", "8", "--io-threads", "1", "--max-request-memory", "268435456"});
   const std::string request = post_request("/intersections", circle_traced_1000_times());
   ASSERT_EQ(status_of(round_trip(service.port(), post_request("/evaluate", R"({"points":[[0,0],[1,1]],"t":0.5})"))), 200);
   const std::int64_t before = resident_bytes(service.pid());

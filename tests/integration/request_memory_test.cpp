@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "api/limits.hpp"
+#include "tests/integration/costly_request.hpp"
 #include "tests/support/raw_http.hpp"
 #include "tests/support/service_process.hpp"
 
@@ -29,15 +30,8 @@ std::string zero_length_segments() {
   return one_path(path);
 }
 
-// A unit circle of four cubics, traced 1000 times: every segment meets its 999 copies.
-std::string circle_traced_1000_times() {
-  const std::string k = "0.5522847498";
-  const std::string turn = "C1 " + k + " " + k + " 1 0 1 C-" + k + " 1 -1 " + k + " -1 0 C-1 -" + k + " -" + k +
-                           " -1 0 -1 C" + k + " -1 1 -" + k + " 1 0 ";
-  std::string path = "M1 0 ";
-  for (int i = 0; i < 1000; ++i) path += turn;
-  return one_path(path);
-}
+// The circle traced 1000 times (costly_request.hpp): every segment meets its 999 copies.
+std::string circle_traced_1000_times() { return one_path(circle_traced_1000_times_path()); }
 
 TEST(RequestMemory, APathThatMeetsItselfEverywhereIsRefusedWithinTheMemoryLimit) {
   ServiceProcess service({"--threads", "1", "--io-threads", "1"});

@@ -20,6 +20,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -230,6 +231,25 @@ inline std::optional<double> metric(int port, std::string_view series) {
   const std::size_t at = text.find(prefix);
   if (at == std::string::npos) return std::nullopt;
   return std::strtod(text.c_str() + at + prefix.size(), nullptr);
+}
+
+/// Reads the metric `series` until `holds` is true of it (at most 20 s); its last value (-1
+/// while absent).
+template <class Holds>
+double await_metric(int port, std::string_view series, Holds holds) {
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  double value = metric(port, series).value_or(-1);
+  while (!holds(value) && std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    value = metric(port, series).value_or(-1);
+  }
+  return value;
+}
+
+/// Whether an answer has arrived on `c` (without waiting for one).
+inline bool answer_arrived(const Connection& c) {
+  pollfd p{c.fd(), POLLIN, 0};
+  return poll(&p, 1, 0) > 0;
 }
 
 /// VmRSS of a process from /proc/<pid>/status, in bytes.
