@@ -49,7 +49,8 @@ struct Real {
   return fast_two_sum(p.hi, std::fma(a.lo, b, p.lo));
 }
 
-/// a b, relative error <= 5 u^2 (Joldes et al., Algorithm 12, "DWTimesDW3").
+/// a b, relative error <= 6 u^2 (Joldes et al., Algorithm 11, "DWTimesDW2": the product of the
+/// low parts is left out, which is what separates it from their Algorithm 12).
 [[nodiscard]] inline Real mul(Real a, Real b) noexcept {
   const TwoTerm<double> p = two_product(a.hi, b.hi);
   const double cross = std::fma(a.lo, b.hi, a.hi * b.lo);
