@@ -49,6 +49,8 @@ class SmallArray {
     else
       std::copy(other.inline_entries(), other.inline_entries() + other.size_, inline_entries());
     size_ = other.size_;
+    other.heap_.clear();
+    other.size_ = 0;  // a moved-from array is empty, whichever storage it had
     return *this;
   }
   ~SmallArray() = default;

@@ -136,12 +136,16 @@ TEST(SmallArray, MovesCarryTheEntries) {
     const double* heap_data = source.data();
     Array moved(std::move(source));
     expect_iota(moved, n, 7.0);
+    // The source is left empty, not claiming entries it no longer owns.
+    EXPECT_TRUE(source.empty());  // NOLINT(bugprone-use-after-move): the state after a move
+    EXPECT_EQ(source.begin(), source.end());  // NOLINT(bugprone-use-after-move)
     if (n > kInline) {
       EXPECT_EQ(moved.data(), heap_data);  // the heap block changes owner
     }
     Array target = iota(2, 0.0);
     target = std::move(moved);
     expect_iota(target, n, 7.0);
+    EXPECT_TRUE(moved.empty());  // NOLINT(bugprone-use-after-move): the state after a move
     // A moved-from array can be assigned again and used.
     moved = iota(3, 1.0);
     expect_iota(moved, 3, 1.0);
