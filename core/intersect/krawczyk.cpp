@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/base/multiversion.hpp"
 #include "core/numeric/tuning.hpp"
 #include "core/numeric/unit_roundoff.hpp"
@@ -17,8 +18,6 @@ constexpr double kSlack = intersect_tuning::kKrawczykSlack;
 constexpr std::size_t kMaxDegree = numeric_tuning::kInlineEntries - 1;
 using namespace intersect_tuning;
 
-using bernstein::max2;
-using bernstein::min2;
 
 /// The midpoint and radius of an interval known to hold a quantity.
 struct Range {

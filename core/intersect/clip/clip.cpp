@@ -4,7 +4,7 @@
 #include <cmath>
 #include <utility>
 
-#include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
 #include "core/numeric/unit_roundoff.hpp"
@@ -75,8 +75,8 @@ BEZIER_FMA_CLONES bool bounding_boxes_disjoint(const Piece& f, const Piece& g) n
 ParamInterval map_to_domain(ParamInterval domain, ParamInterval local) noexcept {
   const double w = domain.hi - domain.lo;
   ParamInterval out = domain;
-  if (local.lo > 0.0) out.lo = bernstein::max2(domain.lo, domain.lo + w * local.lo - 4 * kUnitRoundoff);
-  if (local.hi < 1.0) out.hi = bernstein::min2(domain.hi, domain.lo + w * local.hi + 4 * kUnitRoundoff);
+  if (local.lo > 0.0) out.lo = max2(domain.lo, domain.lo + w * local.lo - 4 * kUnitRoundoff);
+  if (local.hi < 1.0) out.hi = min2(domain.hi, domain.lo + w * local.hi + 4 * kUnitRoundoff);
   if (out.hi < out.lo) out.hi = out.lo;
   return out;
 }
