@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/lerp_error_bound.hpp"
 #include "core/numeric/min_max.hpp"
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
@@ -145,7 +146,7 @@ BEZIER_FMA_CLONES void fast_piece_into(const WorkingCurve& f, double a, double b
   }
   bernstein::portion_into<double>(f.x, a, b, out.x.data());
   bernstein::portion_into<double>(f.y, a, b, out.y.data());
-  out.error = f.frame_error + 3.02 * f.degree * kUnitRoundoff * f.magnitude + 0x1p-1000;
+  out.error = f.frame_error + lerp_levels_error_bound(f.degree, f.magnitude);
 }
 
 BEZIER_FMA_CLONES Piece compensated_piece(const WorkingCurve& f, double a, double b, Point2 center) {

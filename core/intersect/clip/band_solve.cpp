@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/lerp_error_bound.hpp"
 #include "core/numeric/min_max.hpp"
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
@@ -144,7 +145,7 @@ template <std::size_t E>
 std::optional<ParamInterval> kept_interval_by_hulls_of(std::span<const double, E> p, double lo,
                                                        double hi) {
   const int k = static_cast<int>(p.size()) - 1;
-  const double e = 3.02 * k * kUnitRoundoff * bernstein::max_abs(p) + 0x1p-1000;
+  const double e = lerp_levels_error_bound(k, bernstein::max_abs(p));
   CoefficientBuffer<E> piece(p.size());
   ParamInterval range{0.0, 1.0};
   for (int pass = 0; pass < kBandClipPasses; ++pass) {
@@ -294,7 +295,7 @@ std::optional<ParamInterval> kept_interval_of(std::span<const double, E> p, doub
     c[2] = 3 * (p[0] - 2 * p[1] + p[2]);
     c[3] = (p[3] - p[0]) + 3 * (p[1] - p[2]);
   }
-  const double e = 3.02 * k * kUnitRoundoff * bernstein::max_abs(p) + 0x1p-1000;
+  const double e = lerp_levels_error_bound(k, bernstein::max_abs(p));
   // Monotone p (monotone Bernstein coefficients, so p' has constant sign): the set is one
   // interval between the crossings of lo and hi, and a single value outside each end
   // certifies it. This is the common case once the pieces are small.
