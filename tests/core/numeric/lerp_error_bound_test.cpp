@@ -44,7 +44,8 @@ std::vector<double> random_coefficients(test::Mulberry32& rng, int degree, int s
   std::vector<double> c;
   for (int i = 0; i <= degree; ++i) {
     const double pick = rng.next();
-    const double u = pick < 0.05 ? 0.0 : pick < 0.1 ? (rng.next() < 0.5 ? -1.0 : 1.0) : rng.uniform(-1, 1);
+    const double sign = rng.next() < 0.5 ? -1.0 : 1.0;
+    const double u = pick < 0.05 ? 0.0 : pick < 0.1 ? sign : rng.uniform(-1, 1);
     c.push_back(std::ldexp(u, scale));
   }
   return c;
@@ -86,7 +87,8 @@ TEST(LerpLevelsErrorBound, PortionsOfBernsteinPolynomials) {
   test::Mulberry32 rng(4);
   for (int trial = 0; trial < 1500; ++trial) {
     const int degree = 1 + static_cast<int>(rng.next() * 12);
-    const std::vector<double> c = random_coefficients(rng, degree, static_cast<int>(rng.uniform(-20, 20)));
+    const int scale = static_cast<int>(rng.uniform(-20, 20));
+    const std::vector<double> c = random_coefficients(rng, degree, scale);
     double a = random_parameter(rng), b = random_parameter(rng);
     if (b < a) std::swap(a, b);
     std::vector<double> piece(c.size());
