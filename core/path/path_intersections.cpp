@@ -15,8 +15,8 @@ namespace bezier::path {
 
 namespace {
 
-std::vector<Box> boxes_of(const Path& path) {
-  std::vector<Box> boxes;
+std::vector<core::Rect> boxes_of(const Path& path) {
+  std::vector<core::Rect> boxes;
   boxes.reserve(path.segments.size());
   for (const core::Curve& segment : path.segments) boxes.push_back(control_box(segment));
   return boxes;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "core/base/rect.hpp"
 #include "core/numeric/min_max.hpp"
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
@@ -14,34 +15,23 @@ namespace bezier::core {
 
 namespace {
 
-struct Extent {
-  double x_lo, x_hi, y_lo, y_hi;
-};
-
 /// The control box of a piece's coordinates x, y (E entries, with_fixed_extent), widened by
 /// its error bound.
 template <std::size_t E>
-Extent extent_of(std::span<const double, E> x, std::span<const double, E> y,
-                 double error) noexcept {
-  double xl = x[0], xh = x[0], yl = y[0], yh = y[0];
-  for (std::size_t i = 1; i < x.size(); ++i) {
-    xl = x[i] < xl ? x[i] : xl;
-    xh = x[i] > xh ? x[i] : xh;
-    yl = y[i] < yl ? y[i] : yl;
-    yh = y[i] > yh ? y[i] : yh;
-  }
-  return {xl - error, xh + error, yl - error, yh + error};
+Rect extent_of(std::span<const double, E> x, std::span<const double, E> y,
+               double error) noexcept {
+  Rect box{{x[0], y[0]}, {x[0], y[0]}};
+  for (std::size_t i = 1; i < x.size(); ++i) box = box.including({x[i], y[i]});
+  return box.grown(error);
 }
 
 template <std::size_t E>
-Extent extent(const Piece& p) noexcept {
+Rect extent(const Piece& p) noexcept {
   const std::size_t size = p.x.size();
   return extent_of(fixed_span<E>(p.x.data(), size), fixed_span<E>(p.y.data(), size), p.error);
 }
 
-bool disjoint(const Extent& a, const Extent& b) noexcept {
-  return a.x_hi < b.x_lo || b.x_hi < a.x_lo || a.y_hi < b.y_lo || b.y_hi < a.y_lo;
-}
+bool disjoint(const Rect& a, const Rect& b) noexcept { return !a.intersects(b); }
 
 /// The least and the largest of the E values a (std::minmax_element's, without the
 /// iterators: the same comparisons on the same values).
