@@ -68,7 +68,7 @@ TEST(Rect, IntersectsExactlyWhenTheyShareAPoint) {
 
 TEST(Rect, TouchingCounts) {
   const Rect a{{0, 0}, {1, 1}};
-  EXPECT_TRUE(a.intersects(Rect{{1, 1}, {2, 2}}));  // a corner
+  EXPECT_TRUE(a.intersects(Rect{{1, 1}, {2, 2}}));    // a corner
   EXPECT_TRUE(a.intersects(Rect{{1, 0.5}, {2, 3}}));  // an edge
   EXPECT_FALSE(a.intersects(Rect{{std::nextafter(1.0, 2.0), 0}, {2, 1}}));
 }
