@@ -51,6 +51,17 @@ template <class P>
   return s;
 }
 
+/// Every control point equal to the first, bit for bit as Point2's == compares (+0 == -0,
+/// a NaN coordinate never equal): the curve is one point, B(t) = P_0 for every t, with
+/// zero length and no tangent. A curve of degree 0 is one.
+template <class P>
+[[nodiscard]] bool is_point(const BasicCurve<P>& curve) noexcept {
+  for (const P& p : curve.points()) {
+    if (!(p == curve.front())) return false;
+  }
+  return true;
+}
+
 /// The same curve traversed backwards: R(t) = B(1 - t), control points reversed.
 template <class P>
 [[nodiscard]] BasicCurve<P> reversed(const BasicCurve<P>& curve) {

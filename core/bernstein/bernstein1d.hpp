@@ -8,6 +8,7 @@
 
 #include "core/base/interval.hpp"
 #include "core/numeric/double_double.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/numeric/small_array.hpp"
 #include "core/numeric/unit_roundoff.hpp"
 
@@ -169,15 +170,6 @@ template <class T>
     for (std::size_t k = 0; k < level; ++k) row[k] = bernstein::lerp(row[k], row[k + 1], t);
   }
   return row[0];
-}
-
-/// max(a, b) and min(a, b) without std::fmax's NaN handling (a library call in GCC): for
-/// the hot loops, on values known to be finite.
-[[nodiscard]] constexpr double max2(double a, double b) noexcept {
-  return a > b ? a : b;
-}
-[[nodiscard]] constexpr double min2(double a, double b) noexcept {
-  return a < b ? a : b;
 }
 
 /// Largest |c_i|.

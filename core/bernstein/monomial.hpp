@@ -7,7 +7,7 @@
 #include <span>
 
 #include "core/numeric/binomial.hpp"
-#include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/bernstein/tuning.hpp"
 #include "core/numeric/small_array.hpp"
 #include "core/numeric/fixed_extent.hpp"
@@ -91,7 +91,7 @@ double top_forward_difference(std::span<const double, E> d) noexcept {
                                                   double magnitude) {
   const double tol = bernstein_tuning::kSignificantCoefficientFactor * binomial(n, k) *
                      power_of_two(k) * kUnitRoundoff * magnitude;
-  return bernstein::max2(std::fabs(ax_k), std::fabs(ay_k)) > tol;
+  return max2(std::fabs(ax_k), std::fabs(ay_k)) > tol;
 }
 
 /// The largest k whose monomial coefficient is significant: a degree-elevated curve, rounded

@@ -8,6 +8,7 @@
 #include "core/bernstein/roots.hpp"
 #include "core/numeric/binomial.hpp"
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/numeric/double_double.hpp"
 #include "core/intersect/gauss_newton.hpp"
 #include "core/bernstein/monomial.hpp"
@@ -57,7 +58,7 @@ Monomial right_factor(const Coeffs& a, int n, int k) {
 bool is_polynomial_in(const Coeffs& x, int n, const Monomial& p, double size) {
   const int k = static_cast<int>(p.size()) - 1;
   Monomial r(x.begin(), x.begin() + n + 1);
-  const double tol = kDivisionFilter * size * bernstein::max2(1.0, max_abs(p));
+  const double tol = kDivisionFilter * size * max2(1.0, max_abs(p));
   const auto constant_below = [&](int degree) {
     for (int j = 1; j <= degree; ++j)
       if (!(std::fabs(r[static_cast<std::size_t>(j)]) <= tol)) return false;
@@ -238,7 +239,7 @@ Monomial refined_on_curve(const WorkingCurve& c, Monomial p, int d) {
     for (std::size_t u = 0; u < unknowns; ++u) {
       Monomial q = p;
       const double h =
-          intersect_tuning::kFactorJacobianStep * bernstein::max2(1.0, std::fabs(p[u + 1]));
+          intersect_tuning::kFactorJacobianStep * max2(1.0, std::fabs(p[u + 1]));
       q[u + 1] += h;
       const std::optional<std::vector<double>> shifted = misfit_of(q);
       if (!shifted) return p;
@@ -321,8 +322,8 @@ double refine_turn(const WorkingCurve& c, double t) {
 /// A t in the monotone piece with c(t) = u, clamped to the piece.
 double preimage(const Coeffs& c, ParamInterval piece, double u) {
   const double a = value(c, piece.lo), b = value(c, piece.hi);
-  if (u <= bernstein::min2(a, b)) return a <= b ? piece.lo : piece.hi;
-  if (u >= bernstein::max2(a, b)) return a <= b ? piece.hi : piece.lo;
+  if (u <= min2(a, b)) return a <= b ? piece.lo : piece.hi;
+  if (u >= max2(a, b)) return a <= b ? piece.hi : piece.lo;
   return crossing(c, piece.lo, piece.hi, u, kPreimageAccuracy);
 }
 
@@ -381,9 +382,9 @@ ArcPieces arc_pieces(const WorkingCurve& f, const WorkingCurve& g, const CommonA
     for (std::size_t j = selection.later_pieces_only ? i + 1 : 0; j < s_pieces.size(); ++j) {
       const ParamInterval J = s_pieces[j];
       const double q0 = value(arc.q, J.lo), q1 = value(arc.q, J.hi);
-      const double p_lo = bernstein::min2(p0, p1), p_hi = bernstein::max2(p0, p1);
-      const double q_lo = bernstein::min2(q0, q1), q_hi = bernstein::max2(q0, q1);
-      const double u_lo = bernstein::max2(p_lo, q_lo), u_hi = bernstein::min2(p_hi, q_hi);
+      const double p_lo = min2(p0, p1), p_hi = max2(p0, p1);
+      const double q_lo = min2(q0, q1), q_hi = max2(q0, q1);
+      const double u_lo = max2(p_lo, q_lo), u_hi = min2(p_hi, q_hi);
       if (u_hi < u_lo - kArcSlack) continue;  // the pieces trace different parts of h
       // Each end of the shared range is an end of f's piece (an end of f or a turning point
       // on f) whose point lies on g, or one of g's on f, or both ends at once when their
@@ -421,10 +422,10 @@ ArcPieces arc_pieces(const WorkingCurve& f, const WorkingCurve& g, const CommonA
         }
         if (!found) return ArcPieces{false, {}, {}};  // neither end lies on the other curve
       }
-      const ParamInterval t_range{bernstein::min2(ends_t[0], ends_t[1]),
-                                  bernstein::max2(ends_t[0], ends_t[1])};
-      const ParamInterval s_range{bernstein::min2(ends_s[0], ends_s[1]),
-                                  bernstein::max2(ends_s[0], ends_s[1])};
+      const ParamInterval t_range{min2(ends_t[0], ends_t[1]),
+                                  max2(ends_t[0], ends_t[1])};
+      const ParamInterval s_range{min2(ends_s[0], ends_s[1]),
+                                  max2(ends_s[0], ends_s[1])};
       const auto meets = [](ParamInterval a, ParamInterval b, double pad) {
         return a.lo - pad <= b.hi && b.lo <= a.hi + pad;
       };
@@ -477,7 +478,7 @@ std::optional<Factorisation> factorise(const WorkingCurve& c) {
   const Coeffs& a =
       std::fabs(ax[static_cast<std::size_t>(n)]) >= std::fabs(ay[static_cast<std::size_t>(n)]) ? ax
                                                                                                : ay;
-  const double size = bernstein::max2(max_abs(ax), max_abs(ay));
+  const double size = max2(max_abs(ax), max_abs(ay));
   // Every common right factor of x and y is one of the largest (Lüroth), so the first k
   // that works, from the top, is the largest.
   for (int k = n / 2; k >= 2; --k) {
@@ -511,8 +512,8 @@ std::vector<OverlapFinding> find_arc_overlaps(const WorkingCurve& f, const Worki
   // h_b(v) = h_a(alpha + beta v), found as find_overlaps finds its map, from the top two
   // monomial coefficients of the dominant coordinate.
   const Coeffs ax = monomial(a.hx), ay = monomial(a.hy), bx = monomial(b.hx), by = monomial(b.hy);
-  const double a_size = bernstein::max2(max_abs(a.hx), max_abs(a.hy));
-  const double b_size = bernstein::max2(max_abs(b.hx), max_abs(b.hy));
+  const double a_size = max2(max_abs(a.hx), max_abs(a.hy));
+  const double b_size = max2(max_abs(b.hx), max_abs(b.hy));
   const int d = true_degree(ax, ay, a_size);
   if (d < 2 || d != true_degree(bx, by, b_size)) return {};
   const std::size_t top = static_cast<std::size_t>(d);
@@ -558,7 +559,7 @@ std::vector<OverlapFinding> find_self_arc_overlaps(const WorkingCurve& c) {
   auto arc = std::make_shared<CommonArc>();
   arc->hx = fc->hx;
   arc->hy = fc->hy;
-  arc->h_magnitude = bernstein::max2(max_abs(fc->hx), max_abs(fc->hy));
+  arc->h_magnitude = max2(max_abs(fc->hx), max_abs(fc->hy));
   arc->p = fc->p;
   arc->q = fc->p;
   ArcPieces pieces = arc_pieces(c, c, *arc, PieceSelection{true, {0.0, 1.0}, {0.0, 1.0}});
@@ -574,8 +575,8 @@ bool covered_by_arc(const CommonArc& arc, ParamInterval t, ParamInterval s) {
   const Coeffs pt = bernstein::portion<double>(arc.p, t.lo, t.hi);
   const Coeffs qs = bernstein::portion<double>(arc.q, s.lo, s.hi);
   double lo = pt[0], hi = pt[0];
-  for (const double v : pt) lo = bernstein::min2(lo, v), hi = bernstein::max2(hi, v);
-  for (const double v : qs) lo = bernstein::min2(lo, v), hi = bernstein::max2(hi, v);
+  for (const double v : pt) lo = min2(lo, v), hi = max2(hi, v);
+  for (const double v : qs) lo = min2(lo, v), hi = max2(hi, v);
   return injective_on(arc.hx, arc.hy, arc.h_magnitude, lo - kArcSlack, hi + kArcSlack);
 }
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/base/point.hpp"
 #include "core/intersect/tuning.hpp"
 
@@ -29,7 +29,7 @@ template <class Residual>
     t -= step;
     if (std::fabs(step) <= converged) break;
   }
-  return bernstein::min2(1.0, bernstein::max2(0.0, t));
+  return min2(1.0, max2(0.0, t));
 }
 
 }  // namespace bezier::core

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <utility>
 
-#include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/intersect/collinear.hpp"
 #include "core/intersect/common_arc.hpp"
 #include "core/intersect/clip/fat_curve.hpp"
@@ -26,7 +26,7 @@ double hodograph_scale(const WorkingCurve& c) noexcept {
   double m = 0.0;
   for (std::size_t i = 0; i + 1 < c.x.size(); ++i) {
     const double dx = c.x[i + 1] - c.x[i], dy = c.y[i + 1] - c.y[i];
-    m = bernstein::max2(m, std::sqrt(dx * dx + dy * dy));  // working frame: no overflow
+    m = max2(m, std::sqrt(dx * dx + dy * dy));  // working frame: no overflow
   }
   return c.degree * m;
 }

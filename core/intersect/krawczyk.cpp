@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/lerp_error_bound.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/base/multiversion.hpp"
 #include "core/numeric/tuning.hpp"
 #include "core/numeric/unit_roundoff.hpp"
@@ -17,8 +19,6 @@ constexpr double kSlack = intersect_tuning::kKrawczykSlack;
 constexpr std::size_t kMaxDegree = numeric_tuning::kInlineEntries - 1;
 using namespace intersect_tuning;
 
-using bernstein::max2;
-using bernstein::min2;
 
 /// The midpoint and radius of an interval known to hold a quantity.
 struct Range {
@@ -71,10 +71,10 @@ PointAndDerivative casteljau(const WorkingCurve& c, double t) noexcept {
 }
 
 /// How far the computed value of `casteljau` can be from the exact working curve's point:
-/// the hi parts are within frame_error of it, and each of the n levels of lerps rounds by at
-/// most 3.01 u of the magnitude (bernstein::lerp).
+/// the hi parts are within frame_error of it, and the n levels of lerps round by at most
+/// lerp_levels_error_bound.
 double value_error(const WorkingCurve& c) noexcept {
-  return c.frame_error + 3.02 * c.degree * kUnitRoundoff * c.magnitude + 0x1p-1000;
+  return c.frame_error + lerp_levels_error_bound(c.degree, c.magnitude);
 }
 
 /// Ranges holding df/dt over the piece's domain [a, b], per coordinate: the hodograph's

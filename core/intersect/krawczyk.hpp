@@ -37,7 +37,7 @@ struct KrawczykResult {
 /// the chords of the pieces cross, or the centre of X; y is rounded to a multiple of 2^-52 so
 /// that y +- radius is exact). F(y) is
 /// evaluated by de Casteljau in doubles on the whole working curves, with the bound
-/// frame_error + 3.02 n u magnitude per curve. Verdict one_root needs rho <= 1/2 and Y
+/// frame_error + lerp_levels_error_bound(n, magnitude) per curve. Verdict one_root needs rho <= 1/2 and Y
 /// inside X; a root within `radius` of X's boundary, a tangency (J(X) nearly singular) or a
 /// box too wide for J(X) to be nearly constant stay inconclusive.
 /// Preconditions: both curves of degree >= 1 (not single points), radius a power of two

@@ -7,6 +7,7 @@
 #include "core/numeric/binomial.hpp"
 #include "core/bernstein/degree.hpp"
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/intersect/common_arc.hpp"
 #include "core/intersect/gauss_newton.hpp"
 #include "core/bernstein/monomial.hpp"
@@ -58,10 +59,10 @@ class HullRegion {
     x_lo_ = x_hi_ = c.x[0];
     y_lo_ = y_hi_ = c.y[0];
     for (std::size_t i = 1; i < c.x.size(); ++i) {
-      x_lo_ = bernstein::min2(x_lo_, c.x[i]);
-      x_hi_ = bernstein::max2(x_hi_, c.x[i]);
-      y_lo_ = bernstein::min2(y_lo_, c.y[i]);
-      y_hi_ = bernstein::max2(y_hi_, c.y[i]);
+      x_lo_ = min2(x_lo_, c.x[i]);
+      x_hi_ = max2(x_hi_, c.x[i]);
+      y_lo_ = min2(y_lo_, c.y[i]);
+      y_hi_ = max2(y_hi_, c.y[i]);
     }
     x_lo_ -= margin;
     x_hi_ += margin;
@@ -76,8 +77,8 @@ class HullRegion {
       normal_ = {-dy / length, dx / length};
       for (std::size_t i = 1; i + 1 < c.x.size(); ++i) {
         const double d = distance({c.x[i], c.y[i]});
-        d_lo_ = bernstein::min2(d_lo_, d);
-        d_hi_ = bernstein::max2(d_hi_, d);
+        d_lo_ = min2(d_lo_, d);
+        d_hi_ = max2(d_hi_, d);
       }
     }
     // The distances' rounding (a few u of coordinates <= about 1) is far below 2^-40.
@@ -125,18 +126,18 @@ bool ends_may_overlap(const WorkingCurve& f, const WorkingCurve& g) noexcept {
 }
 
 double overlap_tolerance(int degree) noexcept {
-  return 0x1p-42 * bernstein::max2(1, degree);
+  return 0x1p-42 * max2(1, degree);
 }
 
 double extent(std::span<const double> x, std::span<const double> y) noexcept {
   double x_lo = x[0], x_hi = x[0], y_lo = y[0], y_hi = y[0];
   for (std::size_t i = 1; i < x.size(); ++i) {
-    x_lo = bernstein::min2(x_lo, x[i]);
-    x_hi = bernstein::max2(x_hi, x[i]);
-    y_lo = bernstein::min2(y_lo, y[i]);
-    y_hi = bernstein::max2(y_hi, y[i]);
+    x_lo = min2(x_lo, x[i]);
+    x_hi = max2(x_hi, x[i]);
+    y_lo = min2(y_lo, y[i]);
+    y_hi = max2(y_hi, y[i]);
   }
-  return bernstein::max2(x_hi - x_lo, y_hi - y_lo);
+  return max2(x_hi - x_lo, y_hi - y_lo);
 }
 
 namespace {
@@ -146,7 +147,7 @@ double coincidence_tolerance_at(const WorkingCurve& f, const WorkingCurve& g,
                                 double smaller) noexcept {
   const int degree = std::max(f.degree, g.degree);
   return overlap_tolerance(degree) * smaller +
-         64 * degree * kUnitRoundoff * bernstein::max2(f.magnitude, g.magnitude) + f.frame_error +
+         64 * degree * kUnitRoundoff * max2(f.magnitude, g.magnitude) + f.frame_error +
          g.frame_error;
 }
 
@@ -154,7 +155,7 @@ double coincidence_tolerance_at(const WorkingCurve& f, const WorkingCurve& g,
 
 double coincidence_tolerance(const WorkingCurve& f, const WorkingCurve& g) noexcept {
   return coincidence_tolerance_at(
-      f, g, bernstein::min2(1.0, bernstein::min2(extent(f.x, f.y), extent(g.x, g.y))));
+      f, g, min2(1.0, min2(extent(f.x, f.y), extent(g.x, g.y))));
 }
 
 double coincidence_tolerance_bound(const WorkingCurve& f, const WorkingCurve& g) noexcept {
@@ -271,7 +272,7 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
       if (s_exact[e]) {
         ends_s[e] = s_end[e];
         ends_t[e] = locate_on_curve(f, evaluate_dd(g, s_end[e]),
-                                    bernstein::min2(1.0, bernstein::max2(0.0, phi)));
+                                    min2(1.0, max2(0.0, phi)));
       } else {
         ends_t[e] = (e == 0) == (beta > 0) ? 0.0 : 1.0;
         ends_s[e] = locate_on_curve(g, evaluate_dd(f, ends_t[e]), s_end[e]);
@@ -293,7 +294,7 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
     double gap = 0.0;
     for (std::size_t i = 0; i < px.size(); ++i) {
       gap =
-          bernstein::max2(gap, bernstein::max2(std::fabs(px[i] - qx[i]), std::fabs(py[i] - qy[i])));
+          max2(gap, max2(std::fabs(px[i] - qx[i]), std::fabs(py[i] - qy[i])));
     }
     const double tol = coincidence_tolerance(f, g);
     if (!(gap <= tol)) continue;
@@ -308,8 +309,8 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
     OverlapFinding found;
     found.map.beta = (ends_t[1] - ends_t[0]) / (ends_s[1] - ends_s[0]);
     found.map.alpha = ends_t[0] - found.map.beta * ends_s[0];
-    found.overlap.t_interval = {bernstein::min2(ends_t[0], ends_t[1]),
-                                bernstein::max2(ends_t[0], ends_t[1])};
+    found.overlap.t_interval = {min2(ends_t[0], ends_t[1]),
+                                max2(ends_t[0], ends_t[1])};
     found.overlap.s_interval = {ends_s[0], ends_s[1]};
     found.overlap.reversed = found.map.beta < 0;
     out.push_back(found);
@@ -328,13 +329,13 @@ bool injective_on(std::span<const double> x, std::span<const double> y, double m
   for (std::size_t i = 0; i < hx.size(); ++i) {
     hx[i] = qx[i + 1] - qx[i];
     hy[i] = qy[i + 1] - qy[i];
-    h_max = bernstein::max2(h_max, bernstein::max2(std::fabs(hx[i]), std::fabs(hy[i])));
+    h_max = max2(h_max, max2(std::fabs(hx[i]), std::fabs(hy[i])));
   }
   if (!(h_max > 0)) return false;
   // Extrapolated pieces (reaching outside [0, 1]) are larger; bound their rounding by the
   // largest control point.
-  const double q_max = bernstein::max2(bernstein::max_abs(qx), bernstein::max_abs(qy));
-  const double err = 8 * (n + 1) * kUnitRoundoff * bernstein::max2(q_max, magnitude) + 0x1p-40 * h_max;
+  const double q_max = max2(bernstein::max_abs(qx), bernstein::max_abs(qy));
+  const double err = 8 * (n + 1) * kUnitRoundoff * max2(q_max, magnitude) + 0x1p-40 * h_max;
   const std::size_t last = hx.size() - 1;
   const double n0 = std::hypot(hx[0], hy[0]), n1 = std::hypot(hx[last], hy[last]);
   const Point2 candidates[] = {
@@ -358,10 +359,10 @@ bool covered_by_overlap(const WorkingCurve& f, const OverlapFinding& o, ParamInt
                         ParamInterval s) {
   const CoincidenceMap& map = o.map;
   const double p0 = map.alpha + map.beta * s.lo, p1 = map.alpha + map.beta * s.hi;
-  const double lo = bernstein::min2(p0, p1), hi = bernstein::max2(p0, p1);
+  const double lo = min2(p0, p1), hi = max2(p0, p1);
   if (hi < t.lo - kCoverSlack || lo > t.hi + kCoverSlack) return false;
-  const double u_lo = bernstein::min2(t.lo, lo) - kCoverSlack;
-  const double u_hi = bernstein::max2(t.hi, hi) + kCoverSlack;
+  const double u_lo = min2(t.lo, lo) - kCoverSlack;
+  const double u_hi = max2(t.hi, hi) + kCoverSlack;
   return injective_on(f.x, f.y, f.magnitude, u_lo, u_hi);
 }
 
@@ -371,7 +372,7 @@ CoincidenceTest coincide_at_precision(const WorkingCurve& f, const WorkingCurve&
   const Piece fp = compensated_piece(f, t.lo, t.hi, center);
   double size = 0.0;
   for (std::size_t i = 0; i < fp.x.size(); ++i)
-    size = bernstein::max2(size, bernstein::max2(std::fabs(fp.x[i]), std::fabs(fp.y[i])));
+    size = max2(size, max2(std::fabs(fp.x[i]), std::fabs(fp.y[i])));
   const double floor = 16.0 * std::max(f.degree, g.degree) * (kUnitRoundoff * size + fp.error);
   const Point2 fchord = {fp.x.back() - fp.x[0], fp.y.back() - fp.y[0]};
   const Point2 gchord = evaluate_with_tangent(g, s.hi).point - evaluate_with_tangent(g, s.lo).point;
@@ -390,7 +391,7 @@ CoincidenceTest coincide_at_precision(const WorkingCurve& f, const WorkingCurve&
     });
     const Residual r = residual(g, sk, p);
     test.evaluations += 2;  // p, and the residual at sk
-    if (!(bernstein::max2(std::fabs(r.x), std::fabs(r.y)) <= floor)) return test;
+    if (!(max2(std::fabs(r.x), std::fabs(r.y)) <= floor)) return test;
   }
   test.coincide = true;
   return test;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/intersect/compensated_point.hpp"
 #include "core/intersect/kind.hpp"
 #include "core/intersect/tuning.hpp"
@@ -78,7 +78,7 @@ Newton transversal(const WorkingCurve& f, const WorkingCurve& g, const Contact& 
     n.s = clamp_to(c.s, n.s + ds);
     n.f_point = moved(a, df, n.t - t_before);
     n.g_point = moved(b, dg, n.s - s_before);
-    const double step = bernstein::max2(std::fabs(dt), std::fabs(ds));
+    const double step = max2(std::fabs(dt), std::fabs(ds));
     if (step <= kConverged || (step <= kEarlyConverged && sine_between(df, dg) > kSeparatedSine)) {
       n.converged = true;
       break;
@@ -112,7 +112,7 @@ Newton tangency(const WorkingCurve& f, const WorkingCurve& g, const Contact& c, 
     if (!(std::isfinite(dt) && std::isfinite(ds))) break;
     n.t = clamp_to(c.t, n.t + dt);
     n.s = clamp_to(c.s, n.s + ds);
-    if (bernstein::max2(std::fabs(dt), std::fabs(ds)) <= kConverged) {
+    if (max2(std::fabs(dt), std::fabs(ds)) <= kConverged) {
       n.converged = true;
       break;
     }

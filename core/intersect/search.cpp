@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/intersect/clip/bezier_clip.hpp"
 #include "core/intersect/common_arc.hpp"
 #include "core/intersect/high_order_contact.hpp"
@@ -60,7 +60,7 @@ bool nearly_parallel(const Piece& a, const Piece& b) noexcept {
 std::optional<ParamInterval> intersect_kept(std::optional<ParamInterval> a,
                                             std::optional<ParamInterval> b) {
   if (!a || !b) return std::nullopt;
-  const ParamInterval r{bernstein::max2(a->lo, b->lo), bernstein::min2(a->hi, b->hi)};
+  const ParamInterval r{max2(a->lo, b->lo), min2(a->hi, b->hi)};
   if (r.hi < r.lo) return std::nullopt;
   return r;
 }

@@ -6,6 +6,8 @@
 #include <optional>
 
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/lerp_error_bound.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
 #include "core/numeric/power_of_two.hpp"
@@ -51,13 +53,13 @@ WorkingFrame working_frame(const Curve& f, const Curve& g) {
   Point2 lo = f.front(), hi = f.front();
   for (const Curve* c : {&f, &g}) {
     for (const Point2 p : c->points()) {
-      lo = {bernstein::min2(lo.x, p.x), bernstein::min2(lo.y, p.y)};
-      hi = {bernstein::max2(hi.x, p.x), bernstein::max2(hi.y, p.y)};
+      lo = {min2(lo.x, p.x), min2(lo.y, p.y)};
+      hi = {max2(hi.x, p.x), max2(hi.y, p.y)};
     }
   }
   // Halves first: lo + hi may overflow.
   const Point2 center = {lo.x / 2 + hi.x / 2, lo.y / 2 + hi.y / 2};
-  const double extent = bernstein::max2(hi.x / 2 - lo.x / 2, hi.y / 2 - lo.y / 2);
+  const double extent = max2(hi.x / 2 - lo.x / 2, hi.y / 2 - lo.y / 2);
   WorkingFrame frame;
   if (!(extent > 0.0)) {
     frame.origin = f.front();  // every control point of both curves is this point
@@ -72,7 +74,7 @@ WorkingFrame working_frame(const Curve& f, const Curve& g) {
   frame.origin = {grid_point(center.x, grid), grid_point(center.y, grid)};
   double m = 0.0;
   for (const Curve* c : {&f, &g}) {
-    for (const Point2 p : c->points()) m = bernstein::max2(m, largest_coordinate(p - frame.origin));
+    for (const Point2 p : c->points()) m = max2(m, largest_coordinate(p - frame.origin));
   }
   // 2^-(e + 1) with 2^e <= m (m is finite and nonzero: the origin lies within a grid step
   // of the centre, and some coordinate differs from it by at least half the extent).
@@ -99,9 +101,9 @@ void fill_working(std::span<const Point2, E> points, WorkingFrame frame, Working
     y_hi[i] = scale.times(y.hi);
     x_lo[i] = scale.times(x.lo);
     y_lo[i] = scale.times(y.lo);
-    magnitude = bernstein::max2(magnitude, bernstein::max2(std::fabs(x_hi[i]), std::fabs(y_hi[i])));
+    magnitude = max2(magnitude, max2(std::fabs(x_hi[i]), std::fabs(y_hi[i])));
     frame_error =
-        bernstein::max2(frame_error, bernstein::max2(std::fabs(x_lo[i]), std::fabs(y_lo[i])));
+        max2(frame_error, max2(std::fabs(x_lo[i]), std::fabs(y_lo[i])));
   }
   bool is_point = true;
   for (std::size_t i = 1; i < points.size(); ++i) {
@@ -144,7 +146,7 @@ BEZIER_FMA_CLONES void fast_piece_into(const WorkingCurve& f, double a, double b
   }
   bernstein::portion_into<double>(f.x, a, b, out.x.data());
   bernstein::portion_into<double>(f.y, a, b, out.y.data());
-  out.error = f.frame_error + 3.02 * f.degree * kUnitRoundoff * f.magnitude + 0x1p-1000;
+  out.error = f.frame_error + lerp_levels_error_bound(f.degree, f.magnitude);
 }
 
 BEZIER_FMA_CLONES Piece compensated_piece(const WorkingCurve& f, double a, double b, Point2 center) {
@@ -159,7 +161,7 @@ BEZIER_FMA_CLONES Piece compensated_piece(const WorkingCurve& f, double a, doubl
   for (std::size_t i = 0; i < xs.size(); ++i) {
     p.x[i] = dd::to_double(dd::sub(xs[i], dd::from(center.x)));
     p.y[i] = dd::to_double(dd::sub(ys[i], dd::from(center.y)));
-    local = bernstein::max2(local, bernstein::max2(std::fabs(p.x[i]), std::fabs(p.y[i])));
+    local = max2(local, max2(std::fabs(p.x[i]), std::fabs(p.y[i])));
   }
   p.error = 1.01 * kUnitRoundoff * local + (12.0 * f.degree + 4.0) * kUnitRoundoff * kUnitRoundoff * f.magnitude + 0x1p-1000;
   return p;

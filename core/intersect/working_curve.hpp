@@ -52,7 +52,8 @@ struct Piece {
 };
 
 /// f on [a, b] in doubles, in the working frame itself (center 0). Error bound:
-/// frame_error + 3.02 n u magnitude. Precondition: 0 <= a <= b <= 1.
+/// frame_error + lerp_levels_error_bound(n, magnitude) (about 3.02 n u magnitude).
+/// Precondition: 0 <= a <= b <= 1.
 [[nodiscard]] Piece fast_piece(const WorkingCurve& f, double a, double b);
 /// The same into an existing piece (no temporaries: the search refills its two pieces at
 /// every step).

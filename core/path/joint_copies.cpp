@@ -1,6 +1,5 @@
 #include "core/path/joint_copies.hpp"
 
-#include <algorithm>
 #include <map>
 #include <optional>
 #include <utility>
@@ -8,11 +7,6 @@
 namespace bezier::path {
 
 namespace {
-
-bool is_point(const core::Curve& segment) {
-  return std::all_of(segment.points().begin(), segment.points().end(),
-                     [&](core::Point2 p) { return p == segment.front(); });
-}
 
 /// The segment whose end point `segment` starts at, inside its subpath (see next_segment).
 std::optional<std::size_t> previous_segment(const Path& path, std::size_t segment) {
@@ -28,7 +22,7 @@ std::size_t canonical_joint(const Path& path, std::size_t p) {
   const std::size_t count = subpath_of(path, p).segment_count;
   for (std::size_t step = 0; step < count; ++step) {
     const auto q = next_segment(path, p);
-    if (!q || !is_point(path.segments[*q]) || !next_segment(path, *q)) break;
+    if (!q || !core::is_point(path.segments[*q]) || !next_segment(path, *q)) break;
     p = *q;
   }
   return p;

@@ -15,16 +15,11 @@ namespace bezier::path {
 
 namespace {
 
-std::vector<Box> boxes_of(const Path& path) {
-  std::vector<Box> boxes;
+std::vector<core::Rect> boxes_of(const Path& path) {
+  std::vector<core::Rect> boxes;
   boxes.reserve(path.segments.size());
   for (const core::Curve& segment : path.segments) boxes.push_back(control_box(segment));
   return boxes;
-}
-
-bool is_point(const core::Curve& segment) {
-  return std::all_of(segment.points().begin(), segment.points().end(),
-                     [&](core::Point2 p) { return p == segment.front(); });
 }
 
 void add_stats(core::IntersectStats& sum, const core::IntersectStats& s) {
@@ -131,7 +126,7 @@ PathSelfIntersectionResult unsorted_self_intersections(const Path& path,
   const auto swept = swept_pairs(budget, [&] { return meeting_boxes(boxes_of(path), budget); });
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (const auto& [i, j] : swept) {
-    if (is_point(path.segments[i]) || is_point(path.segments[j])) continue;
+    if (core::is_point(path.segments[i]) || core::is_point(path.segments[j])) continue;
     // The copy is charged as the sweep's pairs are.
     if (!budget.charge_memory(kStoredPairBytes)) break;
     pairs.emplace_back(i, j);
@@ -140,7 +135,7 @@ PathSelfIntersectionResult unsorted_self_intersections(const Path& path,
   // A segment against itself: a line (or a point) has no self-intersection.
   for (std::size_t k = 0; k < path.segments.size() && !budget.exhausted(); ++k) {
     const core::Curve& segment = path.segments[k];
-    if (segment.degree() < 2 || is_point(segment)) continue;
+    if (segment.degree() < 2 || core::is_point(segment)) continue;
     // The search counts parameter boxes: as many as what is left buys, and not started
     // when that is not one.
     const std::int64_t box_cost = core::self_intersection_box_cost(segment.degree());

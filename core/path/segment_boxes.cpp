@@ -18,9 +18,9 @@ std::int64_t sort_work(std::size_t n) {
 }
 
 /// The boxes open at the sweep's position, by their y ranges: which of them meet a y range
-/// [lo, hi], in time O(log n + the boxes reported). A box's range [y_lo, y_hi] meets
-/// [lo, hi] when y_lo lies in [lo, hi] (found in a map ordered by y_lo), or when it starts
-/// below lo and reaches it (y_lo < lo <= y_hi: the ranges that contain the point lo, found
+/// [lo, hi], in time O(log n + the boxes reported). A box's range [min.y, max.y] meets
+/// [lo, hi] when min.y lies in [lo, hi] (found in a map ordered by min.y), or when it starts
+/// below lo and reaches it (min.y < lo <= max.y: the ranges that contain the point lo, found
 /// in a segment tree over every y a range can start or end at, where each range is stored
 /// in the O(log n) nodes that cover it, so that the nodes on the path to lo's leaf hold
 /// each range containing lo exactly once). Removal is immediate in the map and lazy in the
@@ -29,29 +29,29 @@ std::int64_t sort_work(std::size_t n) {
 /// the sweep from the ranges that will be inserted.
 class OpenBoxes {
  public:
-  /// `ys`: sorted, without repeats; every y_lo and y_hi of the boxes to insert. `boxes`: the
+  /// `ys`: sorted, without repeats; every min.y and max.y of the boxes to insert. `boxes`: the
   /// boxes that will be inserted, by id (the others are never inserted here); the tree's
   /// lists are laid out once for them, so inserting allocates nothing.
-  OpenBoxes(const std::vector<double>& ys, const std::vector<const Box*>& boxes)
+  OpenBoxes(const std::vector<double>& ys, const std::vector<const core::Rect*>& boxes)
       : ys_(ys),
         offset_(4 * std::max<std::size_t>(ys.size(), 1) + 1, 0),
         size_(4 * std::max<std::size_t>(ys.size(), 1), 0),
         where_(boxes.size()),
         open_(boxes.size(), false) {
     // offset_[node + 1] counts the node's copies first, then becomes the running sum.
-    for (const Box* box : boxes) {
-      if (box != nullptr) visit(1, 0, ys_.size() - 1, index_of(box->y_lo), index_of(box->y_hi), [&](std::size_t node) { ++offset_[node + 1]; });
+    for (const core::Rect* box : boxes) {
+      if (box != nullptr) visit(1, 0, ys_.size() - 1, index_of(box->min.y), index_of(box->max.y), [&](std::size_t node) { ++offset_[node + 1]; });
     }
     for (std::size_t node = 1; node < offset_.size(); ++node) offset_[node] += offset_[node - 1];
     pool_.resize(offset_.back());
   }
 
   /// Inserts box `id`; returns the work units it cost (one per tree node visited).
-  std::int64_t insert(std::size_t id, const Box& box) {
+  std::int64_t insert(std::size_t id, const core::Rect& box) {
     open_[id] = true;
-    where_[id] = by_lo_.emplace(box.y_lo, id);
-    return visit(1, 0, ys_.size() - 1, index_of(box.y_lo), index_of(box.y_hi),
-                 [&](std::size_t node) { pool_[offset_[node] + size_[node]++] = {id, box.y_lo}; });
+    where_[id] = by_lo_.emplace(box.min.y, id);
+    return visit(1, 0, ys_.size() - 1, index_of(box.min.y), index_of(box.max.y),
+                 [&](std::size_t node) { pool_[offset_[node] + size_[node]++] = {id, box.min.y}; });
   }
 
   void remove(std::size_t id) {
@@ -129,7 +129,7 @@ class OpenBoxes {
 };
 
 struct Entry {
-  Box box;
+  core::Rect box;
   std::size_t index;
   int set;
 };
@@ -149,18 +149,18 @@ bool report_pair(MeetingBoxes& out, int sets, const Entry& e, const Entry& o,
 /// Which set's open boxes a box of `set` is compared with.
 std::size_t other_set(int sets, int set) { return static_cast<std::size_t>(sets == 1 ? 0 : 1 - set); }
 
-/// The pairs a box is compared with in the plain sweep below: for each box (sorted by x_lo),
-/// the boxes of the other set whose x ranges hold its x_lo. O(N) on the sorted boxes, with
-/// each set's x_hi sorted.
+/// The pairs a box is compared with in the plain sweep below: for each box (sorted by min.x),
+/// the boxes of the other set whose x ranges hold its min.x. O(N) on the sorted boxes, with
+/// each set's max.x sorted.
 std::int64_t x_overlapping_pairs(const std::vector<Entry>& entries, int sets) {
   std::vector<double> x_hi[2];
-  for (const Entry& e : entries) x_hi[e.set].push_back(e.box.x_hi);
+  for (const Entry& e : entries) x_hi[e.set].push_back(e.box.max.x);
   for (auto& v : x_hi) std::sort(v.begin(), v.end());
   std::size_t started[2] = {0, 0}, ended[2] = {0, 0};
   std::int64_t pairs = 0;
   for (const Entry& e : entries) {
     const std::size_t o = other_set(sets, e.set);
-    while (ended[o] < x_hi[o].size() && x_hi[o][ended[o]] < e.box.x_lo) ++ended[o];
+    while (ended[o] < x_hi[o].size() && x_hi[o][ended[o]] < e.box.min.x) ++ended[o];
     pairs += static_cast<std::int64_t>(started[o]) - static_cast<std::int64_t>(std::min(ended[o], started[o]));
     ++started[static_cast<std::size_t>(e.set)];
   }
@@ -176,10 +176,10 @@ void plain_sweep(const std::vector<Entry>& entries, int sets, core::WorkBudget& 
   for (const Entry& e : entries) {
     std::vector<Entry>& other = open[other_set(sets, e.set)];
     // Boxes that end before this one starts never meet it nor any later one.
-    std::erase_if(other, [&](const Entry& o) { return o.box.x_hi < e.box.x_lo; });
+    std::erase_if(other, [&](const Entry& o) { return o.box.max.x < e.box.min.x; });
     if (!budget.spend(static_cast<std::int64_t>(other.size()) + 1)) return;
     for (const Entry& o : other) {
-      if (e.box.y_lo <= o.box.y_hi && o.box.y_lo <= e.box.y_hi) {
+      if (e.box.min.y <= o.box.max.y && o.box.min.y <= e.box.max.y) {
         // Each pair pays its share of the final sort: log2 of at most N^2 pairs.
         budget.charge(2 * log_n);
         if (!report_pair(out, sets, e, o, budget)) return;
@@ -197,40 +197,40 @@ void tree_sweep(const std::vector<Entry>& entries, int sets, core::WorkBudget& b
   std::vector<double> ys;
   ys.reserve(2 * n);
   for (const Entry& e : entries) {
-    ys.push_back(e.box.y_lo);
-    ys.push_back(e.box.y_hi);
+    ys.push_back(e.box.min.y);
+    ys.push_back(e.box.max.y);
   }
   std::sort(ys.begin(), ys.end());
   ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
   std::vector<OpenBoxes> open;
   for (int set = 0; set < sets; ++set) {
-    std::vector<const Box*> inserted(n, nullptr);
+    std::vector<const core::Rect*> inserted(n, nullptr);
     for (std::size_t k = 0; k < n; ++k) {
       if (entries[k].set == set) inserted[k] = &entries[k].box;
     }
     open.emplace_back(ys, inserted);
   }
-  // The open boxes by x_hi, the smallest first: closed once the sweep passes it.
+  // The open boxes by max.x, the smallest first: closed once the sweep passes it.
   using Closing = std::pair<double, std::size_t>;
   std::priority_queue<Closing, std::vector<Closing>, std::greater<>> closing;
   const std::int64_t log_n = std::bit_width(n);
   for (std::size_t k = 0; k < n; ++k) {
     const Entry& e = entries[k];
-    while (!closing.empty() && closing.top().first < e.box.x_lo) {
+    while (!closing.empty() && closing.top().first < e.box.min.x) {
       const std::size_t id = closing.top().second;
       closing.pop();
       open[static_cast<std::size_t>(sets == 1 ? 0 : entries[id].set)].remove(id);
       budget.charge(log_n);
     }
     bool stored = true;
-    budget.charge(open[other_set(sets, e.set)].query(e.box.y_lo, e.box.y_hi, [&](std::size_t id) {
+    budget.charge(open[other_set(sets, e.set)].query(e.box.min.y, e.box.max.y, [&](std::size_t id) {
       // Each pair pays its share of the final sort: log2 of at most N^2 pairs.
       budget.charge(2 * log_n);
       stored = stored && report_pair(out, sets, e, entries[id], budget);
     }));
     if (!stored) return;
     budget.charge(open[static_cast<std::size_t>(sets == 1 ? 0 : e.set)].insert(k, e.box) + log_n);
-    closing.emplace(e.box.x_hi, k);
+    closing.emplace(e.box.max.x, k);
     if (!budget.spend(0)) return;
   }
 }
@@ -241,7 +241,7 @@ void tree_sweep(const std::vector<Entry>& entries, int sets, core::WorkBudget& b
 /// and its cost is then within a constant of N log N.
 constexpr std::int64_t kPlainSweepPairsPerBoxAndLog = 8;
 
-/// All pairs of boxes that meet, over one or two sets: the boxes sorted by x_lo, then
+/// All pairs of boxes that meet, over one or two sets: the boxes sorted by min.x, then
 /// whichever sweep costs less, the plain one when the x-overlapping pairs are at most
 /// kPlainSweepPairsPerBoxAndLog N log2 N (so O(N log N) in all), else the tree's.
 MeetingBoxes sweep(std::vector<Entry> entries, int sets, core::WorkBudget& budget) {
@@ -250,7 +250,7 @@ MeetingBoxes sweep(std::vector<Entry> entries, int sets, core::WorkBudget& budge
   if (n == 0) return out;
   if (!budget.spend(3 * sort_work(n))) return out;
   std::sort(entries.begin(), entries.end(), [](const Entry& p, const Entry& q) {
-    return std::tie(p.box.x_lo, p.set, p.index) < std::tie(q.box.x_lo, q.set, q.index);
+    return std::tie(p.box.min.x, p.set, p.index) < std::tie(q.box.min.x, q.set, q.index);
   });
   const std::int64_t log_n = std::bit_width(n);
   if (x_overlapping_pairs(entries, sets) <=
@@ -267,18 +267,11 @@ MeetingBoxes sweep(std::vector<Entry> entries, int sets, core::WorkBudget& budge
 
 }  // namespace
 
-Box control_box(const core::Curve& segment) noexcept {
-  Box box{segment.front().x, segment.front().x, segment.front().y, segment.front().y};
-  for (const core::Point2 p : segment.points()) {
-    box.x_lo = std::min(box.x_lo, p.x);
-    box.x_hi = std::max(box.x_hi, p.x);
-    box.y_lo = std::min(box.y_lo, p.y);
-    box.y_hi = std::max(box.y_hi, p.y);
-  }
-  return box;
+core::Rect control_box(const core::Curve& segment) noexcept {
+  return core::bounding_rect(segment.points());
 }
 
-MeetingBoxes meeting_boxes(std::span<const Box> a, std::span<const Box> b,
+MeetingBoxes meeting_boxes(std::span<const core::Rect> a, std::span<const core::Rect> b,
                            core::WorkBudget& budget) {
   std::vector<Entry> entries;
   entries.reserve(a.size() + b.size());
@@ -287,7 +280,7 @@ MeetingBoxes meeting_boxes(std::span<const Box> a, std::span<const Box> b,
   return sweep(std::move(entries), 2, budget);
 }
 
-MeetingBoxes meeting_boxes(std::span<const Box> boxes, core::WorkBudget& budget) {
+MeetingBoxes meeting_boxes(std::span<const core::Rect> boxes, core::WorkBudget& budget) {
   std::vector<Entry> entries;
   entries.reserve(boxes.size());
   for (std::size_t i = 0; i < boxes.size(); ++i) entries.push_back({boxes[i], i, 0});

@@ -77,7 +77,7 @@ BENCHMARK(BM_PathOutlinesIntersect)->Unit(benchmark::kMicrosecond);
 void BM_PathOutlinesKernelOnMeetingPairs(benchmark::State& state) {
   const Path a = outline(kFirst);
   const Path b = outline(kSecond);
-  std::vector<bezier::path::Box> boxes_a, boxes_b;
+  std::vector<bezier::core::Rect> boxes_a, boxes_b;
   for (const Curve& c : a.segments) boxes_a.push_back(bezier::path::control_box(c));
   for (const Curve& c : b.segments) boxes_b.push_back(bezier::path::control_box(c));
   bezier::core::WorkBudget sweep_budget;

@@ -6,6 +6,8 @@
 #include <numbers>
 
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/lerp_error_bound.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
 #include "core/numeric/unit_roundoff.hpp"
@@ -99,8 +101,8 @@ bool certainly_outside(std::span<const double> q, double lo, double hi, double e
 CubicRoots real_roots_up_to_cubic(double c0, double c1, double c2, double c3, double lo,
                                   double hi) {
   CubicRoots out;
-  const double scale = bernstein::max2(bernstein::max2(std::fabs(c0), std::fabs(c1)),
-                                       bernstein::max2(std::fabs(c2), std::fabs(c3)));
+  const double scale = max2(max2(std::fabs(c0), std::fabs(c1)),
+                                       max2(std::fabs(c2), std::fabs(c3)));
   if (scale == 0.0) return out;
   double raw[3];
   int count = 0;
@@ -143,7 +145,7 @@ template <std::size_t E>
 std::optional<ParamInterval> kept_interval_by_hulls_of(std::span<const double, E> p, double lo,
                                                        double hi) {
   const int k = static_cast<int>(p.size()) - 1;
-  const double e = 3.02 * k * kUnitRoundoff * bernstein::max_abs(p) + 0x1p-1000;
+  const double e = lerp_levels_error_bound(k, bernstein::max_abs(p));
   CoefficientBuffer<E> piece(p.size());
   ParamInterval range{0.0, 1.0};
   for (int pass = 0; pass < kBandClipPasses; ++pass) {
@@ -159,8 +161,8 @@ std::optional<ParamInterval> kept_interval_by_hulls_of(std::span<const double, E
     if (!clip) return std::nullopt;
     const double w = range.hi - range.lo;
     ParamInterval next = range;
-    if (clip->lo > 0.0) next.lo = bernstein::max2(range.lo, range.lo + w * clip->lo - 4 * kUnitRoundoff);
-    if (clip->hi < 1.0) next.hi = bernstein::min2(range.hi, range.lo + w * clip->hi + 4 * kUnitRoundoff);
+    if (clip->lo > 0.0) next.lo = max2(range.lo, range.lo + w * clip->lo - 4 * kUnitRoundoff);
+    if (clip->hi < 1.0) next.hi = min2(range.hi, range.lo + w * clip->hi + 4 * kUnitRoundoff);
     const bool shrank_enough = next.hi - next.lo < kBandClipKeptFraction * w;
     range = next;
     if (!shrank_enough) break;
@@ -293,7 +295,7 @@ std::optional<ParamInterval> kept_interval_of(std::span<const double, E> p, doub
     c[2] = 3 * (p[0] - 2 * p[1] + p[2]);
     c[3] = (p[3] - p[0]) + 3 * (p[1] - p[2]);
   }
-  const double e = 3.02 * k * kUnitRoundoff * bernstein::max_abs(p) + 0x1p-1000;
+  const double e = lerp_levels_error_bound(k, bernstein::max_abs(p));
   // Monotone p (monotone Bernstein coefficients, so p' has constant sign): the set is one
   // interval between the crossings of lo and hi, and a single value outside each end
   // certifies it. This is the common case once the pieces are small.
@@ -311,8 +313,8 @@ std::optional<ParamInterval> kept_interval_of(std::span<const double, E> p, doub
                             increasing ? p[last] <= hi : p[last] >= lo};
     const bool wanted[2] = {!inside[0], !inside[1]};
     const std::array<double, 2> root = monotone_roots(p, c, increasing, level, wanted);
-    const double alpha = inside[0] ? 0.0 : bernstein::max2(0.0, root[0] - kRootPad);
-    const double beta = inside[1] ? 1.0 : bernstein::min2(1.0, root[1] + kRootPad);
+    const double alpha = inside[0] ? 0.0 : max2(0.0, root[0] - kRootPad);
+    const double beta = inside[1] ? 1.0 : min2(1.0, root[1] + kRootPad);
     // One value beyond each end certifies it: a monotone p outside the band there stays
     // outside up to the end of [0, 1].
     const double at_alpha = value(p, alpha), at_beta = value(p, beta);

@@ -4,7 +4,8 @@
 #include <cmath>
 #include <utility>
 
-#include "core/bernstein/bernstein1d.hpp"
+#include "core/base/rect.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
 #include "core/numeric/unit_roundoff.hpp"
@@ -14,34 +15,23 @@ namespace bezier::core {
 
 namespace {
 
-struct Extent {
-  double x_lo, x_hi, y_lo, y_hi;
-};
-
 /// The control box of a piece's coordinates x, y (E entries, with_fixed_extent), widened by
 /// its error bound.
 template <std::size_t E>
-Extent extent_of(std::span<const double, E> x, std::span<const double, E> y,
-                 double error) noexcept {
-  double xl = x[0], xh = x[0], yl = y[0], yh = y[0];
-  for (std::size_t i = 1; i < x.size(); ++i) {
-    xl = x[i] < xl ? x[i] : xl;
-    xh = x[i] > xh ? x[i] : xh;
-    yl = y[i] < yl ? y[i] : yl;
-    yh = y[i] > yh ? y[i] : yh;
-  }
-  return {xl - error, xh + error, yl - error, yh + error};
+Rect extent_of(std::span<const double, E> x, std::span<const double, E> y,
+               double error) noexcept {
+  Rect box{{x[0], y[0]}, {x[0], y[0]}};
+  for (std::size_t i = 1; i < x.size(); ++i) box = box.including({x[i], y[i]});
+  return box.grown(error);
 }
 
 template <std::size_t E>
-Extent extent(const Piece& p) noexcept {
+Rect extent(const Piece& p) noexcept {
   const std::size_t size = p.x.size();
   return extent_of(fixed_span<E>(p.x.data(), size), fixed_span<E>(p.y.data(), size), p.error);
 }
 
-bool disjoint(const Extent& a, const Extent& b) noexcept {
-  return a.x_hi < b.x_lo || b.x_hi < a.x_lo || a.y_hi < b.y_lo || b.y_hi < a.y_lo;
-}
+bool disjoint(const Rect& a, const Rect& b) noexcept { return !a.intersects(b); }
 
 /// The least and the largest of the E values a (std::minmax_element's, without the
 /// iterators: the same comparisons on the same values).
@@ -75,8 +65,8 @@ BEZIER_FMA_CLONES bool bounding_boxes_disjoint(const Piece& f, const Piece& g) n
 ParamInterval map_to_domain(ParamInterval domain, ParamInterval local) noexcept {
   const double w = domain.hi - domain.lo;
   ParamInterval out = domain;
-  if (local.lo > 0.0) out.lo = bernstein::max2(domain.lo, domain.lo + w * local.lo - 4 * kUnitRoundoff);
-  if (local.hi < 1.0) out.hi = bernstein::min2(domain.hi, domain.lo + w * local.hi + 4 * kUnitRoundoff);
+  if (local.lo > 0.0) out.lo = max2(domain.lo, domain.lo + w * local.lo - 4 * kUnitRoundoff);
+  if (local.hi < 1.0) out.hi = min2(domain.hi, domain.lo + w * local.hi + 4 * kUnitRoundoff);
   if (out.hi < out.lo) out.hi = out.lo;
   return out;
 }

@@ -6,6 +6,7 @@
 
 #include "core/intersect/clip/band_solve.hpp"
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
@@ -50,7 +51,7 @@ FatCurve fat_curve(const FatCurveOperator& op, std::span<const double> a) {
     double c = 0.0;
     const double* row = op.elevate + i * (k + 1);
     for (int j = 0; j <= k; ++j) c += row[j] * out.p[static_cast<std::size_t>(j)];
-    delta = bernstein::max2(delta, std::fabs(a[static_cast<std::size_t>(i)] - c));
+    delta = max2(delta, std::fabs(a[static_cast<std::size_t>(i)] - c));
   }
   // E's entries carry one rounding each and the sum k + 1 more; the rows of E are convex
   // combinations, so |fl(E p) - E p| <= (k + 3) u max|p|; the difference rounds once more.

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/numeric/fixed_extent.hpp"
 #include "core/base/multiversion.hpp"
 #include "core/numeric/unit_roundoff.hpp"
@@ -17,7 +17,7 @@ template <std::size_t E>
 double reach(std::span<const double, E> x, std::span<const double, E> y, Point2 origin) noexcept {
   double r = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    r = bernstein::max2(r, bernstein::max2(std::fabs(x[i] - origin.x), std::fabs(y[i] - origin.y)));
+    r = max2(r, max2(std::fabs(x[i] - origin.x), std::fabs(y[i] - origin.y)));
   }
   return r;
 }
@@ -48,13 +48,13 @@ FatLine fat_line_of(std::span<const double, E> gx, std::span<const double, E> gy
   const double limit = intersect_tuning::kPointLikeErrors * g_error;
   // The bounds for m = 2 and 3 below hold only for a line through both end points.
   bool through_ends = true;
-  if (bernstein::max2(std::fabs(d.x), std::fabs(d.y)) <= limit) {
+  if (max2(std::fabs(d.x), std::fabs(d.y)) <= limit) {
     through_ends = false;
     // Closed or nearly closed piece: use the farthest control point instead.
     double best = 0.0;
     for (std::size_t j = 1; j <= m; ++j) {
       const Point2 v = {gx[j] - origin.x, gy[j] - origin.y};
-      const double size = bernstein::max2(std::fabs(v.x), std::fabs(v.y));
+      const double size = max2(std::fabs(v.x), std::fabs(v.y));
       if (size > best) {
         best = size;
         d = v;
@@ -85,17 +85,17 @@ FatLine fat_line_of(std::span<const double, E> gx, std::span<const double, E> gy
     // Bitwise, not short-circuit: a select instead of branches the data decides.
     const bool opposite = ((d1 - e > 0) & (d2 + e < 0)) | ((d1 + e < 0) & (d2 - e > 0));
     const double c = opposite ? 4.0 / 9.0 : 0.75;
-    lo = bernstein::min2(bernstein::min2(lo, c * (d1 - e)), c * (d2 - e));
-    hi = bernstein::max2(bernstein::max2(hi, c * (d1 + e)), c * (d2 + e));
+    lo = min2(min2(lo, c * (d1 - e)), c * (d2 - e));
+    hi = max2(max2(hi, c * (d1 + e)), c * (d2 + e));
   } else if (m == 2 && through_ends) {
     const double d1 = distance(1);
-    lo = bernstein::min2(lo, 0.5 * (d1 - e));
-    hi = bernstein::max2(hi, 0.5 * (d1 + e));
+    lo = min2(lo, 0.5 * (d1 - e));
+    hi = max2(hi, 0.5 * (d1 + e));
   } else {
     for (std::size_t j = 0; j <= m; ++j) {
       const double dj = distance(j);
-      lo = bernstein::min2(lo, dj);
-      hi = bernstein::max2(hi, dj);
+      lo = min2(lo, dj);
+      hi = max2(hi, dj);
     }
   }
   lo -= e;

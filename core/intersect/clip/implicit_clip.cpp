@@ -5,6 +5,7 @@
 
 #include "core/numeric/binomial.hpp"
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/min_max.hpp"
 #include "core/numeric/unit_roundoff.hpp"
 #include "core/intersect/tuning.hpp"
 
@@ -64,8 +65,8 @@ Clip implicit_clip(const Piece& x, const Piece& other, const FatCurveOperator& o
   const auto norm = [](Point2 v) { return std::sqrt(dot(v, v)) * (1 + 4 * kUnitRoundoff); };
   const double l0 = norm(q2 - q1), l1 = norm(q2 - q0), l2 = norm(q1 - q0);  // |grad D_i|
   if (!(std::fabs(area) > intersect_tuning::kStraightParabolaUlps * kUnitRoundoff *
-                              bernstein::max2(l0, bernstein::max2(l1, l2)) *
-                              bernstein::max2(l0, bernstein::max2(l1, l2)))) {
+                              max2(l0, max2(l1, l2)) *
+                              max2(l0, max2(l1, l2)))) {
     return no_information;  // Q is (nearly) straight: its implicit form degenerates
   }
   const std::size_t n1 = x.x.size();
@@ -76,15 +77,15 @@ Clip implicit_clip(const Piece& x, const Piece& other, const FatCurveOperator& o
     d0[k] = cross(q1 - p, q2 - p);
     d1[k] = cross(q2 - p, q0 - p);
     d2[k] = cross(q0 - p, q1 - p);
-    for (const Point2 q : par.q) reach = bernstein::max2(reach, norm(q - p));
-    big = bernstein::max2(
+    for (const Point2 q : par.q) reach = max2(reach, norm(q - p));
+    big = max2(
         big,
-        bernstein::max2(std::fabs(d0[k]), bernstein::max2(std::fabs(d1[k]), std::fabs(d2[k]))));
+        max2(std::fabs(d0[k]), max2(std::fabs(d1[k]), std::fabs(d2[k]))));
   }
   // Each D_i at a control point: x's error moves the point by sqrt(2) x.error along a
   // gradient of length <= max l_i; the two differences, two products and the difference of
   // the cross product round with relative error <= 4 u of |a| |b| <= reach^2.
-  const double l_max = bernstein::max2(l0, bernstein::max2(l1, l2));
+  const double l_max = max2(l0, max2(l1, l2));
   const double e = l_max * std::sqrt(2.0) * x.error * (1 + kUnitRoundoff) + 5 * kUnitRoundoff * reach * reach;
   const Coeffs sq = product(d1, d1), pr = product(d0, d2);
   Coeffs j(sq.size());

@@ -11,26 +11,26 @@
 namespace bezier::path {
 namespace {
 
-bool meet(const Box& p, const Box& q) {
-  return p.x_lo <= q.x_hi && q.x_lo <= p.x_hi && p.y_lo <= q.y_hi && q.y_lo <= p.y_hi;
+bool meet(const core::Rect& p, const core::Rect& q) {
+  return p.min.x <= q.max.x && q.min.x <= p.max.x && p.min.y <= q.max.y && q.min.y <= p.max.y;
 }
 
 /// Random boxes on a coarse grid, so that shared and touching edges are common.
-std::vector<Box> random_boxes(test::Mulberry32& rng, std::size_t n) {
-  std::vector<Box> boxes;
+std::vector<core::Rect> random_boxes(test::Mulberry32& rng, std::size_t n) {
+  std::vector<core::Rect> boxes;
   for (std::size_t k = 0; k < n; ++k) {
     const double x = std::floor(rng.uniform(0, 40)), y = std::floor(rng.uniform(0, 40));
-    boxes.push_back({x, x + std::floor(rng.uniform(0, 8)), y, y + std::floor(rng.uniform(0, 8))});
+    boxes.push_back({{x, y}, {x + std::floor(rng.uniform(0, 8)), y + std::floor(rng.uniform(0, 8))}});
   }
   return boxes;
 }
 
 TEST(SegmentBoxes, ControlBoxHoldsEveryControlPoint) {
-  const Box b = control_box(core::Curve({{1, 5}, {-2, 3}, {4, -1}, {0, 0}}));
-  EXPECT_EQ(b.x_lo, -2.0);
-  EXPECT_EQ(b.x_hi, 4.0);
-  EXPECT_EQ(b.y_lo, -1.0);
-  EXPECT_EQ(b.y_hi, 5.0);
+  const core::Rect b = control_box(core::Curve({{1, 5}, {-2, 3}, {4, -1}, {0, 0}}));
+  EXPECT_EQ(b.min.x, -2.0);
+  EXPECT_EQ(b.max.x, 4.0);
+  EXPECT_EQ(b.min.y, -1.0);
+  EXPECT_EQ(b.max.y, 5.0);
 }
 
 TEST(SegmentBoxes, TwoSetsGiveExactlyThePairsThatMeet) {
@@ -70,7 +70,7 @@ TEST(SegmentBoxes, StopsAtItsWorkLimit) {
   // 100 equal boxes: every pair meets, 4950 pairs reported one after another. Capped at
   // 3000 units the sweep stops within one box's query of the cap: its entries (at most
   // 2 x 100), its pairs (at most 100, 2 log2 N = 14 units each) and its tree path.
-  std::vector<Box> boxes(100, Box{0, 1, 0, 1});
+  std::vector<core::Rect> boxes(100, core::Rect{{0, 0}, {1, 1}});
   core::WorkBudget capped(3000);
   (void)meeting_boxes(boxes, capped);
   EXPECT_EQ(capped.exhaustion(), core::Exhaustion::work);
@@ -90,7 +90,7 @@ TEST(SegmentBoxes, StopsBeforeStoringPastItsMemoryLimit) {
   // 1001st is charged and refused, whichever sweep runs (the plain one for 100 boxes, the
   // tree's for 1000).
   for (const std::size_t n : {std::size_t{100}, std::size_t{1000}}) {
-    std::vector<Box> boxes(n, Box{0, 1, 0, 1});
+    std::vector<core::Rect> boxes(n, core::Rect{{0, 0}, {1, 1}});
     core::WorkBudget budget(core::WorkBudget::kUnlimited, 1000 * kStoredPairBytes);
     const MeetingBoxes found = meeting_boxes(boxes, budget);
     EXPECT_EQ(budget.exhaustion(), core::Exhaustion::memory) << n;
@@ -103,8 +103,8 @@ TEST(SegmentBoxes, WorkGrowsWithThePairsThatMeetNotWithTheirXOverlaps) {
   // 200 thin horizontal boxes spanning the same x range at distinct heights: all overlap in
   // x, none meets another. The work stays below the 19900 x-overlapping pairs a sweep over
   // x alone would compare (the tree's sweep runs).
-  std::vector<Box> boxes;
-  for (int k = 0; k < 200; ++k) boxes.push_back({0, 1, 2.0 * k, 2.0 * k + 1});
+  std::vector<core::Rect> boxes;
+  for (int k = 0; k < 200; ++k) boxes.push_back({{0, 2.0 * k}, {1, 2.0 * k + 1}});
   core::WorkBudget budget;
   const MeetingBoxes found = meeting_boxes(boxes, budget);
   EXPECT_TRUE(found.pairs.empty());
@@ -113,12 +113,12 @@ TEST(SegmentBoxes, WorkGrowsWithThePairsThatMeetNotWithTheirXOverlaps) {
 
 /// Random boxes that all span most of one x range, on a coarse grid in y: every pair
 /// overlaps in x, so the sweep takes its tree.
-std::vector<Box> wide_boxes(test::Mulberry32& rng, std::size_t n) {
-  std::vector<Box> boxes;
+std::vector<core::Rect> wide_boxes(test::Mulberry32& rng, std::size_t n) {
+  std::vector<core::Rect> boxes;
   for (std::size_t k = 0; k < n; ++k) {
     const double y = std::floor(rng.uniform(0, 400));
-    boxes.push_back({std::floor(rng.uniform(0, 4)), 36 + std::floor(rng.uniform(0, 4)), y,
-                     y + std::floor(rng.uniform(0, 8))});
+    boxes.push_back({{std::floor(rng.uniform(0, 4)), y},
+                     {36 + std::floor(rng.uniform(0, 4)), y + std::floor(rng.uniform(0, 8))}});
   }
   return boxes;
 }
