@@ -132,6 +132,13 @@ TEST(SelfIntersectionWorkCost, CollinearFoldIsChargedInWholeSteps) {
   EXPECT_EQ(r.stats.work % collinear_fold_step_cost(3), 0);
 }
 
+TEST(SelfIntersectionWorkCost, TheDefaultBudgetCoversWhatItPromises) {
+  // SelfIntersectionOptions::max_work: 200 000 parameter boxes at every degree up to 29.
+  for (int n = 1; n <= 29; ++n) {
+    EXPECT_LE(200000 * self_intersection_box_cost(n), SelfIntersectionOptions{}.max_work) << n;
+  }
+}
+
 TEST(SelfIntersectionWorkCost, ClusterComparisonsAreChargedInWholeBoxes) {
   for (const int n : {1, 3, 7, 20}) {
     const std::int64_t box = self_intersection_box_cost(n);
