@@ -22,7 +22,8 @@
 // Answer (one curve): the same shape with t < s for every pair (the curve's
 // self-intersections, never the trivial pair (0, 1) of a closed curve), retraced pieces
 // of a collinear curve as "overlaps", and "stats": {"method" (the self-intersection
-// search: "closed-form-cubic", "subdivision" or "collinear"), "work", "max_depth",
+// search: "closed-form-cubic", "subdivision" or "collinear"), "work" (the search's and the
+// certification's work units, core/self_intersect/work_cost.hpp), "max_depth",
 // "newton_iterations", "certification_iterations"}; `method` and `fat_curve_degree` do not
 // apply there and are ignored.
 // A path's elliptical arcs are cubics within "arc_tolerance" (a request field, > 0; default
@@ -40,7 +41,7 @@
 // meet) and, for one path, "certification_iterations"; "work" counts every phase.
 // Errors: 422 validation problems with JSON Pointers (tolerance out of range included);
 // 422 work-cap problem when the search needs more than limits.max_work work units (steps
-// charged by their cost, core/intersect/work_cost.hpp).
+// charged by their cost, core/intersect/work_cost.hpp and core/self_intersect/work_cost.hpp).
 
 #include <algorithm>
 #include <cmath>
@@ -184,7 +185,7 @@ Reply one_curve_answer(const IntersectionsRequest& request, const Limits& limits
   w.key("max_depth").value(r.stats.max_depth);
   w.key("method").value(core::to_string(r.stats.method));
   w.key("newton_iterations").value(r.stats.newton_iterations);
-  w.key("work").value(r.stats.work);
+  w.key("work").value(budget.spent());  // the search and the certification
   w.end_object();
   w.key("tolerance").value(request.options.tolerance);
   w.end_object();

@@ -17,12 +17,14 @@
 //    "segment_count", "segment_lengths": [...]}
 //   parameters   the segment holding length l from the path's start (the first one whose
 //                cumulative length reaches l) and its t there.
-//   The segments' quadratures are charged to the work cap (core::arc_length_work, core/measure/arc_length.hpp).
+// The quadratures (every segment's, for a path) are charged to the work cap as they evaluate
+// (core/measure/arc_length.hpp).
 // A path's elliptical arcs are cubics within "arc_tolerance" (a request field, > 0; default
 // 1e-6 of each arc's larger radius), and the answer then begins with "arc_tolerance": the
 // distance they keep (api/curve_or_path.hpp).
 // Errors: 422 validation problems with JSON Pointers; 422 work-cap problem when the
-// quadrature needs more pieces than its cap.
+// quadrature does not reach its accuracy within the work cap (or with pieces as narrow as
+// doubles allow).
 
 #include <algorithm>
 #include <cmath>
@@ -61,17 +63,26 @@ void refuse_lengths_beyond(RequestReader& reader, const std::vector<double>& at_
   }
 }
 
+/// Why a quadrature stopped short of its accuracy: the work cap, or its worst piece as narrow
+/// as doubles allow.
+std::string not_met_because(const core::WorkBudget& budget, const Limits& limits) {
+  return budget.exhausted() ? "within the per-request work cap of " +
+                                  std::to_string(limits.max_work) + " units"
+                            : "with pieces as narrow as doubles allow";
+}
+
 template <class P>
 Reply length_answer(RequestReader& reader, const core::BasicCurve<P>& curve,
                     ParameterInterval interval, const std::optional<std::vector<double>>& at_lengths) {
-  const core::ArcLength measured = core::arc_length(curve, interval.a, interval.b);
-  if (measured.status == core::ArcLengthStatus::work_cap_reached) {
-    const core::ArcLengthOptions options;
+  core::WorkBudget budget = request_budget(reader.limits());
+  const core::ArcLength measured =
+      core::arc_length(curve, interval.a, interval.b, core::ArcLengthOptions{}, budget);
+  if (!measured.tolerance_met) {
     return problem_reply(ProblemKind::work_cap,
-                         "the arc length did not reach its 1e-12 relative accuracy within " +
-                             std::to_string(options.max_pieces) +
-                             " quadrature pieces (error bound " + format_number(measured.error_bound) +
-                             " for length " + format_number(measured.length) + ")");
+                         "the arc length did not reach its 1e-12 relative accuracy " +
+                             not_met_because(budget, reader.limits()) + " (error bound " +
+                             format_number(measured.error_bound) + " for length " +
+                             format_number(measured.length) + ")");
   }
   if (at_lengths) {
     refuse_lengths_beyond(reader, *at_lengths, measured.length, measured.error_bound, "the curve on the interval");
@@ -108,21 +119,20 @@ Reply path_length_answer(RequestReader& reader, const path::Path& p,
   double total = 0.0, error_bound = 0.0;
   core::WorkBudget budget = request_budget(reader.limits());
   for (std::size_t k = 0; k < p.segments.size(); ++k) {
-    measured.push_back(core::arc_length(p.segments[k], 0.0, 1.0));
-    if (!budget.spend(core::arc_length_work(p.segments[k].degree(), measured.back()))) {
+    measured.push_back(core::arc_length(p.segments[k], 0.0, 1.0, core::ArcLengthOptions{}, budget));
+    if (budget.exhausted()) {
       return problem_reply(ProblemKind::work_cap,
                            "the arc lengths of the path's first " + std::to_string(k + 1) +
-                               " segments took about " + std::to_string(budget.spent()) +
+                               " segments took " + std::to_string(budget.spent()) +
                                " work units, beyond the per-request work cap of " +
                                std::to_string(reader.limits().max_work) +
                                " units: send a shorter path per request");
     }
-    if (measured.back().status == core::ArcLengthStatus::work_cap_reached) {
+    if (!measured.back().tolerance_met) {
       return problem_reply(ProblemKind::work_cap,
                            "the arc length of segment " + std::to_string(k) +
-                               " did not reach its 1e-12 relative accuracy within " +
-                               std::to_string(core::ArcLengthOptions{}.max_pieces) +
-                               " quadrature pieces");
+                               " did not reach its 1e-12 relative accuracy " +
+                               not_met_because(budget, reader.limits()));
     }
     total += measured.back().length;
     error_bound += measured.back().error_bound;

@@ -26,8 +26,8 @@
 // distance they keep (api/curve_or_path.hpp).
 // Errors: 422 validation problems with JSON Pointers (an area beyond the double range is
 // reported at /points); 422 work-cap problem when the self-intersection search needs more
-// than limits.max_work work units (parameter boxes charged by the curve's degree,
-// core::self_intersection_options).
+// than limits.max_work work units (its parameter boxes charged by the curve's degree,
+// core/self_intersect/work_cost.hpp).
 
 #include <cmath>
 #include <optional>
@@ -92,11 +92,9 @@ Reply interval_answer(const core::Curve& curve, ParameterInterval interval) {
 }
 
 Reply loops_answer(const core::Curve& curve, const Limits& limits) {
-  const core::LoopAreaResult result =
-      core::loop_area(curve, core::self_intersection_options(limits.max_work, curve.degree()));
-  if (result.status == core::IntersectStatus::work_cap_reached) {
-    return self_intersection_work_cap_reply(result.stats.work, limits.max_work);
-  }
+  core::WorkBudget budget = request_budget(limits);
+  const core::LoopAreaResult result = core::loop_area(curve, core::SelfIntersectionOptions{}, budget);
+  if (budget.exhausted()) return self_intersection_work_cap_reply(result.stats.work, limits.max_work);
   if (!std::isfinite(result.area) || (result.closed_area && !std::isfinite(*result.closed_area))) {
     return area_out_of_range();  // the total is infinite when any loop's area is
   }

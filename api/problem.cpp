@@ -133,10 +133,10 @@ Reply memory_cap_reply(const std::string& pointer, std::string why) {
   return reply;
 }
 
-Reply self_intersection_work_cap_reply(std::int64_t boxes, std::int64_t max_work) {
+Reply self_intersection_work_cap_reply(std::int64_t work, std::int64_t max_work) {
   return problem_reply(ProblemKind::work_cap,
-                       "the self-intersection search examined " + std::to_string(boxes) +
-                           " parameter boxes without finishing and ran out of the per-request "
+                       "the self-intersection search spent " + std::to_string(work) +
+                           " work units without finishing and ran out of the per-request "
                            "work cap of " +
                            std::to_string(max_work) +
                            " units (a curve that comes within rounding of retracing part of "

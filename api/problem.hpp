@@ -60,8 +60,8 @@ enum class ProblemKind {
                                   std::vector<FieldError> errors = {});
 
 /// The work-cap problem of a self-intersection search (/intersections with one curve,
-/// /loop-area), which counts parameter boxes.
-[[nodiscard]] Reply self_intersection_work_cap_reply(std::int64_t boxes, std::int64_t max_work);
+/// /loop-area) that spent `work` units of the cap `max_work`.
+[[nodiscard]] Reply self_intersection_work_cap_reply(std::int64_t work, std::int64_t max_work);
 
 /// The memory-cap problem: the input at `pointer` (a JSON Pointer into the request) would
 /// make the kernel store more than the per-request memory limit; `why` says what. Sets

@@ -62,8 +62,9 @@ class WorkBudget {
     return true;
   }
 
-  /// Says the budget ran out, for a phase that counts its own limit in other units (the
-  /// self-intersection search, in parameter boxes bought from what was left) and hit it.
+  /// Says the budget ran out, for a phase that measured in advance what is left against
+  /// steps it charges only afterwards (the clustering of the self-intersection search's
+  /// contact boxes, charged per 64 comparisons) and hit it.
   constexpr void exhaust(Exhaustion why = Exhaustion::work) noexcept { run_out(why); }
 
   /// Counts `bytes` more stored; false (exhausted, Exhaustion::memory) when the total

@@ -7,7 +7,15 @@
 namespace bezier::core {
 
 LoopAreaResult loop_area(const Curve& curve, const SelfIntersectionOptions& options) {
-  SelfIntersectionResult found = self_intersections(curve, options);
+  WorkBudget budget(options.max_work);
+  LoopAreaResult result = loop_area(curve, options, budget);
+  if (budget.exhausted()) result.status = IntersectStatus::work_cap_reached;
+  return result;
+}
+
+LoopAreaResult loop_area(const Curve& curve, const SelfIntersectionOptions& options,
+                         WorkBudget& budget) {
+  SelfIntersectionResult found = self_intersections(curve, options, budget);
   LoopAreaResult result;
   for (const SelfIntersection& pair : found.pairs) {
     const double signed_area = enclosed_area(curve, pair.t, pair.s);

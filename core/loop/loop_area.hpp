@@ -5,6 +5,7 @@
 
 #include "core/base/curve.hpp"
 #include "core/base/point.hpp"
+#include "core/base/work_budget.hpp"
 #include "core/self_intersect/self_intersection.hpp"
 
 namespace bezier::core {
@@ -38,16 +39,23 @@ struct LoopAreaResult {
   /// Pieces the curve retraces (collinear curves, palindromic control points): they
   /// enclose no area. The loops of a palindromic curve are still listed.
   std::vector<Overlap> overlaps;
+  /// ok, or work_cap_reached from the overload without a budget (self_intersections()).
   IntersectStatus status = IntersectStatus::ok;
   SelfIntersectionStats stats;
 };
 
 /// Every loop of B (any degree n >= 1) with its area, and the closed curve's area: the
-/// pairs of self_intersections(curve, options), each loop's area by enclosed_area(curve,
-/// t1, t2), closed and closed_area by is_closed() and closed_area(). A closed curve's
-/// trivial pair (0, 1) is not a loop: its area is closed_area. With status
-/// work_cap_reached the loops found so far are listed but may be incomplete.
-/// Precondition: finite coordinates.
+/// pairs of self_intersections(curve, options, budget), each loop's area by
+/// enclosed_area(curve, t1, t2), closed and closed_area by is_closed() and closed_area(). A
+/// closed curve's trivial pair (0, 1) is not a loop: its area is closed_area. The search
+/// charges `budget` (the areas are closed forms, bounded by the degree); when it runs out
+/// (budget.exhausted()) the loops found so far are listed but may be incomplete.
+/// stats.work is what the call charged. Precondition: finite coordinates.
+[[nodiscard]] LoopAreaResult loop_area(const Curve& curve, const SelfIntersectionOptions& options,
+                                       WorkBudget& budget);
+
+/// The same with a budget of options.max_work units of its own, its running out reported
+/// as status work_cap_reached.
 [[nodiscard]] LoopAreaResult loop_area(const Curve& curve,
                                        const SelfIntersectionOptions& options = {});
 

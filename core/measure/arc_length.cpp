@@ -309,7 +309,8 @@ std::pmr::vector<double> split_points(const Speed<P>& speed, double a, double b,
 }
 
 template <class P>
-ArcLength measure(const BasicCurve<P>& curve, double a, double b, const ArcLengthOptions& options) {
+ArcLength measure(const BasicCurve<P>& curve, double a, double b, const ArcLengthOptions& options,
+                  WorkBudget& budget) {
   assert(0.0 <= a && a <= b && b <= 1.0);
   ArcLength out;
   out.a = a;
@@ -331,6 +332,11 @@ ArcLength measure(const BasicCurve<P>& curve, double a, double b, const ArcLengt
   heap.reserve(cuts.size() + 8);
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) heap.push_back(kronrod7(speed, cuts[i], cuts[i + 1]));
   std::make_heap(heap.begin(), heap.end(), by_error);
+  const std::int64_t evaluation = speed_evaluation_cost(curve.degree());
+  const auto sums = [](std::size_t pieces) {
+    return kLengthSumCostPerPiece * static_cast<std::int64_t>(pieces);
+  };
+  budget.charge(7 * evaluation * static_cast<std::int64_t>(heap.size()) + sums(heap.size()));
 
   const auto totals = [&] {
     CompensatedSum sum, error;
@@ -352,19 +358,26 @@ ArcLength measure(const BasicCurve<P>& curve, double a, double b, const ArcLengt
     std::pop_heap(heap.begin(), heap.end(), by_error);
     Piece& worst = heap.back();
     if (!worst.extended) {
+      const std::int64_t extension = 8 * evaluation + sums(heap.size());
+      if (!budget.reserve(extension)) {
+        std::push_heap(heap.begin(), heap.end(), by_error);
+        break;
+      }
+      budget.charge(extension);
       extend(speed, worst);
       std::push_heap(heap.begin(), heap.end(), by_error);
       std::tie(total, error) = totals();
       continue;
     }
     const double middle = worst.a + (worst.b - worst.a) / 2;
-    if (static_cast<int>(heap.size()) >= options.max_pieces || !(worst.a < middle && middle < worst.b)) {
-      // The cap, or two adjacent doubles with nothing left to halve: the estimates stay in
-      // the bound.
+    const std::int64_t halving = 2 * 15 * evaluation + sums(heap.size() + 1);
+    if (!(worst.a < middle && middle < worst.b) || !budget.reserve(halving)) {
+      // Two adjacent doubles with nothing left to halve, or no work left: the estimates
+      // stay in the bound.
       std::push_heap(heap.begin(), heap.end(), by_error);
-      out.status = ArcLengthStatus::work_cap_reached;
       break;
     }
+    budget.charge(halving);
     const double start = worst.a, end = worst.b;
     worst = patterson15(speed, start, middle);
     std::push_heap(heap.begin(), heap.end(), by_error);
@@ -381,6 +394,7 @@ ArcLength measure(const BasicCurve<P>& curve, double a, double b, const ArcLengt
   }
   out.length = sum.value();
   out.error_bound = error;
+  out.tolerance_met = !(error > options.relative_tolerance * total);
   return out;
 }
 
@@ -426,10 +440,10 @@ double invert(const BasicCurve<P>& curve, const ArcLength& measured, double targ
 /// The length of the normalised curve, scaled back (exactly: powers of two).
 template <class P>
 ArcLength scaled_measure(const BasicCurve<P>& curve, double a, double b,
-                         const ArcLengthOptions& options) {
-  if (normalising_exponent(curve) == 0) return measure(curve, a, b, options);
+                         const ArcLengthOptions& options, WorkBudget& budget) {
+  if (normalising_exponent(curve) == 0) return measure(curve, a, b, options, budget);
   const Normalised<P> unit = normalised(curve);
-  ArcLength out = measure(unit.curve, a, b, options);
+  ArcLength out = measure(unit.curve, a, b, options, budget);
   out.length = unit.from_unit(out.length);
   out.error_bound = unit.from_unit(out.error_bound);
   for (LengthPiece& piece : out.pieces) piece.length = unit.from_unit(piece.length);
@@ -447,11 +461,21 @@ double scaled_invert(const BasicCurve<P>& curve, const ArcLength& measured, doub
 
 }  // namespace
 
+ArcLength arc_length(const Curve& curve, double a, double b, const ArcLengthOptions& options,
+                     WorkBudget& budget) {
+  return scaled_measure(curve, a, b, options, budget);
+}
+ArcLength arc_length(const Curve3& curve, double a, double b, const ArcLengthOptions& options,
+                     WorkBudget& budget) {
+  return scaled_measure(curve, a, b, options, budget);
+}
 ArcLength arc_length(const Curve& curve, double a, double b, const ArcLengthOptions& options) {
-  return scaled_measure(curve, a, b, options);
+  WorkBudget budget(options.max_work);
+  return scaled_measure(curve, a, b, options, budget);
 }
 ArcLength arc_length(const Curve3& curve, double a, double b, const ArcLengthOptions& options) {
-  return scaled_measure(curve, a, b, options);
+  WorkBudget budget(options.max_work);
+  return scaled_measure(curve, a, b, options, budget);
 }
 
 double parameter_at_length(const Curve& curve, const ArcLength& measured, double length) {

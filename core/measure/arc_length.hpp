@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/base/curve.hpp"
+#include "core/base/work_budget.hpp"
 
 namespace bezier::core {
 
@@ -12,16 +13,12 @@ namespace bezier::core {
 struct ArcLengthOptions {
   /// Target relative accuracy: the result's error_bound is at most this times the length.
   double relative_tolerance = 1e-12;
-  /// Work cap: most pieces the adaptive quadrature may create (each costs at most 15
-  /// evaluations of |B'|). A cusp costs about two pieces per binary digit of its distance to the
-  /// nearest split point, a smooth piece a few; 4096 is far above what any curve of the
-  /// API's degrees needs once split at the minima of |B'| (see arc_length).
-  int max_pieces = 4096;
-};
-
-enum class ArcLengthStatus {
-  ok,                ///< error_bound <= relative_tolerance * length
-  work_cap_reached,  ///< max_pieces reached first: length and error_bound are still honest
+  /// The budget (work units) of arc_length() without a WorkBudget: its own, its running out
+  /// reported as tolerance_met false. A cusp costs about two pieces per binary digit of its
+  /// distance to the nearest split point, a smooth piece a few: this covers thousands of
+  /// pieces at every degree the API takes, far more than any curve needs once split at the
+  /// minima of |B'| (see arc_length).
+  std::int64_t max_work = 100000000;
 };
 
 /// One piece of the final partition of [a, b], with its length by its rule (K7 or P15).
@@ -40,22 +37,27 @@ struct ArcLength {
   /// The bound the computation met (see arc_length): Σ over pieces of |K7 - G3| or
   /// |P15 - K7| plus the rounding of the integrand and of the sums.
   double error_bound = 0.0;
-  ArcLengthStatus status = ArcLengthStatus::ok;
+  /// Whether error_bound <= relative_tolerance * length was reached. false when the budget
+  /// ran out first (budget.exhausted() then says so) or the piece with the largest estimate
+  /// was too narrow to halve in doubles; length and error_bound are still honest.
+  bool tolerance_met = true;
   /// The partition of [a, b], in increasing t (empty when a = b): what
   /// parameter_at_length inverts.
   std::vector<LengthPiece> pieces;
 };
 
-/// The work units (core/intersect/work_cost.hpp's unit) a measured arc length is charged,
-/// estimated from its partition: each final piece's 15-point rule, each point an
-/// evaluation of |B'|^2, a polynomial of degree d = 2n - 2, by de Casteljau's triangle
-/// (d (d + 1) / 2 updates); at least one piece and one update.
-[[nodiscard]] inline std::int64_t arc_length_work(int degree, const ArcLength& measured) noexcept {
+/// The work units (core/intersect/work_cost.hpp's unit) one evaluation of |B'| costs on a
+/// curve of degree n: |B'|^2 is a polynomial of degree d = 2n - 2, d (d + 1) / 2 updates
+/// of de Casteljau's triangle (at least one).
+[[nodiscard]] constexpr std::int64_t speed_evaluation_cost(int degree) noexcept {
   const std::int64_t d = 2 * static_cast<std::int64_t>(degree) - 2;
-  const auto pieces = static_cast<std::int64_t>(measured.pieces.size() > 1 ? measured.pieces.size() : 1);
   const std::int64_t updates = d * (d + 1) / 2;
-  return pieces * 15 * (updates > 1 ? updates : 1);
+  return updates > 1 ? updates : 1;
 }
+
+/// The work units of adding up the pieces' lengths and estimates after a step, per piece:
+/// two compensated additions (Neumaier), each a few floating-point operations.
+inline constexpr std::int64_t kLengthSumCostPerPiece = 4;
 
 /// The arc length of B on [a, b], ∫_a^b |B'(t)| dt, for any degree, 2-D or 3-D, to the
 /// relative tolerance asked for (the API asks 1e-12; looser tolerances cost less).
@@ -96,8 +98,20 @@ struct ArcLength {
 /// which converges only linearly at a cusp): this is relative, splits where the integrand
 /// is not smooth, and reports the bound it met.
 ///
+/// Work: each rule's evaluations of |B'| (speed_evaluation_cost each) and each sum over the
+/// pieces (kLengthSumCostPerPiece a piece) are charged to `budget`; an extension or a
+/// halving that does not fit in what is left is not made, the budget is then exhausted and
+/// the result has tolerance_met false. (Finding the minima of |B'| is bounded by the degree
+/// and not charged.)
+///
 /// Precondition: 0 <= a <= b <= 1, finite control points. a = b gives 0 exactly. Invariant
 /// under translation, uniform scaling and reversal up to rounding.
+[[nodiscard]] ArcLength arc_length(const Curve& curve, double a, double b,
+                                   const ArcLengthOptions& options, WorkBudget& budget);
+[[nodiscard]] ArcLength arc_length(const Curve3& curve, double a, double b,
+                                   const ArcLengthOptions& options, WorkBudget& budget);
+
+/// The same with a budget of options.max_work units of their own.
 [[nodiscard]] ArcLength arc_length(const Curve& curve, double a, double b,
                                    const ArcLengthOptions& options = {});
 [[nodiscard]] ArcLength arc_length(const Curve3& curve, double a, double b,

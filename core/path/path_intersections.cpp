@@ -9,7 +9,6 @@
 #include "core/self_intersect/certify.hpp"
 #include "core/path/joint_copies.hpp"
 #include "core/path/segment_boxes.hpp"
-#include "core/self_intersect/work_cost.hpp"
 
 namespace bezier::path {
 
@@ -136,15 +135,9 @@ PathSelfIntersectionResult unsorted_self_intersections(const Path& path,
   for (std::size_t k = 0; k < path.segments.size() && !budget.exhausted(); ++k) {
     const core::Curve& segment = path.segments[k];
     if (segment.degree() < 2 || core::is_point(segment)) continue;
-    // The search counts parameter boxes: as many as what is left buys, and not started
-    // when that is not one.
-    const std::int64_t box_cost = core::self_intersection_box_cost(segment.degree());
-    if (!budget.reserve(box_cost)) break;
-    core::SelfIntersectionOptions self_options;
-    self_options.max_work = core::self_intersection_box_budget(budget.remaining(), segment.degree());
-    core::SelfIntersectionResult r = core::self_intersections(segment, self_options);
-    budget.charge(r.stats.work * box_cost);
-    if (r.status == core::IntersectStatus::work_cap_reached) budget.exhaust();
+    core::SelfIntersectionResult r =
+        core::self_intersections(segment, core::SelfIntersectionOptions{}, budget);
+    if (budget.exhausted()) break;
     if (!r.pairs.empty() || !r.overlaps.empty()) out.within_segments.push_back({k, std::move(r)});
   }
   out.stats.work = budget.spent() - spent_before;

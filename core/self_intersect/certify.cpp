@@ -61,14 +61,8 @@ CertifiedSelfIntersectionResult certified_self_intersections(const Curve& curve,
                                                              const IntersectOptions& options,
                                                              WorkBudget& budget) {
   CertifiedSelfIntersectionResult out;
-  // The search counts parameter boxes: as many as what is left buys.
-  out.found =
-      self_intersections(curve, self_intersection_options(budget.remaining(), curve.degree()));
-  budget.charge(out.found.stats.work_units);
-  if (out.found.status == IntersectStatus::work_cap_reached) {
-    budget.exhaust();
-    return out;
-  }
+  out.found = self_intersections(curve, SelfIntersectionOptions{}, budget);
+  if (budget.exhausted()) return out;
   // The certification may fall short (its pairs are then reported as found, counted in
   // `uncertified`) without making the search's answer incomplete: it spends a part of its
   // own, whose running out is not the budget's.

@@ -46,9 +46,8 @@ struct CertifiedSelfIntersectionResult {
   CertifiedSelfIntersections certified;
 };
 
-/// self_intersections() of `curve` with the parameter boxes what is left of `budget` buys
-/// (self_intersection_options), charged to it in work units; when that search runs out
-/// the budget is exhausted and nothing is certified. Then certify_self_intersections() of
+/// self_intersections() of `curve` charged to `budget`; when that search runs out the
+/// budget is exhausted and nothing is certified. Then certify_self_intersections() of
 /// the pairs with what is left: a certification that falls short reports its pairs as
 /// found (certified.uncertified counts them) and does not exhaust the budget, since the
 /// answer is still complete, only less tight. The one call a layer above (the API, regions)

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/self_intersect/tuning.hpp"
+#include "core/self_intersect/work_cost.hpp"
 
 namespace bezier::core {
 
@@ -68,35 +69,39 @@ std::optional<CollinearFrame> collinear_frame(std::span<const Point2> points, do
   return CollinearFrame{origin, direction};
 }
 
-CollinearOverlaps collinear_self_overlaps(std::span<const Point2> points,
-                                          const CollinearFrame& frame, double dist_tol,
-                                          std::int64_t max_work) {
-  CollinearOverlaps out;
-  const double len2 = dot(frame.direction, frame.direction);
-  if (len2 == 0.0) {
-    out.overlaps.push_back({{0.0, 1.0}, {0.0, 1.0}});
-    return out;
-  }
-  std::vector<double> x;
-  for (const Point2 p : points) x.push_back(dot(p - frame.origin, frame.direction) / len2);
-  std::vector<double> dx;
-  for (std::size_t i = 0; i + 1 < x.size(); ++i) dx.push_back(x[i + 1] - x[i]);
-  const auto x_at = [&](double t) { return bernstein_value(x, t); };
-  const auto dx_at = [&](double t) { return bernstein_value(dx, t); };
+namespace {
 
-  // Sign runs of x' from left to right: depth-first, left half first.
+/// The curve along its line: x_i = (P_i - origin)·direction / |direction|^2, and the
+/// coefficients of x' up to the factor n, x_{i+1} - x_i (same signs, same roots).
+struct LineCoordinates {
+  std::vector<double> x;
+  std::vector<double> dx;
+};
+
+LineCoordinates line_coordinates(std::span<const Point2> points, const CollinearFrame& frame,
+                                 double len2) {
+  LineCoordinates out;
+  for (const Point2 p : points) out.x.push_back(dot(p - frame.origin, frame.direction) / len2);
+  for (std::size_t i = 0; i + 1 < out.x.size(); ++i) out.dx.push_back(out.x[i + 1] - out.x[i]);
+  return out;
+}
+
+/// The sign runs of x' from left to right: subdivision of its Bernstein coefficients,
+/// depth-first and left half first, until they share a sign; intervals narrower than
+/// kNarrowestSignRun with mixed signs hold a root of x' and are left out. Each step is
+/// charged collinear_fold_step_cost(n) to `budget`; nullopt, the budget exhausted, when a
+/// step does not fit in what is left.
+std::optional<std::vector<SignRun>> sign_runs(const std::vector<double>& dx, WorkBudget& budget) {
   struct Pending {
     double lo, hi;
     std::vector<double> c;
   };
+  const std::int64_t step_cost = collinear_fold_step_cost(static_cast<int>(dx.size()));
   std::vector<Pending> stack{{0.0, 1.0, dx}};
   std::vector<SignRun> runs;
   while (!stack.empty()) {
-    if (out.work >= max_work) {
-      out.work_cap_reached = true;
-      return out;
-    }
-    ++out.work;
+    if (!budget.reserve(step_cost)) return std::nullopt;
+    budget.charge(step_cost);
     Pending node = std::move(stack.back());
     stack.pop_back();
     const bool positive =
@@ -123,22 +128,40 @@ CollinearOverlaps collinear_self_overlaps(std::span<const Point2> points,
     stack.push_back({mid, node.hi, std::move(right)});
     stack.push_back({node.lo, mid, std::move(left)});
   }
+  return runs;
+}
 
-  // Turning points: where consecutive runs change sign.
-  std::vector<double> bounds{0.0};
+/// The monotone pieces of x: bounds[k] to bounds[k + 1] (bounds from 0 to 1) with the sign
+/// signs[k] of x' on it. A turning point lies where consecutive runs change sign, located by
+/// bisection on x' in the gap between them; runs of one sign either side of a gap (a root of
+/// even multiplicity) do not turn the curve.
+struct MonotonePieces {
+  std::vector<double> bounds;
   std::vector<int> signs;
+};
+
+MonotonePieces monotone_pieces(const std::vector<SignRun>& runs, const std::vector<double>& dx) {
+  const auto dx_at = [&](double t) { return bernstein_value(dx, t); };
+  MonotonePieces out;
+  out.bounds.push_back(0.0);
   for (std::size_t r = 0; r < runs.size(); ++r) {
-    if (signs.empty()) {
-      signs.push_back(runs[r].sign);
-    } else if (runs[r].sign != signs.back()) {
-      bounds.push_back(bisect(dx_at, runs[r - 1].hi, runs[r].lo, signs.back()));
-      signs.push_back(runs[r].sign);
+    if (out.signs.empty()) {
+      out.signs.push_back(runs[r].sign);
+    } else if (runs[r].sign != out.signs.back()) {
+      out.bounds.push_back(bisect(dx_at, runs[r - 1].hi, runs[r].lo, out.signs.back()));
+      out.signs.push_back(runs[r].sign);
     }
   }
-  bounds.push_back(1.0);
-  if (signs.size() < 2) return out;  // monotone: no self-intersection at all
+  out.bounds.push_back(1.0);
+  return out;
+}
 
-  // Monotone pieces [bounds_k, bounds_k+1]; preimage of a value by bisection.
+/// Every two monotone pieces whose ranges of x overlap by more than x_tol: the preimages of
+/// the common range on each (bisection on x), sorted by t then s.
+std::vector<Overlap> retraced_pieces(const MonotonePieces& pieces, const std::vector<double>& x,
+                                     double x_tol) {
+  const auto x_at = [&](double t) { return bernstein_value(x, t); };
+  const std::vector<double>& bounds = pieces.bounds;
   std::vector<double> values;
   for (const double t : bounds) values.push_back(x_at(t));
   const auto preimage = [&](std::size_t k, double value) {
@@ -148,9 +171,10 @@ CollinearOverlaps collinear_self_overlaps(std::span<const Point2> points,
     const int s_lo = sign_of(values[k] - value);
     return bisect([&](double t) { return x_at(t) - value; }, lo, hi, s_lo);
   };
-  const double x_tol = dist_tol / std::sqrt(len2);
-  for (std::size_t p = 0; p + 1 < signs.size(); ++p) {
-    for (std::size_t q = p + 1; q < signs.size(); ++q) {
+  std::vector<Overlap> overlaps;
+  const std::size_t count = pieces.signs.size();
+  for (std::size_t p = 0; p + 1 < count; ++p) {
+    for (std::size_t q = p + 1; q < count; ++q) {
       const double lo =
           std::max(std::min(values[p], values[p + 1]), std::min(values[q], values[q + 1]));
       const double hi =
@@ -158,16 +182,30 @@ CollinearOverlaps collinear_self_overlaps(std::span<const Point2> points,
       if (!(hi - lo > x_tol)) continue;
       const double t1 = preimage(p, lo), t2 = preimage(p, hi);
       const double s1 = preimage(q, lo), s2 = preimage(q, hi);
-      out.overlaps.push_back(
+      overlaps.push_back(
           {{std::min(t1, t2), std::max(t1, t2)}, {std::min(s1, s2), std::max(s1, s2)}});
     }
   }
-  std::sort(out.overlaps.begin(), out.overlaps.end(),
-            [](const Overlap& a, const Overlap& b) {
-              return a.t_interval.lo != b.t_interval.lo ? a.t_interval.lo < b.t_interval.lo
-                                                        : a.s_interval.lo < b.s_interval.lo;
-            });
-  return out;
+  std::sort(overlaps.begin(), overlaps.end(), [](const Overlap& a, const Overlap& b) {
+    return a.t_interval.lo != b.t_interval.lo ? a.t_interval.lo < b.t_interval.lo
+                                              : a.s_interval.lo < b.s_interval.lo;
+  });
+  return overlaps;
+}
+
+}  // namespace
+
+std::vector<Overlap> collinear_self_overlaps(std::span<const Point2> points,
+                                             const CollinearFrame& frame, double dist_tol,
+                                             WorkBudget& budget) {
+  const double len2 = dot(frame.direction, frame.direction);
+  if (len2 == 0.0) return {{{0.0, 1.0}, {0.0, 1.0}}};
+  const LineCoordinates line = line_coordinates(points, frame, len2);
+  const std::optional<std::vector<SignRun>> runs = sign_runs(line.dx, budget);
+  if (!runs) return {};
+  const MonotonePieces pieces = monotone_pieces(*runs, line.dx);
+  if (pieces.signs.size() < 2) return {};  // monotone: no self-intersection at all
+  return retraced_pieces(pieces, line.x, dist_tol / std::sqrt(len2));
 }
 
 }  // namespace bezier::core

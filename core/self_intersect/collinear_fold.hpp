@@ -1,11 +1,11 @@
 #pragma once
 
-#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
 
 #include "core/base/point.hpp"
+#include "core/base/work_budget.hpp"
 #include "core/self_intersect/self_intersection.hpp"
 
 namespace bezier::core {
@@ -26,24 +26,21 @@ struct CollinearFrame {
 [[nodiscard]] std::optional<CollinearFrame> collinear_frame(std::span<const Point2> points,
                                                             double dist_tol);
 
-struct CollinearOverlaps {
-  std::vector<Overlap> overlaps;
-  bool work_cap_reached = false;
-  std::int64_t work = 0;
-};
-
-/// Self-overlaps of a collinear curve. Along the line B is the scalar Bernstein polynomial
-/// x(t) = Σ x_i b_i(t), x_i = (P_i - origin)·direction / |direction|^2. Its turning points
-/// are the sign changes of x'(t) (coefficients x_{i+1} - x_i), isolated by subdivision until
-/// the derivative's Bernstein coefficients share a sign (variation diminishing property,
-/// Farin §5.5) and located by bisection; roots of even multiplicity do not turn the curve
-/// and are skipped. Between turning points x is monotone; two monotone pieces whose ranges
-/// of x overlap by more than dist_tol retrace each other there, and the overlap's parameter
-/// intervals are the preimages of the common range (bisection). Every pair of pieces is
-/// reported, in order of t. A point curve (direction zero) is one overlap [0,1] x [0,1].
-/// Bounded by `max_work` subdivision steps.
-[[nodiscard]] CollinearOverlaps collinear_self_overlaps(std::span<const Point2> points,
-                                                        const CollinearFrame& frame,
-                                                        double dist_tol, std::int64_t max_work);
+/// Self-overlaps of a collinear curve, in four phases. Along the line B is the scalar
+/// Bernstein polynomial x(t) = Σ x_i b_i(t), x_i = (P_i - origin)·direction / |direction|^2
+/// (line coordinates). Its sign runs: the coefficients of x' (x_{i+1} - x_i) subdivided until
+/// they share a sign (variation diminishing property, Farin §5.5). Its monotone pieces:
+/// between runs of opposite signs a turning point, located by bisection on x'; roots of even
+/// multiplicity do not turn the curve and are skipped. Its retraced pieces: two monotone
+/// pieces whose ranges of x overlap by more than dist_tol retrace each other there, and the
+/// overlap's parameter intervals are the preimages of the common range (bisection). Every
+/// pair of pieces is reported, in order of t. A point curve (direction zero) is one overlap
+/// [0,1] x [0,1].
+/// Each subdivision step of the sign runs is charged collinear_fold_step_cost(n)
+/// (work_cost.hpp) to `budget`; when a step does not fit in what is left the budget is
+/// exhausted and nothing is returned.
+[[nodiscard]] std::vector<Overlap> collinear_self_overlaps(std::span<const Point2> points,
+                                                           const CollinearFrame& frame,
+                                                           double dist_tol, WorkBudget& budget);
 
 }  // namespace bezier::core

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "core/self_intersect/tuning.hpp"
+#include "core/self_intersect/work_cost.hpp"
 
 namespace bezier::core {
 
@@ -153,8 +154,15 @@ void split_half(const Point2* src, Point2* left, Point2* right, std::size_t m) {
 
 class Search {
  public:
-  Search(std::span<const Point2> points, const SelfIntersectionSearchSettings& settings)
-      : points_(points), m_(points.size()), settings_(settings), scratch_(4 * points.size()) {
+  Search(std::span<const Point2> points, const SelfIntersectionSearchSettings& settings,
+         WorkBudget& budget)
+      : points_(points),
+        m_(points.size()),
+        settings_(settings),
+        budget_(budget),
+        box_cost_(self_intersection_box_cost(static_cast<int>(points.size()) - 1)),
+        newton_cost_(self_intersection_newton_cost(static_cast<int>(points.size()) - 1)),
+        scratch_(4 * points.size()) {
     // Depth-first, the stack holds about three boxes per level: room for a typical search
     // without regrowing.
     constexpr std::size_t kTypicalBoxes = 64;
@@ -165,11 +173,8 @@ class Search {
   SelfIntersectionSearchOutcome run() {
     push({0.0, 1.0, 0.0, 1.0, 0, BoxKind::diagonal, 0}, points_.data(), points_.data());
     while (!stack_.empty()) {
-      if (out_.stats.work >= settings_.max_work) {
-        out_.work_cap_reached = true;
-        break;
-      }
-      ++out_.stats.work;
+      if (!budget_.reserve(box_cost_)) break;
+      charge(box_cost_);
       const Box box = stack_.back();
       stack_.pop_back();
       process(box);
@@ -178,6 +183,11 @@ class Search {
   }
 
  private:
+  void charge(std::int64_t units) {
+    budget_.charge(units);
+    out_.stats.work += units;
+  }
+
   /// Appends a box with copies of its pieces; boxes are processed last in, first out, so
   /// the arena is a stack too and a popped box's pieces are always on top.
   void push(Box box, const Point2* piece_i, const Point2* piece_j) {
@@ -262,9 +272,7 @@ class Search {
     const PairRefinement root = refine_double_point(points_, u0, v0, region, settings_.rounding);
     ++out_.stats.newton_runs;
     out_.stats.newton_iterations += root.iterations;
-    // An iteration evaluates the curve with its first two derivatives at both parameters,
-    // about what halving the box's two pieces costs: charged as one box each.
-    out_.stats.work += root.iterations;
+    charge(root.iterations * newton_cost_);
     if (!root.converged || root.u < box.a - kRootSlack || root.u > box.b + kRootSlack ||
         root.v < box.c - kRootSlack || root.v > box.d + kRootSlack) {
       return false;
@@ -321,6 +329,9 @@ class Search {
   std::span<const Point2> points_;
   std::size_t m_;
   SelfIntersectionSearchSettings settings_;
+  WorkBudget& budget_;
+  std::int64_t box_cost_;
+  std::int64_t newton_cost_;
   std::vector<Point2> arena_;
   std::vector<Box> stack_;
   std::vector<Point2> scratch_;
@@ -330,9 +341,10 @@ class Search {
 }  // namespace
 
 SelfIntersectionSearchOutcome search_self_intersections(
-    std::span<const Point2> points, const SelfIntersectionSearchSettings& settings) {
+    std::span<const Point2> points, const SelfIntersectionSearchSettings& settings,
+    WorkBudget& budget) {
   assert(points.size() >= 2);
-  return Search(points, settings).run();
+  return Search(points, settings, budget).run();
 }
 
 }  // namespace bezier::core

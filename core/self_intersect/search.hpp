@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/base/point.hpp"
+#include "core/base/work_budget.hpp"
 #include "core/self_intersect/self_intersection.hpp"
 #include "core/self_intersect/refine.hpp"
 
@@ -17,7 +18,6 @@ struct SelfIntersectionSearchSettings {
   /// Rounding level of F = B(v) - B(u) in input units: a Newton root whose
   /// is_resolved_double_point fails at this level is noise near a cusp.
   double rounding = 0.0;
-  std::int64_t max_work = 0;
   int max_depth = 0;
   /// P_0 = P_n: the pieces meeting at t = 0 and t = 1 are neighbours (the "seam").
   bool closed = false;
@@ -30,7 +30,7 @@ struct SelfIntersectionSearchOutcome {
   /// Boxes u x v that could neither be discarded nor resolved before
   /// both pieces became flat to within dist_tol: tangential contacts or near misses.
   std::vector<ParameterBox> contact_boxes;
-  bool work_cap_reached = false;
+  /// stats.work: the work units the search charged.
   SelfIntersectionStats stats;
 };
 
@@ -38,8 +38,12 @@ struct SelfIntersectionSearchOutcome {
 /// classifies boxes of pairs of dyadic pieces as diagonal, adjacent, seam or apart,
 /// discards them by half-plane and separating-axis tests, runs Newton where the tangent
 /// cones prove a box holds at most one pair, and returns the rest as contact candidates.
-/// Bounded by settings.max_work boxes. Precondition: points.size() >= 2, finite.
+/// Each box is charged self_intersection_box_cost(n) to `budget` before it is examined, each
+/// Newton iteration self_intersection_newton_cost(n) (work_cost.hpp); a box that does not
+/// fit in what is left is not examined: the budget is then exhausted and the outcome holds
+/// what was found. Precondition: points.size() >= 2, finite.
 [[nodiscard]] SelfIntersectionSearchOutcome search_self_intersections(
-    std::span<const Point2> points, const SelfIntersectionSearchSettings& settings);
+    std::span<const Point2> points, const SelfIntersectionSearchSettings& settings,
+    WorkBudget& budget);
 
 }  // namespace bezier::core

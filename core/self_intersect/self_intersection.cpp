@@ -260,24 +260,25 @@ std::vector<SelfIntersection> clean_up(const std::vector<Candidate>& candidates,
   return pairs;
 }
 
-/// Contact boxes grouped into clusters, and the work that took.
-struct Clusters {
-  std::vector<ParameterBox> boxes;
-  std::int64_t work = 0;
-};
-
 /// Contact boxes that touch (within one box width) grouped into clusters, each the bounding
-/// box of its members; nullopt when the comparisons exceed `budget` work units.
-std::optional<Clusters> cluster(std::vector<ParameterBox> boxes, std::int64_t budget) {
+/// box of its members, the comparisons charged to `budget` (cluster_cost, for a degree-n
+/// curve); nullopt, the budget exhausted, when they need more than is left.
+std::optional<std::vector<ParameterBox>> cluster(std::vector<ParameterBox> boxes, int n,
+                                                 WorkBudget& budget) {
   std::sort(boxes.begin(), boxes.end(),
             [](const ParameterBox& a, const ParameterBox& b) { return a.u.lo < b.u.lo; });
+  const std::int64_t affordable = affordable_cluster_comparisons(budget.remaining(), n);
   std::int64_t comparisons = 0;
   std::vector<ParameterBox> clusters;
   for (const ParameterBox& b : boxes) {
     const double w = std::max(b.u.width(), b.v.width());
     bool joined = false;
     for (auto it = clusters.rbegin(); it != clusters.rend(); ++it) {
-      if (++comparisons > budget * kClusterComparisonsPerWork) return std::nullopt;
+      if (++comparisons > affordable) {
+        budget.charge(cluster_cost(affordable, n));
+        budget.exhaust();
+        return std::nullopt;
+      }
       if (b.v.lo <= it->v.hi + w && it->v.lo <= b.v.hi + w && b.u.lo <= it->u.hi + w) {
         *it = {{std::min(it->u.lo, b.u.lo), std::max(it->u.hi, b.u.hi)},
                {std::min(it->v.lo, b.v.lo), std::max(it->v.hi, b.v.hi)}};
@@ -287,16 +288,15 @@ std::optional<Clusters> cluster(std::vector<ParameterBox> boxes, std::int64_t bu
     }
     if (!joined) clusters.push_back(b);
   }
-  return Clusters{std::move(clusters), comparisons / kClusterComparisonsPerWork};
+  budget.charge(cluster_cost(comparisons, n));
+  return clusters;
 }
 
-/// What resolving the contact boxes gave, and cost.
+/// What resolving the contact boxes gave.
 struct ContactResolution {
   std::vector<Candidate> candidates;
   int newton_runs = 0;
   int newton_iterations = 0;
-  std::int64_t work = 0;
-  bool work_cap_reached = false;
 };
 
 /// One candidate per cluster of contact boxes: Newton on F first (a crossing at a tiny
@@ -304,25 +304,20 @@ struct ContactResolution {
 /// branches meet to within dist_tol and the pair is clear of the diagonal (near a cusp the
 /// closest pair slides to u = v) and, on a closed curve, of the seam (next to an end where
 /// B' vanishes to high order the closest pair slides along it, away from (0, 1) but not to
-/// a double point). Stops at `budget` work units.
+/// a double point). The clustering and each refinement (contact_refinement_cost) are
+/// charged to `budget`; a refinement that does not fit in what is left is not started.
 ContactResolution resolve_contacts(const std::vector<ParameterBox>& boxes, const CurveFacts& facts,
-                                   std::int64_t budget) {
+                                   WorkBudget& budget) {
   ContactResolution out;
-  const auto clusters = cluster(boxes, budget);
-  if (!clusters) {
-    out.work = budget;
-    out.work_cap_reached = true;
-    return out;
-  }
-  out.work = clusters->work;
+  const int n = static_cast<int>(facts.points.size()) - 1;
+  const auto clusters = cluster(boxes, n, budget);
+  if (!clusters) return out;
   double width = 0.0;
   for (const ParameterBox& b : boxes) width = std::max({width, b.u.width(), b.v.width()});
-  for (const ParameterBox& c : clusters->boxes) {
-    if (out.work + kContactRefinementWork > budget) {
-      out.work_cap_reached = true;
-      break;
-    }
-    out.work += kContactRefinementWork;
+  const std::int64_t refinement_cost = contact_refinement_cost(n);
+  for (const ParameterBox& c : *clusters) {
+    if (!budget.reserve(refinement_cost)) break;
+    budget.charge(refinement_cost);
     const ParameterBox region{{std::max(0.0, c.u.lo - width), std::min(1.0, c.u.hi + width)},
                               {std::max(0.0, c.v.lo - width), std::min(1.0, c.v.hi + width)}};
     const double u0 = 0.5 * (c.u.lo + c.u.hi), v0 = 0.5 * (c.v.lo + c.v.hi);
@@ -342,14 +337,10 @@ ContactResolution resolve_contacts(const std::vector<ParameterBox>& boxes, const
 }
 
 SelfIntersectionResult collinear_result(const CurveFacts& facts, const CollinearFrame& frame,
-                                        const SelfIntersectionOptions& options) {
+                                        WorkBudget& budget) {
   SelfIntersectionResult result;
   result.stats.method = SelfIntersectionMethod::collinear;
-  CollinearOverlaps found =
-      collinear_self_overlaps(facts.points, frame, facts.dist_tol, options.max_work);
-  result.stats.work = found.work;
-  result.overlaps = std::move(found.overlaps);
-  if (found.work_cap_reached) result.status = IntersectStatus::work_cap_reached;
+  result.overlaps = collinear_self_overlaps(facts.points, frame, facts.dist_tol, budget);
   return result;
 }
 
@@ -368,8 +359,10 @@ bool is_palindrome(std::span<const Point2> p) {
 /// (a, 1 - b), (b, 1 - a) and (1 - b, 1 - a). The general search cannot see this: the
 /// continuum of pairs (t, 1 - t) would exhaust any work budget.
 SelfIntersectionResult retracing_result(const CurveFacts& facts,
-                                        const SelfIntersectionOptions& options) {
-  SelfIntersectionResult result = self_intersections(subdivide(facts.curve, 0.5).left, options);
+                                        const SelfIntersectionOptions& options,
+                                        WorkBudget& budget) {
+  SelfIntersectionResult result =
+      self_intersections(subdivide(facts.curve, 0.5).left, options, budget);
   std::vector<Overlap> overlaps{{{0.0, 0.5}, {0.5, 1.0}}};
   for (const Overlap& o : result.overlaps) {
     const ParamInterval t = o.t_interval, s = o.s_interval;
@@ -428,7 +421,8 @@ std::vector<double> level_set(const Coeffs& p, double u) {
 /// continuum of pairs). Nothing when B is proper or p monotone
 /// (no retraced piece: the general search then works).
 std::optional<SelfIntersectionResult> improper_result(const CurveFacts& facts,
-                                                      const SelfIntersectionOptions& options) {
+                                                      const SelfIntersectionOptions& options,
+                                                      WorkBudget& budget) {
   if (facts.curve.degree() < 4) return std::nullopt;
   const WorkingCurve w = to_working(facts.curve, working_frame(facts.curve, facts.curve));
   const std::vector<OverlapFinding> found = find_self_arc_overlaps(w);
@@ -440,7 +434,7 @@ std::optional<SelfIntersectionResult> improper_result(const CurveFacts& facts,
   const CommonArc& arc = *found.front().arc;
   std::vector<Point2> h;
   for (std::size_t i = 0; i < arc.hx.size(); ++i) h.push_back({arc.hx[i], arc.hy[i]});
-  const SelfIntersectionResult on_h = self_intersections(Curve(std::move(h)), options);
+  const SelfIntersectionResult on_h = self_intersections(Curve(std::move(h)), options, budget);
   result.stats = on_h.stats;
   std::vector<Candidate> candidates;
   for (const SelfIntersection& pair : on_h.pairs) {
@@ -452,7 +446,6 @@ std::optional<SelfIntersectionResult> improper_result(const CurveFacts& facts,
     }
   }
   result.pairs = clean_up(candidates, facts);
-  result.status = on_h.status;
   return result;
 }
 
@@ -528,14 +521,18 @@ bool runs_backwards(const Curve& curve, const Overlap& o) {
 
 }  // namespace
 
-SelfIntersectionOptions self_intersection_options(std::int64_t work_units, int degree) noexcept {
-  SelfIntersectionOptions options;
-  options.max_work = self_intersection_box_budget(work_units, degree);
-  return options;
+SelfIntersectionResult self_intersections(const Curve& curve,
+                                          const SelfIntersectionOptions& options) {
+  WorkBudget budget(options.max_work);
+  SelfIntersectionResult result = self_intersections(curve, options, budget);
+  if (budget.exhausted()) result.status = IntersectStatus::work_cap_reached;
+  return result;
 }
 
 SelfIntersectionResult self_intersections(const Curve& curve,
-                                          const SelfIntersectionOptions& options) {
+                                          const SelfIntersectionOptions& options,
+                                          WorkBudget& budget) {
+  const std::int64_t spent_before = budget.spent();
   // Squared lengths in the inner loops (sqrt(v·v), not the slower overflow-safe hypot) need
   // coordinates within about 2^±300: outside that range, work on the curve scaled by 2^k
   // so that its largest coordinate lies in [1, 2). Scaling by a power of two is exact
@@ -563,44 +560,38 @@ SelfIntersectionResult self_intersections(const Curve& curve,
     result.stats.newton_iterations = cubic.newton_iterations;
     result.pairs.push_back({cubic.t, cubic.s, cubic.point, IntersectionKind::transversal});
   } else if (const auto frame = collinear_frame(points, facts.dist_tol)) {
-    result = collinear_result(facts, *frame, options);
+    result = collinear_result(facts, *frame, budget);
   } else if (is_palindrome(points)) {
-    result = retracing_result(facts, options);
-  } else if (auto improper = improper_result(facts, options)) {
+    result = retracing_result(facts, options, budget);
+  } else if (auto improper = improper_result(facts, options, budget)) {
     result = std::move(*improper);
   } else if (cubic.verdict == ClosedFormVerdict::no_loop) {
     result.stats.method = SelfIntersectionMethod::closed_form_cubic;
   } else {
     const SelfIntersectionSearchOutcome found = search_self_intersections(
-        points,
-        {facts.dist_tol, facts.rounding, options.max_work, options.max_depth, facts.closed});
+        points, {facts.dist_tol, facts.rounding, options.max_depth, facts.closed}, budget);
     result.stats = found.stats;
     result.stats.method = SelfIntersectionMethod::subdivision;
     std::vector<Candidate> candidates;
     for (const PairRefinement& r : found.crossings) {
       candidates.push_back({r.u, r.v, r.residual, false});
     }
-    bool capped = found.work_cap_reached;
     // After a capped search the contact boxes are an arbitrary part of a pathological
     // input's (typically a retraced piece's): not worth refining.
-    if (!capped && !found.contact_boxes.empty()) {
-      const ContactResolution contacts =
-          resolve_contacts(found.contact_boxes, facts, options.max_work - found.stats.work);
+    if (!budget.exhausted() && !found.contact_boxes.empty()) {
+      const ContactResolution contacts = resolve_contacts(found.contact_boxes, facts, budget);
       candidates.insert(candidates.end(), contacts.candidates.begin(), contacts.candidates.end());
-      result.stats.work += contacts.work;
       result.stats.newton_runs += contacts.newton_runs;
       result.stats.newton_iterations += contacts.newton_iterations;
-      capped = contacts.work_cap_reached;
     }
     result.pairs = clean_up(candidates, facts);
-    if (capped) result.status = IntersectStatus::work_cap_reached;
   }
   if (k != 0) {
     const PowerOfTwo back(-k);
     for (SelfIntersection& pair : result.pairs) pair.point = back.times(pair.point);
   }
   for (Overlap& o : result.overlaps) o.reversed = runs_backwards(curve, o);
-  result.stats.work_units = result.stats.work * self_intersection_box_cost(curve.degree());
+  result.stats.work = budget.spent() - spent_before;
   return result;
 }
 

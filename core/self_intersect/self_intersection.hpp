@@ -7,6 +7,7 @@
 #include "core/base/curve.hpp"
 #include "core/base/enum_names.hpp"
 #include "core/base/point.hpp"
+#include "core/base/work_budget.hpp"
 #include "core/intersect/result.hpp"
 
 namespace bezier::core {
@@ -40,11 +41,10 @@ inline constexpr EnumNames<SelfIntersectionMethod::collinear> kSelfIntersectionM
 /// What the search cost; for benchmarks and the API's `stats`.
 struct SelfIntersectionStats {
   SelfIntersectionMethod method = SelfIntersectionMethod::subdivision;
-  /// Parameter boxes examined (the unit of the work budget).
+  /// Work units the call charged (core/intersect/work_cost.hpp's unit, shared with
+  /// two-curve intersection): its parameter boxes, Newton iterations, contact refinements
+  /// and steps of the collinear fold, by the costs of core/self_intersect/work_cost.hpp.
   std::int64_t work = 0;
-  /// What those boxes cost in work units (core/intersect/work_cost.hpp's unit, shared with
-  /// two-curve intersection; see self_intersection_options).
-  std::int64_t work_units = 0;
   /// Deepest subdivision level reached (boxes of width 2^-depth).
   int max_depth = 0;
   /// Newton refinements started, and their iterations in all.
@@ -68,9 +68,10 @@ struct SelfIntersectionResult {
   /// [0, 1/2] x [1/2, 1]) and any other improper parametrisation B = C(p(t)) with p turning
   /// back (the pieces where p(t) = p(s)).
   std::vector<Overlap> overlaps;
-  /// ok: every pair is in `pairs` and every retraced piece in `overlaps`; work_cap_reached:
-  /// the work budget ran out, `pairs` and `overlaps` hold what was found, maybe not all.
-  /// (Never tolerance_too_small: the pairs are located to full precision.)
+  /// ok: every pair is in `pairs` and every retraced piece in `overlaps`, unless the
+  /// caller's WorkBudget ran out (budget.exhausted(): then they hold what was found, maybe
+  /// not all); work_cap_reached only from the overload without a budget, whose own budget
+  /// ran out. (Never tolerance_too_small: the pairs are located to full precision.)
   IntersectStatus status = IntersectStatus::ok;
   SelfIntersectionStats stats;
 };
@@ -78,9 +79,12 @@ struct SelfIntersectionResult {
 /// Tolerances and budget. The defaults suit any input scale: the distance tolerance is
 /// relative to scale(curve).
 struct SelfIntersectionOptions {
-  /// Most parameter boxes to examine before giving up with work_cap_reached (a budget in
-  /// work units converts with self_intersection_options).
-  std::int64_t max_work = 200000;
+  /// The budget (work units, core/self_intersect/work_cost.hpp) of self_intersections()
+  /// without a WorkBudget: its own, its running out reported as status work_cap_reached. A
+  /// caller with a budget passes it instead. It covers 200 000 parameter boxes at every
+  /// degree up to 29, far more than a curve that does not come within rounding of
+  /// retracing itself needs.
+  std::int64_t max_work = 100000000;
   /// dist_tol = dist_rel * scale(curve): two points closer than this are "the same point"
   /// for tangential contacts and collinearity. 2^-44 is about 256 ulps of the largest
   /// coordinate: above the rounding of de Casteljau subdivision over ~50 levels at degree
@@ -93,13 +97,6 @@ struct SelfIntersectionOptions {
   /// the same pairs above its resolution; tests compare).
   bool cubic_closed_form = true;
 };
-
-/// The default options with a budget of `work_units` work units (core/intersect/work_cost.hpp's
-/// unit, shared with two-curve intersection) for a curve of degree `degree`: as many
-/// parameter boxes as the units buy (core/self_intersect/work_cost.hpp), so that a cap in
-/// units bounds the time whatever the degree.
-[[nodiscard]] SelfIntersectionOptions self_intersection_options(std::int64_t work_units,
-                                                                int degree) noexcept;
 
 /// Every pair 0 <= t < s <= 1 with B(t) = B(s), for any degree n >= 1.
 ///
@@ -150,8 +147,10 @@ struct SelfIntersectionOptions {
 /// The exact cubic closed form has no such limit. Distinct pairs closer than 1e-10 in both t
 /// and s are merged.
 /// Tangential contacts are located by refine_self_contact (to full precision when the branches'
-/// curvatures differ, to about half the digits when they agree). Every stage counts against
-/// options.max_work; running out gives status work_cap_reached, never a long run. Other curves that
+/// curvatures differ, to about half the digits when they agree). Every stage charges `budget`
+/// (core/self_intersect/work_cost.hpp, in the two-curve search's work units): a stage whose
+/// next step does not fit in what is left stops, the budget is then exhausted and the lists
+/// hold what was found, never a long run; stats.work is what the call charged. Other curves that
 /// retrace part of themselves (improper parametrisations C(p(t)) with p not symmetric about 1/2,
 /// e.g. p = (t - 1/4)^2) are factored (intersect/common_arc.hpp): their retraced pieces come
 /// from p, their pairs from C's own double points. Curves within rounding of retracing
@@ -163,6 +162,12 @@ struct SelfIntersectionOptions {
 /// half-plane and cone criteria are the classical ones for curve pieces without loops
 /// (Sederberg & Meyers 1988, "Loop detection in surface patch intersections").
 /// Precondition: finite coordinates.
+[[nodiscard]] SelfIntersectionResult self_intersections(const Curve& curve,
+                                                        const SelfIntersectionOptions& options,
+                                                        WorkBudget& budget);
+
+/// The same with a budget of options.max_work units of its own, its running out reported
+/// as status work_cap_reached.
 [[nodiscard]] SelfIntersectionResult self_intersections(
     const Curve& curve, const SelfIntersectionOptions& options = {});
 

@@ -270,7 +270,7 @@ TEST(IntersectionsRoute, SelfIntersectionWorkCapAnswers422) {
       422, limits);
   EXPECT_EQ(problem["type"], "urn:bezier-service:problem:work-cap");
   const std::string detail = problem["detail"].get<std::string>();
-  EXPECT_NE(detail.find("parameter boxes"), std::string::npos) << detail;
+  EXPECT_NE(detail.find("self-intersection search spent"), std::string::npos) << detail;
   EXPECT_NE(detail.find("work cap of 20000 units"), std::string::npos) << detail;
 }
 

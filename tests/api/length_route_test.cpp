@@ -8,6 +8,7 @@
 #include <string>
 
 #include "api/handler.hpp"
+#include "core/measure/arc_length.hpp"
 #include "tests/support/route_answers.hpp"
 #include "api/write_json.hpp"
 
@@ -94,6 +95,29 @@ TEST(LengthRoute, PointsAndFieldsValidated) {
   small.max_t_values = 2;
   EXPECT_EQ(test::error_pointers(call(R"({"points":[[0,0],[1,1]],"at_lengths":[0,0,0]})", 422, small)),
             std::vector<std::string>{"/at_lengths"});
+}
+
+TEST(LengthRoute, TheQuadratureChargesTheWorkCap) {
+  // The cusp cubic needs several halvings toward t = 1/2: a cap of 400 units pays for the
+  // first rules (2 pieces, 7 evaluations of 10 units each, and their extensions) and not
+  // for a halving (30 evaluations): 422 work-cap, naming the cap.
+  Limits limits;
+  limits.max_work = 400;
+  const json capped = call(R"({"points":[[0,0],[1,1],[0,1],[1,0]]})", 422, limits);
+  EXPECT_EQ(capped["type"], "urn:bezier-service:problem:work-cap");
+  const std::string detail = capped["detail"].get<std::string>();
+  EXPECT_NE(detail.find("within the per-request work cap of 400 units"), std::string::npos) << detail;
+  // The same cusp twice in a path shares one cap: one and a half times what one cusp needs
+  // alone is not enough for two.
+  core::WorkBudget one;
+  (void)core::arc_length(core::Curve({{0, 0}, {1, 1}, {0, 1}, {1, 0}}), 0, 1, {}, one);
+  limits.max_work = one.spent() + one.spent() / 2;
+  call(R"({"points":[[0,0],[1,1],[0,1],[1,0]]})", 200, limits);
+  const json path = call(R"({"path":"M0 0 C1 1 0 1 1 0 C2 1 1 1 2 0"})", 422, limits);
+  EXPECT_EQ(path["type"], "urn:bezier-service:problem:work-cap");
+  // With the default cap both answer, each cusp 2 sqrt(2) - 1.
+  const json both = call(R"({"path":"M0 0 C1 1 0 1 1 0 C2 1 1 1 2 0"})", 200);
+  EXPECT_NEAR(both["length"].get<double>(), 2 * (2 * std::sqrt(2.0) - 1), 1e-11);
 }
 
 }  // namespace

@@ -55,7 +55,21 @@ TEST(LoopAreaRoute, Degree7ExampleIsTheKernelsAnswerRoundTripped) {
   EXPECT_TRUE(r["closed_area"].is_null());
   EXPECT_EQ(r["overlaps"], json::array());
   EXPECT_EQ(r["stats"]["method"], "subdivision");
-  EXPECT_GT(r["stats"]["work"].get<int>(), 0);
+  EXPECT_GT(r["stats"]["work"].get<std::int64_t>(), 0);
+  EXPECT_EQ(r["stats"]["work"].get<std::int64_t>(), k.stats.work);
+}
+
+TEST(LoopAreaRoute, StatsWorkIsInTheUnitsOfTheWorkCap) {
+  // The cap that the answer says it spent is enough, one unit less is not: stats.work and
+  // --max-work count the same units.
+  const std::string body = std::string(R"({"points":)") + kDegree7 + "}";
+  const std::int64_t work = call(body, 200)["stats"]["work"].get<std::int64_t>();
+  Limits limits;
+  limits.max_work = work;
+  EXPECT_EQ(call(body, 200, limits)["stats"]["work"].get<std::int64_t>(), work);
+  limits.max_work = work - 1;
+  const json refused = call(body, 422, limits);
+  EXPECT_EQ(refused["type"], "urn:bezier-service:problem:work-cap");
 }
 
 TEST(LoopAreaRoute, CubicUsesTheClosedForm) {
@@ -163,14 +177,17 @@ TEST(LoopAreaRoute, DegreeAboveTheLimit) {
 }
 
 TEST(LoopAreaRoute, WorkCapIsA422Problem) {
-  // A budget in work units buys parameter boxes at the degree's price: five boxes here.
+  // Parameter boxes are charged at the degree's price: five boxes' worth here, spent whole
+  // (no Newton run among the first boxes, which lie next to the diagonal).
   Limits limits;
   limits.max_work = 5 * core::self_intersection_box_cost(7);
   const json r = call(std::string(R"({"points":)") + kDegree7 + "}", 422, limits);
   EXPECT_EQ(r["type"], "urn:bezier-service:problem:work-cap");
   EXPECT_EQ(r["status"], 422);
   const std::string detail = r["detail"].get<std::string>();
-  EXPECT_NE(detail.find("examined 5 parameter boxes"), std::string::npos) << detail;
+  EXPECT_NE(detail.find("spent " + std::to_string(limits.max_work) + " work units"),
+            std::string::npos)
+      << detail;
   EXPECT_NE(detail.find("work cap of " + std::to_string(limits.max_work) + " units"),
             std::string::npos)
       << detail;

@@ -25,6 +25,7 @@
 
 #include "core/curve/evaluate.hpp"
 #include "core/self_intersect/self_intersection.hpp"
+#include "core/self_intersect/work_cost.hpp"
 #include "tests/fuzz/fuzz_support.hpp"
 
 namespace {
@@ -154,7 +155,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   FuzzedDataProvider provider(data, size);
   const auto flags = provider.ConsumeIntegral<std::uint8_t>();
   SelfIntersectionOptions options;
-  options.max_work = 4000;  // a fiftieth of the default keeps executions fast
   options.cubic_closed_form = (flags & 1u) == 0;
   const bool check_scaling = (flags & 2u) != 0;
   const bool compare_methods = (flags & 4u) != 0;
@@ -164,6 +164,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Never more points than the bytes left describe (an exhausted provider yields zeros).
   const int degree = std::max(1, std::min(b < 224 ? 1 + b % 5 : 1 + b % 20,
                                           static_cast<int>(provider.remaining_bytes() / 4)));
+  // 4000 boxes' worth of work units at this degree, a fiftieth of the 200 000 boxes the
+  // default covers, keeps executions fast.
+  options.max_work = 4000 * bezier::core::self_intersection_box_cost(degree);
   bezier::fuzz::NumberSource numbers(provider, wild ? 0 : 30);
   const Curve c = bezier::fuzz::finite_curve(numbers, degree);
   if (bezier::fuzz::print_inputs()) {

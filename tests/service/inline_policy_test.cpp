@@ -16,7 +16,6 @@
 #include <string_view>
 
 #include "api/handler.hpp"
-#include "core/self_intersect/work_cost.hpp"
 #include "service/router.hpp"
 #include "tests/support/mulberry32.hpp"
 
@@ -128,13 +127,13 @@ TEST(InlinePolicy, RefusalsByAShrunkLimitRunAgain) {
 }
 
 TEST(InlinePolicy, WorkCapRunsAgain) {
-  // The degree-7 loop of tests/api/loop_area_route_test.cpp needs `boxes` parameter boxes:
-  // a full cap 2000 times one unit short of them leaves the inline try one box short.
+  // The degree-7 loop of tests/api/loop_area_route_test.cpp needs `work` work units: a full
+  // cap kWorkDivisor times one unit short of them leaves the inline try short of them.
   const std::string body = R"({"points":[[0,0],[1,1],[2,3],[1,4],[0,4],[-1,3],[0,1],[1,0]]})";
-  const std::int64_t boxes =
+  const std::int64_t work =
       nlohmann::json::parse(api::handle("/loop-area", body, {}).body)["stats"]["work"].get<std::int64_t>();
   api::Limits full;
-  full.max_work = InlinePolicy::kWorkDivisor * (boxes * core::self_intersection_box_cost(7) - 1);
+  full.max_work = InlinePolicy::kWorkDivisor * (work - 1);
   const Tried t = try_inline("/loop-area", body, full);
   EXPECT_EQ(t.inline_answer.status, 422) << t.inline_answer.body;
   EXPECT_FALSE(t.final);

@@ -76,19 +76,6 @@ TEST(WorkCost, SymmetricInTheTwoCurves) {
   }
 }
 
-TEST(WorkCost, BoxBudgetIsWhatTheUnitsBuy) {
-  for (int n = 1; n <= 20; ++n) {
-    const std::int64_t cost = self_intersection_box_cost(n);
-    for (const std::int64_t units : {std::int64_t{0}, std::int64_t{1}, cost - 1, cost, 7 * cost + 3,
-                                     std::int64_t{4000000}}) {
-      const std::int64_t boxes = self_intersection_box_budget(units, n);
-      EXPECT_LE(boxes * cost, units);
-      EXPECT_GT((boxes + 1) * cost, units);
-    }
-    EXPECT_EQ(self_intersection_box_budget(-5, n), 0);
-  }
-}
-
 TEST(WorkCost, CappedSearchSpendsAtMostTheBudget) {
   const NearlyRetraced c;
   IntersectOptions options;

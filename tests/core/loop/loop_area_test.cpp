@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/curve/area.hpp"
+#include "core/self_intersect/work_cost.hpp"
 #include "tests/support/exact.hpp"
 #include "tests/support/exact_bezier.hpp"
 #include "tests/support/exact_polynomial.hpp"
@@ -228,11 +229,12 @@ TEST(LoopArea, CollinearCurvesHaveOverlapsAndNoArea) {
 }
 
 TEST(LoopArea, WorkCapPassesThrough) {
+  // Three boxes' worth of work units: the search stops before a fourth.
   SelfIntersectionOptions options;
-  options.max_work = 3;
+  options.max_work = 3 * self_intersection_box_cost(7);
   const LoopAreaResult r = loop_area(degree7_example(), options);
   EXPECT_EQ(r.status, IntersectStatus::work_cap_reached);
-  EXPECT_EQ(r.stats.work, 3);
+  EXPECT_EQ(r.stats.work, options.max_work);
 }
 
 }  // namespace

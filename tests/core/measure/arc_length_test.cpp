@@ -38,7 +38,7 @@ ArcLengthOptions at(double tolerance) {
 /// The length holds its tolerance: relative error <= tolerance, the reported bound met and
 /// covering the actual error.
 void expect_length(const ArcLength& got, long double exact, double tolerance = kTolerance) {
-  EXPECT_EQ(got.status, ArcLengthStatus::ok);
+  EXPECT_TRUE(got.tolerance_met);
   const long double error = std::fabs(static_cast<long double>(got.length) - exact);
   EXPECT_LE(error, tolerance * exact) << "length " << got.length << " exact " << static_cast<double>(exact)
                                       << " tolerance " << tolerance;
@@ -224,7 +224,7 @@ TEST(ArcLength, AdditiveReversibleAndInvariant) {
       const ArcLength shifted = arc_length(Curve(moved), 0, 1, options);
       const ArcLength back_whole = arc_length(back, 0, 1, options), back_left = arc_length(back, 1 - t, 1, options);
       for (const ArcLength* got : {&whole, &left, &right, &turned, &shifted, &back_whole, &back_left}) {
-        EXPECT_EQ(got->status, ArcLengthStatus::ok);
+        EXPECT_TRUE(got->tolerance_met);
         EXPECT_LE(got->error_bound, tolerance * got->length);
       }
       // The sum and the product by 5 round within u of their value.
@@ -331,6 +331,40 @@ TEST(ArcLength, ParameterAtLengthHoldsTheBoundAtEveryTolerance) {
       }
     }
   }
+}
+
+TEST(ArcLength, ChargesItsEvaluationsAndSumsToTheBudget) {
+  // The cusp cubic, where the quadrature halves toward t = 1/2: with enough work the budget
+  // pays for the answer the overload with a budget of its own gives, bit for bit; every
+  // charge is a whole number of evaluations of |B'| (speed_evaluation_cost(3) = 10 units)
+  // plus the sums, so at least the 7-point rule on each first piece.
+  const Curve cusp({{0, 0}, {1, 1}, {0, 1}, {1, 0}});
+  const ArcLength alone = arc_length(cusp, 0, 1);
+  WorkBudget budget(10000000);
+  const ArcLength charged = arc_length(cusp, 0, 1, {}, budget);
+  EXPECT_FALSE(budget.exhausted());
+  EXPECT_TRUE(charged.tolerance_met);
+  EXPECT_EQ(charged.length, alone.length);
+  EXPECT_EQ(charged.error_bound, alone.error_bound);
+  EXPECT_EQ(charged.pieces.size(), alone.pieces.size());
+  EXPECT_GE(budget.spent(), 7 * speed_evaluation_cost(3) * 2);
+}
+
+TEST(ArcLength, RunningOutOfWorkExhaustsTheBudget) {
+  // The same cusp with room for its first rules and little more: the quadrature stops short
+  // of its tolerance with an honest bound, and says why through the budget.
+  const Curve cusp({{0, 0}, {1, 1}, {0, 1}, {1, 0}});
+  WorkBudget budget(400);
+  const ArcLength got = arc_length(cusp, 0, 1, {}, budget);
+  EXPECT_TRUE(budget.exhausted());
+  EXPECT_FALSE(got.tolerance_met);
+  EXPECT_GT(got.error_bound, kTolerance * got.length);
+  const long double exact = 2 * std::sqrt(2.0L) - 1;
+  EXPECT_LE(std::fabs(static_cast<long double>(got.length) - exact), 1e-2L * exact);
+  // The overload with a budget of its own reports the same as tolerance_met false.
+  ArcLengthOptions tight;
+  tight.max_work = 400;
+  EXPECT_FALSE(arc_length(cusp, 0, 1, tight).tolerance_met);
 }
 
 }  // namespace

@@ -105,7 +105,7 @@ TEST(CertifiedSelfIntersections, OneCallSearchesAndCertifiesUnderOneBudget) {
   EXPECT_TRUE(r.certified.intersections[0].s_interval.contains(0.75));
   EXPECT_EQ(r.certified.uncertified, 0u);
   EXPECT_FALSE(budget.exhausted());
-  EXPECT_EQ(budget.spent(), r.found.stats.work_units + r.certified.work);
+  EXPECT_EQ(budget.spent(), r.found.stats.work + r.certified.work);
 }
 
 TEST(CertifiedSelfIntersections, ACertificationThatFallsShortLeavesTheBudgetUnexhausted) {

@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "core/self_intersect/work_cost.hpp"
+
 namespace bezier::core {
 namespace {
 
@@ -50,9 +52,10 @@ TEST(CollinearSelfOverlaps, CubicFoldingTwiceRetracesEachPairOfPieces) {
   const auto pts = on_line({0, 3, -2, 1}, {-1, 2}, {0.75, -0.5});
   const auto frame = collinear_frame(pts, kTol);
   ASSERT_TRUE(frame.has_value());
-  const CollinearOverlaps found = collinear_self_overlaps(pts, *frame, kTol, 100000);
-  EXPECT_FALSE(found.work_cap_reached);
-  ASSERT_EQ(found.overlaps.size(), 3u);
+  WorkBudget budget;
+  const std::vector<Overlap> found = collinear_self_overlaps(pts, *frame, kTol, budget);
+  EXPECT_FALSE(budget.exhausted());
+  ASSERT_EQ(found.size(), 3u);
   // (The direction, `reversed`, is not this function's: self_intersections() sets it.)
   struct Expected {
     double t_lo, t_hi, s_lo, s_hi;
@@ -61,23 +64,26 @@ TEST(CollinearSelfOverlaps, CubicFoldingTwiceRetracesEachPairOfPieces) {
       {0, 0.25, 0.25, 0.75}, {0, 0.25, 0.75, 1.0}, {0.25, 0.75, 0.75, 1.0}};
   for (const Expected& e : expected) {
     const bool present =
-        std::any_of(found.overlaps.begin(), found.overlaps.end(), [&](const Overlap& o) {
+        std::any_of(found.begin(), found.end(), [&](const Overlap& o) {
           return near(o.t_interval, e.t_lo, e.t_hi) && near(o.s_interval, e.s_lo, e.s_hi);
         });
     EXPECT_TRUE(present) << e.t_lo << " " << e.t_hi << " x " << e.s_lo << " " << e.s_hi;
   }
-  for (std::size_t i = 0; i + 1 < found.overlaps.size(); ++i)
-    EXPECT_LE(found.overlaps[i].t_interval.lo, found.overlaps[i + 1].t_interval.lo);
-  EXPECT_GT(found.work, 0);
+  for (std::size_t i = 0; i + 1 < found.size(); ++i)
+    EXPECT_LE(found[i].t_interval.lo, found[i + 1].t_interval.lo);
+  // Whole steps of the sign runs' subdivision were charged, at least the first.
+  EXPECT_GT(budget.spent(), 0);
+  EXPECT_EQ(budget.spent() % collinear_fold_step_cost(3), 0);
 }
 
 TEST(CollinearSelfOverlaps, QuadraticFoldOverlapsOnThePreimageOfTheCommonRange) {
   const auto pts = on_line({0, 2, 1}, {0, 0}, {1, 1});
   const auto frame = collinear_frame(pts, kTol);
   ASSERT_TRUE(frame.has_value());
-  const CollinearOverlaps found = collinear_self_overlaps(pts, *frame, kTol, 100000);
-  ASSERT_EQ(found.overlaps.size(), 1u);
-  const Overlap& o = found.overlaps[0];
+  WorkBudget budget;
+  const std::vector<Overlap> found = collinear_self_overlaps(pts, *frame, kTol, budget);
+  ASSERT_EQ(found.size(), 1u);
+  const Overlap& o = found[0];
   EXPECT_TRUE(near(o.t_interval, 1.0 / 3, 2.0 / 3)) << o.t_interval.lo << " " << o.t_interval.hi;
   EXPECT_TRUE(near(o.s_interval, 2.0 / 3, 1.0)) << o.s_interval.lo << " " << o.s_interval.hi;
 }
@@ -87,34 +93,40 @@ TEST(CollinearSelfOverlaps, EvenMultiplicityTurningPointDoesNotFold) {
   const auto pts = on_line({-1, 1, -1, 1}, {0, 0}, {1, 0});
   const auto frame = collinear_frame(pts, kTol);
   ASSERT_TRUE(frame.has_value());
-  const CollinearOverlaps found = collinear_self_overlaps(pts, *frame, kTol, 100000);
-  EXPECT_TRUE(found.overlaps.empty());
-  EXPECT_FALSE(found.work_cap_reached);
+  WorkBudget budget;
+  EXPECT_TRUE(collinear_self_overlaps(pts, *frame, kTol, budget).empty());
+  EXPECT_FALSE(budget.exhausted());
 }
 
 TEST(CollinearSelfOverlaps, MonotoneLineHasNoOverlap) {
   const auto pts = on_line({0, 1, 2, 3}, {0, 0}, {1, 2});
   const auto frame = collinear_frame(pts, kTol);
   ASSERT_TRUE(frame.has_value());
-  EXPECT_TRUE(collinear_self_overlaps(pts, *frame, kTol, 100000).overlaps.empty());
+  WorkBudget budget;
+  EXPECT_TRUE(collinear_self_overlaps(pts, *frame, kTol, budget).empty());
 }
 
 TEST(CollinearSelfOverlaps, PointCurveIsOneWholeOverlap) {
   const std::vector<Point2> point{{2, 3}, {2, 3}, {2, 3}};
   const auto frame = collinear_frame(point, kTol);
   ASSERT_TRUE(frame.has_value());
-  const CollinearOverlaps found = collinear_self_overlaps(point, *frame, kTol, 100000);
-  ASSERT_EQ(found.overlaps.size(), 1u);
-  EXPECT_EQ(found.overlaps[0].t_interval, (ParamInterval{0, 1}));
-  EXPECT_EQ(found.overlaps[0].s_interval, (ParamInterval{0, 1}));
+  WorkBudget budget;
+  const std::vector<Overlap> found = collinear_self_overlaps(point, *frame, kTol, budget);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].t_interval, (ParamInterval{0, 1}));
+  EXPECT_EQ(found[0].s_interval, (ParamInterval{0, 1}));
 }
 
-TEST(CollinearSelfOverlaps, WorkCapIsReported) {
+TEST(CollinearSelfOverlaps, RunningOutOfWorkExhaustsTheBudget) {
+  // x' has coefficients 3, -5, 3 of mixed signs: the first step splits it, and a budget of
+  // one step cannot pay for the next.
   const auto pts = on_line({0, 3, -2, 1}, {0, 0}, {1, 0});
   const auto frame = collinear_frame(pts, kTol);
   ASSERT_TRUE(frame.has_value());
-  const CollinearOverlaps found = collinear_self_overlaps(pts, *frame, kTol, 1);
-  EXPECT_TRUE(found.work_cap_reached);
+  WorkBudget budget(collinear_fold_step_cost(3));
+  EXPECT_TRUE(collinear_self_overlaps(pts, *frame, kTol, budget).empty());
+  EXPECT_TRUE(budget.exhausted());
+  EXPECT_EQ(budget.spent(), collinear_fold_step_cost(3));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/curve/evaluate.hpp"
+#include "core/self_intersect/work_cost.hpp"
 #include "tests/support/exact.hpp"
 #include "tests/support/exact_bezier.hpp"
 #include "tests/support/exact_polynomial.hpp"
@@ -493,11 +494,12 @@ TEST(SelfIntersection, WorkCapIsReportedNotHidden) {
   Curve c = composed_with_quadratic({q(1, 4), Rational(-2), Rational(4)});
   std::vector<Point2> pts(c.points().begin(), c.points().end());
   pts[2].y += 0x1p-30 * scale(c);
+  // 2000 boxes' worth of work units: the search stops before the next box would pass them.
   SelfIntersectionOptions options;
-  options.max_work = 2000;
+  options.max_work = 2000 * self_intersection_box_cost(Curve(pts).degree());
   const SelfIntersectionResult r = self_intersections(Curve(pts), options);
   EXPECT_EQ(r.status, IntersectStatus::work_cap_reached);
-  EXPECT_EQ(r.stats.work, 2000);
+  EXPECT_EQ(r.stats.work, options.max_work);
 }
 
 // --- invariances ----------------------------------------------------------------------------
