@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/base/curve.hpp"
+#include "core/base/work_budget.hpp"
 
 namespace bezier::outline {
 
@@ -61,8 +62,11 @@ struct CurveOffset {
 /// is within its control points' largest distance from O(t0), and O within
 /// max |B_p(u) - B_p(0)| + |d| θ, θ the angle spanned by the nonzero control points of the
 /// first hodograph (the normal turns by at most θ, |N(u) - N(0)| <= θ), when θ < π.
-/// Evaluations and de Casteljau steps are in doubles; the bound adds 64 n u S for their
-/// rounding (S the largest coordinate plus |d|).
+/// Evaluations and de Casteljau steps are in doubles, on the curve scaled by a power of two
+/// (exact) so that its coordinates and |d| are at most about 1 and the squared distances the
+/// bound compares neither overflow nor underflow at the tolerances accepted; the bound adds
+/// 64 n u S for their rounding (S the largest coordinate plus |d|). The samples' distances
+/// are compared squared, and the square root taken of the largest only.
 ///
 /// Segment count. The ends, end tangents and cusps are exact, and the handles minimise the
 /// squared distance at 16 samples; this does not reach the sixth order of the geometric
@@ -77,5 +81,15 @@ struct CurveOffset {
 /// coordinates' scale and |d|.
 [[nodiscard]] CurveOffset offset_curve(const core::Curve& curve, double d, double tolerance,
                                        std::int64_t work_left);
+
+/// The fit above on one parameter interval [a, b] of `curve` (0 <= a < b <= 1) on which O
+/// has no cusp and B' no zero inside (a piece of offset_curve, or one the caller cut the
+/// same way, as the stroke does where one side is loose): its cubics, in order of t, are
+/// appended to `out`. The ends O(a), O(b) are computed from the whole curve (B and B' there),
+/// so the cubics of two intervals meeting at a t where B' is not zero share their end point
+/// bit for bit. Work is charged to `budget`; false (nothing appended) when it runs out or a
+/// piece still fails the tolerance after 40 halvings (the budget is then exhausted).
+bool offset_interval(const core::Curve& curve, double a, double b, double d, double tolerance,
+                     core::WorkBudget& budget, std::vector<OffsetCubic>& out);
 
 }  // namespace bezier::outline

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/base/enum_names.hpp"
+#include "core/base/work_budget.hpp"
 #include "core/outline/outline_sink.hpp"
 #include "core/path/path.hpp"
 
@@ -99,17 +100,16 @@ struct StrokeOutline {
   /// status is not ok.
   std::vector<Contour> contours;
   std::size_t segment_count = 0;
-  std::int64_t work = 0;
 };
 
 /// The outline of `path` stroked with `style`, within `tolerance` (ε above; absolute, in the
 /// coordinates' units). Work (de Casteljau coordinate updates, as offset.hpp charges them)
-/// is charged against `max_work`; an outline of more than `max_segments` segments is refused
+/// is charged to `budget` (status work_cap_reached when it runs out); an outline of more than `max_segments` segments is refused
 /// as soon as the count passes it (the disks' and polygons' counts before they are built).
 /// Preconditions: finite coordinates, width > 0, miter_limit >= 1, tolerance >= 1e-9 of the
 /// largest of the coordinates' scale and the width.
 [[nodiscard]] StrokeOutline stroke(const path::Path& path, const StrokeStyle& style,
-                                   double tolerance, std::int64_t max_work,
+                                   double tolerance, core::WorkBudget& budget,
                                    std::size_t max_segments);
 
 }  // namespace bezier::outline

@@ -26,6 +26,13 @@ using core::Point2;
 constexpr std::int64_t kWork = std::int64_t{1} << 36;
 constexpr std::size_t kSegments = 1000000;
 
+/// The stroke with a budget of `work` units.
+StrokeOutline stroke(const path::Path& path, const StrokeStyle& style, double tolerance,
+                     std::int64_t work, std::size_t max_segments) {
+  core::WorkBudget budget(work);
+  return outline::stroke(path, style, tolerance, budget, max_segments);
+}
+
 StrokeStyle round_style(double width) {
   StrokeStyle style;
   style.width = width;
