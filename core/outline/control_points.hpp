@@ -24,16 +24,26 @@ inline void hodograph_into(std::span<const core::Point2> p, ControlPoints& out) 
   for (std::size_t i = 0; i < n; ++i) out[i] = degree * (p[i + 1] - p[i]);
 }
 
-/// B(u) by de Casteljau's algorithm (p not empty).
+/// B(u) (p not empty): up to degree 3 from the Bernstein weights directly (positive weights
+/// summing to 1: within a few units of rounding of the largest coordinate, as de Casteljau's
+/// algorithm is), above by de Casteljau's algorithm.
 inline core::Point2 point_at(std::span<const core::Point2> p, double u) {
-  if (p.size() <= ControlPoints::kInline) {
-    core::Point2 q[ControlPoints::kInline];
-    std::copy(p.begin(), p.end(), q);
-    for (std::size_t k = p.size() - 1; k > 0; --k)
-      for (std::size_t i = 0; i < k; ++i) q[i] = core::lerp(q[i], q[i + 1], u);
-    return q[0];
+  const double v = 1.0 - u;
+  switch (p.size()) {
+    case 1:
+      return p[0];
+    case 2:
+      return v * p[0] + u * p[1];
+    case 3:
+      return (v * v) * p[0] + (2.0 * u * v) * p[1] + (u * u) * p[2];
+    case 4:
+      return (v * v * v) * p[0] + (3.0 * u * v * v) * p[1] + (3.0 * u * u * v) * p[2] +
+             (u * u * u) * p[3];
+    default:
+      break;
   }
-  ControlPoints q(p);
+  ControlPoints q(p.size(), ControlPoints::Uninitialized{});
+  std::copy(p.begin(), p.end(), q.begin());
   for (std::size_t k = p.size() - 1; k > 0; --k)
     for (std::size_t i = 0; i < k; ++i) q[i] = core::lerp(q[i], q[i + 1], u);
   return q[0];

@@ -17,9 +17,16 @@ namespace {
 
 using core::Point2;
 
-constexpr int kFitSamples = 16;
+constexpr int kFitSamples = 12;
 constexpr int kMaxSamples = 4096;
 constexpr int kMaxDepth = 40;
+constexpr int kMostParts = 8;
+
+/// The buffer of one thread's samples of O, reused from fit to fit.
+std::vector<Point2>& sample_buffer() {
+  thread_local std::vector<Point2> buffer;
+  return buffer;
+}
 
 Point2 left_normal(Point2 unit) { return {-unit.y, unit.x}; }
 
@@ -70,132 +77,117 @@ struct ScaledCurve {
   }
 };
 
-struct PieceBound {
-  double bound = std::numeric_limits<double>::infinity();
-  std::int64_t work = 0;
-};
-
-/// The piece's derivatives' control points.
-struct Hodographs {
+/// The piece's derivatives' control points and the bounds offset.hpp takes from them.
+struct PieceShape {
   ControlPoints h1, h2, h3;
-  explicit Hodographs(const ControlPoints& q) {
+  double M1 = 0.0, M2 = 0.0, M3 = 0.0;
+  double m = 0.0;  // least projection of h1 on the direction of B'(1/2); 0 when not positive
+
+  explicit PieceShape(const ControlPoints& q) {
     hodograph_into(q, h1);
     hodograph_into(h1, h2);
     hodograph_into(h2, h3);
+    M1 = std::sqrt(largest_squared_length(h1));
+    M2 = std::sqrt(largest_squared_length(h2));
+    M3 = std::sqrt(largest_squared_length(h3));
+    const Point2 mid = h1.empty() ? Point2{0, 0} : point_at(h1, 0.5);
+    const double mid_squared = squared_length(mid);
+    if (mid_squared > 0.0) {
+      const Point2 direction = mid / std::sqrt(mid_squared);
+      double least = std::numeric_limits<double>::infinity();
+      for (const Point2 p : h1) least = std::min(least, core::dot(p, direction));
+      m = std::max(least, 0.0);
+    }
+  }
+
+  /// offset.hpp's bound of |d N''| (needs m > 0): |d| (|ω'| + ω^2).
+  [[nodiscard]] double normal_second(double d) const {
+    const double w = M1 * M2 / (m * m);
+    const double w1 = M1 * M3 / (m * m) + 2.0 * w * w;
+    return std::fabs(d) * (w1 + w * w);
+  }
+
+  /// The largest |C''(u) - B_p''(u)| (convex hull): C'' (linear) and B_p'' (degree n - 2,
+  /// the second hodograph h2) raised to the degree k = max(1, n - 2), where the raised line
+  /// has the control points C''(i / k), and the largest distance between control points.
+  [[nodiscard]] double second_difference(const std::array<Point2, 4>& c) const {
+    const Point2 c0 = 6.0 * (c[2] - 2.0 * c[1] + c[0]), c1 = 6.0 * (c[3] - 2.0 * c[2] + c[1]);
+    const std::size_t k = std::max<std::size_t>(1, h2.size() > 0 ? h2.size() - 1 : 0);
+    double largest = 0.0;
+    for (std::size_t i = 0; i <= k; ++i) {
+      const double u = static_cast<double>(i) / static_cast<double>(k);
+      const Point2 on_curve = h2.empty() ? Point2{0, 0} : h2[std::min(i, h2.size() - 1)];
+      largest = std::max(largest, squared_length(core::lerp(c0, c1, u) - on_curve));
+    }
+    return std::sqrt(largest);
   }
 };
 
-/// The certified bound of offset.hpp for the piece with control points q (local parameter
-/// u) and the cubic c. The samples stop as soon as one is too far for the tolerance (the
-/// bound is then above it and the piece is halved: no bound of it is reported).
-PieceBound bound_piece(const ControlPoints& q, const Hodographs& h, const std::array<Point2, 4>& c,
-                       double d, double tolerance, Point2 start_normal, Point2 end_normal) {
-  PieceBound result;
-  const auto n = static_cast<std::int64_t>(q.size()) - 1;
-  const double M1 = std::sqrt(largest_squared_length(h.h1));
-  const double M2 = std::sqrt(largest_squared_length(h.h2));
-  const double M3 = std::sqrt(largest_squared_length(h.h3));
-  const Point2 mid = point_at(h.h1, 0.5);
-  const double mid_squared = squared_length(mid);
-  double m = 0.0;
-  if (mid_squared > 0.0) {
-    const Point2 direction = mid / std::sqrt(mid_squared);
-    m = std::numeric_limits<double>::infinity();
-    for (const Point2 p : h.h1) m = std::min(m, core::dot(p, direction));
-  }
-  const double c2 = 6.0 * std::sqrt(std::max(squared_length(c[2] - 2.0 * c[1] + c[0]),
-                                             squared_length(c[3] - 2.0 * c[2] + c[1])));
-  result.work = 8 * (n + 1) * (n + 1);
-  if (m > 0.0) {
-    const double w = M1 * M2 / (m * m);
-    const double w1 = M1 * M3 / (m * m) + 2.0 * w * w;
-    const double o2 = M2 + std::fabs(d) * (w1 + w * w);
-    const double second = c2 + o2;
-    const int samples = static_cast<int>(
-        std::clamp(std::ceil(std::sqrt(second / (2.0 * tolerance))), 1.0, double{kMaxSamples}));
-    const double step = 1.0 / samples;
-    const double remainder = step * step / 8.0 * second;
-    // A sample farther than this fails the piece.
-    const double reach = tolerance - remainder;
-    const double reach_squared = reach > 0.0 ? reach * reach : 0.0;
-    double largest = 0.0;
-    int taken = 0;
-    for (int j = 0; j <= samples; ++j, ++taken) {
-      const double u = j == samples ? 1.0 : j * step;
-      Point2 normal;
-      if (j == 0) {
-        normal = start_normal;
-      } else if (j == samples) {
-        normal = end_normal;
-      } else {
-        const Point2 v = point_at(h.h1, u);
-        const double speed_squared = squared_length(v);
-        if (!(speed_squared > 0.0)) {
-          largest = std::numeric_limits<double>::infinity();
-          break;
-        }
-        normal = left_normal(v / std::sqrt(speed_squared));
+/// O on the piece at u_j = j / K, j = 0..K: the ends given (from the end frames), the others
+/// from the piece's point and hodograph; a sample where B' evaluates to zero is NaN (the fit
+/// leaves it out). Returns whether every sample is a number.
+bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, Point2 start,
+                     Point2 end, int count, std::vector<Point2>& out) {
+  out.resize(static_cast<std::size_t>(count) + 1);
+  out.front() = start;
+  out.back() = end;
+  const double step = 1.0 / count;
+  bool all = true;
+  if (q.size() == 4) {
+    // A cubic (the common case), its point and hodograph from the Bernstein weights inline.
+    const Point2 q0 = q[0], q1 = q[1], q2 = q[2], q3 = q[3];
+    const Point2 g0 = h1[0], g1 = h1[1], g2 = h1[2];
+    Point2* o = out.data();
+    for (int j = 1; j < count; ++j) {
+      const double u = j * step, w = 1.0 - u;
+      const Point2 v = (w * w) * g0 + (2.0 * u * w) * g1 + (u * u) * g2;
+      const double speed_squared = squared_length(v);
+      if (!(speed_squared > 0.0)) {
+        constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+        o[j] = {kNaN, kNaN};
+        all = false;
+        continue;
       }
-      const Point2 o = point_at(q, u) + d * normal;
-      const double v = 1.0 - u;
-      const Point2 on_cubic = (v * v * v) * c[0] + (3.0 * u * v * v) * c[1] +
-                              (3.0 * u * u * v) * c[2] + (u * u * u) * c[3];
-      largest = std::max(largest, squared_length(on_cubic - o));
-      if (largest > reach_squared) {
-        ++taken;
-        break;
-      }
+      const double scale = d / std::sqrt(speed_squared);
+      const Point2 b = (w * w * w) * q0 + (3.0 * u * w * w) * q1 + (3.0 * u * u * w) * q2 +
+                       (u * u * u) * q3;
+      o[j] = {b.x - scale * v.y, b.y + scale * v.x};
     }
-    result.work += static_cast<std::int64_t>(taken) * (n * (n + 1) + 12);
-    result.bound = std::sqrt(largest) + remainder;
+    return all;
   }
-  if (result.bound <= tolerance) return result;
-  // The two balls about O(0).
-  Point2 reference{0, 0};
-  for (const Point2 p : h.h1)
-    if (squared_length(p) > 0.0) reference = reference + p / std::sqrt(squared_length(p));
-  const double reference_squared = squared_length(reference);
-  if (reference_squared > 0.0) {
-    const Point2 r = reference / std::sqrt(reference_squared);
-    double lo = 0.0, hi = 0.0;
-    for (const Point2 p : h.h1) {
-      if (squared_length(p) == 0.0) continue;
-      const double angle = std::atan2(core::cross(r, p), core::dot(r, p));
-      lo = std::min(lo, angle);
-      hi = std::max(hi, angle);
+  for (int j = 1; j < count; ++j) {
+    const double u = j * step;
+    const Point2 v = point_at(h1, u);
+    const double speed_squared = squared_length(v);
+    if (!(speed_squared > 0.0)) {
+      constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+      out[static_cast<std::size_t>(j)] = {kNaN, kNaN};
+      all = false;
+      continue;
     }
-    if (hi - lo < std::numbers::pi) {
-      const Point2 origin = q[0] + d * start_normal;
-      double r_curve = 0.0, r_cubic = 0.0;
-      for (const Point2 p : q) r_curve = std::max(r_curve, squared_length(p - q[0]));
-      for (const Point2 p : c) r_cubic = std::max(r_cubic, squared_length(p - origin));
-      result.bound = std::min(result.bound,
-                              std::sqrt(r_curve) + std::fabs(d) * (hi - lo) + std::sqrt(r_cubic));
-    }
+    out[static_cast<std::size_t>(j)] = point_at(q, u) + d * left_normal(v / std::sqrt(speed_squared));
   }
-  return result;
+  return all;
 }
 
-/// The cubic of offset.hpp for the piece q between the end frames: ends O(0), O(1),
-/// tangents ±T, handles by least squares.
-std::array<Point2, 4> fit(const ControlPoints& q, const ControlPoints& h1, double d,
-                          const EndFrame& start, const EndFrame& end, double direction) {
-  const Point2 p0 = start.point + d * left_normal(start.tangent);
-  const Point2 p3 = end.point + d * left_normal(end.tangent);
-  const Point2 d0 = direction * start.tangent, d3 = direction * end.tangent;
+/// The cubic of offset.hpp with ends p0, p3 and unit end directions d0, d3 (the direction of
+/// travel of O): the handle lengths α, β minimising Σ |C(u_j) - O(u_j)|^2 over the interior
+/// samples of `o` (u_j = j / K).
+std::array<Point2, 4> fit(const std::vector<Point2>& o, Point2 d0, Point2 d3) {
+  const Point2 p0 = o.front(), p3 = o.back();
+  const int count = static_cast<int>(o.size()) - 1;
   double a11 = 0, a12 = 0, a22 = 0, r1 = 0, r2 = 0;
-  for (int j = 1; j < kFitSamples; ++j) {
-    const double u = static_cast<double>(j) / kFitSamples, v = 1.0 - u;
-    const Point2 tangent = point_at(h1, u);
-    const double speed_squared = squared_length(tangent);
-    if (!(speed_squared > 0.0)) continue;
-    const Point2 o = point_at(q, u) + d * left_normal(tangent / std::sqrt(speed_squared));
+  const double d03 = core::dot(d0, d3);
+  for (int j = 1; j < count; ++j) {
+    const double u = static_cast<double>(j) / count, v = 1.0 - u;
     const double b0 = v * v * v, b1 = 3 * u * v * v, b2 = 3 * u * u * v, b3 = u * u * u;
-    const Point2 r = o - ((b0 + b1) * p0 + (b2 + b3) * p3);
+    const Point2 sample = o[static_cast<std::size_t>(j)];
+    if (std::isnan(sample.x)) continue;
+    const Point2 r = sample - ((b0 + b1) * p0 + (b2 + b3) * p3);
     // r ≈ α b1 d0 - β b2 d3
     a11 += b1 * b1;
     a22 += b2 * b2;
-    a12 -= b1 * b2 * core::dot(d0, d3);
+    a12 -= b1 * b2 * d03;
     r1 += b1 * core::dot(r, d0);
     r2 -= b2 * core::dot(r, d3);
   }
@@ -209,7 +201,110 @@ std::array<Point2, 4> fit(const ControlPoints& q, const ControlPoints& h1, doubl
   return {p0, p0 + alpha * d0, p3 - beta * d3, p3};
 }
 
-/// Fits [a, b] of the scaled curve, halving where the bound fails; appends the cubics
+/// The largest |C(u_j) - O(u_j)| over the samples, or the first that exceeds `reach` (a
+/// failing piece needs no more).
+double largest_sampled_error(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
+                             double reach, int& taken) {
+  const int count = static_cast<int>(o.size()) - 1;
+  const double reach_squared = reach > 0.0 ? reach * reach : 0.0;
+  double largest = 0.0;
+  taken = 0;
+  for (int j = 0; j <= count; ++j) {
+    ++taken;
+    const double u = j == count ? 1.0 : static_cast<double>(j) / count, v = 1.0 - u;
+    const Point2 on_cubic = (v * v * v) * c[0] + (3.0 * u * v * v) * c[1] +
+                            (3.0 * u * u * v) * c[2] + (u * u * u) * c[3];
+    largest = std::max(largest, squared_length(on_cubic - o[static_cast<std::size_t>(j)]));
+    if (largest > reach_squared) break;
+  }
+  return std::sqrt(largest);
+}
+
+/// The bound of offset.hpp where m is not positive: two balls about O(0), the cubic within
+/// its control points' largest distance from O(0), O within max |B_p(u) - B_p(0)| + |d| θ
+/// (θ the angle the nonzero first-hodograph control points span, when below π).
+double ball_bound(const ControlPoints& q, const ControlPoints& h1, const std::array<Point2, 4>& c,
+                  double d, Point2 start_normal) {
+  Point2 reference{0, 0};
+  for (const Point2 p : h1)
+    if (squared_length(p) > 0.0) reference = reference + p / std::sqrt(squared_length(p));
+  const double reference_squared = squared_length(reference);
+  if (!(reference_squared > 0.0)) return std::numeric_limits<double>::infinity();
+  const Point2 r = reference / std::sqrt(reference_squared);
+  double lo = 0.0, hi = 0.0;
+  for (const Point2 p : h1) {
+    if (squared_length(p) == 0.0) continue;
+    const double angle = std::atan2(core::cross(r, p), core::dot(r, p));
+    lo = std::min(lo, angle);
+    hi = std::max(hi, angle);
+  }
+  if (!(hi - lo < std::numbers::pi)) return std::numeric_limits<double>::infinity();
+  const Point2 origin = q[0] + d * start_normal;
+  double r_curve = 0.0, r_cubic = 0.0;
+  for (const Point2 p : q) r_curve = std::max(r_curve, squared_length(p - q[0]));
+  for (const Point2 p : c) r_cubic = std::max(r_cubic, squared_length(p - origin));
+  return std::sqrt(r_curve) + std::fabs(d) * (hi - lo) + std::sqrt(r_cubic);
+}
+
+/// A fitted piece: its cubic and its certified bound (infinite when not certified), and how
+/// many times the tolerance its largest sampled error was (to choose the split).
+struct PieceFit {
+  std::array<Point2, 4> cubic;
+  double bound = std::numeric_limits<double>::infinity();
+  double excess = 2.0;
+  std::int64_t work = 0;
+};
+
+/// Fits the piece q between the end frames and bounds the fit (offset.hpp). O is sampled
+/// once, at K + 1 uniform u (K from the bound of |e''|, at least kFitSamples), and the same
+/// samples serve the least squares and the sampled bound; where the fitted cubic bends more
+/// than the estimate of K allowed for, the bound samples O again at the K it needs.
+PieceFit fit_piece(const ControlPoints& q, const EndFrame& start, const EndFrame& end, double d,
+                   double tolerance, double direction, std::vector<Point2>& o) {
+  PieceFit result;
+  const auto n = static_cast<std::int64_t>(q.size()) - 1;
+  const PieceShape shape(q);
+  const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
+  const Point2 p0 = start.point + d * n0, p3 = end.point + d * n1;
+  const Point2 d0 = direction * start.tangent, d3 = direction * end.tangent;
+  result.work = 8 * (n + 1) * (n + 1);
+  auto samples_for = [&](double second) {
+    return static_cast<int>(
+        std::clamp(std::ceil(std::sqrt(second / (2.0 * tolerance))), 1.0, double{kMaxSamples}));
+  };
+  if (shape.m > 0.0) {
+    const double turning = shape.normal_second(d);
+    // C'' - B_p'' is about d N'': K for twice its bound at first.
+    int count = std::max(samples_for(3.0 * turning), kFitSamples);
+    if (!sample_parallel(q, shape.h1, d, p0, p3, count, o)) return result;
+    result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
+    result.cubic = fit(o, d0, d3);
+    const std::array<Point2, 4>& c = result.cubic;
+    const double second = shape.second_difference(c) + turning;
+    const int needed = samples_for(second);
+    if (needed > count) {
+      count = needed;
+      if (!sample_parallel(q, shape.h1, d, p0, p3, count, o)) return result;
+      result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
+    }
+    const double step = 1.0 / count;
+    const double remainder = step * step / 8.0 * second;
+    int taken = 0;
+    const double largest = largest_sampled_error(c, o, tolerance - remainder, taken);
+    result.work += 4 * static_cast<std::int64_t>(taken);
+    result.bound = largest + remainder;
+    result.excess = largest / std::max(tolerance - remainder, 0.25 * tolerance);
+    if (result.bound <= tolerance) return result;
+  } else {
+    sample_parallel(q, shape.h1, d, p0, p3, kFitSamples, o);
+    result.work += kFitSamples * (n * (n + 1) + 12);
+    result.cubic = fit(o, d0, d3);
+  }
+  result.bound = std::min(result.bound, ball_bound(q, shape.h1, result.cubic, d, n0));
+  return result;
+}
+
+/// Fits [a, b] of the scaled curve, splitting where the bound fails; appends the cubics
 /// (scaled back) to `out`.
 bool fit_interval(const ScaledCurve& s, double a, double b, core::WorkBudget& budget,
                   std::vector<OffsetCubic>& out) {
@@ -228,26 +323,26 @@ bool fit_interval(const ScaledCurve& s, double a, double b, core::WorkBudget& bu
     EndFrame start, end;
     int depth;
   };
-  // Depth-first, left half on top: at most one pending right half per level.
-  std::array<Pending, kMaxDepth + 2> stack;
-  std::size_t top = 0;
-  stack[top++] = {a, b, s.frame(a, a, b, true), s.frame(b, a, b, false), 0};
+  // Depth-first, leftmost part on top.
+  std::vector<Pending> stack;
+  stack.reserve(2 * kMostParts);
+  stack.push_back({a, b, s.frame(a, a, b, true), s.frame(b, a, b, false), 0});
   ControlPoints q;
-  while (top > 0) {
-    const Pending piece = stack[--top];
+  std::vector<Point2>& samples = sample_buffer();
+  while (!stack.empty()) {
+    const Pending piece = stack.back();
+    stack.pop_back();
     piece_into(s.points, piece.a, piece.b, q);
-    const Hodographs h(q);
-    const std::array<Point2, 4> c = fit(q, h.h1, s.d, piece.start, piece.end, direction);
-    const PieceBound bound = bound_piece(q, h, c, s.d, s.tolerance, left_normal(piece.start.tangent),
-                                         left_normal(piece.end.tangent));
-    if (!budget.spend(bound.work + 16 * (n + 1) * (n + 1) * 4)) {
+    const PieceFit fitted = fit_piece(q, piece.start, piece.end, s.d, s.tolerance - s.margin,
+                                      direction, samples);
+    if (!budget.spend(fitted.work + 16 * (n + 1) * (n + 1))) {
       out.resize(kept);
       return false;
     }
-    if (bound.bound + s.margin <= s.tolerance) {
+    if (fitted.bound + s.margin <= s.tolerance) {
       OffsetCubic cubic{piece.a, piece.b, {}, 0.0};
-      for (std::size_t i = 0; i < 4; ++i) cubic.points[i] = s.back.times(c[i]);
-      cubic.error_bound = s.back.times(bound.bound + s.margin);
+      for (std::size_t i = 0; i < 4; ++i) cubic.points[i] = s.back.times(fitted.cubic[i]);
+      cubic.error_bound = s.back.times(fitted.bound + s.margin);
       out.push_back(cubic);
       continue;
     }
@@ -256,10 +351,18 @@ bool fit_interval(const ScaledCurve& s, double a, double b, core::WorkBudget& bu
       out.resize(kept);
       return false;
     }
-    const double mid = 0.5 * (piece.a + piece.b);
-    const EndFrame at_mid = s.frame(mid, piece.a, mid, false);
-    stack[top++] = {mid, piece.b, at_mid, piece.end, piece.depth + 1};
-    stack[top++] = {piece.a, mid, piece.start, at_mid, piece.depth + 1};
+    // The error of a fit falls about as the fifth power of the piece's length: parts enough
+    // for the sampled excess (a lower bound of the error's), at least two.
+    const int parts = static_cast<int>(
+        std::clamp(std::ceil(std::pow(fitted.excess, 0.2)), 2.0, double{kMostParts}));
+    EndFrame right = piece.end;
+    for (int k = parts - 1; k >= 0; --k) {
+      const double t0 = k == 0 ? piece.a : piece.a + (piece.b - piece.a) * k / parts;
+      const double t1 = k == parts - 1 ? piece.b : piece.a + (piece.b - piece.a) * (k + 1) / parts;
+      const EndFrame left = k == 0 ? piece.start : s.frame(t0, t0, t1, true);
+      stack.push_back({t0, t1, left, right, piece.depth + 1});
+      right = left;
+    }
   }
   return true;
 }
