@@ -123,15 +123,58 @@ struct PieceShape {
   }
 };
 
+/// The uniform parameters u_j = j / K (j = 0..K) and the cubic Bernstein weights there, with
+/// the sums the least squares of fit() needs, per K: built once per thread for K up to
+/// kTabledCounts, and for a larger K whenever it differs from the last one.
+struct CubicWeights {
+  int count = 0;
+  std::vector<double> u, b0, b1, b2, b3;
+  double s11 = 0.0, s22 = 0.0, s12 = 0.0;  // over the interior j: Σ b1^2, Σ b2^2, Σ b1 b2
+
+  void build(int k) {
+    count = k;
+    const auto size = static_cast<std::size_t>(k) + 1;
+    u.resize(size);
+    b0.resize(size);
+    b1.resize(size);
+    b2.resize(size);
+    b3.resize(size);
+    s11 = s22 = s12 = 0.0;
+    for (std::size_t j = 0; j < size; ++j) {
+      const double x = j == size - 1 ? 1.0 : static_cast<double>(j) / k, y = 1.0 - x;
+      u[j] = x;
+      b0[j] = y * y * y;
+      b1[j] = 3.0 * x * y * y;
+      b2[j] = 3.0 * x * x * y;
+      b3[j] = x * x * x;
+      if (j > 0 && j + 1 < size) {
+        s11 += b1[j] * b1[j];
+        s22 += b2[j] * b2[j];
+        s12 += b1[j] * b2[j];
+      }
+    }
+  }
+};
+
+constexpr int kTabledCounts = 64;
+
+const CubicWeights& cubic_weights(int count) {
+  thread_local std::array<CubicWeights, kTabledCounts + 1> tabled;
+  thread_local CubicWeights last;
+  CubicWeights& w = count <= kTabledCounts ? tabled[static_cast<std::size_t>(count)] : last;
+  if (w.count != count) w.build(count);
+  return w;
+}
+
 /// O on the piece at u_j = j / K, j = 0..K: the ends given (from the end frames), the others
 /// from the piece's point and hodograph; a sample where B' evaluates to zero is NaN (the fit
 /// leaves it out). Returns whether every sample is a number.
 bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, Point2 start,
-                     Point2 end, int count, std::vector<Point2>& out) {
+                     Point2 end, const CubicWeights& weights, std::vector<Point2>& out) {
+  const int count = weights.count;
   out.resize(static_cast<std::size_t>(count) + 1);
   out.front() = start;
   out.back() = end;
-  const double step = 1.0 / count;
   bool all = true;
   if (q.size() == 4) {
     // A cubic (the common case), its point and hodograph from the Bernstein weights inline.
@@ -139,7 +182,8 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
     const Point2 g0 = h1[0], g1 = h1[1], g2 = h1[2];
     Point2* o = out.data();
     for (int j = 1; j < count; ++j) {
-      const double u = j * step, w = 1.0 - u;
+      const auto i = static_cast<std::size_t>(j);
+      const double u = weights.u[i], w = 1.0 - u;
       const Point2 v = (w * w) * g0 + (2.0 * u * w) * g1 + (u * u) * g2;
       const double speed_squared = squared_length(v);
       if (!(speed_squared > 0.0)) {
@@ -149,14 +193,14 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
         continue;
       }
       const double scale = d / std::sqrt(speed_squared);
-      const Point2 b = (w * w * w) * q0 + (3.0 * u * w * w) * q1 + (3.0 * u * u * w) * q2 +
-                       (u * u * u) * q3;
+      const Point2 b = weights.b0[i] * q0 + weights.b1[i] * q1 + weights.b2[i] * q2 +
+                       weights.b3[i] * q3;
       o[j] = {b.x - scale * v.y, b.y + scale * v.x};
     }
     return all;
   }
   for (int j = 1; j < count; ++j) {
-    const double u = j * step;
+    const double u = weights.u[static_cast<std::size_t>(j)];
     const Point2 v = point_at(h1, u);
     const double speed_squared = squared_length(v);
     if (!(speed_squared > 0.0)) {
@@ -173,23 +217,28 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
 /// The cubic of offset.hpp with ends p0, p3 and unit end directions d0, d3 (the direction of
 /// travel of O): the handle lengths α, β minimising Σ |C(u_j) - O(u_j)|^2 over the interior
 /// samples of `o` (u_j = j / K).
-std::array<Point2, 4> fit(const std::vector<Point2>& o, Point2 d0, Point2 d3) {
+std::array<Point2, 4> fit(const std::vector<Point2>& o, const CubicWeights& w, bool all_numbers,
+                          Point2 d0, Point2 d3) {
   const Point2 p0 = o.front(), p3 = o.back();
-  const int count = static_cast<int>(o.size()) - 1;
-  double a11 = 0, a12 = 0, a22 = 0, r1 = 0, r2 = 0;
   const double d03 = core::dot(d0, d3);
-  for (int j = 1; j < count; ++j) {
-    const double u = static_cast<double>(j) / count, v = 1.0 - u;
-    const double b0 = v * v * v, b1 = 3 * u * v * v, b2 = 3 * u * u * v, b3 = u * u * u;
-    const Point2 sample = o[static_cast<std::size_t>(j)];
-    if (std::isnan(sample.x)) continue;
-    const Point2 r = sample - ((b0 + b1) * p0 + (b2 + b3) * p3);
+  double a11 = 0, a12 = 0, a22 = 0, r1 = 0, r2 = 0;
+  if (all_numbers) {
+    a11 = w.s11;
+    a22 = w.s22;
+    a12 = -w.s12 * d03;
+  }
+  for (std::size_t j = 1; j + 1 < o.size(); ++j) {
+    const Point2 sample = o[j];
+    if (!all_numbers) {
+      if (std::isnan(sample.x)) continue;
+      a11 += w.b1[j] * w.b1[j];
+      a22 += w.b2[j] * w.b2[j];
+      a12 -= w.b1[j] * w.b2[j] * d03;
+    }
     // r ≈ α b1 d0 - β b2 d3
-    a11 += b1 * b1;
-    a22 += b2 * b2;
-    a12 -= b1 * b2 * d03;
-    r1 += b1 * core::dot(r, d0);
-    r2 -= b2 * core::dot(r, d3);
+    const Point2 r = sample - ((w.b0[j] + w.b1[j]) * p0 + (w.b2[j] + w.b3[j]) * p3);
+    r1 += w.b1[j] * core::dot(r, d0);
+    r2 -= w.b2[j] * core::dot(r, d3);
   }
   const double det = a11 * a22 - a12 * a12;
   const double chord = std::sqrt(squared_length(p3 - p0));
@@ -204,17 +253,16 @@ std::array<Point2, 4> fit(const std::vector<Point2>& o, Point2 d0, Point2 d3) {
 /// The largest |C(u_j) - O(u_j)| over the samples, or the first that exceeds `reach` (a
 /// failing piece needs no more).
 double largest_sampled_error(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
-                             double reach, int& taken) {
-  const int count = static_cast<int>(o.size()) - 1;
+                             const CubicWeights& w, double reach, int& taken) {
+  const int count = w.count;
   const double reach_squared = reach > 0.0 ? reach * reach : 0.0;
   double largest = 0.0;
   taken = 0;
   for (int j = 0; j <= count; ++j) {
     ++taken;
-    const double u = j == count ? 1.0 : static_cast<double>(j) / count, v = 1.0 - u;
-    const Point2 on_cubic = (v * v * v) * c[0] + (3.0 * u * v * v) * c[1] +
-                            (3.0 * u * u * v) * c[2] + (u * u * u) * c[3];
-    largest = std::max(largest, squared_length(on_cubic - o[static_cast<std::size_t>(j)]));
+    const auto i = static_cast<std::size_t>(j);
+    const Point2 on_cubic = w.b0[i] * c[0] + w.b1[i] * c[1] + w.b2[i] * c[2] + w.b3[i] * c[3];
+    largest = std::max(largest, squared_length(on_cubic - o[i]));
     if (largest > reach_squared) break;
   }
   return std::sqrt(largest);
@@ -276,29 +324,32 @@ PieceFit fit_piece(const ControlPoints& q, const EndFrame& start, const EndFrame
     const double turning = shape.normal_second(d);
     // C'' - B_p'' is about d N'': K for twice its bound at first.
     int count = std::max(samples_for(3.0 * turning), kFitSamples);
-    if (!sample_parallel(q, shape.h1, d, p0, p3, count, o)) return result;
+    const CubicWeights* weights = &cubic_weights(count);
+    if (!sample_parallel(q, shape.h1, d, p0, p3, *weights, o)) return result;
     result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
-    result.cubic = fit(o, d0, d3);
+    result.cubic = fit(o, *weights, true, d0, d3);
     const std::array<Point2, 4>& c = result.cubic;
     const double second = shape.second_difference(c) + turning;
     const int needed = samples_for(second);
     if (needed > count) {
       count = needed;
-      if (!sample_parallel(q, shape.h1, d, p0, p3, count, o)) return result;
+      weights = &cubic_weights(count);
+      if (!sample_parallel(q, shape.h1, d, p0, p3, *weights, o)) return result;
       result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
     }
     const double step = 1.0 / count;
     const double remainder = step * step / 8.0 * second;
     int taken = 0;
-    const double largest = largest_sampled_error(c, o, tolerance - remainder, taken);
+    const double largest = largest_sampled_error(c, o, *weights, tolerance - remainder, taken);
     result.work += 4 * static_cast<std::int64_t>(taken);
     result.bound = largest + remainder;
     result.excess = largest / std::max(tolerance - remainder, 0.25 * tolerance);
     if (result.bound <= tolerance) return result;
   } else {
-    sample_parallel(q, shape.h1, d, p0, p3, kFitSamples, o);
+    const CubicWeights& weights = cubic_weights(kFitSamples);
+    const bool all_numbers = sample_parallel(q, shape.h1, d, p0, p3, weights, o);
     result.work += kFitSamples * (n * (n + 1) + 12);
-    result.cubic = fit(o, d0, d3);
+    result.cubic = fit(o, weights, all_numbers, d0, d3);
   }
   result.bound = std::min(result.bound, ball_bound(q, shape.h1, result.cubic, d, n0));
   return result;
@@ -323,9 +374,9 @@ bool fit_interval(const ScaledCurve& s, double a, double b, core::WorkBudget& bu
     EndFrame start, end;
     int depth;
   };
-  // Depth-first, leftmost part on top.
-  std::vector<Pending> stack;
-  stack.reserve(2 * kMostParts);
+  // Depth-first, leftmost part on top (one buffer per thread, reused).
+  thread_local std::vector<Pending> stack;
+  stack.clear();
   stack.push_back({a, b, s.frame(a, a, b, true), s.frame(b, a, b, false), 0});
   ControlPoints q;
   std::vector<Point2>& samples = sample_buffer();

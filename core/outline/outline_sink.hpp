@@ -80,7 +80,8 @@ class OutlineSink {
 inline void append_to_chain(Contour& chain, core::Curve curve, double snap) {
   if (!chain.empty() && !(chain.back().back() == curve.front())) {
     const core::Point2 end = chain.back().back();
-    if (core::length(curve.front() - end) <= snap) {
+    const core::Point2 gap = curve.front() - end;
+    if (gap.x * gap.x + gap.y * gap.y <= snap * snap) {
       std::vector<core::Point2> points(curve.points().begin(), curve.points().end());
       points.front() = end;
       curve = core::Curve(std::move(points));
@@ -97,7 +98,8 @@ inline void close_chain(Contour& chain, double snap) {
   if (chain.empty()) return;
   const core::Point2 start = chain.front().front();
   if (chain.back().back() == start) return;
-  if (core::length(chain.back().back() - start) <= snap && chain.back().degree() > 1) {
+  const core::Point2 gap = chain.back().back() - start;
+  if (gap.x * gap.x + gap.y * gap.y <= snap * snap && chain.back().degree() > 1) {
     std::vector<core::Point2> points(chain.back().points().begin(), chain.back().points().end());
     points.back() = start;
     chain.back() = core::Curve(std::move(points));

@@ -198,12 +198,15 @@ bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
     if (!sink.add(circle(centres.back(), sizes.disk_radius, sizes.circle_pieces))) return false;
   }
 
-  std::vector<double> ends{0.0};
-  for (const double t : stationary) ends.push_back(t);
-  ends.push_back(1.0);
-  std::vector<OffsetCubic> cubics;
-  for (std::size_t k = 0; k + 1 < ends.size(); ++k) {
-    const double a = ends[k], b = ends[k + 1];
+  // The stretches' ends: 0, the zeros of B', 1.
+  const std::size_t stretch_count = stationary.size() + 1;
+  auto stretch_end = [&](std::size_t k) {
+    return k == 0 ? 0.0 : k == stretch_count ? 1.0 : stationary[k - 1];
+  };
+  thread_local std::vector<OffsetCubic> cubics;
+  core::Coeffs cuts;
+  for (std::size_t k = 0; k < stretch_count; ++k) {
+    const double a = stretch_end(k), b = stretch_end(k + 1);
     if (!(b > a)) continue;
     StretchEdges stretch;
     stretch.start = point_at(segment.points(), a);
@@ -211,13 +214,19 @@ bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
     for (int side = 0; side < 2; ++side) {
       const double sign = side == 0 ? 1.0 : -1.0;
       Contour& chain = side == 0 ? stretch.left : stretch.right;
-      std::vector<double> cuts{a, b};
+      // The side's cuts in (a, b): its cusps there (ascending, offset_cusps.hpp).
+      std::size_t inside = 0;
       for (const double t : cusps[side])
-        if (t > a && t < b) cuts.push_back(t);
-      std::sort(cuts.begin(), cuts.end());
-      cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+        if (t > a && t < b) ++inside;
+      cuts.resize(inside + 2, core::Coeffs::Uninitialized{});
+      cuts[0] = a;
+      std::size_t next = 1;
+      for (const double t : cusps[side])
+        if (t > a && t < b) cuts[next++] = t;
+      cuts[next] = b;
       for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
         const double c0 = cuts[j], c1 = cuts[j + 1];
+        if (!(c1 > c0)) continue;
         const bool tight =
             sign * curvature_at(h1, h2, 0.5 * (c0 + c1)) * factor.times(sizes.reach) > 1.0;
         if (!tight) {

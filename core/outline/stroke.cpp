@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "core/outline/segment_cover.hpp"
@@ -28,14 +29,14 @@ std::vector<std::size_t> drawn_segments(const path::Path& path, const path::Subp
   return out;
 }
 
-/// Whether B' at the curve's start (at_start) or end is zero to end_tangent's threshold, so
-/// that the direction there is a higher derivative's.
+/// Whether B' at the curve's start (at_start) or end is zero to end_tangent's threshold
+/// (tangent_limits.hpp), so that the direction there is a higher derivative's.
 bool stationary_end(const core::Curve& curve, bool at_start) {
   const auto p = curve.points();
   const std::size_t n = p.size() - 1;
   const Point2 v = at_start ? p[1] - p[0] : p[n] - p[n - 1];
-  double scale = 0.0;
-  for (const Point2 q : p) scale = std::max(scale, core::length(q));
+  double scale = std::numeric_limits<double>::min();
+  for (const Point2 q : p) scale = std::max(scale, core::max_abs_coordinate(q));
   return !(core::length(static_cast<double>(n) * v) >
            1e-12 * scale * static_cast<double>(p.size()));
 }

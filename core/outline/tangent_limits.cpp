@@ -13,13 +13,28 @@ namespace {
 
 using core::Point2;
 
+/// The largest absolute coordinate of the control points (at least the least normal double).
+double control_scale(std::span<const Point2> p) {
+  double s = std::numeric_limits<double>::min();
+  for (const Point2 q : p) s = std::max(s, core::max_abs_coordinate(q));
+  return s;
+}
+
 }  // namespace
 
 Point2 end_tangent(std::span<const Point2> p, bool at_start) {
+  if (p.size() >= 2) {
+    // The first derivative, when it is not zero to the threshold below (the common case).
+    const Point2 v = at_start ? p[1] - p[0] : p[p.size() - 1] - p[p.size() - 2];
+    const double len = core::length(static_cast<double>(p.size() - 1) * v);
+    const double scale = control_scale(p);
+    if (len > 1e-12 * scale * static_cast<double>(p.size())) {
+      return (1.0 / len) * (static_cast<double>(p.size() - 1) * v);
+    }
+  }
   ControlPoints h(p), next;
   double sign = 1.0;
-  const double scale =
-      std::max(std::sqrt(largest_squared_length(h)), std::numeric_limits<double>::min());
+  const double scale = control_scale(p);
   const double least = 1e-12 * scale * static_cast<double>(p.size());
   while (h.size() > 1) {
     hodograph_into(h, next);
@@ -35,7 +50,8 @@ Point2 end_tangent(std::span<const Point2> p, bool at_start) {
 std::vector<double> stationary_points(const core::Curve& curve) {
   ControlPoints h;
   hodograph_into(curve.points(), h);
-  const double scale = std::sqrt(largest_squared_length(h));
+  double scale = 0.0;
+  for (const Point2 q : h) scale = std::max(scale, core::length(q));
   if (h.size() < 2 || scale == 0.0) return {};
   core::Coeffs xs(h.size(), core::Coeffs::Uninitialized{}), ys(h.size(), core::Coeffs::Uninitialized{});
   for (std::size_t i = 0; i < h.size(); ++i) {
