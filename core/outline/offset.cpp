@@ -247,6 +247,18 @@ std::array<Point2, 4> fit(const std::vector<Point2>& o, const CubicWeights& w, b
     alpha = (r1 * a22 - r2 * a12) / det;
     beta = (a11 * r2 - a12 * r1) / det;
   }
+  // A negative handle would start the cubic backwards, against O's direction of travel on
+  // the piece, and fold it back next to its end (a hook beside a cusp of O, where O's speed
+  // vanishes and the least squares can prefer it): the handle is 0 instead, and the other
+  // one the least squares with it fixed.
+  if (alpha < 0.0) {
+    alpha = 0.0;
+    beta = a22 > 0.0 ? std::max(r2 / a22, 0.0) : 0.0;
+  }
+  if (beta < 0.0) {
+    beta = 0.0;
+    alpha = a11 > 0.0 ? std::max(r1 / a11, 0.0) : 0.0;
+  }
   return {p0, p0 + alpha * d0, p3 - beta * d3, p3};
 }
 
@@ -310,6 +322,16 @@ struct PieceFit {
 PieceFit fit_piece(const ControlPoints& q, const EndFrame& start, const EndFrame& end, double d,
                    double tolerance, double direction, std::vector<Point2>& o) {
   PieceFit result;
+  if (q.size() == 2) {
+    // A line's parallel curve is the line through the offset ends: the cubic with its
+    // handles at the thirds, exact.
+    const Point2 n0 = left_normal(start.tangent);
+    const Point2 p0 = start.point + d * n0, p3 = end.point + d * n0;
+    result.cubic = {p0, core::lerp(p0, p3, 1.0 / 3.0), core::lerp(p0, p3, 2.0 / 3.0), p3};
+    result.bound = 0.0;
+    result.work = 16;
+    return result;
+  }
   const auto n = static_cast<std::int64_t>(q.size()) - 1;
   const PieceShape shape(q);
   const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
