@@ -324,10 +324,11 @@ PieceFit fit_piece(const ControlPoints& q, const EndFrame& start, const EndFrame
   PieceFit result;
   if (q.size() == 2) {
     // A line's parallel curve is the line through the offset ends: the cubic with its
-    // handles at the thirds, exact.
+    // handles a third of the chord along the line from each end, exact.
     const Point2 n0 = left_normal(start.tangent);
     const Point2 p0 = start.point + d * n0, p3 = end.point + d * n0;
-    result.cubic = {p0, core::lerp(p0, p3, 1.0 / 3.0), core::lerp(p0, p3, 2.0 / 3.0), p3};
+    const double third = std::sqrt(squared_length(p3 - p0)) / 3.0;
+    result.cubic = {p0, p0 + third * start.tangent, p3 - third * start.tangent, p3};
     result.bound = 0.0;
     result.work = 16;
     return result;
