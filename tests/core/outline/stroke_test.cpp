@@ -355,6 +355,14 @@ TEST(Stroke, SmoothOpenChainIsOneContourAndItsCaps) {
   EXPECT_EQ(o.contours.size(), 3u);
 }
 
+TEST(Stroke, SmoothClosedSubpathWithACuspIsWalkedFromTheCusp) {
+  // Both joints are smooth (directions (1, -1) at (10, 0) and (1, 1) at (0, 0) on both
+  // sides), and B' vanishes at t = 1/2 of the first cubic: the one run starts and ends there.
+  const std::string data = "M0 0 C10 10 0 10 10 0 C11 -1 -1 -1 0 0 Z";
+  check_round_stroke(data, 1.0, 1e-3);
+  check_round_stroke(data, 3.0, 1e-3, 9);
+}
+
 TEST(Stroke, RoundIsTheDistanceSetForSmoothSplines) {
   // Closed Catmull-Rom splines through random points about a circle (tangent-continuous
   // joints up to the rounding of the control points), stroked narrow and wide: the wide ones
