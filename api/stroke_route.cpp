@@ -139,8 +139,8 @@ Reply stroke_route(const nlohmann::json& request, const Limits& limits) {
   }
 
   const auto max_segments = static_cast<std::size_t>(limits.max_path_segments);
-  outline::StrokeOutline outline =
-      outline::stroke(p, style, tolerance, limits.max_work, max_segments);
+  core::WorkBudget budget(limits.max_work);
+  outline::StrokeOutline outline = outline::stroke(p, style, tolerance, budget, max_segments);
   if (outline.status == outline::StrokeStatus::work_cap_reached) {
     return problem_reply(ProblemKind::work_cap,
                          "stroking the path took more than the per-request work cap of " +
@@ -162,7 +162,7 @@ Reply stroke_route(const nlohmann::json& request, const Limits& limits) {
       for (core::Curve& s : c) boundary.segments.push_back(std::move(s));
     }
     const region::BooleanResult result = region::simplify(
-        region::Region{std::move(boundary), region::FillRule::nonzero}, limits.max_work - outline.work);
+        region::Region{std::move(boundary), region::FillRule::nonzero}, budget.remaining());
     if (result.status == region::BooleanStatus::work_cap_reached) {
       return problem_reply(ProblemKind::work_cap,
                            "removing the outline's overlaps took more than the per-request work "

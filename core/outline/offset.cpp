@@ -1,12 +1,13 @@
 #include "core/outline/offset.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
-#include "core/curve/evaluate.hpp"
-#include "core/curve/polar.hpp"
+#include "core/numeric/power_of_two.hpp"
+#include "core/outline/control_points.hpp"
 #include "core/outline/offset_cusps.hpp"
 #include "core/outline/tangent_limits.hpp"
 
@@ -16,207 +17,459 @@ namespace {
 
 using core::Point2;
 
-constexpr int kFitSamples = 16;
+constexpr int kFitSamples = 12;
 constexpr int kMaxSamples = 4096;
 constexpr int kMaxDepth = 40;
+constexpr int kMostParts = 8;
 
-std::vector<Point2> hodograph(std::span<const Point2> p) {
-  const double n = static_cast<double>(p.size() - 1);
-  std::vector<Point2> h;
-  for (std::size_t i = 0; i + 1 < p.size(); ++i) h.push_back(n * (p[i + 1] - p[i]));
-  return h;
+/// The buffer of one thread's samples of O, reused from fit to fit.
+std::vector<Point2>& sample_buffer() {
+  thread_local std::vector<Point2> buffer;
+  return buffer;
 }
 
-Point2 plain_point(std::vector<Point2> q, double t) {
-  for (std::size_t k = q.size() - 1; k > 0; --k)
-    for (std::size_t i = 0; i < k; ++i) q[i] = core::lerp(q[i], q[i + 1], t);
-  return q.front();
-}
+Point2 left_normal(Point2 unit) { return {-unit.y, unit.x}; }
 
-double largest_norm(const std::vector<Point2>& q) {
-  double m = 0.0;
-  for (const Point2 p : q) m = std::max(m, core::length(p));
-  return m;
-}
-
-Point2 left_normal(Point2 unit) {
-  return {-unit.y, unit.x};
-}
-
-struct PieceBound {
-  double bound = std::numeric_limits<double>::infinity();
-  std::int64_t work = 0;
+/// A point of B and the unit tangent there (the limit from the piece's side where B' = 0).
+struct EndFrame {
+  Point2 point;
+  Point2 tangent;
 };
 
-/// The certified bound of offset.hpp for the piece with control points q (local parameter u)
-/// and the cubic c.
-PieceBound bound_piece(const std::vector<Point2>& q, const std::array<Point2, 4>& c, double d,
-                       double tolerance, Point2 start_normal, Point2 end_normal) {
-  PieceBound result;
-  const auto n = static_cast<std::int64_t>(q.size()) - 1;
-  const std::vector<Point2> h1 = hodograph(q);
-  const std::vector<Point2> h2 = h1.size() > 1 ? hodograph(h1) : std::vector<Point2>{{0, 0}};
-  const std::vector<Point2> h3 = h2.size() > 1 ? hodograph(h2) : std::vector<Point2>{{0, 0}};
-  const double M1 = largest_norm(h1), M2 = largest_norm(h2), M3 = largest_norm(h3);
-  const Point2 mid = plain_point(h1, 0.5);
-  const double mid_len = core::length(mid);
-  double m = 0.0;
-  if (mid_len > 0.0) {
-    m = std::numeric_limits<double>::infinity();
-    for (const Point2 p : h1) m = std::min(m, core::dot(p, mid / mid_len));
+/// The curve and the distances scaled by 2^e so that the largest of its coordinates and |d|
+/// is in [1, 2): exact, and the squares the bound compares stay normal doubles.
+struct ScaledCurve {
+  ControlPoints points, first, second;  // B, B', B''
+  double d = 0.0, tolerance = 0.0;
+  double least_speed = 0.0;  // |B'| below this counts as zero (end_tangent's threshold)
+  core::PowerOfTwo back{0};
+  double margin = 0.0;  // offset.hpp's rounding allowance, scaled
+
+  ScaledCurve(const core::Curve& curve, double distance, double tol) {
+    const double size = std::max(core::scale(curve), std::fabs(distance));
+    const int e = size > 0.0 ? -core::exponent_of(size) : 0;
+    const core::PowerOfTwo factor(e);
+    points.resize(curve.points().size(), ControlPoints::Uninitialized{});
+    for (std::size_t i = 0; i < points.size(); ++i) points[i] = factor.times(curve.points()[i]);
+    d = factor.times(distance);
+    tolerance = factor.times(tol);
+    back = core::PowerOfTwo(-e);
+    hodograph_into(points, first);
+    hodograph_into(first, second);
+    const auto n = static_cast<double>(curve.degree());
+    least_speed = 1e-12 * n * std::sqrt(largest_squared_length(points));
+    margin = 64.0 * n * std::numeric_limits<double>::epsilon() *
+             (std::sqrt(largest_squared_length(points)) + std::fabs(d));
   }
-  const double c2 = 6.0 * std::max({core::length(c[2] - 2.0 * c[1] + c[0]),
-                                    core::length(c[3] - 2.0 * c[2] + c[1])});
-  result.work = 8 * (n + 1) * (n + 1);
-  if (m > 0.0) {
+
+  /// B(t) and its unit tangent, computed from the whole curve so that two intervals meeting
+  /// at t share them; where |B'(t)| is below the threshold, the limit from the piece
+  /// [a, b] at its start (at_start) or end.
+  [[nodiscard]] EndFrame frame(double t, double a, double b, bool at_start) const {
+    const Point2 v = first.empty() ? Point2{0, 0} : point_at(first, t);
+    const double speed_squared = squared_length(v);
+    if (speed_squared > least_speed * least_speed) {
+      return {point_at(points, t), v / std::sqrt(speed_squared)};
+    }
+    ControlPoints piece;
+    piece_into(points, a, b, piece);
+    return {point_at(points, t), end_tangent(piece, at_start)};
+  }
+};
+
+/// The piece's derivatives' control points and the bounds offset.hpp takes from them.
+struct PieceShape {
+  ControlPoints h1, h2, h3;
+  double M1 = 0.0, M2 = 0.0, M3 = 0.0;
+  double m = 0.0;  // least projection of h1 on the direction of B'(1/2); 0 when not positive
+
+  explicit PieceShape(const ControlPoints& q) {
+    hodograph_into(q, h1);
+    hodograph_into(h1, h2);
+    hodograph_into(h2, h3);
+    M1 = std::sqrt(largest_squared_length(h1));
+    M2 = std::sqrt(largest_squared_length(h2));
+    M3 = std::sqrt(largest_squared_length(h3));
+    const Point2 mid = h1.empty() ? Point2{0, 0} : point_at(h1, 0.5);
+    const double mid_squared = squared_length(mid);
+    if (mid_squared > 0.0) {
+      const Point2 direction = mid / std::sqrt(mid_squared);
+      double least = std::numeric_limits<double>::infinity();
+      for (const Point2 p : h1) least = std::min(least, core::dot(p, direction));
+      m = std::max(least, 0.0);
+    }
+  }
+
+  /// offset.hpp's bound of |d N''| (needs m > 0): |d| (|ω'| + ω^2).
+  [[nodiscard]] double normal_second(double d) const {
     const double w = M1 * M2 / (m * m);
     const double w1 = M1 * M3 / (m * m) + 2.0 * w * w;
-    const double o2 = M2 + std::fabs(d) * (w1 + w * w);
-    const double second = c2 + o2;
-    const int samples = static_cast<int>(
-        std::clamp(std::ceil(std::sqrt(second / (2.0 * tolerance))), 1.0, double{kMaxSamples}));
-    const double h = 1.0 / samples;
+    return std::fabs(d) * (w1 + w * w);
+  }
+
+  /// The largest |C''(u) - B_p''(u)| (convex hull): C'' (linear) and B_p'' (degree n - 2,
+  /// the second hodograph h2) raised to the degree k = max(1, n - 2), where the raised line
+  /// has the control points C''(i / k), and the largest distance between control points.
+  [[nodiscard]] double second_difference(const std::array<Point2, 4>& c) const {
+    const Point2 c0 = 6.0 * (c[2] - 2.0 * c[1] + c[0]), c1 = 6.0 * (c[3] - 2.0 * c[2] + c[1]);
+    const std::size_t k = std::max<std::size_t>(1, h2.size() > 0 ? h2.size() - 1 : 0);
     double largest = 0.0;
-    const std::vector<Point2> cubic(c.begin(), c.end());
-    for (int j = 0; j <= samples; ++j) {
-      const double u = j == samples ? 1.0 : j * h;
-      Point2 normal;
-      if (j == 0) {
-        normal = start_normal;
-      } else if (j == samples) {
-        normal = end_normal;
-      } else {
-        const Point2 v = plain_point(h1, u);
-        const double len = core::length(v);
-        if (!(len > 0.0)) {
-          largest = std::numeric_limits<double>::infinity();
-          break;
-        }
-        normal = left_normal(v / len);
+    for (std::size_t i = 0; i <= k; ++i) {
+      const double u = static_cast<double>(i) / static_cast<double>(k);
+      const Point2 on_curve = h2.empty() ? Point2{0, 0} : h2[std::min(i, h2.size() - 1)];
+      largest = std::max(largest, squared_length(core::lerp(c0, c1, u) - on_curve));
+    }
+    return std::sqrt(largest);
+  }
+};
+
+/// The uniform parameters u_j = j / K (j = 0..K) and the cubic Bernstein weights there, with
+/// the sums the least squares of fit() needs, per K: built once per thread for K up to
+/// kTabledCounts, and for a larger K whenever it differs from the last one.
+struct CubicWeights {
+  int count = 0;
+  std::vector<double> u, b0, b1, b2, b3;
+  double s11 = 0.0, s22 = 0.0, s12 = 0.0;  // over the interior j: Σ b1^2, Σ b2^2, Σ b1 b2
+
+  void build(int k) {
+    count = k;
+    const auto size = static_cast<std::size_t>(k) + 1;
+    u.resize(size);
+    b0.resize(size);
+    b1.resize(size);
+    b2.resize(size);
+    b3.resize(size);
+    s11 = s22 = s12 = 0.0;
+    for (std::size_t j = 0; j < size; ++j) {
+      const double x = j == size - 1 ? 1.0 : static_cast<double>(j) / k, y = 1.0 - x;
+      u[j] = x;
+      b0[j] = y * y * y;
+      b1[j] = 3.0 * x * y * y;
+      b2[j] = 3.0 * x * x * y;
+      b3[j] = x * x * x;
+      if (j > 0 && j + 1 < size) {
+        s11 += b1[j] * b1[j];
+        s22 += b2[j] * b2[j];
+        s12 += b1[j] * b2[j];
       }
-      const Point2 o = plain_point(q, u) + d * normal;
-      largest = std::max(largest, core::length(plain_point(cubic, u) - o));
-    }
-    result.work += static_cast<std::int64_t>(samples + 1) * (n * (n + 1) + 12);
-    result.bound = largest + h * h / 8.0 * second;
-  }
-  // The two balls about O(0).
-  Point2 reference{0, 0};
-  for (const Point2 p : h1)
-    if (core::length(p) > 0.0) reference = reference + p / core::length(p);
-  const double reference_len = core::length(reference);
-  if (reference_len > 0.0) {
-    const Point2 r = reference / reference_len;
-    double lo = 0.0, hi = 0.0;
-    for (const Point2 p : h1) {
-      if (core::length(p) == 0.0) continue;
-      const double angle = std::atan2(core::cross(r, p), core::dot(r, p));
-      lo = std::min(lo, angle);
-      hi = std::max(hi, angle);
-    }
-    if (hi - lo < std::numbers::pi) {
-      const Point2 origin = q.front() + d * start_normal;
-      double r_curve = 0.0, r_cubic = 0.0;
-      for (const Point2 p : q) r_curve = std::max(r_curve, core::length(p - q.front()));
-      for (const Point2 p : c) r_cubic = std::max(r_cubic, core::length(p - origin));
-      result.bound = std::min(result.bound, r_curve + std::fabs(d) * (hi - lo) + r_cubic);
     }
   }
-  return result;
+};
+
+constexpr int kTabledCounts = 64;
+
+const CubicWeights& cubic_weights(int count) {
+  thread_local std::array<CubicWeights, kTabledCounts + 1> tabled;
+  thread_local CubicWeights last;
+  CubicWeights& w = count <= kTabledCounts ? tabled[static_cast<std::size_t>(count)] : last;
+  if (w.count != count) w.build(count);
+  return w;
 }
 
-/// The cubic of offset.hpp for the piece q: ends O(0), O(1), tangents ±T, handles by least
-/// squares.
-std::array<Point2, 4> fit(const std::vector<Point2>& q, double d, Point2 t0, Point2 t1,
-                          double direction) {
-  const Point2 p0 = q.front() + d * left_normal(t0);
-  const Point2 p3 = q.back() + d * left_normal(t1);
-  const Point2 d0 = direction * t0, d3 = direction * t1;
-  const std::vector<Point2> h1 = hodograph(q);
+/// O on the piece at u_j = j / K, j = 0..K: the ends given (from the end frames), the others
+/// from the piece's point and hodograph; a sample where B' evaluates to zero is NaN (the fit
+/// leaves it out). Returns whether every sample is a number.
+bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, Point2 start,
+                     Point2 end, const CubicWeights& weights, std::vector<Point2>& out) {
+  const int count = weights.count;
+  out.resize(static_cast<std::size_t>(count) + 1);
+  out.front() = start;
+  out.back() = end;
+  bool all = true;
+  if (q.size() == 4) {
+    // A cubic (the common case), its point and hodograph from the Bernstein weights inline.
+    const Point2 q0 = q[0], q1 = q[1], q2 = q[2], q3 = q[3];
+    const Point2 g0 = h1[0], g1 = h1[1], g2 = h1[2];
+    Point2* o = out.data();
+    for (int j = 1; j < count; ++j) {
+      const auto i = static_cast<std::size_t>(j);
+      const double u = weights.u[i], w = 1.0 - u;
+      const Point2 v = (w * w) * g0 + (2.0 * u * w) * g1 + (u * u) * g2;
+      const double speed_squared = squared_length(v);
+      if (!(speed_squared > 0.0)) {
+        constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+        o[j] = {kNaN, kNaN};
+        all = false;
+        continue;
+      }
+      const double scale = d / std::sqrt(speed_squared);
+      const Point2 b = weights.b0[i] * q0 + weights.b1[i] * q1 + weights.b2[i] * q2 +
+                       weights.b3[i] * q3;
+      o[j] = {b.x - scale * v.y, b.y + scale * v.x};
+    }
+    return all;
+  }
+  for (int j = 1; j < count; ++j) {
+    const double u = weights.u[static_cast<std::size_t>(j)];
+    const Point2 v = point_at(h1, u);
+    const double speed_squared = squared_length(v);
+    if (!(speed_squared > 0.0)) {
+      constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+      out[static_cast<std::size_t>(j)] = {kNaN, kNaN};
+      all = false;
+      continue;
+    }
+    out[static_cast<std::size_t>(j)] = point_at(q, u) + d * left_normal(v / std::sqrt(speed_squared));
+  }
+  return all;
+}
+
+/// The cubic of offset.hpp with ends p0, p3 and unit end directions d0, d3 (the direction of
+/// travel of O): the handle lengths α, β minimising Σ |C(u_j) - O(u_j)|^2 over the interior
+/// samples of `o` (u_j = j / K).
+std::array<Point2, 4> fit(const std::vector<Point2>& o, const CubicWeights& w, bool all_numbers,
+                          Point2 d0, Point2 d3) {
+  const Point2 p0 = o.front(), p3 = o.back();
+  const double d03 = core::dot(d0, d3);
   double a11 = 0, a12 = 0, a22 = 0, r1 = 0, r2 = 0;
-  for (int j = 1; j < kFitSamples; ++j) {
-    const double u = static_cast<double>(j) / kFitSamples, v = 1.0 - u;
-    const Point2 tangent = plain_point(h1, u);
-    const double len = core::length(tangent);
-    if (!(len > 0.0)) continue;
-    const Point2 o = plain_point(q, u) + d * left_normal(tangent / len);
-    const double b0 = v * v * v, b1 = 3 * u * v * v, b2 = 3 * u * u * v, b3 = u * u * u;
-    const Point2 r = o - ((b0 + b1) * p0 + (b2 + b3) * p3);
+  if (all_numbers) {
+    a11 = w.s11;
+    a22 = w.s22;
+    a12 = -w.s12 * d03;
+  }
+  for (std::size_t j = 1; j + 1 < o.size(); ++j) {
+    const Point2 sample = o[j];
+    if (!all_numbers) {
+      if (std::isnan(sample.x)) continue;
+      a11 += w.b1[j] * w.b1[j];
+      a22 += w.b2[j] * w.b2[j];
+      a12 -= w.b1[j] * w.b2[j] * d03;
+    }
     // r ≈ α b1 d0 - β b2 d3
-    a11 += b1 * b1;
-    a22 += b2 * b2;
-    a12 -= b1 * b2 * core::dot(d0, d3);
-    r1 += b1 * core::dot(r, d0);
-    r2 -= b2 * core::dot(r, d3);
+    const Point2 r = sample - ((w.b0[j] + w.b1[j]) * p0 + (w.b2[j] + w.b3[j]) * p3);
+    r1 += w.b1[j] * core::dot(r, d0);
+    r2 -= w.b2[j] * core::dot(r, d3);
   }
   const double det = a11 * a22 - a12 * a12;
-  const double chord = core::length(p3 - p0);
+  const double chord = std::sqrt(squared_length(p3 - p0));
   double alpha = chord / 3, beta = chord / 3;
   if (std::fabs(det) > 1e-12 * a11 * a22) {
     alpha = (r1 * a22 - r2 * a12) / det;
     beta = (a11 * r2 - a12 * r1) / det;
   }
+  // A negative handle would start the cubic backwards, against O's direction of travel on
+  // the piece, and fold it back next to its end (a hook beside a cusp of O, where O's speed
+  // vanishes and the least squares can prefer it): the handle is 0 instead, and the other
+  // one the least squares with it fixed.
+  if (alpha < 0.0) {
+    alpha = 0.0;
+    beta = a22 > 0.0 ? std::max(r2 / a22, 0.0) : 0.0;
+  }
+  if (beta < 0.0) {
+    beta = 0.0;
+    alpha = a11 > 0.0 ? std::max(r1 / a11, 0.0) : 0.0;
+  }
   return {p0, p0 + alpha * d0, p3 - beta * d3, p3};
+}
+
+/// The largest |C(u_j) - O(u_j)| over the samples, or the first that exceeds `reach` (a
+/// failing piece needs no more).
+double largest_sampled_error(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
+                             const CubicWeights& w, double reach, int& taken) {
+  const int count = w.count;
+  const double reach_squared = reach > 0.0 ? reach * reach : 0.0;
+  double largest = 0.0;
+  taken = 0;
+  for (int j = 0; j <= count; ++j) {
+    ++taken;
+    const auto i = static_cast<std::size_t>(j);
+    const Point2 on_cubic = w.b0[i] * c[0] + w.b1[i] * c[1] + w.b2[i] * c[2] + w.b3[i] * c[3];
+    largest = std::max(largest, squared_length(on_cubic - o[i]));
+    if (largest > reach_squared) break;
+  }
+  return std::sqrt(largest);
+}
+
+/// The bound of offset.hpp where m is not positive: two balls about O(0), the cubic within
+/// its control points' largest distance from O(0), O within max |B_p(u) - B_p(0)| + |d| θ
+/// (θ the angle the nonzero first-hodograph control points span, when below π).
+double ball_bound(const ControlPoints& q, const ControlPoints& h1, const std::array<Point2, 4>& c,
+                  double d, Point2 start_normal) {
+  Point2 reference{0, 0};
+  for (const Point2 p : h1)
+    if (squared_length(p) > 0.0) reference = reference + p / std::sqrt(squared_length(p));
+  const double reference_squared = squared_length(reference);
+  if (!(reference_squared > 0.0)) return std::numeric_limits<double>::infinity();
+  const Point2 r = reference / std::sqrt(reference_squared);
+  double lo = 0.0, hi = 0.0;
+  for (const Point2 p : h1) {
+    if (squared_length(p) == 0.0) continue;
+    const double angle = std::atan2(core::cross(r, p), core::dot(r, p));
+    lo = std::min(lo, angle);
+    hi = std::max(hi, angle);
+  }
+  if (!(hi - lo < std::numbers::pi)) return std::numeric_limits<double>::infinity();
+  const Point2 origin = q[0] + d * start_normal;
+  double r_curve = 0.0, r_cubic = 0.0;
+  for (const Point2 p : q) r_curve = std::max(r_curve, squared_length(p - q[0]));
+  for (const Point2 p : c) r_cubic = std::max(r_cubic, squared_length(p - origin));
+  return std::sqrt(r_curve) + std::fabs(d) * (hi - lo) + std::sqrt(r_cubic);
+}
+
+/// A fitted piece: its cubic and its certified bound (infinite when not certified), and how
+/// many times the tolerance its largest sampled error was (to choose the split).
+struct PieceFit {
+  std::array<Point2, 4> cubic;
+  double bound = std::numeric_limits<double>::infinity();
+  double excess = 2.0;
+  std::int64_t work = 0;
+};
+
+/// Fits the piece q between the end frames and bounds the fit (offset.hpp). O is sampled
+/// once, at K + 1 uniform u (K from the bound of |e''|, at least kFitSamples), and the same
+/// samples serve the least squares and the sampled bound; where the fitted cubic bends more
+/// than the estimate of K allowed for, the bound samples O again at the K it needs.
+PieceFit fit_piece(const ControlPoints& q, const EndFrame& start, const EndFrame& end, double d,
+                   double tolerance, double direction, std::vector<Point2>& o) {
+  PieceFit result;
+  if (q.size() == 2) {
+    // A line's parallel curve is the line through the offset ends: the cubic with its
+    // handles a third of the chord along the line from each end, exact.
+    const Point2 n0 = left_normal(start.tangent);
+    const Point2 p0 = start.point + d * n0, p3 = end.point + d * n0;
+    const double third = std::sqrt(squared_length(p3 - p0)) / 3.0;
+    result.cubic = {p0, p0 + third * start.tangent, p3 - third * start.tangent, p3};
+    result.bound = 0.0;
+    result.work = 16;
+    return result;
+  }
+  const auto n = static_cast<std::int64_t>(q.size()) - 1;
+  const PieceShape shape(q);
+  const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
+  const Point2 p0 = start.point + d * n0, p3 = end.point + d * n1;
+  const Point2 d0 = direction * start.tangent, d3 = direction * end.tangent;
+  result.work = 8 * (n + 1) * (n + 1);
+  auto samples_for = [&](double second) {
+    return static_cast<int>(
+        std::clamp(std::ceil(std::sqrt(second / (2.0 * tolerance))), 1.0, double{kMaxSamples}));
+  };
+  if (shape.m > 0.0) {
+    const double turning = shape.normal_second(d);
+    // C'' - B_p'' is about d N'': K for twice its bound at first.
+    int count = std::max(samples_for(3.0 * turning), kFitSamples);
+    const CubicWeights* weights = &cubic_weights(count);
+    if (!sample_parallel(q, shape.h1, d, p0, p3, *weights, o)) return result;
+    result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
+    result.cubic = fit(o, *weights, true, d0, d3);
+    const std::array<Point2, 4>& c = result.cubic;
+    const double second = shape.second_difference(c) + turning;
+    const int needed = samples_for(second);
+    if (needed > count) {
+      count = needed;
+      weights = &cubic_weights(count);
+      if (!sample_parallel(q, shape.h1, d, p0, p3, *weights, o)) return result;
+      result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
+    }
+    const double step = 1.0 / count;
+    const double remainder = step * step / 8.0 * second;
+    int taken = 0;
+    const double largest = largest_sampled_error(c, o, *weights, tolerance - remainder, taken);
+    result.work += 4 * static_cast<std::int64_t>(taken);
+    result.bound = largest + remainder;
+    result.excess = largest / std::max(tolerance - remainder, 0.25 * tolerance);
+    if (result.bound <= tolerance) return result;
+  } else {
+    const CubicWeights& weights = cubic_weights(kFitSamples);
+    const bool all_numbers = sample_parallel(q, shape.h1, d, p0, p3, weights, o);
+    result.work += kFitSamples * (n * (n + 1) + 12);
+    result.cubic = fit(o, weights, all_numbers, d0, d3);
+  }
+  result.bound = std::min(result.bound, ball_bound(q, shape.h1, result.cubic, d, n0));
+  return result;
+}
+
+/// Fits [a, b] of the scaled curve, splitting where the bound fails; appends the cubics
+/// (scaled back) to `out`.
+bool fit_interval(const ScaledCurve& s, double a, double b, core::WorkBudget& budget,
+                  std::vector<OffsetCubic>& out) {
+  const std::size_t kept = out.size();
+  const auto n = static_cast<std::int64_t>(s.points.size()) - 1;
+  // The direction of O on this interval: the sign of 1 - d κ at its middle.
+  const double middle = 0.5 * (a + b);
+  const Point2 v = s.first.empty() ? Point2{0, 0} : point_at(s.first, middle);
+  const Point2 acc = s.second.empty() ? Point2{0, 0} : point_at(s.second, middle);
+  const double speed = std::sqrt(squared_length(v));
+  const double direction =
+      speed > 0.0 && s.d * core::cross(v, acc) / (speed * speed * speed) > 1.0 ? -1.0 : 1.0;
+
+  struct Pending {
+    double a, b;
+    EndFrame start, end;
+    int depth;
+  };
+  // Depth-first, leftmost part on top (one buffer per thread, reused).
+  thread_local std::vector<Pending> stack;
+  stack.clear();
+  stack.push_back({a, b, s.frame(a, a, b, true), s.frame(b, a, b, false), 0});
+  ControlPoints q;
+  std::vector<Point2>& samples = sample_buffer();
+  while (!stack.empty()) {
+    const Pending piece = stack.back();
+    stack.pop_back();
+    piece_into(s.points, piece.a, piece.b, q);
+    const PieceFit fitted = fit_piece(q, piece.start, piece.end, s.d, s.tolerance - s.margin,
+                                      direction, samples);
+    if (!budget.spend(fitted.work + 16 * (n + 1) * (n + 1))) {
+      out.resize(kept);
+      return false;
+    }
+    if (fitted.bound + s.margin <= s.tolerance) {
+      OffsetCubic cubic{piece.a, piece.b, {}, 0.0};
+      for (std::size_t i = 0; i < 4; ++i) cubic.points[i] = s.back.times(fitted.cubic[i]);
+      cubic.error_bound = s.back.times(fitted.bound + s.margin);
+      out.push_back(cubic);
+      continue;
+    }
+    if (piece.depth >= kMaxDepth) {
+      budget.exhaust();
+      out.resize(kept);
+      return false;
+    }
+    // The error of a fit falls about as the fifth power of the piece's length: parts enough
+    // for the sampled excess (a lower bound of the error's), at least two.
+    const int parts = static_cast<int>(
+        std::clamp(std::ceil(std::pow(fitted.excess, 0.2)), 2.0, double{kMostParts}));
+    EndFrame right = piece.end;
+    for (int k = parts - 1; k >= 0; --k) {
+      const double t0 = k == 0 ? piece.a : piece.a + (piece.b - piece.a) * k / parts;
+      const double t1 = k == parts - 1 ? piece.b : piece.a + (piece.b - piece.a) * (k + 1) / parts;
+      const EndFrame left = k == 0 ? piece.start : s.frame(t0, t0, t1, true);
+      stack.push_back({t0, t1, left, right, piece.depth + 1});
+      right = left;
+    }
+  }
+  return true;
 }
 
 }  // namespace
 
+bool offset_interval(const core::Curve& curve, double a, double b, double d, double tolerance,
+                     core::WorkBudget& budget, std::vector<OffsetCubic>& out) {
+  const ScaledCurve scaled(curve, d, tolerance);
+  return fit_interval(scaled, a, b, budget, out);
+}
+
 CurveOffset offset_curve(const core::Curve& curve, double d, double tolerance,
                          std::int64_t work_left) {
   CurveOffset result;
+  core::WorkBudget budget(work_left);
   std::vector<double> cuts{0.0, 1.0};
   for (const double t : offset_cusps(curve, d)) cuts.push_back(t);
   for (const double t : stationary_points(curve)) cuts.push_back(t);
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
   const auto n = static_cast<std::int64_t>(curve.degree());
-  result.work += 64 * n * n * n;
-  const double margin = 64.0 * static_cast<double>(n) * std::numeric_limits<double>::epsilon() *
-                        (core::scale(curve) + std::fabs(d));
-
-  struct Pending {
-    double a, b;
-    int depth;
-  };
+  budget.charge(64 * n * n * n);
+  const ScaledCurve scaled(curve, d, tolerance);
   for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
     if (!(cuts[k + 1] > cuts[k])) continue;
-    std::vector<Pending> stack{{cuts[k], cuts[k + 1], 0}};
-    // The direction of O on this piece: the sign of 1 - d κ at its middle.
-    const core::Curve around = core::portion(curve, cuts[k], cuts[k + 1]);
-    const std::vector<Point2> h1 = hodograph(around.points());
-    const std::vector<Point2> h2 = h1.size() > 1 ? hodograph(h1) : std::vector<Point2>{{0, 0}};
-    const Point2 v = plain_point(h1, 0.5), acc = plain_point(h2, 0.5);
-    const double speed = core::length(v);
-    const double direction =
-        speed > 0.0 && d * core::cross(v, acc) / (speed * speed * speed) > 1.0 ? -1.0 : 1.0;
-    while (!stack.empty()) {
-      const Pending piece = stack.back();
-      stack.pop_back();
-      const core::Curve part = core::portion(curve, piece.a, piece.b);
-      const std::vector<Point2> q(part.points().begin(), part.points().end());
-      const Point2 t0 = end_tangent(q, true), t1 = end_tangent(q, false);
-      const std::array<Point2, 4> c = fit(q, d, t0, t1, direction);
-      const PieceBound bound = bound_piece(q, c, d, tolerance, left_normal(t0), left_normal(t1));
-      result.work += bound.work + 16 * (n + 1) * (n + 1) * 4;
-      if (result.work > work_left) {
-        result.status = OffsetStatus::work_cap_reached;
-        result.cubics.clear();
-        return result;
-      }
-      if (bound.bound + margin <= tolerance || piece.depth >= kMaxDepth) {
-        if (!(bound.bound + margin <= tolerance)) {
-          result.status = OffsetStatus::work_cap_reached;
-          result.cubics.clear();
-          return result;
-        }
-        result.cubics.push_back({piece.a, piece.b, c, bound.bound + margin});
-        continue;
-      }
-      const double mid = 0.5 * (piece.a + piece.b);
-      stack.push_back({mid, piece.b, piece.depth + 1});
-      stack.push_back({piece.a, mid, piece.depth + 1});
+    if (!fit_interval(scaled, cuts[k], cuts[k + 1], budget, result.cubics)) {
+      result.status = OffsetStatus::work_cap_reached;
+      result.cubics.clear();
+      break;
     }
   }
+  result.work = budget.spent();
   return result;
 }
 

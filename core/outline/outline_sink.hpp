@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/base/curve.hpp"
+#include "core/base/work_budget.hpp"
 
 namespace bezier::outline {
 
@@ -19,25 +20,25 @@ enum class StrokeStatus {
   too_many_segments,  ///< the outline needs more segments than the caller's limit; no outline
 };
 
-/// Where the stroke's parts collect their contours: it charges their work against one budget
-/// and counts their segments against one limit, and stops taking either once one is passed
-/// (the status says which).
+/// Where the stroke's parts collect their contours: it charges their work to the caller's
+/// budget (core/base/work_budget.hpp) and counts their segments against one limit, and stops
+/// taking either once one is passed (the status says which).
 class OutlineSink {
  public:
-  OutlineSink(std::int64_t max_work, std::size_t max_segments)
-      : max_work_(max_work), max_segments_(max_segments) {}
+  OutlineSink(core::WorkBudget& budget, std::size_t max_segments)
+      : budget_(budget), max_segments_(max_segments) {}
 
-  /// Charges `units` of work; false (status work_cap_reached) once the total passes the budget.
+  /// Charges `units` of work; false (status work_cap_reached) once the budget is spent.
   bool charge(std::int64_t units) {
     if (status_ != StrokeStatus::ok) return false;
-    work_ += units;
-    if (work_ > max_work_) status_ = StrokeStatus::work_cap_reached;
+    if (!budget_.spend(units)) status_ = StrokeStatus::work_cap_reached;
     return status_ == StrokeStatus::ok;
   }
 
   /// Stops the stroke as out of work: a step that cannot finish within any budget (a fit or
-  /// a halving that reached its depth limit).
+  /// a halving that reached its depth limit), or a part that found the budget exhausted.
   void fail_work() {
+    budget_.exhaust();
     if (status_ == StrokeStatus::ok) status_ = StrokeStatus::work_cap_reached;
   }
 
@@ -61,15 +62,14 @@ class OutlineSink {
 
   [[nodiscard]] bool ok() const noexcept { return status_ == StrokeStatus::ok; }
   [[nodiscard]] StrokeStatus status() const noexcept { return status_; }
-  [[nodiscard]] std::int64_t work() const noexcept { return work_; }
-  [[nodiscard]] std::int64_t work_left() const noexcept { return max_work_ - work_; }
+  /// The budget, for the parts that charge it themselves (the offset fits).
+  [[nodiscard]] core::WorkBudget& budget() noexcept { return budget_; }
   [[nodiscard]] std::size_t segment_count() const noexcept { return segments_; }
   [[nodiscard]] std::vector<Contour> take_contours() { return std::move(contours_); }
 
  private:
-  std::int64_t max_work_;
+  core::WorkBudget& budget_;
   std::size_t max_segments_;
-  std::int64_t work_ = 0;
   std::size_t segments_ = 0;
   StrokeStatus status_ = StrokeStatus::ok;
   std::vector<Contour> contours_;
@@ -80,7 +80,8 @@ class OutlineSink {
 inline void append_to_chain(Contour& chain, core::Curve curve, double snap) {
   if (!chain.empty() && !(chain.back().back() == curve.front())) {
     const core::Point2 end = chain.back().back();
-    if (core::length(curve.front() - end) <= snap) {
+    const core::Point2 gap = curve.front() - end;
+    if (gap.x * gap.x + gap.y * gap.y <= snap * snap) {
       std::vector<core::Point2> points(curve.points().begin(), curve.points().end());
       points.front() = end;
       curve = core::Curve(std::move(points));
@@ -97,7 +98,8 @@ inline void close_chain(Contour& chain, double snap) {
   if (chain.empty()) return;
   const core::Point2 start = chain.front().front();
   if (chain.back().back() == start) return;
-  if (core::length(chain.back().back() - start) <= snap && chain.back().degree() > 1) {
+  const core::Point2 gap = chain.back().back() - start;
+  if (gap.x * gap.x + gap.y * gap.y <= snap * snap && chain.back().degree() > 1) {
     std::vector<core::Point2> points(chain.back().points().begin(), chain.back().points().end());
     points.back() = start;
     chain.back() = core::Curve(std::move(points));

@@ -10,6 +10,8 @@
 #include "core/measure/bernstein_product.hpp"
 #include "core/measure/frame.hpp"
 #include "core/outline/offset.hpp"
+#include "core/numeric/power_of_two.hpp"
+#include "core/outline/control_points.hpp"
 #include "core/outline/offset_cusps.hpp"
 #include "core/outline/stroke_shapes.hpp"
 #include "core/outline/tangent_limits.hpp"
@@ -105,123 +107,150 @@ void cover_tight_side(const core::Curve& q, double side, const CoverSizes& sizes
   }
 }
 
-/// The piece q itself as one side's edge when it is at most a cubic, else its fit at distance 0.
-bool curve_edge(const core::Curve& q, const CoverSizes& sizes, OutlineSink& sink,
-                std::vector<core::Curve>& edge) {
-  if (q.degree() <= 3) {
-    edge.push_back(q);
+/// The piece [a, b] of the segment itself as a tight side's edge, its ends B(a), B(b) as
+/// the loose pieces' ends are computed (from the whole curve): its control points when it is
+/// at most a cubic, else its fit at distance 0.
+bool curve_edge(const core::Curve& segment, double a, double b, const CoverSizes& sizes,
+                OutlineSink& sink, Contour& chain) {
+  if (segment.degree() <= 3) {
+    ControlPoints q;
+    piece_into(segment.points(), a, b, q);
+    q[0] = point_at(segment.points(), a);
+    q[q.size() - 1] = point_at(segment.points(), b);
+    append_to_chain(chain, core::Curve(std::vector<Point2>(q.begin(), q.end())), sizes.snap);
     return true;
   }
-  const CurveOffset fit = offset_curve(q, 0.0, sizes.fit_tolerance, sink.work_left());
-  if (!sink.charge(fit.work) || fit.status != OffsetStatus::ok) {
+  std::vector<OffsetCubic> fit;
+  if (!offset_interval(segment, a, b, 0.0, sizes.fit_tolerance, sink.budget(), fit)) {
     sink.fail_work();
     return false;
   }
-  for (const OffsetCubic& c : fit.cubics) {
-    edge.push_back(core::Curve({c.points[0], c.points[1], c.points[2], c.points[3]}));
+  for (const OffsetCubic& c : fit) {
+    append_to_chain(chain, core::Curve({c.points[0], c.points[1], c.points[2], c.points[3]}),
+                    sizes.snap);
   }
   return true;
 }
 
-/// The cubics of `offset` (a whole segment's parallel curve) for the parameters [a, b]: those
-/// inside it, and the parts of those that straddle a or b (the cubic's sub-curve between the
-/// parameters that the fit's linear correspondence u = (t - t0) / (t1 - t0) assigns to a and b,
-/// which keeps the cubic's bound for that part).
-void offset_edge(const CurveOffset& offset, double a, double b, std::vector<core::Curve>& edge) {
-  for (const OffsetCubic& c : offset.cubics) {
-    const double lo = std::max(a, c.t0), hi = std::min(b, c.t1);
-    if (!(hi > lo)) continue;
-    core::Curve cubic({c.points[0], c.points[1], c.points[2], c.points[3]});
-    if (lo > c.t0 || hi < c.t1) {
-      cubic = core::portion(cubic, (lo - c.t0) / (c.t1 - c.t0), (hi - c.t0) / (c.t1 - c.t0));
-    }
-    edge.push_back(std::move(cubic));
-  }
+/// The signed curvature at t from the whole curve's first and second hodographs (0 where
+/// B'(t) = 0).
+double curvature_at(const ControlPoints& h1, const ControlPoints& h2, double t) {
+  if (h2.empty()) return 0.0;
+  const Point2 v = point_at(h1, t), a = point_at(h2, t);
+  const double speed_squared = squared_length(v);
+  if (!(speed_squared > 0.0)) return 0.0;
+  return core::cross(v, a) / (speed_squared * std::sqrt(speed_squared));
 }
 
-/// Extends an open chain by a line to `point` when its end is farther than `snap` from it.
-void pass_through(Contour& chain, Point2 point, double snap) {
-  if (chain.empty() || core::length(chain.back().back() - point) <= snap) return;
-  chain.push_back(core::Curve({chain.back().back(), point}));
+/// Whether R |κ| < 1 on the whole curve and B' has no zero, by segment_cover.hpp's bound.
+bool loose_everywhere(const ControlPoints& h1, const ControlPoints& h2, double reach) {
+  if (h1.empty()) return false;
+  const Point2 mid = point_at(h1, 0.5);
+  const double mid_squared = squared_length(mid);
+  if (!(mid_squared > 0.0)) return false;
+  const Point2 direction = mid / std::sqrt(mid_squared);
+  double m = std::numeric_limits<double>::infinity();
+  for (const Point2 p : h1) m = std::min(m, core::dot(p, direction));
+  if (!(m > 0.0)) return false;
+  const double M1 = std::sqrt(largest_squared_length(h1));
+  const double M2 = std::sqrt(largest_squared_length(h2));
+  // The factor covers the rounding of the few operations above.
+  return reach * M1 * M2 < (1.0 - 1e-9) * m * m * m;
 }
 
 }  // namespace
 
-void cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineSink& sink) {
+bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineSink& sink,
+                   SegmentCover& out) {
   const auto n = static_cast<std::int64_t>(segment.degree());
-  if (!sink.charge(3 * 64 * n * n * n)) return;
-  std::vector<double> cuts{0.0, 1.0};
-  for (const double t : offset_cusps(segment, sizes.reach)) cuts.push_back(t);
-  for (const double t : offset_cusps(segment, -sizes.reach)) cuts.push_back(t);
-  const std::vector<double> stationary = stationary_points(segment);
-  for (const double t : stationary) cuts.push_back(t);
-  std::sort(cuts.begin(), cuts.end());
-  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  out.stretches.clear();
+  out.cusp_at_start = out.cusp_at_end = false;
+  if (!sink.charge(16 * (n + 1) * (n + 1))) return false;
+  // The hodographs of the segment scaled by a power of two (exact): the bound's cube stays
+  // a normal double.
+  const double size = std::max(core::scale(segment), sizes.reach);
+  const int e = -core::exponent_of(size);
+  const core::PowerOfTwo factor(e);
+  ControlPoints scaled(segment.points()), h1, h2;
+  for (Point2& p : scaled) p = factor.times(p);
+  hodograph_into(scaled, h1);
+  hodograph_into(h1, h2);
+
+  std::vector<double> cusps[2];  // left (+R), right (-R)
+  std::vector<double> stationary;
+  if (!loose_everywhere(h1, h2, factor.times(sizes.reach))) {
+    if (!sink.charge(3 * 64 * n * n * n)) return false;
+    cusps[0] = offset_cusps(segment, sizes.reach);
+    cusps[1] = offset_cusps(segment, -sizes.reach);
+    stationary = stationary_points(segment);
+  }
+  for (const std::vector<double>& side : cusps) {
+    for (const double t : side) {
+      if (t == 0.0) out.cusp_at_start = true;
+      if (t == 1.0) out.cusp_at_end = true;
+    }
+  }
 
   std::vector<Point2> centres;
   for (const double t : stationary) {
-    if (!sink.charge(16 * static_cast<std::int64_t>(sizes.circle_pieces))) return;
+    if (!sink.charge(16 * static_cast<std::int64_t>(sizes.circle_pieces))) return false;
     centres.push_back(core::evaluate(segment, t));
-    if (!sink.add(circle(centres.back(), sizes.disk_radius, sizes.circle_pieces))) return;
+    if (!sink.add(circle(centres.back(), sizes.disk_radius, sizes.circle_pieces))) return false;
   }
 
-  // The parallel curves at ±R of the whole segment, fitted once (offset.hpp cuts them at the
-  // same cusps and zeros of B' as above), each side's cubics taken by the pieces where that
-  // side is loose.
-  std::optional<CurveOffset> parallel[2];
-  auto loose_edge = [&](int side, double a, double b, std::vector<core::Curve>& edge) {
-    if (!parallel[side]) {
-      parallel[side] = offset_curve(segment, side == 0 ? sizes.reach : -sizes.reach,
-                                    sizes.fit_tolerance, sink.work_left());
-      if (!sink.charge(parallel[side]->work) || parallel[side]->status != OffsetStatus::ok) {
-        sink.fail_work();
-        return false;
+  // The stretches' ends: 0, the zeros of B', 1.
+  const std::size_t stretch_count = stationary.size() + 1;
+  auto stretch_end = [&](std::size_t k) {
+    return k == 0 ? 0.0 : k == stretch_count ? 1.0 : stationary[k - 1];
+  };
+  thread_local std::vector<OffsetCubic> cubics;
+  core::Coeffs cuts;
+  for (std::size_t k = 0; k < stretch_count; ++k) {
+    const double a = stretch_end(k), b = stretch_end(k + 1);
+    if (!(b > a)) continue;
+    StretchEdges stretch;
+    stretch.start = point_at(segment.points(), a);
+    stretch.end = point_at(segment.points(), b);
+    for (int side = 0; side < 2; ++side) {
+      const double sign = side == 0 ? 1.0 : -1.0;
+      Contour& chain = side == 0 ? stretch.left : stretch.right;
+      // The side's cuts in (a, b): its cusps there (ascending, offset_cusps.hpp).
+      std::size_t inside = 0;
+      for (const double t : cusps[side])
+        if (t > a && t < b) ++inside;
+      cuts.resize(inside + 2, core::Coeffs::Uninitialized{});
+      cuts[0] = a;
+      std::size_t next = 1;
+      for (const double t : cusps[side])
+        if (t > a && t < b) cuts[next++] = t;
+      cuts[next] = b;
+      for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
+        const double c0 = cuts[j], c1 = cuts[j + 1];
+        if (!(c1 > c0)) continue;
+        const bool tight =
+            sign * curvature_at(h1, h2, 0.5 * (c0 + c1)) * factor.times(sizes.reach) > 1.0;
+        if (!tight) {
+          cubics.clear();
+          if (!offset_interval(segment, c0, c1, sign * sizes.reach, sizes.fit_tolerance,
+                               sink.budget(), cubics)) {
+            sink.fail_work();
+            return false;
+          }
+          for (const OffsetCubic& c : cubics) {
+            append_to_chain(chain,
+                            core::Curve({c.points[0], c.points[1], c.points[2], c.points[3]}),
+                            sizes.snap);
+          }
+          continue;
+        }
+        if (!curve_edge(segment, c0, c1, sizes, sink, chain)) return false;
+        cover_tight_side(core::portion(segment, c0, c1), sign, sizes, sink, centres);
+        if (!sink.ok()) return false;
       }
     }
-    offset_edge(*parallel[side], a, b, edge);
-    return true;
-  };
-
-  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
-    if (!(cuts[k + 1] > cuts[k])) continue;
-    const core::Curve q = core::portion(segment, cuts[k], cuts[k + 1]);
-    const std::optional<core::Frame<Point2>> middle = core::frame(q, 0.5);
-    const double kappa = middle ? middle->curvature : 0.0;
-    const bool tight_left = kappa * sizes.reach > 1.0;
-    const bool tight_right = -kappa * sizes.reach > 1.0;
-
-    std::vector<core::Curve> left, right;
-    if (!(tight_left ? curve_edge(q, sizes, sink, left)
-                     : loose_edge(0, cuts[k], cuts[k + 1], left))) {
-      return;
-    }
-    if (!(tight_right ? curve_edge(q, sizes, sink, right)
-                      : loose_edge(1, cuts[k], cuts[k + 1], right))) {
-      return;
-    }
-    // Counter-clockwise (y up): the right edge forward, the left edge backward, joined by the
-    // normal segments at the piece's ends. At a cut inside the segment each normal segment
-    // passes through B there (q's end point, the same double for both pieces at the cut,
-    // core::portion), so that the neighbouring piece's normal segment at that cut, or its half
-    // from B to one side where that piece's side is tight (its edge is the curve itself), is
-    // the same line run backwards, an exact overlap: unsplit, the two would be distinct lines
-    // a few ulps apart along their common length, which the boolean simplify cannot tell
-    // apart. At the segment's ends the neighbour is a disk or a join's polygon, and the
-    // normal segment stays one line.
-    Contour chain;
-    for (core::Curve& c : right) append_to_chain(chain, std::move(c), sizes.snap);
-    if (cuts[k + 1] < 1.0) pass_through(chain, q.back(), sizes.snap);
-    for (auto it = left.rbegin(); it != left.rend(); ++it) {
-      append_to_chain(chain, core::reversed(*it), sizes.snap);
-    }
-    if (cuts[k] > 0.0) pass_through(chain, q.front(), sizes.snap);
-    close_chain(chain, sizes.snap);
-    if (!sink.add(std::move(chain))) return;
-
-    if (tight_left) cover_tight_side(q, 1.0, sizes, sink, centres);
-    if (tight_right) cover_tight_side(q, -1.0, sizes, sink, centres);
-    if (!sink.ok()) return;
+    out.stretches.push_back(std::move(stretch));
   }
+  return sink.ok();
 }
 
 }  // namespace bezier::outline

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "core/base/curve.hpp"
 #include "core/outline/outline_sink.hpp"
@@ -22,32 +23,58 @@ struct CoverSizes {
   double snap = 0.0;
 };
 
-/// Adds to `sink` contours that together cover, with winding numbers >= 0 that are positive
-/// only within R + fit_tolerance of the segment, every point B(t) + s N(t) (t in [0, 1],
-/// N the unit left normal) with |s| <= r and s κ(t) <= 1 (the points whose nearest point on
-/// the segment may be B(t), see stroke.hpp), and a disk about each interior zero of B'.
+/// One stretch of a segment between its zeros of B' (or its ends): the two edges of its
+/// cover, each an open chain in order of t (stroke.cpp joins the stretches of consecutive
+/// segments into contours). `left` is the side s = +R, `right` the side s = -R.
+struct StretchEdges {
+  Contour left;
+  Contour right;
+  core::Point2 start, end;  ///< B at the stretch's ends
+};
+
+/// What cover_segment gives for one segment.
+struct SegmentCover {
+  /// In order of t; more than one where B' vanishes inside the segment.
+  std::vector<StretchEdges> stretches;
+  /// A cusp of a parallel curve at ±R (the radius of curvature equals R) at t = 0 or t = 1:
+  /// the ribbon's Jacobian vanishes at that end, so the joint there is not smooth.
+  bool cusp_at_start = false;
+  bool cusp_at_end = false;
+};
+
+/// The edges of the region that covers, with winding numbers >= 0 that are positive only
+/// within R + fit_tolerance of the segment, every point B(t) + s N(t) (t in [0, 1], N the
+/// unit left normal) with |s| <= r and s κ(t) <= 1 (the points whose nearest point on the
+/// segment may be B(t), see stroke.hpp); the disks this needs are added to `sink` (about each
+/// interior zero of B', and on the tight sides).
 ///
-/// The segment is cut at the zeros of B' and at the cusps of its parallel curves at ±R (where
+/// Each side is cut at the zeros of B' and at the cusps of its parallel curve at ±R (where
 /// the radius of curvature ρ = 1 / |κ| equals R, offset_cusps.hpp), so that on each piece
-/// each side is either loose (ρ >= R on that side: the map (t, s) -> B(t) + s N(t) has
-/// Jacobian |B'| (1 - s κ) >= 0 for s up to R) or tight (ρ < R, decided at the piece's middle).
-/// Each piece gives one contour, counter-clockwise: the right edge forward and the left edge
-/// backward, joined by
-/// the normal segments at the piece's ends (at a cut inside the segment, two lines meeting at
-/// B there, so that the two pieces' normal segments at a cut overlap exactly), where a loose
-/// side's edge is its parallel curve at
-/// distance R (offset.hpp, within fit_tolerance; fitted once for the whole segment, whose
-/// cubics are cut at the same cusps, and a cubic that straddles a cut of the other side split
-/// there by its fit's linear correspondence of parameters) and a tight side's edge is the piece itself
-/// (its control points; for degree above 3, its fit at distance 0). A tight side is covered by
-/// disks of radius R instead: the piece is halved until on each part P, with c = P(1/2) and
-/// ℓ = max |P_i - c| (so |B(t) - c| <= ℓ on P, convex hull), ρ_max an upper bound of ρ on P
-/// (|B'|^3 / |cross(B', B'')| with |B'| <= the first hodograph's largest control point and
-/// |cross| >= the least Bernstein coefficient of cross(B', B''), all of one sign on a tight
-/// side), min(ρ_max, r) + ℓ < R: then every point B(t) + s N(t) with 0 <= s <= min(ρ(t), r) is
-/// within min(ρ_max, r) + ℓ < R of c, inside the disk about c. A disk of the segment already
-/// drawn (about a zero of B', or for an earlier part) serves instead of a new one when the
-/// same test holds with its centre for c.
+/// the side is either loose (ρ >= R on that side: the map (t, s) -> B(t) + s N(t) has
+/// Jacobian |B'| (1 - s κ) >= 0 for s from 0 to ±R) or tight (ρ < R, decided at the piece's
+/// middle). Where the hodograph's control points all lie in an open half-plane (B' has no
+/// zero) and R M1 M2 < m^3 (M1, M2 the largest control points of the first and second
+/// hodographs, m the least projection of the first's on the direction of B'(1/2): then
+/// |κ| <= |B'| |B''| / |B'|^3 <= M1 M2 / m^3 < 1 / R), there is neither a cusp nor a zero of
+/// B' and both sides are loose throughout, decided without the root searches.
+///
+/// A loose side's edge is its parallel curve at distance R (offset.hpp's offset_interval,
+/// within fit_tolerance, on that side's pieces only); a tight side's edge is the piece itself
+/// (its control points; for degree above 3, its fit at distance 0), and between a loose and
+/// a tight piece the edge steps along the normal at the cut, a line between B + R N and B
+/// there. The region of a stretch is then the image of the staircase domain
+/// {(t, s) : lo(t) <= s <= hi(t)} (hi = R where the left side is loose and 0 where it is
+/// tight; lo = -R or 0 likewise for the right side; never both 0, since the two sides are
+/// not tight at once), whose Jacobian is >= 0 throughout.
+///
+/// A tight side is covered by disks of radius R instead: the piece is halved until on each
+/// part P, with c = P(1/2) and ℓ = max |P_i - c| (so |B(t) - c| <= ℓ on P, convex hull),
+/// ρ_max an upper bound of ρ on P (|B'|^3 / |cross(B', B'')| with |B'| <= the first
+/// hodograph's largest control point and |cross| >= the least Bernstein coefficient of
+/// cross(B', B''), all of one sign on a tight side), min(ρ_max, r) + ℓ < R: then every point
+/// B(t) + s N(t) with 0 <= s <= min(ρ(t), r) is within min(ρ_max, r) + ℓ < R of c, inside the
+/// disk about c. A disk of the segment already drawn (about a zero of B', or for an earlier
+/// part) serves instead of a new one when the same test holds with its centre for c.
 ///
 /// The count of disks: where ρ_max is well below r a part may be as long as R - ρ_max; next
 /// to an end where ρ reaches R, or a zero of B' (where the bound of ρ is lost because
@@ -55,8 +82,10 @@ struct CoverSizes {
 /// a few disks per halving; a curve whose ρ stays within about ε/2 of r over a long stretch
 /// needs about its length / ε disks, and may be refused by the segment limit.
 ///
-/// Work is charged to `sink` (de Casteljau coordinate updates), and so are the contours'
-/// segments; a part still failing the test after 64 halvings stops with work_cap_reached.
-void cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineSink& sink);
+/// Work is charged to `sink` (de Casteljau coordinate updates), and so are the disks'
+/// segments; false when the sink stopped (a part still failing the test after 64 halvings
+/// stops with work_cap_reached).
+bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineSink& sink,
+                   SegmentCover& out);
 
 }  // namespace bezier::outline

@@ -1,9 +1,11 @@
 #include "core/outline/tangent_limits.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "core/bernstein/roots.hpp"
+#include "core/outline/control_points.hpp"
 
 namespace bezier::outline {
 
@@ -11,55 +13,56 @@ namespace {
 
 using core::Point2;
 
-std::vector<Point2> hodograph(std::span<const Point2> p) {
-  const double n = static_cast<double>(p.size() - 1);
-  std::vector<Point2> h;
-  for (std::size_t i = 0; i + 1 < p.size(); ++i) h.push_back(n * (p[i + 1] - p[i]));
-  return h;
-}
-
-double largest_norm(std::span<const Point2> q) {
-  double m = 0.0;
-  for (const Point2 p : q) m = std::max(m, core::length(p));
-  return m;
-}
-
-Point2 plain_point(std::vector<Point2> q, double t) {
-  for (std::size_t k = q.size() - 1; k > 0; --k)
-    for (std::size_t i = 0; i < k; ++i) q[i] = core::lerp(q[i], q[i + 1], t);
-  return q.front();
+/// The largest absolute coordinate of the control points (at least the least normal double).
+double control_scale(std::span<const Point2> p) {
+  double s = std::numeric_limits<double>::min();
+  for (const Point2 q : p) s = std::max(s, core::max_abs_coordinate(q));
+  return s;
 }
 
 }  // namespace
 
 Point2 end_tangent(std::span<const Point2> p, bool at_start) {
-  std::vector<Point2> h(p.begin(), p.end());
+  if (p.size() >= 2) {
+    // The first derivative, when it is not zero to the threshold below (the common case).
+    const Point2 v = at_start ? p[1] - p[0] : p[p.size() - 1] - p[p.size() - 2];
+    const double len = core::length(static_cast<double>(p.size() - 1) * v);
+    const double scale = control_scale(p);
+    if (len > 1e-12 * scale * static_cast<double>(p.size())) {
+      return (1.0 / len) * (static_cast<double>(p.size() - 1) * v);
+    }
+  }
+  ControlPoints h(p), next;
   double sign = 1.0;
-  const double scale = std::max(largest_norm(h), std::numeric_limits<double>::min());
+  const double scale = control_scale(p);
+  const double least = 1e-12 * scale * static_cast<double>(p.size());
   while (h.size() > 1) {
-    h = hodograph(h);
-    const Point2 v = at_start ? h.front() : h.back();
+    hodograph_into(h, next);
+    std::swap(h, next);
+    const Point2 v = at_start ? h[0] : h.back();
     const double len = core::length(v);
-    if (len > 1e-12 * scale * static_cast<double>(p.size())) return (sign / len) * v;
+    if (len > least) return (sign / len) * v;
     if (!at_start) sign = -sign;
   }
   return {1.0, 0.0};
 }
 
 std::vector<double> stationary_points(const core::Curve& curve) {
-  const std::vector<Point2> h = hodograph(curve.points());
-  const double scale = largest_norm(h);
+  ControlPoints h;
+  hodograph_into(curve.points(), h);
+  double scale = 0.0;
+  for (const Point2 q : h) scale = std::max(scale, core::length(q));
   if (h.size() < 2 || scale == 0.0) return {};
-  std::vector<double> xs, ys;
-  for (const Point2 p : h) {
-    xs.push_back(p.x);
-    ys.push_back(p.y);
+  core::Coeffs xs(h.size(), core::Coeffs::Uninitialized{}), ys(h.size(), core::Coeffs::Uninitialized{});
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    xs[i] = h[i].x;
+    ys[i] = h[i].y;
   }
   const bool use_x = std::any_of(xs.begin(), xs.end(), [](double v) { return v != 0.0; });
   std::vector<double> out;
-  for (const double t : core::bernstein_roots(use_x ? xs : ys).roots) {
+  for (const double t : core::bernstein_roots(use_x ? std::span<const double>(xs) : std::span<const double>(ys)).roots) {
     if (!(t > 0.0 && t < 1.0)) continue;
-    if (core::length(plain_point(h, t)) <= 1e-9 * scale) out.push_back(t);
+    if (core::length(point_at(h, t)) <= 1e-9 * scale) out.push_back(t);
   }
   return out;
 }

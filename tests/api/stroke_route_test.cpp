@@ -130,6 +130,43 @@ TEST(StrokeRoute, SimplifiedRoundStrokeOfACuspIsItsDistanceSet) {
   EXPECT_GT(judged, 3000);
 }
 
+TEST(StrokeRoute, SimplifiedNarrowRoundStrokeOfACuspIsItsDistanceSet) {
+  // Half width 0.25 about the cusped cubic: the parallel curves at ±R have cusps of their own
+  // next to B's cusp at t = 1/2, where a fitted piece ends within rounding of a cusp. Every
+  // point judged winds once within 0.25 of the curve, never beyond 0.25 + tolerance.
+  const core::Curve cusp({{0, 0}, {10, 10}, {0, 10}, {10, 0}});
+  for (const double tolerance : {1e-2, 1e-3, 1e-4}) {
+    SCOPED_TRACE(testing::Message() << "tolerance " << tolerance);
+    const json r = call(R"({"path":"M0 0 C10 10 0 10 10 0","width":0.5,"tolerance":)" +
+                            std::to_string(tolerance) +
+                            R"(,"join":"round","cap":"round","simplify":true})",
+                        200);
+    EXPECT_EQ(r["simplified"], true);
+    path::PathDataParse parse = path::parse_svg_path_data(r["path"].get<std::string>(), 100000);
+    ASSERT_FALSE(parse.error);
+    const region::RegionWinding winding(
+        region::region_from_path(std::move(parse.path), region::FillRule::nonzero));
+    int judged = 0;
+    for (double x = -0.5; x <= 10.5; x += 0.037) {
+      for (double y = -0.5; y <= 8; y += 0.043) {
+        std::int64_t work = std::int64_t{1} << 40;
+        const std::optional<region::Winding> w = winding.at({x, y}, work);
+        ASSERT_TRUE(w);
+        if (w->boundary) continue;
+        const double d = core::nearest(cusp, {x, y}, 0, 1).distance;
+        if (d < 0.25 - 1e-12) {
+          EXPECT_EQ(w->winding, 1) << x << " " << y;
+          ++judged;
+        } else if (d > 0.25 + tolerance + 1e-12) {
+          EXPECT_EQ(w->winding, 0) << x << " " << y;
+          ++judged;
+        }
+      }
+    }
+    EXPECT_GT(judged, 20000);
+  }
+}
+
 TEST(StrokeRoute, TakesControlPointsToo) {
   const json r = call(R"({"points":[[0,0],[4,0]],"width":1,"tolerance":1e-6})", 200);
   EXPECT_NE(winding_at(r, {2, 0.49}), 0);

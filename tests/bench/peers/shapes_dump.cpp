@@ -264,7 +264,8 @@ bezier::outline::StrokeStyle stroke_style(double width, const std::string& join,
 
 bezier::outline::StrokeOutline stroke_of(const bezier::path::Path& path,
                                          const bezier::outline::StrokeStyle& style, double tolerance) {
-  auto o = bezier::outline::stroke(path, style, tolerance, INT64_MAX / 4, 100000000);
+  bezier::core::WorkBudget budget;
+  auto o = bezier::outline::stroke(path, style, tolerance, budget, 100000000);
   if (o.status != bezier::outline::StrokeStatus::ok) {
     std::fprintf(stderr, "stroke failed\n");
     std::exit(1);

@@ -26,6 +26,13 @@ using core::Point2;
 constexpr std::int64_t kWork = std::int64_t{1} << 36;
 constexpr std::size_t kSegments = 1000000;
 
+/// The stroke with a budget of `work` units.
+StrokeOutline stroke(const path::Path& path, const StrokeStyle& style, double tolerance,
+                     std::int64_t work, std::size_t max_segments) {
+  core::WorkBudget budget(work);
+  return outline::stroke(path, style, tolerance, budget, max_segments);
+}
+
 StrokeStyle round_style(double width) {
   StrokeStyle style;
   style.width = width;
@@ -314,6 +321,72 @@ TEST(Stroke, ClosedSubpathHasAJoinAndNoCaps) {
   const StrokeOutline open = stroke(test::parsed_path("M0 0 L10 0 L10 10 L0 10 L0 1e-3"),
                                     style, 1e-3, kWork, kSegments);
   EXPECT_NE(winding_at(open, {-0.8, -0.8}), 0);
+}
+
+TEST(Stroke, SmoothClosedSubpathIsOneContourPerSide) {
+  // A circle of four arcs (tangent-continuous joints) of radius 1, half width 0.25: every
+  // joint is smooth and the radius of curvature (1) exceeds R on both sides, so the outline is
+  // the two parallel curves (outer forward, inner backward), whatever the join, and the
+  // region is the distance set: the annulus 0.75 < |p| < 1.25 to the tolerance.
+  const std::string circle = "M1 0 A1 1 0 0 1 0 1 A1 1 0 0 1 -1 0 A1 1 0 0 1 0 -1 A1 1 0 0 1 1 0 Z";
+  check_round_stroke(circle, 0.5, 1e-4);
+  const path::Path path = test::parsed_path(circle);
+  for (const LineJoin join : {LineJoin::miter, LineJoin::round, LineJoin::bevel}) {
+    StrokeStyle style = round_style(0.5);
+    style.join = join;
+    const StrokeOutline o = stroke(path, style, 1e-4, kWork, kSegments);
+    ASSERT_EQ(o.status, StrokeStatus::ok);
+    EXPECT_EQ(o.contours.size(), 2u);
+    EXPECT_EQ(winding_at(o, {0, 0}), 0);
+    EXPECT_EQ(winding_at(o, {0.76, 0}), 1);
+    EXPECT_EQ(winding_at(o, {0, -1.24}), 1);
+    EXPECT_EQ(winding_at(o, {1.26, 0}), 0);
+  }
+}
+
+TEST(Stroke, SmoothOpenChainIsOneContourAndItsCaps) {
+  // The joint at (3, 0) arrives along (1, -1) and leaves along (1, -1): smooth. Round caps:
+  // the run's contour and the two caps' disks.
+  const std::string data = "M0 0 C1 1 2 1 3 0 C4 -1 5 -1 6 0";
+  check_round_stroke(data, 0.5, 1e-3);
+  const StrokeOutline o =
+      stroke(test::parsed_path(data), round_style(0.5), 1e-3, kWork, kSegments);
+  ASSERT_EQ(o.status, StrokeStatus::ok);
+  EXPECT_EQ(o.contours.size(), 3u);
+}
+
+TEST(Stroke, SmoothClosedSubpathWithACuspIsWalkedFromTheCusp) {
+  // Both joints are smooth (directions (1, -1) at (10, 0) and (1, 1) at (0, 0) on both
+  // sides), and B' vanishes at t = 1/2 of the first cubic: the one run starts and ends there.
+  const std::string data = "M0 0 C10 10 0 10 10 0 C11 -1 -1 -1 0 0 Z";
+  check_round_stroke(data, 1.0, 1e-3);
+  check_round_stroke(data, 3.0, 1e-3, 9);
+}
+
+TEST(Stroke, RoundIsTheDistanceSetForSmoothSplines) {
+  // Closed Catmull-Rom splines through random points about a circle (tangent-continuous
+  // joints up to the rounding of the control points), stroked narrow and wide: the wide ones
+  // have tight sides next to smooth joints.
+  test::Mulberry32 rng(7);
+  for (int i = 0; i < 6; ++i) {
+    const int n = 6 + i;
+    std::vector<Point2> p;
+    for (int k = 0; k < n; ++k) {
+      const double a = 2 * std::numbers::pi * k / n, radius = rng.uniform(2.0, 4.0);
+      p.push_back({radius * std::cos(a), radius * std::sin(a)});
+    }
+    std::ostringstream data;
+    data.precision(17);
+    data << "M" << p[0].x << " " << p[0].y;
+    for (int k = 0; k < n; ++k) {
+      const Point2 a = p[static_cast<std::size_t>((k + n - 1) % n)], b = p[static_cast<std::size_t>(k)];
+      const Point2 c = p[static_cast<std::size_t>((k + 1) % n)], d = p[static_cast<std::size_t>((k + 2) % n)];
+      const Point2 c1 = b + (1.0 / 6.0) * (c - a), c2 = c - (1.0 / 6.0) * (d - b);
+      data << " C" << c1.x << " " << c1.y << " " << c2.x << " " << c2.y << " " << c.x << " " << c.y;
+    }
+    data << " Z";
+    check_round_stroke(data.str(), i % 2 == 0 ? 0.3 : 2.5, 1e-3, 40 + static_cast<std::uint32_t>(i));
+  }
 }
 
 TEST(Stroke, RefusesBeyondTheSegmentLimitAndTheWorkCap) {

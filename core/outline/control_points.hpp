@@ -1,0 +1,77 @@
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <span>
+
+#include "core/base/point.hpp"
+#include "core/numeric/small_array.hpp"
+
+namespace bezier::outline {
+
+// The control-point arithmetic the offset fits and the stroke repeat for every piece, on
+// arrays stored inline for the degrees the API accepts (core::SmallArray), so that a fit
+// allocates nothing: hodographs, de Casteljau evaluation and sub-curves, in doubles.
+
+using ControlPoints = core::SmallArray<core::Point2>;
+
+/// The hodograph's control points n (P_{i+1} - P_i) (empty for a single point).
+inline void hodograph_into(std::span<const core::Point2> p, ControlPoints& out) {
+  const std::size_t n = p.empty() ? 0 : p.size() - 1;
+  out.resize(n, ControlPoints::Uninitialized{});
+  const auto degree = static_cast<double>(n);
+  for (std::size_t i = 0; i < n; ++i) out[i] = degree * (p[i + 1] - p[i]);
+}
+
+/// B(u) (p not empty): up to degree 3 from the Bernstein weights directly (positive weights
+/// summing to 1: within a few units of rounding of the largest coordinate, as de Casteljau's
+/// algorithm is), above by de Casteljau's algorithm.
+inline core::Point2 point_at(std::span<const core::Point2> p, double u) {
+  const double v = 1.0 - u;
+  switch (p.size()) {
+    case 1:
+      return p[0];
+    case 2:
+      return v * p[0] + u * p[1];
+    case 3:
+      return (v * v) * p[0] + (2.0 * u * v) * p[1] + (u * u) * p[2];
+    case 4:
+      return (v * v * v) * p[0] + (3.0 * u * v * v) * p[1] + (3.0 * u * u * v) * p[2] +
+             (u * u * u) * p[3];
+    default:
+      break;
+  }
+  ControlPoints q(p.size(), ControlPoints::Uninitialized{});
+  std::copy(p.begin(), p.end(), q.begin());
+  for (std::size_t k = p.size() - 1; k > 0; --k)
+    for (std::size_t i = 0; i < k; ++i) q[i] = core::lerp(q[i], q[i + 1], u);
+  return q[0];
+}
+
+/// The control points of B restricted to [a, b] (0 <= a < b <= 1), reparametrised to [0, 1]:
+/// the left part at b, then its right part at a / b (de Casteljau, O(n^2)).
+inline void piece_into(std::span<const core::Point2> p, double a, double b, ControlPoints& out) {
+  out = ControlPoints(p);
+  const std::size_t n = p.size() - 1;
+  if (b < 1.0) {
+    for (std::size_t k = 1; k <= n; ++k)
+      for (std::size_t i = n; i >= k; --i) out[i] = core::lerp(out[i - 1], out[i], b);
+  }
+  if (a > 0.0) {
+    const double s = a / b;
+    for (std::size_t k = 1; k <= n; ++k)
+      for (std::size_t i = 0; i + k <= n; ++i) out[i] = core::lerp(out[i], out[i + 1], s);
+  }
+}
+
+inline double squared_length(core::Point2 v) noexcept { return v.x * v.x + v.y * v.y; }
+
+/// The largest squared length of the points (0 for none).
+inline double largest_squared_length(std::span<const core::Point2> p) noexcept {
+  double m = 0.0;
+  for (const core::Point2 q : p) m = std::max(m, squared_length(q));
+  return m;
+}
+
+}  // namespace bezier::outline
