@@ -21,7 +21,8 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
     result.status = BooleanStatus::work_cap_reached;
     return result;
   }
-  WorkBudget budget{arrangement.work, max_work};
+  core::WorkBudget budget(max_work);
+  budget.charge(arrangement.work);
   const FillRule rule_b = b != nullptr ? b->fill_rule : FillRule::nonzero;
   const auto inside = [&](const std::array<int, 2>& w) {
     return keeps(op, fills(a.fill_rule, w[0]), fills(rule_b, w[1]));
@@ -33,12 +34,12 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
   for (std::size_t g = 0; g < arrangement.groups.size(); ++g) {
     const SideWindingResult sides = side_windings(arrangement, index, g, budget);
     if (sides.status == SideWindingStatus::work_cap_reached) {
-      result.work = budget.spent;
+      result.work = budget.spent();
       result.status = BooleanStatus::work_cap_reached;
       return result;
     }
     if (sides.status == SideWindingStatus::unclear) {
-      result.work = budget.spent;
+      result.work = budget.spent();
       result.status = BooleanStatus::unresolved;
       return result;
     }
@@ -54,13 +55,13 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
     }
     kept_reversed.push_back(!left);
   }
-  if (!budget.charge(static_cast<std::int64_t>(kept.size()) * 16)) {
-    result.work = budget.spent;
+  if (!budget.spend(static_cast<std::int64_t>(kept.size()) * 16)) {
+    result.work = budget.spent();
     result.status = BooleanStatus::work_cap_reached;
     return result;
   }
   const auto chains = chain_contours(kept, arrangement.vertices.size());
-  result.work = budget.spent;
+  result.work = budget.spent();
   if (!chains) {
     result.status = BooleanStatus::unresolved;
     return result;
