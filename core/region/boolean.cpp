@@ -6,6 +6,7 @@
 #include "core/curve/area.hpp"
 #include "core/path/path_area.hpp"
 #include "core/region/contour_chain.hpp"
+#include "core/region/side_links.hpp"
 #include "core/region/side_winding.hpp"
 
 namespace bezier::region {
@@ -28,10 +29,21 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
     return keeps(op, fills(a.fill_rule, w[0]), fills(rule_b, w[1]));
   };
 
+  // Each group's side windings: a ray for the first group of each chain of groups that
+  // share their sides (side_links.hpp), and from there along the chain.
+  const std::size_t group_count = arrangement.groups.size();
   const SideWindingIndex index(arrangement);
-  std::vector<DirectedEdge> kept;
-  std::vector<bool> kept_reversed;
-  for (std::size_t g = 0; g < arrangement.groups.size(); ++g) {
+  const std::vector<std::vector<SideLink>> links = side_links(arrangement);
+  if (!budget.spend(static_cast<std::int64_t>(arrangement.edges.size() + group_count))) {
+    result.work = budget.spent();
+    result.status = BooleanStatus::work_cap_reached;
+    return result;
+  }
+  std::vector<SideWindings> windings(group_count);
+  std::vector<bool> known(group_count, false);
+  std::vector<std::size_t> pending;
+  for (std::size_t g = 0; g < group_count; ++g) {
+    if (known[g]) continue;
     const SideWindingResult sides = side_windings(arrangement, index, g, budget);
     if (sides.status == SideWindingStatus::work_cap_reached) {
       result.work = budget.spent();
@@ -43,8 +55,26 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
       result.status = BooleanStatus::unresolved;
       return result;
     }
-    const bool left = inside(sides.windings.left);
-    const bool right = inside(sides.windings.right);
+    windings[g] = sides.windings;
+    known[g] = true;
+    pending.assign(1, g);
+    while (!pending.empty()) {
+      const std::size_t h = pending.back();
+      pending.pop_back();
+      for (const SideLink& link : links[h]) {
+        if (known[link.group]) continue;
+        const SideWindings& w = windings[h];
+        windings[link.group] = link.flipped ? SideWindings{w.right, w.left} : w;
+        known[link.group] = true;
+        pending.push_back(link.group);
+      }
+    }
+  }
+  std::vector<DirectedEdge> kept;
+  std::vector<bool> kept_reversed;
+  for (std::size_t g = 0; g < group_count; ++g) {
+    const bool left = inside(windings[g].left);
+    const bool right = inside(windings[g].right);
     if (left == right) continue;
     const std::size_t e = arrangement.groups[g].representative;
     const ArrangementEdge& edge = arrangement.edges[e];
