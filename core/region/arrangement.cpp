@@ -209,14 +209,22 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int
     double t;
     std::size_t vertex;
   };
-  std::vector<Cut> cuts;
-  cuts.reserve(events.size());
-  for (std::size_t e = 0; e < events.size(); ++e) {
-    cuts.push_back({events[e].segment, events[e].t, vertex_of[e]});
+  // Placed by segment (a counting sort), then each segment's few cuts sorted.
+  std::vector<std::size_t> cut_start(all.segments.size() + 1, 0);
+  for (const Event& e : events) ++cut_start[e.segment + 1];
+  for (std::size_t i = 0; i < all.segments.size(); ++i) cut_start[i + 1] += cut_start[i];
+  std::vector<Cut> cuts(events.size());
+  {
+    std::vector<std::size_t> next(cut_start.begin(), cut_start.end() - 1);
+    for (std::size_t e = 0; e < events.size(); ++e) {
+      cuts[next[events[e].segment]++] = {events[e].segment, events[e].t, vertex_of[e]};
+    }
   }
-  std::sort(cuts.begin(), cuts.end(), [](const Cut& p, const Cut& q) {
-    return std::tie(p.segment, p.t, p.vertex) < std::tie(q.segment, q.t, q.vertex);
-  });
+  for (std::size_t i = 0; i < all.segments.size(); ++i) {
+    std::sort(cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i]),
+              cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i + 1]),
+              [](const Cut& p, const Cut& q) { return std::tie(p.t, p.vertex) < std::tie(q.t, q.vertex); });
+  }
   // Edges of one segment in order, for the overlap groups below: [first, end) of out.edges.
   std::vector<std::pair<std::size_t, std::size_t>> edges_of(all.segments.size());
   out.edges.reserve(cuts.size());

@@ -33,7 +33,7 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
   // share their sides (side_links.hpp), and from there along the chain.
   const std::size_t group_count = arrangement.groups.size();
   const SideWindingIndex index(arrangement);
-  const std::vector<std::vector<SideLink>> links = side_links(arrangement);
+  const std::vector<GroupLinks> links = side_links(arrangement);
   if (!budget.spend(static_cast<std::int64_t>(arrangement.edges.size() + group_count))) {
     result.work = budget.spent();
     result.status = BooleanStatus::work_cap_reached;

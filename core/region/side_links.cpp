@@ -25,7 +25,7 @@ struct VertexEnds {
 
 }  // namespace
 
-std::vector<std::vector<SideLink>> side_links(const Arrangement& arrangement) {
+std::vector<GroupLinks> side_links(const Arrangement& arrangement) {
   std::vector<VertexEnds> at(arrangement.vertices.size());
   for (std::size_t g = 0; g < arrangement.groups.size(); ++g) {
     const CoincidentGroup& group = arrangement.groups[g];
@@ -47,12 +47,16 @@ std::vector<std::vector<SideLink>> side_links(const Arrangement& arrangement) {
     at[rep.from].add(g, false);
     at[rep.to].add(g, true);
   }
-  std::vector<std::vector<SideLink>> links(arrangement.groups.size());
+  std::vector<GroupLinks> links(arrangement.groups.size());
+  const auto add = [&](std::size_t g, SideLink l) {
+    GroupLinks& to = links[g];
+    to.link[to.count++] = l;  // one end of g at each of its two vertices: at most two
+  };
   for (const VertexEnds& v : at) {
     if (v.blocked || v.count != 2 || v.group[0] == v.group[1]) continue;
     const bool flipped = v.arrives[0] == v.arrives[1];
-    links[v.group[0]].push_back({v.group[1], flipped});
-    links[v.group[1]].push_back({v.group[0], flipped});
+    add(v.group[0], {v.group[1], flipped});
+    add(v.group[1], {v.group[0], flipped});
   }
   return links;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -14,9 +15,17 @@ struct SideLink {
   bool flipped = false;
 };
 
+/// The links of one group: at most one at each of its two vertices.
+struct GroupLinks {
+  std::array<SideLink, 2> link;
+  std::size_t count = 0;
+  [[nodiscard]] const SideLink* begin() const noexcept { return link.data(); }
+  [[nodiscard]] const SideLink* end() const noexcept { return link.data() + count; }
+};
+
 /// For each coincident group of the arrangement, the groups that share its sides through a
 /// vertex where the boundary merely passes: links[g] lists them (each link appears from both
-/// of its groups).
+/// of its groups; a group has two ends, so at most two links).
 ///
 /// Why the sides are shared. A group is one point set, an arc from vertex u to vertex v (its
 /// representative's `from` and `to`) that meets the rest of the arrangement only at u and v
@@ -34,6 +43,6 @@ struct SideLink {
 ///
 /// Conservative: a vertex with a group that is a loop, or with a group whose edges do not
 /// all join the representative's two vertices, links nothing there. O(E + V).
-[[nodiscard]] std::vector<std::vector<SideLink>> side_links(const Arrangement& arrangement);
+[[nodiscard]] std::vector<GroupLinks> side_links(const Arrangement& arrangement);
 
 }  // namespace bezier::region
