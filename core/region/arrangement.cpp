@@ -123,6 +123,8 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int
   // Events: segment ends first (so that a vertex holding one takes its point), then contacts.
   std::vector<Event> events;
   std::vector<std::pair<std::size_t, std::size_t>> same;  // events that are one vertex
+  events.reserve(2 * all.segments.size() + 2 * found.intersections.size() +
+                 4 * found.overlaps.size());
   for (std::size_t i = 0; i < all.segments.size(); ++i) {
     const core::Curve& s = all.segments[i];
     events.push_back({i, 0.0, s.front(), base_radius, true});
@@ -249,20 +251,16 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int
     }
     edges_of[i].first = out.edges.size();
     for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
-      ArrangementEdge edge;
-      edge.source = both.origin[i].first;
-      edge.segment = both.origin[i].second;
-      edge.t0 = kept[k].first;
-      edge.t1 = kept[k + 1].first;
-      edge.from = kept[k].second;
-      edge.to = kept[k + 1].second;
-      edge.exact = segment_piece(seg, edge.t0, edge.t1);
-      std::vector<Point2> pts(edge.exact.points().begin(), edge.exact.points().end());
-      pts.front() = out.vertices[edge.from];
-      pts.back() = out.vertices[edge.to];
-      edge.piece = core::Curve(std::move(pts));
-      edge.group = out.edges.size();
-      out.edges.push_back(std::move(edge));
+      const double t0 = kept[k].first, t1 = kept[k + 1].first;
+      const std::size_t from = kept[k].second, to = kept[k + 1].second;
+      core::Curve exact = segment_piece(seg, t0, t1);
+      std::vector<Point2> pts(exact.points().begin(), exact.points().end());
+      pts.front() = out.vertices[from];
+      pts.back() = out.vertices[to];
+      // Every member given, so that no default curve is built and thrown away.
+      out.edges.push_back(ArrangementEdge{both.origin[i].first, both.origin[i].second, t0, t1,
+                                          from, to, std::move(exact), core::Curve(std::move(pts)),
+                                          out.edges.size()});
     }
     edges_of[i].second = out.edges.size();
   }
