@@ -97,19 +97,20 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
     return result;
   }
   const double zero_area = 0x1p-80 * arrangement.scale * arrangement.scale;
+  std::vector<const core::Curve*> contour_curves;
   for (const std::vector<std::size_t>& chain : *chains) {
-    path::Path contour_path;
-    for (std::size_t k : chain) contour_path.segments.push_back(kept[k].curve);
-    contour_path.subpaths.push_back({0, chain.size(), true});
-    const double area = path::closed_subpath_area(contour_path, contour_path.subpaths.front());
+    contour_curves.clear();
+    for (std::size_t k : chain) contour_curves.push_back(&kept[k].curve);
+    const double area = path::closed_chain_area(contour_curves);
     if (!(std::fabs(area) > zero_area)) continue;
     ResultContour contour;
     contour.first_segment = result.segments.size();
     for (std::size_t k : chain) {
       const ArrangementEdge& edge = arrangement.edges[kept[k].tag];
       const bool backwards = kept_reversed[k];
+      // Each kept edge is in one chain only: its curve moves to the result.
       result.segments.push_back({edge.source, edge.segment, backwards ? edge.t1 : edge.t0,
-                                 backwards ? edge.t0 : edge.t1, kept[k].curve});
+                                 backwards ? edge.t0 : edge.t1, std::move(kept[k].curve)});
     }
     contour.end_segment = result.segments.size();
     contour.area = area;
