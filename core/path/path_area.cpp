@@ -19,16 +19,25 @@ double polygon_area(const std::vector<core::Point2>& v) {
 
 }  // namespace
 
-double closed_subpath_area(const Path& path, const Subpath& subpath) {
-  assert(subpath.closed);
+double closed_chain_area(std::span<const core::Curve* const> chain) {
   std::vector<core::Point2> corners;
+  corners.reserve(chain.size());
   double area = 0.0;
-  for (std::size_t k = 0; k < subpath.segment_count; ++k) {
-    const core::Curve& segment = path.segments[subpath.first_segment + k];
-    corners.push_back(segment.front());
-    area += core::enclosed_area(segment);
+  for (const core::Curve* segment : chain) {
+    corners.push_back(segment->front());
+    area += core::enclosed_area(*segment);
   }
   return area + polygon_area(corners);
+}
+
+double closed_subpath_area(const Path& path, const Subpath& subpath) {
+  assert(subpath.closed);
+  std::vector<const core::Curve*> chain;
+  chain.reserve(subpath.segment_count);
+  for (std::size_t k = 0; k < subpath.segment_count; ++k) {
+    chain.push_back(&path.segments[subpath.first_segment + k]);
+  }
+  return closed_chain_area(chain);
 }
 
 std::optional<double> closed_area(const Path& path) {

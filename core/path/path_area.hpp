@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 
 #include "core/path/path.hpp"
 
@@ -14,6 +15,11 @@ namespace bezier::path {
 /// plus each segment's area against its chord, core::enclosed_area: exact closed Bernstein
 /// forms, no quadrature. Precondition: the subpath is closed; finite coordinates.
 [[nodiscard]] double closed_subpath_area(const Path& path, const Subpath& subpath);
+
+/// closed_subpath_area of the closed chain of curves `chain` (each starting where the one
+/// before ends, the last ending where the first starts), given in order without a Path to
+/// hold them: the same sums in the same order, so the same double.
+[[nodiscard]] double closed_chain_area(std::span<const core::Curve* const> chain);
 
 /// The sum of closed_subpath_area over the closed subpaths; nullopt when none is closed
 /// (open subpaths enclose nothing).

@@ -8,6 +8,7 @@
 #include "core/intersect/work_cost.hpp"
 #include "core/self_intersect/certify.hpp"
 #include "core/path/joint_copies.hpp"
+#include "core/path/joint_separation.hpp"
 #include "core/path/segment_boxes.hpp"
 
 namespace bezier::path {
@@ -55,20 +56,24 @@ std::vector<std::pair<std::size_t, std::size_t>> swept_pairs(core::WorkBudget& b
 
 /// The two-curve searches of the pairs (first segment of path_t, second of path_s) that
 /// share `budget`, adding what they find and cost to the lists and stats; stops when the
-/// budget runs out.
+/// budget runs out. A pair for which `settled(i, j)` is true is not searched: the caller's
+/// filter has shown that the search would add nothing.
+template <class Settled>
 void search_pairs(const Path& path_t, const Path& path_s,
                   const std::vector<std::pair<std::size_t, std::size_t>>& pairs,
                   const core::IntersectOptions& options, core::WorkBudget& budget,
                   std::vector<PathContact>& contacts, std::vector<PathOverlap>& overlaps,
-                  PathSearchStats& stats) {
+                  PathSearchStats& stats, Settled&& settled) {
   for (const auto& [i, j] : pairs) {
     const core::Curve& f = path_t.segments[i];
     const core::Curve& g = path_s.segments[j];
     // Each search sets up its working frame and pieces before its first step: charged as
-    // one plain step of the two degrees.
+    // one plain step of the two degrees. A filter's test reads the same control points a
+    // few times and is charged the same.
     if (!budget.spend(core::step_cost(f.degree(), g.degree(), false))) return;
-    const core::IntersectionResult r = core::intersect(f, g, options, budget);
     ++stats.candidate_pairs;
+    if (settled(i, j)) continue;
+    const core::IntersectionResult r = core::intersect(f, g, options, budget);
     add_stats(stats.pairs, r.stats);
     for (const core::Intersection& x : r.intersections) contacts.push_back({i, j, x});
     for (const core::Overlap& o : r.overlaps) overlaps.push_back({i, j, o});
@@ -97,7 +102,8 @@ PathIntersectionResult intersect(const Path& a, const Path& b,
   const std::int64_t spent_before = budget.spent();
   const auto pairs =
       swept_pairs(budget, [&] { return meeting_boxes(boxes_of(a), boxes_of(b), budget); });
-  search_pairs(a, b, pairs, options, budget, out.intersections, out.overlaps, out.stats);
+  search_pairs(a, b, pairs, options, budget, out.intersections, out.overlaps, out.stats,
+               [](std::size_t, std::size_t) { return false; });
   out.stats.work = budget.spent() - spent_before;
   if (budget.exhausted()) return out;
   out.intersections = without_joint_copies(std::move(out.intersections), a, b, false);
@@ -130,7 +136,16 @@ PathSelfIntersectionResult unsorted_self_intersections(const Path& path,
     if (!budget.charge_memory(kStoredPairBytes)) break;
     pairs.emplace_back(i, j);
   }
-  search_pairs(path, path, pairs, options, budget, out.intersections, out.overlaps, out.stats);
+  // Two segments that follow each other share their joint, so their boxes always meet; a
+  // pair whose only common point is that joint (meet_only_at_joint) has nothing to report
+  // (the search would find the joint alone, which is not an intersection).
+  const auto settled = [&](std::size_t i, std::size_t j) {
+    if (next_segment(path, i) == j) return meet_only_at_joint(path.segments[i], path.segments[j]);
+    if (next_segment(path, j) == i) return meet_only_at_joint(path.segments[j], path.segments[i]);
+    return false;
+  };
+  search_pairs(path, path, pairs, options, budget, out.intersections, out.overlaps, out.stats,
+               settled);
   // A segment against itself: a line (or a point) has no self-intersection.
   for (std::size_t k = 0; k < path.segments.size() && !budget.exhausted(); ++k) {
     const core::Curve& segment = path.segments[k];

@@ -17,7 +17,8 @@ namespace bezier::path {
 struct PathSearchStats {
   /// The two-curve searches' stats summed over the segment pairs searched (method as asked).
   core::IntersectStats pairs;
-  /// Segment pairs whose control boxes meet: the pairs searched.
+  /// Segment pairs whose control boxes meet: the pairs searched, or settled without a
+  /// search by a certified filter (joint_separation.hpp).
   std::int64_t candidate_pairs = 0;
   /// Work units charged in all: the box sweep, each pair's setup and search, and (one path)
   /// the segments' own self-intersection searches and their certification.
@@ -86,6 +87,9 @@ struct PathSelfIntersectionResult {
 /// consecutive segments of a subpath share, and the start of a closed subpath meeting its
 /// end (two consecutive segments still meet anywhere else, e.g. where a cubic loops back
 /// across the line before it). A contact at a joint of other segments is reported once.
+/// Two consecutive segments shown to meet only at their joint (meet_only_at_joint) are not
+/// searched: the search would find that joint alone. Such a pair is charged the setup step
+/// a searched pair is charged before its search.
 /// Zero-length segments add nothing: their point is a joint of their neighbours. One
 /// budget for the whole call, as for two paths; the pairs kept after the sweep (those
 /// without a point segment) are a copy, charged to its memory as the sweep's are.

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numeric>
+#include <tuple>
 #include <utility>
 
 #include "core/curve/derivative.hpp"
@@ -12,6 +12,7 @@
 #include "core/intersect/options.hpp"
 #include "core/path/path_intersections.hpp"
 #include "core/region/boolean_tuning.hpp"
+#include "core/region/segment_piece.hpp"
 
 namespace bezier::region {
 
@@ -122,6 +123,8 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int
   // Events: segment ends first (so that a vertex holding one takes its point), then contacts.
   std::vector<Event> events;
   std::vector<std::pair<std::size_t, std::size_t>> same;  // events that are one vertex
+  events.reserve(2 * all.segments.size() + 2 * found.intersections.size() +
+                 4 * found.overlaps.size());
   for (std::size_t i = 0; i < all.segments.size(); ++i) {
     const core::Curve& s = all.segments[i];
     events.push_back({i, 0.0, s.front(), base_radius, true});
@@ -201,21 +204,40 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int
     }
   }
 
-  // Cuts per segment, then the edges between consecutive cuts.
-  std::vector<std::vector<std::pair<double, std::size_t>>> cuts(all.segments.size());
-  for (std::size_t e = 0; e < events.size(); ++e) {
-    cuts[events[e].segment].emplace_back(events[e].t, vertex_of[e]);
+  // Cuts, by segment and then parameter (and vertex), then the edges between consecutive
+  // cuts of each segment.
+  struct Cut {
+    std::size_t segment;
+    double t;
+    std::size_t vertex;
+  };
+  // Placed by segment (a counting sort), then each segment's few cuts sorted.
+  std::vector<std::size_t> cut_start(all.segments.size() + 1, 0);
+  for (const Event& e : events) ++cut_start[e.segment + 1];
+  for (std::size_t i = 0; i < all.segments.size(); ++i) cut_start[i + 1] += cut_start[i];
+  std::vector<Cut> cuts(events.size());
+  {
+    std::vector<std::size_t> next(cut_start.begin(), cut_start.end() - 1);
+    for (std::size_t e = 0; e < events.size(); ++e) {
+      cuts[next[events[e].segment]++] = {events[e].segment, events[e].t, vertex_of[e]};
+    }
   }
-  // Edges of one segment in order, for the overlap groups below.
-  std::vector<std::vector<std::size_t>> edges_of(all.segments.size());
   for (std::size_t i = 0; i < all.segments.size(); ++i) {
-    auto& list = cuts[i];
-    if (list.empty()) continue;
-    std::sort(list.begin(), list.end());
+    std::sort(cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i]),
+              cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i + 1]),
+              [](const Cut& p, const Cut& q) { return std::tie(p.t, p.vertex) < std::tie(q.t, q.vertex); });
+  }
+  // Edges of one segment in order, for the overlap groups below: [first, end) of out.edges.
+  std::vector<std::pair<std::size_t, std::size_t>> edges_of(all.segments.size());
+  out.edges.reserve(cuts.size());
+  std::vector<std::pair<double, std::size_t>> kept;
+  for (std::size_t c = 0; c < cuts.size();) {
+    const std::size_t i = cuts[c].segment;
     const core::Curve& seg = all.segments[i];
     // Merge consecutive cuts at one vertex, keeping an exact end parameter (0 or 1).
-    std::vector<std::pair<double, std::size_t>> kept;
-    for (const auto& cut : list) {
+    kept.clear();
+    for (; c < cuts.size() && cuts[c].segment == i; ++c) {
+      const std::pair<double, std::size_t> cut{cuts[c].t, cuts[c].vertex};
       if (!kept.empty() && kept.back().second == cut.second) {
         const double lo = kept.back().first;
         const core::Curve between = core::portion(seg, lo, cut.first);
@@ -227,33 +249,30 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int
       if (!kept.empty() && kept.back().first == cut.first) continue;
       kept.push_back(cut);
     }
+    edges_of[i].first = out.edges.size();
     for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
-      ArrangementEdge edge;
-      edge.source = both.origin[i].first;
-      edge.segment = both.origin[i].second;
-      edge.t0 = kept[k].first;
-      edge.t1 = kept[k + 1].first;
-      edge.from = kept[k].second;
-      edge.to = kept[k + 1].second;
-      edge.exact = core::portion(seg, edge.t0, edge.t1);
-      std::vector<Point2> pts(edge.exact.points().begin(), edge.exact.points().end());
-      pts.front() = out.vertices[edge.from];
-      pts.back() = out.vertices[edge.to];
-      edge.piece = core::Curve(std::move(pts));
-      edge.group = out.edges.size();
-      edges_of[i].push_back(out.edges.size());
-      out.edges.push_back(std::move(edge));
+      const double t0 = kept[k].first, t1 = kept[k + 1].first;
+      const std::size_t from = kept[k].second, to = kept[k + 1].second;
+      core::Curve exact = segment_piece(seg, t0, t1);
+      std::vector<Point2> pts(exact.points().begin(), exact.points().end());
+      pts.front() = out.vertices[from];
+      pts.back() = out.vertices[to];
+      // Every member given, so that no default curve is built and thrown away.
+      out.edges.push_back(ArrangementEdge{both.origin[i].first, both.origin[i].second, t0, t1,
+                                          from, to, std::move(exact), core::Curve(std::move(pts)),
+                                          out.edges.size()});
     }
+    edges_of[i].second = out.edges.size();
   }
 
   // Coincident groups: within each overlap, the pieces of both segments with the same ends.
   Clusters groups(out.edges.size());
   const auto join_overlap = [&](std::size_t i, std::size_t j, const core::Overlap& o) {
     const double slack = 2.0 * kIntersectionTolerance;
-    for (std::size_t p : edges_of[i]) {
+    for (std::size_t p = edges_of[i].first; p < edges_of[i].second; ++p) {
       const ArrangementEdge& ep = out.edges[p];
       if (ep.t0 < o.t_interval.lo - slack || ep.t1 > o.t_interval.hi + slack) continue;
-      for (std::size_t q : edges_of[j]) {
+      for (std::size_t q = edges_of[j].first; q < edges_of[j].second; ++q) {
         if (q == p) continue;
         const ArrangementEdge& eq = out.edges[q];
         if (eq.t0 < o.s_interval.lo - slack || eq.t1 > o.s_interval.hi + slack) continue;
@@ -271,17 +290,30 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int
   // (a lens thinner than rounding, e.g. between two crossings of curves that touch to within
   // a few ulps) are one edge for every later decision: no ray can tell their sides apart.
   const double clearance = kRayClearanceRel * out.scale;
-  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> by_ends;
+  // The edges by their two vertices (lower first), each run of equal ends in edge order.
+  struct Ends {
+    std::size_t lo, hi, edge;
+  };
+  std::vector<Ends> by_ends;
+  by_ends.reserve(out.edges.size());
   for (std::size_t e = 0; e < out.edges.size(); ++e) {
     const ArrangementEdge& edge = out.edges[e];
     if (edge.from == edge.to) continue;
-    by_ends[{std::min(edge.from, edge.to), std::max(edge.from, edge.to)}].push_back(e);
+    by_ends.push_back({std::min(edge.from, edge.to), std::max(edge.from, edge.to), e});
   }
-  for (const auto& [ends, list] : by_ends) {
-    for (std::size_t x = 0; x < list.size(); ++x) {
-      for (std::size_t y = x + 1; y < list.size(); ++y) {
-        const ArrangementEdge& p = out.edges[list[x]];
-        const ArrangementEdge& q = out.edges[list[y]];
+  std::sort(by_ends.begin(), by_ends.end(), [](const Ends& p, const Ends& q) {
+    return std::tie(p.lo, p.hi, p.edge) < std::tie(q.lo, q.hi, q.edge);
+  });
+  for (std::size_t first = 0, end = 0; first < by_ends.size(); first = end) {
+    end = first + 1;
+    while (end < by_ends.size() && by_ends[end].lo == by_ends[first].lo &&
+           by_ends[end].hi == by_ends[first].hi) {
+      ++end;
+    }
+    for (std::size_t x = first; x < end; ++x) {
+      for (std::size_t y = x + 1; y < end; ++y) {
+        const ArrangementEdge& p = out.edges[by_ends[x].edge];
+        const ArrangementEdge& q = out.edges[by_ends[y].edge];
         const bool flip = p.from != q.from;
         bool near = true;
         for (const double t : {0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875}) {
@@ -289,7 +321,7 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int
           const Point2 at_q = core::evaluate(q.exact, flip ? 1.0 - t : t);
           near = near && core::length(at_p - at_q) <= clearance;
         }
-        if (near) groups.join(list[x], list[y]);
+        if (near) groups.join(by_ends[x].edge, by_ends[y].edge);
       }
     }
   }

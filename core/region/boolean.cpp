@@ -6,6 +6,7 @@
 #include "core/curve/area.hpp"
 #include "core/path/path_area.hpp"
 #include "core/region/contour_chain.hpp"
+#include "core/region/side_links.hpp"
 #include "core/region/side_winding.hpp"
 
 namespace bezier::region {
@@ -21,29 +22,59 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
     result.status = BooleanStatus::work_cap_reached;
     return result;
   }
-  WorkBudget budget{arrangement.work, max_work};
+  core::WorkBudget budget(max_work);
+  budget.charge(arrangement.work);
   const FillRule rule_b = b != nullptr ? b->fill_rule : FillRule::nonzero;
   const auto inside = [&](const std::array<int, 2>& w) {
     return keeps(op, fills(a.fill_rule, w[0]), fills(rule_b, w[1]));
   };
 
+  // Each group's side windings: a ray for the first group of each chain of groups that
+  // share their sides (side_links.hpp), and from there along the chain.
+  const std::size_t group_count = arrangement.groups.size();
   const SideWindingIndex index(arrangement);
-  std::vector<DirectedEdge> kept;
-  std::vector<bool> kept_reversed;
-  for (std::size_t g = 0; g < arrangement.groups.size(); ++g) {
+  const std::vector<GroupLinks> links = side_links(arrangement);
+  if (!budget.spend(static_cast<std::int64_t>(arrangement.edges.size() + group_count))) {
+    result.work = budget.spent();
+    result.status = BooleanStatus::work_cap_reached;
+    return result;
+  }
+  std::vector<SideWindings> windings(group_count);
+  std::vector<bool> known(group_count, false);
+  std::vector<std::size_t> pending;
+  for (std::size_t g = 0; g < group_count; ++g) {
+    if (known[g]) continue;
     const SideWindingResult sides = side_windings(arrangement, index, g, budget);
     if (sides.status == SideWindingStatus::work_cap_reached) {
-      result.work = budget.spent;
+      result.work = budget.spent();
       result.status = BooleanStatus::work_cap_reached;
       return result;
     }
     if (sides.status == SideWindingStatus::unclear) {
-      result.work = budget.spent;
+      result.work = budget.spent();
       result.status = BooleanStatus::unresolved;
       return result;
     }
-    const bool left = inside(sides.windings.left);
-    const bool right = inside(sides.windings.right);
+    windings[g] = sides.windings;
+    known[g] = true;
+    pending.assign(1, g);
+    while (!pending.empty()) {
+      const std::size_t h = pending.back();
+      pending.pop_back();
+      for (const SideLink& link : links[h]) {
+        if (known[link.group]) continue;
+        const SideWindings& w = windings[h];
+        windings[link.group] = link.flipped ? SideWindings{w.right, w.left} : w;
+        known[link.group] = true;
+        pending.push_back(link.group);
+      }
+    }
+  }
+  std::vector<DirectedEdge> kept;
+  std::vector<bool> kept_reversed;
+  for (std::size_t g = 0; g < group_count; ++g) {
+    const bool left = inside(windings[g].left);
+    const bool right = inside(windings[g].right);
     if (left == right) continue;
     const std::size_t e = arrangement.groups[g].representative;
     const ArrangementEdge& edge = arrangement.edges[e];
@@ -54,31 +85,32 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
     }
     kept_reversed.push_back(!left);
   }
-  if (!budget.charge(static_cast<std::int64_t>(kept.size()) * 16)) {
-    result.work = budget.spent;
+  if (!budget.spend(static_cast<std::int64_t>(kept.size()) * 16)) {
+    result.work = budget.spent();
     result.status = BooleanStatus::work_cap_reached;
     return result;
   }
   const auto chains = chain_contours(kept, arrangement.vertices.size());
-  result.work = budget.spent;
+  result.work = budget.spent();
   if (!chains) {
     result.status = BooleanStatus::unresolved;
     return result;
   }
   const double zero_area = 0x1p-80 * arrangement.scale * arrangement.scale;
+  std::vector<const core::Curve*> contour_curves;
   for (const std::vector<std::size_t>& chain : *chains) {
-    path::Path contour_path;
-    for (std::size_t k : chain) contour_path.segments.push_back(kept[k].curve);
-    contour_path.subpaths.push_back({0, chain.size(), true});
-    const double area = path::closed_subpath_area(contour_path, contour_path.subpaths.front());
+    contour_curves.clear();
+    for (std::size_t k : chain) contour_curves.push_back(&kept[k].curve);
+    const double area = path::closed_chain_area(contour_curves);
     if (!(std::fabs(area) > zero_area)) continue;
     ResultContour contour;
     contour.first_segment = result.segments.size();
     for (std::size_t k : chain) {
       const ArrangementEdge& edge = arrangement.edges[kept[k].tag];
       const bool backwards = kept_reversed[k];
+      // Each kept edge is in one chain only: its curve moves to the result.
       result.segments.push_back({edge.source, edge.segment, backwards ? edge.t1 : edge.t0,
-                                 backwards ? edge.t0 : edge.t1, kept[k].curve});
+                                 backwards ? edge.t0 : edge.t1, std::move(kept[k].curve)});
     }
     contour.end_segment = result.segments.size();
     contour.area = area;

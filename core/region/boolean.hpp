@@ -33,7 +33,9 @@
 //    way on every edge; pieces of shared boundary grouped, and so are two edges between the
 //    same vertices that stay within kRayClearanceRel of scale (a lens thinner than rounding).
 //  - side_winding.hpp: for each group, both operands' winding numbers on its two sides, from
-//    a ray cast across the arrangement with every crossing decided clearly (else another ray).
+//    a ray cast across the arrangement with every crossing decided clearly (else another ray);
+//    one ray for each chain of groups that share their sides through vertices where only two
+//    groups end (side_links.hpp), the rest of the chain taking the same windings exactly.
 //  - the group is a boundary of the result where op(fill_a(w_a), fill_b(w_b)) differs between
 //    its sides, directed so that the inside is on its left; taken once, as its representative
 //    edge (the first of a).

@@ -37,10 +37,10 @@ struct Count {
 };
 
 void count_crossings(const core::Curve& piece, const Ray& ray, OriginEnd origin, bool check_ends,
-                     int depth, Count& count, WorkBudget& budget) {
+                     int depth, Count& count, core::WorkBudget& budget) {
   if (!count.clear || count.out_of_work) return;
   const int n = piece.degree();
-  if (!budget.charge(n + 1)) {
+  if (!budget.spend(n + 1)) {
     count.out_of_work = true;
     return;
   }
@@ -93,7 +93,7 @@ void count_crossings(const core::Curve& piece, const Ray& ray, OriginEnd origin,
     count.clear = false;
     return;
   }
-  if (!budget.charge(static_cast<std::int64_t>(n + 1) * (n + 1))) {
+  if (!budget.spend(static_cast<std::int64_t>(n + 1) * (n + 1))) {
     count.out_of_work = true;
     return;
   }
@@ -136,19 +136,19 @@ bool may_meet(const EdgeBox& box, const Ray& ray) {
 /// `group`, as testing them one by one would; false, with the budget spent up to and
 /// including the edge that passed the cap, when the cap is reached.
 bool charge_skipped(const Arrangement& arrangement, const SideWindingIndex& index,
-                    std::size_t group, std::size_t from, std::size_t until, WorkBudget& budget) {
+                    std::size_t group, std::size_t from, std::size_t until, core::WorkBudget& budget) {
   if (from >= until) return true;
   std::int64_t cost = index.pass_cost_before[until] - index.pass_cost_before[from];
   for (const std::size_t e : arrangement.groups[group].edges) {
     if (e >= from && e < until) cost -= arrangement.edges[e].piece.degree() + 1;
   }
-  if (budget.spent + cost <= budget.cap) {
-    budget.spent += cost;
+  if (cost <= budget.remaining()) {
+    budget.charge(cost);
     return true;
   }
   for (std::size_t e = from; e < until; ++e) {
     if (arrangement.edges[e].group == group) continue;
-    if (!budget.charge(arrangement.edges[e].piece.degree() + 1)) return false;
+    if (!budget.spend(arrangement.edges[e].piece.degree() + 1)) return false;
   }
   return true;
 }
@@ -174,7 +174,7 @@ SideWindingIndex::SideWindingIndex(const Arrangement& arrangement)
 }
 
 SideWindingResult side_windings(const Arrangement& arrangement, const SideWindingIndex& index,
-                                std::size_t group, WorkBudget& budget) {
+                                std::size_t group, core::WorkBudget& budget) {
   SideWindingResult result;
   const std::vector<ArrangementEdge>& edges = arrangement.edges;
   std::vector<std::size_t> candidates;

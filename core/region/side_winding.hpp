@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/base/work_budget.hpp"
 #include "core/region/arrangement.hpp"
 #include "core/region/edge_box_index.hpp"
 
@@ -16,17 +17,6 @@ namespace bezier::region {
 struct SideWindings {
   std::array<int, 2> left{0, 0};
   std::array<int, 2> right{0, 0};
-};
-
-/// Work spent so far against a cap (core/intersect/work_cost.hpp's unit).
-struct WorkBudget {
-  std::int64_t spent = 0;
-  std::int64_t cap = 0;
-  /// Charges `units`; false once the cap is passed.
-  bool charge(std::int64_t units) noexcept {
-    spent += units;
-    return spent <= cap;
-  }
 };
 
 /// What side_windings found.
@@ -75,7 +65,8 @@ struct SideWindingIndex {
 /// kRayClearanceRel * scale of a vertex or of its origin, or a piece stays undecided after
 /// kRayMaxDepth halvings (a tangency to the ray). Directions: the left normal of the
 /// representative at m, then turned by fixed angles up to +-1.4 radians (still on the left).
-/// Each control-point pass is charged (n + 1) units and each halving (n + 1)^2.
+/// Each control-point pass is charged (n + 1) units and each halving (n + 1)^2, each by
+/// budget.spend (work_cap_reached once the spent work passes the limit).
 ///
 /// The edges are counted in their order in the arrangement, stopping at the first unclear
 /// one. An edge whose control-point box shows at once that it neither crosses the ray nor
@@ -83,6 +74,6 @@ struct SideWindingIndex {
 /// answer, the work and where the cap is met are those of counting every edge.
 [[nodiscard]] SideWindingResult side_windings(const Arrangement& arrangement,
                                               const SideWindingIndex& index, std::size_t group,
-                                              WorkBudget& budget);
+                                              core::WorkBudget& budget);
 
 }  // namespace bezier::region

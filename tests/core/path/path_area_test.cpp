@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "tests/support/exact.hpp"
 #include "tests/support/exact_polynomial.hpp"
@@ -36,6 +37,17 @@ Rational exact_closed_area(const Path& path) {
 TEST(PathArea, UnitSquareCounterClockwiseIsOne) {
   EXPECT_EQ(closed_area(parsed_path("M0 0 H1 V1 H0 Z")), 1.0);
   EXPECT_EQ(closed_area(parsed_path("M0 0 V1 H1 V0 Z")), -1.0);
+}
+
+TEST(PathArea, AChainOfCurvesGivesItsSubpathsAreaBitForBit) {
+  // A unit square with a parabolic bulge: 1 + 2/3 * 1 * 0.25 (the parabolic segment over the
+  // chord x = 1, its apex at half the control point's distance 0.5); the
+  // chain of the same curves, given by address, is the same sum in the same order.
+  const Path path = parsed_path("M0 0 H1 Q1.5 0.5 1 1 H0 Z");
+  std::vector<const core::Curve*> chain;
+  for (const core::Curve& c : path.segments) chain.push_back(&c);
+  EXPECT_EQ(closed_chain_area(chain), closed_subpath_area(path, path.subpaths.front()));
+  EXPECT_NEAR(closed_chain_area(chain), 1.0 + 1.0 / 6.0, 4 * kEps);
 }
 
 TEST(PathArea, HoleOfOppositeOrientationIsSubtracted) {

@@ -236,6 +236,54 @@ TEST(PathSelfIntersections, RandomPathsNeverReportTheirJoints) {
   }
 }
 
+TEST(PathSelfIntersections, RandomPathsAgreeWithEverySegmentPairSearchedAlone) {
+  // The pairs the path search settles without a search (consecutive segments that meet
+  // only at their joint, joint_separation.hpp) lose nothing: every contact of every pair
+  // searched alone, other than the joint of two consecutive segments, is in the answer
+  // (on the same pair, or as the copy kept at the same point of a neighbouring pair).
+  test::Mulberry32 rng(3131);
+  std::size_t all_rounds = 0;
+  for (int round = 0; round < 60; ++round) {
+    const Path path = parsed_path(random_path(rng, 2 + static_cast<int>(rng.next() * 10)));
+    const PathSelfIntersectionResult r = self_intersections(path, {});
+    ASSERT_EQ(r.status, core::IntersectStatus::ok);
+    for (std::size_t i = 0; i < path.segments.size(); ++i) {
+      for (std::size_t j = i + 1; j < path.segments.size(); ++j) {
+        const core::IntersectionResult alone = core::intersect(path.segments[i], path.segments[j]);
+        for (const core::Intersection& x : alone.intersections) {
+          const bool joint_forward = next_segment(path, i) == j && x.t_interval.hi == 1 &&
+                                     x.s_interval.lo == 0;
+          const bool joint_back = next_segment(path, j) == i && x.s_interval.hi == 1 &&
+                                  x.t_interval.lo == 0;
+          if (joint_forward || joint_back) continue;
+          ++all_rounds;
+          bool found = false;
+          for (const PathContact& c : r.intersections) {
+            const bool same_pair = c.segment_t == i && c.segment_s == j &&
+                                   meet(c.intersection.t_interval, x.t_interval) &&
+                                   meet(c.intersection.s_interval, x.s_interval);
+            const bool at_joint = (x.t_interval.lo == 0 || x.t_interval.hi == 1 ||
+                                   x.s_interval.lo == 0 || x.s_interval.hi == 1) &&
+                                  core::length(c.intersection.point - x.point) <= 1e-9;
+            found = found || same_pair || at_joint;
+          }
+          EXPECT_TRUE(found) << "round " << round << " pair " << i << ", " << j << " t " << x.t;
+        }
+        for (const core::Overlap& o : alone.overlaps) {
+          bool found = false;
+          for (const PathOverlap& p : r.overlaps) {
+            found = found || (p.segment_t == i && p.segment_s == j &&
+                              p.overlap.t_interval.lo == o.t_interval.lo &&
+                              p.overlap.t_interval.hi == o.t_interval.hi);
+          }
+          EXPECT_TRUE(found) << "round " << round << " overlap of " << i << ", " << j;
+        }
+      }
+    }
+  }
+  EXPECT_GT(all_rounds, 50u) << "the random paths should cross themselves often";
+}
+
 TEST(PathIntersections, WorkCapIsSharedByThePairs) {
   // Two paths of many crossing lines: a cap below what the pairs need stops the search.
   std::string a = "M0 0", b = "M0 0.5";

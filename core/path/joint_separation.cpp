@@ -1,0 +1,90 @@
+#include "core/path/joint_separation.hpp"
+
+#include <cmath>
+#include <optional>
+
+#include "core/path/bounded_projection.hpp"
+#include "core/path/tuning.hpp"
+
+namespace bezier::path {
+
+namespace {
+
+using core::Point2;
+
+/// v / |v|, or nullopt when that is not a finite nonzero vector.
+std::optional<Point2> unit(Point2 v) noexcept {
+  const double length = std::hypot(v.x, v.y);
+  if (!(length > 0.0) || !std::isfinite(length)) return std::nullopt;
+  return v / length;
+}
+
+/// d . (p - joint) has the sign `sign` (+1 or -1) for certain and by the margin, or p is the
+/// joint itself (an exact zero, allowed where `zero_allowed`).
+bool on_side(Point2 d, Point2 p, Point2 joint, double sign, bool zero_allowed) noexcept {
+  if (p == joint) return zero_allowed;
+  const BoundedProjection x = bounded_projection(d, p, joint);
+  // Written so that NaN or an infinite bound fails.
+  return sign * x.value - x.error > path_tuning::kSeparationMargin * x.size;
+}
+
+/// The conditions of the header for one direction d.
+bool separates(Point2 d, const core::Curve& before, const core::Curve& after) noexcept {
+  const Point2 joint = after.front();
+  const int n = before.degree();
+  const int m = after.degree();
+  for (int i = 0; i < n; ++i) {
+    if (!on_side(d, before[i], joint, 1.0, i > 0)) return false;
+  }
+  for (int j = 1; j <= m; ++j) {
+    if (!on_side(d, after[j], joint, -1.0, j < m)) return false;
+  }
+  return true;
+}
+
+/// The difference of the two end tangents' unit vectors (see the header).
+std::optional<Point2> tangent_direction(const core::Curve& before, const core::Curve& after) noexcept {
+  const Point2 joint = after.front();
+  std::optional<Point2> v, w;
+  for (int i = before.degree() - 1; i >= 0 && !v; --i) {
+    if (before[i] != joint) v = unit(before[i] - joint);
+  }
+  for (int j = 1; j <= after.degree() && !w; ++j) {
+    if (after[j] != joint) w = unit(after[j] - joint);
+  }
+  if (!v || !w) return std::nullopt;
+  return *v - *w;
+}
+
+/// The difference of the control polygons' mean directions from the joint (see the header).
+std::optional<Point2> mean_direction(const core::Curve& before, const core::Curve& after) noexcept {
+  const Point2 joint = after.front();
+  Point2 v_sum{}, w_sum{};
+  for (int i = 0; i < before.degree(); ++i) {
+    if (before[i] == joint) continue;
+    const auto u = unit(before[i] - joint);
+    if (!u) return std::nullopt;
+    v_sum = v_sum + *u;
+  }
+  for (int j = 1; j <= after.degree(); ++j) {
+    if (after[j] == joint) continue;
+    const auto u = unit(after[j] - joint);
+    if (!u) return std::nullopt;
+    w_sum = w_sum + *u;
+  }
+  const auto v = unit(v_sum);
+  const auto w = unit(w_sum);
+  if (!v || !w) return std::nullopt;
+  return *v - *w;
+}
+
+}  // namespace
+
+bool meet_only_at_joint(const core::Curve& before, const core::Curve& after) noexcept {
+  if (before.degree() < 1 || after.degree() < 1 || before.back() != after.front()) return false;
+  if (const auto d = tangent_direction(before, after); d && separates(*d, before, after)) return true;
+  const auto d = mean_direction(before, after);
+  return d && separates(*d, before, after);
+}
+
+}  // namespace bezier::path

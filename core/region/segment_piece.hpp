@@ -1,0 +1,30 @@
+#pragma once
+
+#include <algorithm>
+
+#include "core/base/curve.hpp"
+#include "core/curve/polar.hpp"
+
+namespace bezier::region {
+
+/// core::portion(segment, t0, t1), bit for bit, without its arithmetic when the piece is the
+/// whole segment (t0 = 0, t1 = 1) and no control-point coordinate is zero.
+///
+/// Why that is the segment itself. portion's control point i is the blossom
+/// b(0^(n-i), 1^i), computed by de Casteljau rounds (core/bernstein/casteljau_row.hpp) with
+/// parameters 0 and 1 only. A round with parameter 0 gives each entry (1 - 0) a + 0 b, one
+/// with parameter 1 gives 0 a + 1 b: the error-free products by 1 and 0 and the two-sum of a
+/// value and a zero are exact with zero error parts, so every entry stays an input coordinate
+/// with error part zero, and the point, value plus error part, is that coordinate. The one
+/// exception is the sign of a zero (-0 + 0 = +0): a segment with a zero coordinate takes
+/// core::portion. Checked against core::portion in tests/core/region/segment_piece_test.cpp.
+[[nodiscard]] inline core::Curve segment_piece(const core::Curve& segment, double t0, double t1) {
+  if (t0 == 0.0 && t1 == 1.0 &&
+      std::none_of(segment.points().begin(), segment.points().end(),
+                   [](core::Point2 p) { return p.x == 0.0 || p.y == 0.0; })) {
+    return segment;
+  }
+  return core::portion(segment, t0, t1);
+}
+
+}  // namespace bezier::region
