@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/base/curve.hpp"
 #include "core/outline/segment_cover.hpp"
 #include "core/outline/stroke_shapes.hpp"
 #include "core/outline/tangent_limits.hpp"
@@ -15,16 +16,11 @@ namespace {
 
 using core::Point2;
 
-bool is_point(const core::Curve& curve) {
-  return std::all_of(curve.points().begin(), curve.points().end(),
-                     [&](Point2 p) { return p == curve.front(); });
-}
-
 /// The segments of one subpath that draw something (stroke.hpp: zero-length ones are left out).
 std::vector<std::size_t> drawn_segments(const path::Path& path, const path::Subpath& sub) {
   std::vector<std::size_t> out;
   for (std::size_t k = sub.first_segment; k < sub.first_segment + sub.segment_count; ++k) {
-    if (!is_point(path.segments[k])) out.push_back(k);
+    if (!core::is_point(path.segments[k])) out.push_back(k);
   }
   return out;
 }

@@ -6,6 +6,7 @@
 #include <tuple>
 #include <utility>
 
+#include "core/base/curve.hpp"
 #include "core/curve/derivative.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/curve/polar.hpp"
@@ -52,11 +53,6 @@ class Clusters {
   std::vector<std::size_t> parent_;
 };
 
-bool is_point(const core::Curve& segment) {
-  return std::all_of(segment.points().begin(), segment.points().end(),
-                     [&](Point2 p) { return p == segment.front(); });
-}
-
 /// n max |P_{i+1} - P_i|: a bound on |B'(t)| over [0, 1].
 double speed_bound(const core::Curve& c) {
   double m = 0.0;
@@ -82,7 +78,7 @@ void append(Combined& all, const path::Path& p, Operand source) {
   for (const path::Subpath& sub : p.subpaths) {
     const std::size_t first = all.path.segments.size();
     for (std::size_t k = sub.first_segment; k < sub.first_segment + sub.segment_count; ++k) {
-      if (is_point(p.segments[k])) continue;
+      if (core::is_point(p.segments[k])) continue;
       all.path.segments.push_back(p.segments[k]);
       all.origin.emplace_back(source, k);
     }
