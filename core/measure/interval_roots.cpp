@@ -236,6 +236,9 @@ struct Found {
   }
 };
 
+// The phases of interval_roots below are always inlined into it: inlined late, as functions
+// called once, they would leave the search loop's state in memory instead of registers.
+
 /// Where the pieces of the first kHalvedDepth levels of a search on [0, 1] come from their
 /// parent's coefficients (`on`): every split point there is a dyadic rational, exactly the
 /// middle of its piece, so one subdivision at 1/2 (halves(), n + 1 entries per stack slot)
@@ -244,110 +247,106 @@ struct Found {
 /// d levels down is within d n u max|c| of the exact one, and its sign test allows that
 /// much where it exceeds e (from depth 3 on: bound()). Deeper pieces and those of other
 /// intervals are portion_into's, as are all pieces of degree 3 or less (straight-line code
-/// whose end coefficients are p at the ends, no evaluation needed). The search keeps
-/// pending <= job.depth (one sibling a level), so the halved pieces need kSlots slots,
-/// inline up to kUnrolledSizes coefficients.
-class HalvedPieces {
- public:
-  static constexpr std::size_t kSlots = kHalvedDepth + 2;
-
-  HalvedPieces(std::span<const double> c, double a, double b)
-      : on_(a == 0.0 && b == 1.0 && c.size() - 1 > 3),
-        error_(on_ ? 1.01 * static_cast<double>(c.size() - 1) * kUnitRoundoff *
-                         bernstein::max_abs(c)
-                   : 0.0),
-        size_(c.size()) {
-    if (on_ && size_ > kUnrolledSizes) beyond_.resize(kSlots * size_);
-    slots_ = size_ > kUnrolledSizes ? beyond_.data() : inline_.data();
-  }
-  HalvedPieces(const HalvedPieces&) = delete;
-  HalvedPieces& operator=(const HalvedPieces&) = delete;
+/// whose end coefficients are p at the ends, no evaluation needed).
+struct Halving {
+  bool on = false;
+  double error = 0.0;
 
   /// Whether the pieces at `depth` are halves.
-  [[nodiscard]] bool at(int depth) const noexcept { return on_ && depth <= kHalvedDepth; }
+  [[nodiscard]] bool at(int depth) const noexcept { return on && depth <= kHalvedDepth; }
   /// The rounding bound of a halved piece's coefficients at `depth`.
   [[nodiscard]] double bound(double e, int depth) const noexcept {
-    return std::max(e, error_ * depth);
+    return std::max(e, error * depth);
   }
-  /// The n + 1 coefficients of the halved piece held for stack position i.
-  [[nodiscard]] double* slot(std::size_t i) noexcept { return slots_ + i * size_; }
+};
 
- private:
-  bool on_;
-  double error_;
-  std::size_t size_;
-  std::array<double, kSlots * kUnrolledSizes> inline_;
-  std::vector<double> beyond_;
-  double* slots_;
+[[gnu::always_inline]] inline Halving halving_of(std::span<const double> c, double a, double b) {
+  const std::size_t n = c.size() - 1;
+  const bool on = a == 0.0 && b == 1.0 && n > 3;
+  return {on, on ? 1.01 * static_cast<double>(n) * kUnitRoundoff * bernstein::max_abs(c) : 0.0};
+}
+
+/// The search keeps pending <= job.depth (one sibling a level), so the halved pieces need
+/// kHalvedSlots slots of n + 1 coefficients, slot i for the job at stack position i.
+constexpr std::size_t kHalvedSlots = kHalvedDepth + 2;
+
+struct HalvedSlots {
+  double* base;
+  std::size_t size;  ///< n + 1
+  [[nodiscard]] double* slot(std::size_t i) const noexcept { return base + i * size; }
 };
 
 /// The pieces still to examine, depth first: at most one pending sibling per depth below
 /// the piece split last.
-struct JobStack {
-  std::array<Job, kMaxDepth + 2> jobs;
-  std::size_t pending = 0;
-};
+using JobStack = std::array<Job, kMaxDepth + 2>;
 
-/// Splits `job` (its piece q, not a one-root piece, above kMaxDepth levels) at its middle:
-/// pushes the right half, then the left (examined first), each with p at its ends and the
-/// middle flagged when p is exactly zero there, which is then a root in `found`. A halved
-/// piece's children come from q by halves() (the right half into q's own slot: halves
-/// reads q before it writes); their shared coefficient at the middle is within their bound
-/// of p there, so beyond that bound plus e, p and its evaluation have its sign and neither
-/// is zero, and the sign is all that the tests and the refinement take from a piece's end
-/// (beside the first point of the refinement, which may be anywhere in the bracket). Else
-/// p at the middle is evaluated.
-void split(const Job& job, double middle, std::span<const double> q, const Evaluator& p_at,
-           double e, HalvedPieces& halved, JobStack& stack, Found& found) {
-  std::size_t& pending = stack.pending;
-  assert(pending + 2 <= stack.jobs.size());
+/// Splits `job` (its piece q, neither discarded nor resolved, less than kMaxDepth levels
+/// deep, its middle strictly inside) at its middle: pushes the right half, then the left
+/// (examined first), each with p at its ends and the middle flagged when p is exactly zero
+/// there, which is then a root in `found`. A halved piece's children come from q by
+/// halves() (the right half into q's own slot: halves reads q before it writes); their
+/// shared coefficient at the middle is within their bound of p there, so beyond that bound
+/// plus e, p and its evaluation have its sign and neither is zero, and the sign is all that
+/// the tests and the refinement take from a piece's end (beside the first point of the
+/// refinement, which may be anywhere in the bracket). Else p at the middle is evaluated.
+[[gnu::always_inline]] inline void split(const Job& job, double middle, std::span<const double> q,
+                                         const Evaluator& p_at, double e, Halving halving,
+                                         HalvedSlots halved, JobStack& stack, std::size_t& pending,
+                                         Found& found) {
+  assert(pending + 2 <= stack.size());
   double p_middle = 0.0;
   bool known_middle = false;
-  if (halved.at(job.depth + 1)) {
-    assert(pending + 1 < HalvedPieces::kSlots);
+  if (halving.at(job.depth + 1)) {
+    assert(pending + 1 < kHalvedSlots);
     p_at.halves(q, halved.slot(pending + 1), halved.slot(pending));
     const double shared = halved.slot(pending)[0];
-    known_middle = std::fabs(shared) > halved.bound(e, job.depth + 1) + e;
+    known_middle = std::fabs(shared) > halving.bound(e, job.depth + 1) + e;
     if (known_middle) p_middle = shared;
   }
   if (!known_middle) p_middle = p_at.value(middle);
   const bool zero_middle = p_middle == 0.0;
   if (zero_middle) found.add(middle);
-  stack.jobs[pending++] = {middle,        job.hi,      p_middle,   job.p_hi,
-                           job.depth + 1, zero_middle, job.zero_hi};
-  stack.jobs[pending++] = {job.lo,        middle,      job.p_lo,   p_middle,
-                           job.depth + 1, job.zero_lo, zero_middle};
+  const int depth = job.depth + 1;
+  stack[pending++] = {middle, job.hi, p_middle, job.p_hi, depth, zero_middle, job.zero_hi};
+  stack[pending++] = {job.lo, middle, job.p_lo, p_middle, depth, job.zero_lo, zero_middle};
 }
 
 /// The isolation (see the header): subdivides `whole` (the piece [a, b] with p at its
 /// ends), examining each piece's Bernstein coefficients (computed within e, or within
-/// halved.bound for halved pieces) by Descartes' rule; adds to `found` the root refined in
+/// halving.bound for halved pieces) by Descartes' rule; adds to `found` the root refined in
 /// each one-root piece (only the rising ones when `wanted` says so), the middle of each
 /// piece zero to within rounding throughout and of each cluster still unresolved at
 /// kMaxDepth or at one ulp (when a root may be on it), and every exact zero of p at a split
 /// point. `isolated` becomes false when a piece zero to within rounding or an unresolved
 /// cluster is met.
-void isolate(std::span<const double> c, const Evaluator& p_at, double e, const Job& whole,
-             Crossings wanted, Found& found, bool& isolated) {
+[[gnu::always_inline]] inline void isolate(std::span<const double> c, const Evaluator& p_at,
+                                           double e, const Job& whole, Crossings wanted,
+                                           Found& found, bool& isolated) {
   const std::size_t n = c.size() - 1;
   JobStack stack;
-  stack.jobs[stack.pending++] = whole;
+  std::size_t pending = 0;
+  stack[pending++] = whole;
   Coeffs piece(n + 1, Coeffs::Uninitialized{});
-  HalvedPieces halved(c, whole.lo, whole.hi);
-  while (stack.pending > 0) {
-    const Job job = stack.jobs[--stack.pending];
+  const Halving halving = halving_of(c, whole.lo, whole.hi);
+  std::array<double, kHalvedSlots * kUnrolledSizes> slots_inline;
+  std::vector<double> slots_beyond;
+  if (halving.on && n + 1 > kUnrolledSizes) slots_beyond.resize(kHalvedSlots * (n + 1));
+  const HalvedSlots halved{n + 1 > kUnrolledSizes ? slots_beyond.data() : slots_inline.data(),
+                           n + 1};
+  while (pending > 0) {
+    const Job job = stack[--pending];
     // On [0, 1] the piece is c itself (de Casteljau steps at 0 and 1 are exact).
     const bool is_whole = job.lo == 0.0 && job.hi == 1.0;
-    const bool is_halved = !is_whole && halved.at(job.depth);
+    const bool is_halved = !is_whole && halving.at(job.depth);
     if (!is_whole && !is_halved) p_at.portion(job.lo, job.hi, piece.data());
-    const std::span<const double> q =
-        is_whole    ? c
-        : is_halved ? std::span<const double>(halved.slot(stack.pending), n + 1)
-                    : std::span<const double>(piece);
+    const std::span<const double> q = is_whole ? c
+                                      : is_halved
+                                          ? std::span<const double>(halved.slot(pending), n + 1)
+                                          : std::span<const double>(piece);
     // Descartes' rule on the coefficients that are clearly nonzero; an end that is an exact
     // zero is left out (p = (t - end) r(t), and r's coefficients have the others' signs).
     const std::size_t first = job.zero_lo ? 1 : 0, end = job.zero_hi ? n : n + 1;
-    const double bound = is_halved ? halved.bound(e, job.depth) : e;
+    const double bound = is_halved ? halving.bound(e, job.depth) : e;
     const auto [changes, any_small, all_small] =
         sign_changes(q.subspan(first, end > first ? end - first : 0), bound);
     const double middle = job.lo + (job.hi - job.lo) / 2;
@@ -379,7 +378,7 @@ void isolate(std::span<const double> c, const Evaluator& p_at, double e, const J
       }
       continue;
     }
-    split(job, middle, q, p_at, e, halved, stack, found);
+    split(job, middle, q, p_at, e, halving, halved, stack, pending, found);
   }
 }
 
@@ -388,8 +387,10 @@ void isolate(std::span<const double> c, const Evaluator& p_at, double e, const J
 /// that a stretch is one root however far apart its ends are, and is represented by its
 /// point with the smallest computed |p|. `isolated` becomes false when a stretch holds two
 /// points.
-SmallArray<double> merge_flat_stretches(Found& found, double a, double b, IntervalEnds ends,
-                                        const Evaluator& p_at, double e, bool& isolated) {
+[[gnu::always_inline]] inline SmallArray<double> merge_flat_stretches(Found& found, double a,
+                                                                      double b, IntervalEnds ends,
+                                                                      const Evaluator& p_at,
+                                                                      double e, bool& isolated) {
   double* const roots = found.values.data();
   std::sort(roots, roots + found.count);
   std::size_t kept = 0;
