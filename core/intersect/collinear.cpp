@@ -158,22 +158,27 @@ void hold_exact_root(CollinearOutcome& out, ExactRoot r) {
   out.touches.push_back({{r.t, r.t}, {r.s, r.s}, r.t, r.s});
 }
 
-}  // namespace
+/// The line both curves lie on, from `origin` towards `far` (dir = far - origin, of length
+/// `length` > 0).
+struct CommonLine {
+  Point2 origin, dir;
+  double length;
+};
 
-std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
-                                                        const WorkingCurve& g,
-                                                        std::span<const ExactRoot> exact_roots) {
-  // Relative to the smaller curve, as the overlap tests: a curve about 2^-14 the size of the other
-  // and bent by 4e-9 of its own size lies within the frame's tolerance of the other's line,
-  // and its end 1e-4 off that line is no touch
-  // (Collinear.ASmallCurveBentAboveItsRoundingIsNotOnALargeCurvesLine).
+/// The line through the two control points farthest apart, of both curves, from the
+/// lexicographically smaller, when every control point of f and of g lies within
+/// coincidence_tolerance of it; nullopt otherwise (or when all control points are one).
+/// The same line whichever curve comes first (from f's first control point, the decision
+/// near the tolerance would depend on the order:
+/// Collinear.NearlyCollinearCurvesOfDifferentSizesCrossOnce). The tolerance is relative to
+/// the smaller curve, as the overlap tests': a curve about 2^-14 the size of the other and
+/// bent by 4e-9 of its own size lies within the frame's tolerance of the other's line, and
+/// its end 1e-4 off that line is no touch
+/// (Collinear.ASmallCurveBentAboveItsRoundingIsNotOnALargeCurvesLine).
+std::optional<CommonLine> common_line(const WorkingCurve& f, const WorkingCurve& g) {
   const double quick_tol = coincidence_tolerance_bound(f, g);
   if (!roughly_straight(f, quick_tol) || !roughly_straight(g, quick_tol)) return std::nullopt;
   const double tol = coincidence_tolerance(f, g);
-  // The line through the two control points farthest apart, of both curves, from the
-  // lexicographically smaller: the same line whichever curve comes first (from f's first
-  // control point, the decision near the tolerance would depend on the order:
-  // Collinear.NearlyCollinearCurvesOfDifferentSizesCrossOnce).
   std::vector<Point2> all;
   for (const WorkingCurve* c : {&f, &g}) {
     for (std::size_t i = 0; i < c->x.size(); ++i) all.push_back({c->x[i], c->y[i]});
@@ -201,76 +206,98 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
       if (std::fabs(cross(dir, v)) / best > tol) return std::nullopt;
     }
   }
-  const double dd = dot(dir, dir);
-  const std::vector<double> u = positions(f, origin, dir, dd), v = positions(g, origin, dir, dd);
-  CollinearOutcome out;
-  for (const MonotonePiece& pf : monotone_pieces(u)) {
-    for (const MonotonePiece& pg : monotone_pieces(v)) {
-      const double w0 = std::max(std::min(pf.u0, pf.u1), std::min(pg.u0, pg.u1));
-      const double w1 = std::min(std::max(pf.u0, pf.u1), std::max(pg.u0, pg.u1));
-      if (w1 < w0 - kTouch) continue;
-      double ta = invert(u, pf, w0), tb = invert(u, pf, w1);
-      double sa = invert(v, pg, w0), sb = invert(v, pg, w1);
-      // Each end of the shared range is an end of one of the two pieces, where that
-      // curve's parameter is exact; the other parameter, from bisection on the rounded
-      // positions, is pinned down by Newton's method on the exact point. When it is an end
-      // of both, both parameters are exact: moving either would depend on which curve
-      // comes first (Collinear.ATouchAtTwoEndsIsTheSameInBothOrders).
-      const auto refine = [&](double w, double& t, double& s) {
-        const bool from_f = w == pf.u0 || w == pf.u1, from_g = w == pg.u0 || w == pg.u1;
-        if (from_f && from_g) return;
-        if (from_f) {
-          s = locate_on_curve(g, evaluate_dd(f, t), s);
-        } else {
-          t = locate_on_curve(f, evaluate_dd(g, s), t);
-        }
-      };
-      refine(w0, ta, sa);
-      refine(w1, tb, sb);
-      if (w1 - w0 > kTouch) {
-        Overlap o;
-        o.t_interval = {std::min(ta, tb), std::max(ta, tb)};
-        o.s_interval = {std::min(sa, sb), std::max(sa, sb)};
-        o.reversed = (ta > tb) != (sa > sb);
-        out.overlaps.push_back(o);
-        continue;
-      }
-      // The ranges only touch: one contact, unless an overlap already ends there. A flat
-      // piece touches with all of its parameters (a curve within the line tolerance of a
-      // point: Collinear.EndPointRootOfATinyCurveIsReported), and the other curve's
-      // parameters are those of its two ends
-      // (its positions, rounded, may be one number, while its exact points are not).
-      if (flat(pf) && !flat(pg)) {
-        ta = pf.t0;
-        tb = pf.t1;
-        sa = locate_on_curve(g, evaluate_dd(f, ta), invert(v, pg, pf.u0));
-        sb = locate_on_curve(g, evaluate_dd(f, tb), invert(v, pg, pf.u1));
-      } else if (flat(pg) && !flat(pf)) {
-        sa = pg.t0;
-        sb = pg.t1;
-        ta = locate_on_curve(f, evaluate_dd(g, sa), invert(u, pf, pg.u0));
-        tb = locate_on_curve(f, evaluate_dd(g, sb), invert(u, pf, pg.u1));
-      } else if (flat(pf) && flat(pg)) {
-        ta = pf.t0, tb = pf.t1, sa = pg.t0, sb = pg.t1;
-      }
-      const ParamInterval t_iv{std::min(ta, tb), std::max(ta, tb)};
-      const ParamInterval s_iv{std::min(sa, sb), std::max(sa, sb)};
-      const double tm = middle(t_iv.lo, t_iv.hi), sm = middle(s_iv.lo, s_iv.hi);
-      bool known = false;
-      for (const Overlap& o : out.overlaps) {
-        known = known || ((std::fabs(tm - o.t_interval.lo) <= kTouch ||
-                           std::fabs(tm - o.t_interval.hi) <= kTouch) &&
-                          (std::fabs(sm - o.s_interval.lo) <= kTouch ||
-                           std::fabs(sm - o.s_interval.hi) <= kTouch));
-      }
-      for (const CollinearContact& c : out.touches) {
-        known = known ||
-                (std::fabs(tm - c.t_estimate) <= kTouch && std::fabs(sm - c.s_estimate) <= kTouch);
-      }
-      if (!known) out.touches.push_back({t_iv, s_iv, tm, sm});
-    }
+  return CommonLine{origin, dir, best};
+}
+
+/// The positions along the common line (u of f, v of g) and one monotone piece of each.
+struct PiecePair {
+  const std::vector<double>& u;
+  const std::vector<double>& v;
+  const MonotonePiece& pf;
+  const MonotonePiece& pg;
+};
+
+/// Where the ranges of two pieces only touch (their shared range [w0, w1] no longer than
+/// kTouch), with (ta, sa) and (tb, sb) the parameters at its ends: one contact in `out`,
+/// unless an overlap or a contact already found is there (within kTouch of its middle). A
+/// flat piece touches with all of its parameters (a curve within the line tolerance of a
+/// point: Collinear.EndPointRootOfATinyCurveIsReported), and the other curve's parameters
+/// are those of its two ends (its positions, rounded, may be one number, while its exact
+/// points are not).
+void add_touch(const WorkingCurve& f, const WorkingCurve& g, const PiecePair& p, double ta,
+               double tb, double sa, double sb, CollinearOutcome& out) {
+  const MonotonePiece &pf = p.pf, &pg = p.pg;
+  if (flat(pf) && !flat(pg)) {
+    ta = pf.t0;
+    tb = pf.t1;
+    sa = locate_on_curve(g, evaluate_dd(f, ta), invert(p.v, pg, pf.u0));
+    sb = locate_on_curve(g, evaluate_dd(f, tb), invert(p.v, pg, pf.u1));
+  } else if (flat(pg) && !flat(pf)) {
+    sa = pg.t0;
+    sb = pg.t1;
+    ta = locate_on_curve(f, evaluate_dd(g, sa), invert(p.u, pf, pg.u0));
+    tb = locate_on_curve(f, evaluate_dd(g, sb), invert(p.u, pf, pg.u1));
+  } else if (flat(pf) && flat(pg)) {
+    ta = pf.t0, tb = pf.t1, sa = pg.t0, sb = pg.t1;
   }
-  // A touch found before the overlap that ends there.
+  const ParamInterval t_iv{std::min(ta, tb), std::max(ta, tb)};
+  const ParamInterval s_iv{std::min(sa, sb), std::max(sa, sb)};
+  const double tm = middle(t_iv.lo, t_iv.hi), sm = middle(s_iv.lo, s_iv.hi);
+  bool known = false;
+  for (const Overlap& o : out.overlaps) {
+    known =
+        known ||
+        ((std::fabs(tm - o.t_interval.lo) <= kTouch || std::fabs(tm - o.t_interval.hi) <= kTouch) &&
+         (std::fabs(sm - o.s_interval.lo) <= kTouch || std::fabs(sm - o.s_interval.hi) <= kTouch));
+  }
+  for (const CollinearContact& c : out.touches) {
+    known =
+        known || (std::fabs(tm - c.t_estimate) <= kTouch && std::fabs(sm - c.s_estimate) <= kTouch);
+  }
+  if (!known) out.touches.push_back({t_iv, s_iv, tm, sm});
+}
+
+/// What a monotone piece of f and one of g share: nothing when their ranges of positions
+/// are more than kTouch apart; an overlap in `out` when they share more than kTouch;
+/// otherwise a touch (add_touch). The parameters of the shared range's ends come from
+/// bisection on the pieces (invert); each end is an end of one of the two pieces, where
+/// that curve's parameter is exact, and the other parameter, from bisection on the rounded
+/// positions, is pinned down by Newton's method on the exact point. When it is an end of
+/// both, both parameters are exact: moving either would depend on which curve comes first
+/// (Collinear.ATouchAtTwoEndsIsTheSameInBothOrders).
+void add_shared_range(const WorkingCurve& f, const WorkingCurve& g, const PiecePair& p,
+                      CollinearOutcome& out) {
+  const MonotonePiece &pf = p.pf, &pg = p.pg;
+  const double w0 = std::max(std::min(pf.u0, pf.u1), std::min(pg.u0, pg.u1));
+  const double w1 = std::min(std::max(pf.u0, pf.u1), std::max(pg.u0, pg.u1));
+  if (w1 < w0 - kTouch) return;
+  double ta = invert(p.u, pf, w0), tb = invert(p.u, pf, w1);
+  double sa = invert(p.v, pg, w0), sb = invert(p.v, pg, w1);
+  const auto refine = [&](double w, double& t, double& s) {
+    const bool from_f = w == pf.u0 || w == pf.u1, from_g = w == pg.u0 || w == pg.u1;
+    if (from_f && from_g) return;
+    if (from_f) {
+      s = locate_on_curve(g, evaluate_dd(f, t), s);
+    } else {
+      t = locate_on_curve(f, evaluate_dd(g, s), t);
+    }
+  };
+  refine(w0, ta, sa);
+  refine(w1, tb, sb);
+  if (w1 - w0 > kTouch) {
+    Overlap o;
+    o.t_interval = {std::min(ta, tb), std::max(ta, tb)};
+    o.s_interval = {std::min(sa, sb), std::max(sa, sb)};
+    o.reversed = (ta > tb) != (sa > sb);
+    out.overlaps.push_back(o);
+    return;
+  }
+  add_touch(f, g, p, ta, tb, sa, sb, out);
+}
+
+/// Drops each touch found before the overlap that ends there (its estimates within kTouch
+/// of an end of the overlap's intervals in both t and s).
+void drop_touches_at_overlap_ends(CollinearOutcome& out) {
   std::erase_if(out.touches, [&](const CollinearContact& c) {
     for (const Overlap& o : out.overlaps) {
       const bool t_end = std::fabs(c.t_estimate - o.t_interval.lo) <= kTouch ||
@@ -281,6 +308,24 @@ std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
     }
     return false;
   });
+}
+
+}  // namespace
+
+std::optional<CollinearOutcome> collinear_intersections(const WorkingCurve& f,
+                                                        const WorkingCurve& g,
+                                                        std::span<const ExactRoot> exact_roots) {
+  const std::optional<CommonLine> line = common_line(f, g);
+  if (!line) return std::nullopt;
+  const double dd = dot(line->dir, line->dir);
+  const std::vector<double> u = positions(f, line->origin, line->dir, dd);
+  const std::vector<double> v = positions(g, line->origin, line->dir, dd);
+  CollinearOutcome out;
+  const std::vector<MonotonePiece> f_pieces = monotone_pieces(u), g_pieces = monotone_pieces(v);
+  for (const MonotonePiece& pf : f_pieces) {
+    for (const MonotonePiece& pg : g_pieces) add_shared_range(f, g, {u, v, pf, pg}, out);
+  }
+  drop_touches_at_overlap_ends(out);
   for (const ExactRoot& r : exact_roots) hold_exact_root(out, r);
   return out;
 }

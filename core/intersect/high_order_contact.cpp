@@ -5,6 +5,9 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
 
 #include "core/bernstein/exact_casteljau.hpp"
 #include "core/intersect/kind.hpp"
@@ -156,81 +159,90 @@ ParamInterval enclosure(RationalParameter p) {
   return {next_down(q), next_up(q)};
 }
 
-}  // namespace
+/// Step 1 of the certificate (see the header): the polynomial maps P (of f) and Q (of g)
+/// in power form, lowest coefficient first, per axis, and the axis e of Q'(0)'s component
+/// of larger magnitude, c = Q[e][1].
+struct ContactMaps {
+  std::array<Poly, 2> P, Q;
+  int e = 0;
+};
 
-std::optional<RationalParameter> simplest_rational(ParamInterval iv, int max_den) {
-  for (int b = 1; b <= max_den; ++b) {
-    const double den = b;
-    double a = std::ceil(iv.lo * den);
-    // a / b >= lo exactly, and the least such a (the signs of fma are exact).
-    while (std::fma(-iv.lo, den, a) < 0.0) a += 1.0;
-    while (a >= 1.0 && std::fma(-iv.lo, den, a - 1.0) >= 0.0) a -= 1.0;
-    if (std::fma(-iv.hi, den, a) <= 0.0 && a <= den) return RationalParameter{a, den};
-  }
-  return std::nullopt;
-}
-
-std::optional<HighOrderContact> certify_high_order_contact(const Curve& f, const Curve& g,
-                                                           RationalParameter t,
-                                                           RationalParameter s,
-                                                           std::int64_t max_products,
-                                                           std::int64_t& products) {
-  ExactArithmetic ar(max_products);
-  const auto done = [&]() -> std::optional<HighOrderContact> {
-    products = ar.used();
-    return std::nullopt;
-  };
-  products = 0;
+/// P(x) = b'^m b^n f((a + x)/b) and Q(y) = b^n b'^m g((a' + y)/b') exactly, with the curves
+/// translated to f's first point and scaled by a power of two to magnitudes about 1 (the
+/// exact products then stay far inside the exponent window), and both sides scaled by one
+/// power of two that centres c on 1, its least significant bit as far below as its leading
+/// bit is above: E's coefficient of z^j carries c^(2j), whose bits (2j times c's) must fit
+/// inside the exponent window up to j = m k. nullopt when the curves are one point, c is
+/// zero, the arithmetic fails, or P(0) != Q(0) (the curves do not meet there).
+std::optional<ContactMaps> contact_maps(const Curve& f, const Curve& g, RationalParameter t,
+                                        RationalParameter s, ExactArithmetic& ar) {
   const int n = f.degree(), m = g.degree();
-  if (n < 1 || m < 1) return done();
-
-  // Translated to f's first point and scaled by a power of two to magnitudes about 1: the
-  // exact products then stay far inside the exponent window.
   const Point2 origin = f.front();
   double extent = 0.0;
   for (const Curve* c : {&f, &g})
     for (const Point2 q : c->points())
       extent = std::max({extent, std::fabs(q.x - origin.x), std::fabs(q.y - origin.y)});
-  if (!(extent > 0.0) || !std::isfinite(extent)) return done();
+  if (!(extent > 0.0) || !std::isfinite(extent)) return std::nullopt;
   const double shift_scale = power_of_two(-exponent_of(extent));
 
   Expansion bn(1.0), bm(1.0);  // b^n, b'^m
   for (int i = 0; i < n; ++i) bn = ar.mul(bn, t.den);
   for (int i = 0; i < m; ++i) bm = ar.mul(bm, s.den);
-  std::array<Poly, 2> P = shifted_power_form(f, origin, shift_scale, t, bm, ar);
-  std::array<Poly, 2> Q = shifted_power_form(g, origin, shift_scale, s, bn, ar);
-  if (!ar.ok()) return done();
-  // Both sides scaled by one power of two that centres c (below) on 1, its least significant
-  // bit as far below as its leading bit is above: E's coefficient of z^j carries c^(2j),
-  // whose bits (2j times c's) must fit inside the exponent window up to j = m k.
-  const int c_axis = std::fabs(Q[0][1].estimate()) >= std::fabs(Q[1][1].estimate()) ? 0 : 1;
-  if (Q[c_axis][1].sign() == 0) return done();
-  const ExponentRange c_bits = exponent_range(Q[c_axis][1]);
+  ContactMaps maps;
+  maps.P = shifted_power_form(f, origin, shift_scale, t, bm, ar);
+  maps.Q = shifted_power_form(g, origin, shift_scale, s, bn, ar);
+  if (!ar.ok()) return std::nullopt;
+  std::array<Poly, 2>& Q = maps.Q;
+  maps.e = std::fabs(Q[0][1].estimate()) >= std::fabs(Q[1][1].estimate()) ? 0 : 1;
+  if (Q[maps.e][1].sign() == 0) return std::nullopt;
+  const ExponentRange c_bits = exponent_range(Q[maps.e][1]);
   const double c_scale = power_of_two(-(c_bits.lsb + c_bits.top) / 2);
-  for (std::array<Poly, 2>* side : {&P, &Q})
+  for (std::array<Poly, 2>* side : {&maps.P, &maps.Q})
     for (Poly& axis : *side)
       for (Expansion& coefficient : axis) coefficient = ar.mul(coefficient, c_scale);
-  if (!ar.ok()) return done();
-  // 1. The curves meet there.
+  if (!ar.ok()) return std::nullopt;
   for (int axis = 0; axis < 2; ++axis)
-    if ((P[axis][0] - Q[axis][0]).sign() != 0) return done();
+    if ((maps.P[axis][0] - maps.Q[axis][0]).sign() != 0) return std::nullopt;
+  return maps;
+}
 
-  // 2. The reparametrisation, along the larger component e of Q'(0).
-  const int e = c_axis;
+/// c^i, each power taken once (in the order first asked for) and kept.
+class PowersOf {
+ public:
+  PowersOf(Expansion c, ExactArithmetic& ar) : c_(std::move(c)), ar_(ar) {}
+  const Expansion& operator()(int i) {
+    while (powers_.size() <= static_cast<std::size_t>(i))
+      powers_.push_back(ar_.mul(powers_.back(), c_));
+    return powers_[static_cast<std::size_t>(i)];
+  }
+
+ private:
+  Expansion c_;
+  ExactArithmetic& ar_;
+  Poly powers_{Expansion(1.0)};
+};
+
+/// Step 2's reparametrisation: Phi_1, ..., Phi_k (phi[0] = 0; phi has max_order + 1
+/// entries) and the order k.
+struct Reparametrisation {
+  Poly phi;
+  int order = 0;  ///< 0: none up to max_order (a common component), or the arithmetic failed
+};
+
+/// Builds Psi term by term so that the e-component of E(z) = P(c^2 z) - Q(c Psi(z))
+/// vanishes to order j + 1, up to the first order j <= max_order at which the other
+/// component's coefficient of z^j does not vanish: that j is k (m = g's degree).
+Reparametrisation reparametrisation(const ContactMaps& maps, int m, int max_order,
+                                    PowersOf& c_power, ExactArithmetic& ar) {
+  const std::array<Poly, 2>&P = maps.P, &Q = maps.Q;
+  const int e = maps.e;
   const int o = 1 - e;
-  const Expansion c = Q[e][1];
-  const int max_order = std::min(n * m, kMaxContactOrder);
-  Poly cpow{Expansion(1.0)};
-  const auto c_power = [&](int i) -> const Expansion& {
-    while (cpow.size() <= static_cast<std::size_t>(i)) cpow.push_back(ar.mul(cpow.back(), c));
-    return cpow[static_cast<std::size_t>(i)];
-  };
   // pw[r][j]: the coefficient of z^j in Psi^r (r = 1..m), from the Phi_i found so far.
   std::vector<Poly> pw(static_cast<std::size_t>(m) + 1,
                        Poly(static_cast<std::size_t>(max_order) + 1));
-  Poly phi(static_cast<std::size_t>(max_order) + 1);
-  int order = 0;
-  for (int j = 1; j <= max_order && order == 0; ++j) {
+  Reparametrisation out{Poly(static_cast<std::size_t>(max_order) + 1), 0};
+  Poly& phi = out.phi;
+  for (int j = 1; j <= max_order && out.order == 0; ++j) {
     const auto uj = static_cast<std::size_t>(j);
     for (int r = 2; r <= std::min(j, m); ++r) {
       Expansion sum;
@@ -249,14 +261,24 @@ std::optional<HighOrderContact> certify_high_order_contact(const Curve& f, const
     for (int r = 1; r <= std::min(j, m); ++r)
       e_o = e_o - ar.mul(ar.mul(Q[o][static_cast<std::size_t>(r)], c_power(r)),
                          pw[static_cast<std::size_t>(r)][uj]);
-    if (!ar.ok()) return done();
-    if (e_o.sign() != 0) order = j;
+    if (!ar.ok()) {
+      out.order = 0;
+      return out;
+    }
+    if (e_o.sign() != 0) out.order = j;
   }
-  if (order < kLeastCertifiedOrder) return done();  // no order found is 0: a common component
-  const int k = order;
+  return out;
+}
 
-  // E(z) = P(c^2 z) - Q(c Psi(z)) whole, with Psi cut at degree k.
-  const Poly psi(phi.begin(), phi.begin() + k + 1);  // psi[0] = 0
+/// E(z) = P(c^2 z) - Q(c Psi(z)) whole, per axis (coefficients of z^0..z^max(n, m k)), with
+/// Psi cut at degree k, and the construction checked: z^k divides E, and E_k lies along
+/// the other axis, nonzero. nullopt when the check fails or the arithmetic does.
+std::optional<std::array<Poly, 2>> contact_residual(const ContactMaps& maps,
+                                                    const Reparametrisation& psi_k, int n, int m,
+                                                    PowersOf& c_power, ExactArithmetic& ar) {
+  const std::array<Poly, 2>&P = maps.P, &Q = maps.Q;
+  const int k = psi_k.order;
+  const Poly psi(psi_k.phi.begin(), psi_k.phi.begin() + k + 1);  // psi[0] = 0
   std::vector<Poly> full{Poly{Expansion(1.0)}, psi};
   for (int r = 2; r <= m; ++r) full.push_back(multiply(full.back(), psi, ar));
   const int degree_e = std::max(n, m * k);
@@ -270,49 +292,80 @@ std::optional<HighOrderContact> certify_high_order_contact(const Curve& f, const
       E[axis].push_back(v);
     }
   }
-  if (!ar.ok()) return done();
-  // The construction, checked: z^k divides E, and E_k lies along the other axis.
+  if (!ar.ok()) return std::nullopt;
   for (int j = 0; j < k; ++j)
     for (int axis = 0; axis < 2; ++axis)
-      if (E[axis][static_cast<std::size_t>(j)].sign() != 0) return done();
+      if (E[axis][static_cast<std::size_t>(j)].sign() != 0) return std::nullopt;
   const auto uk = static_cast<std::size_t>(k);
-  if (E[e][uk].sign() != 0 || E[o][uk].sign() == 0) return done();
+  if (E[maps.e][uk].sign() != 0 || E[1 - maps.e][uk].sign() == 0) return std::nullopt;
+  return E;
+}
 
-  // 3. Isolation: |c E_k,o| = |w(0) x Q'(0)| against the tails, all rounded outward.
+/// Step 3's data, the exact quantities rounded outward.
+struct IsolationBounds {
+  double lower = 0.0;          ///< <= |c E_k,o| = |w(0) x Q'(0)|
+  double w0 = 0.0;             ///< >= |E_k,o|
+  std::vector<double> w_tail;  ///< >= |E_j|_inf, j = k + 1..deg E (w's Taylor tail)
+  std::vector<double> q_norm;  ///< >= |Q_j|_inf, j = 0..m
+  std::vector<double> c_phi;   ///< >= |c Phi_i|, i = 1..k
+  double c_low = 0.0;          ///< <= |c|
+};
+
+/// The bounds of step 3 from the maps, Psi and E (order k = psi.order, m = g's degree);
+/// the arithmetic may fail (the caller asks ar.ok()).
+IsolationBounds isolation_bounds(const ContactMaps& maps, const Reparametrisation& psi,
+                                 const std::array<Poly, 2>& E, int m, ExactArithmetic& ar) {
+  const std::array<Poly, 2>& Q = maps.Q;
+  const Expansion& c = Q[maps.e][1];
+  const int o = 1 - maps.e;
+  const int k = psi.order;
+  const auto uk = static_cast<std::size_t>(k);
+  IsolationBounds b;
   const Expansion cross0 = ar.mul(c, E[o][uk]);
-  if (!ar.ok()) return done();
-  const double lower = abs_lower(cross0);
-  const double w0 = abs_upper(E[o][uk]);
-  std::vector<double> w_tail, q_norm, c_phi;
+  if (!ar.ok()) return b;
+  b.lower = abs_lower(cross0);
+  b.w0 = abs_upper(E[o][uk]);
+  const int degree_e = static_cast<int>(E[0].size()) - 1;
   for (int j = k + 1; j <= degree_e; ++j)
-    w_tail.push_back(std::max(abs_upper(E[0][static_cast<std::size_t>(j)]),
-                              abs_upper(E[1][static_cast<std::size_t>(j)])));
+    b.w_tail.push_back(std::max(abs_upper(E[0][static_cast<std::size_t>(j)]),
+                                abs_upper(E[1][static_cast<std::size_t>(j)])));
   for (int j = 0; j <= m; ++j)
-    q_norm.push_back(std::max(abs_upper(Q[0][static_cast<std::size_t>(j)]),
-                              abs_upper(Q[1][static_cast<std::size_t>(j)])));
-  for (int i = 1; i <= k; ++i) c_phi.push_back(abs_upper(ar.mul(c, phi[static_cast<std::size_t>(i)])));
-  if (!ar.ok()) return done();
-  products = ar.used();
+    b.q_norm.push_back(std::max(abs_upper(Q[0][static_cast<std::size_t>(j)]),
+                                abs_upper(Q[1][static_cast<std::size_t>(j)])));
+  for (int i = 1; i <= k; ++i)
+    b.c_phi.push_back(abs_upper(ar.mul(c, psi.phi[static_cast<std::size_t>(i)])));
+  b.c_low = abs_lower(c);
+  return b;
+}
+
+/// Step 3's search for rho: the t-radius c^2 rho / b = 2^-level for level = 1, 2, ... down
+/// to 2 kLeastIsolation, the first where |w(0) x Q'(0)| exceeds the bound on the tails
+/// (|a x b| <= 2 |a|_inf |b|_inf) gives the contact of order k with its isolating boxes;
+/// nullopt when none does, or when the boxes would be narrower than kLeastIsolation.
+std::optional<HighOrderContact> isolating_box(const IsolationBounds& bounds, RationalParameter t,
+                                              RationalParameter s, int k) {
+  const std::size_t m = bounds.q_norm.size() - 1;
   // Every bound below is a sum of at most a few hundred products of nonnegative doubles,
   // so its rounding is below 2^-40 relative; kBoundSlack covers it.
   constexpr double kBoundSlack = 1.0 + 0x1p-30;
   // rho is chosen so that the t-radius c^2 rho / b is 2^-level.
-  const double c_low = abs_lower(c);
+  const double c_low = bounds.c_low;
   const double rho_unit = t.den / (c_low * c_low);
   if (!(rho_unit > 0.0) || !std::isfinite(rho_unit)) return std::nullopt;
   for (int level = 1; power_of_two(-level) >= 2 * kLeastIsolation; ++level) {
     const double rho = power_of_two(-level) * rho_unit;
     double r_min = 0.0, rho_i = 1.0;
-    for (const double a : c_phi) r_min += a * (rho_i *= rho);
+    for (const double a : bounds.c_phi) r_min += a * (rho_i *= rho);
     const double big_r = 2.0 * r_min;
     if (!(big_r > 0.0)) return std::nullopt;
     double dq = 0.0, r_j = 1.0;  // sum_{j>=2} j |Q_j| R^(j-1)
-    for (int j = 2; j <= m; ++j) dq += j * q_norm[static_cast<std::size_t>(j)] * (r_j *= big_r);
+    for (std::size_t j = 2; j <= m; ++j)
+      dq += static_cast<int>(j) * bounds.q_norm[j] * (r_j *= big_r);
     double dw = 0.0;
     rho_i = 1.0;
-    for (const double a : w_tail) dw += a * (rho_i *= rho);
-    const double rhs = 2.0 * (w0 * dq + dw * q_norm[1] + dw * dq) * kBoundSlack;
-    if (!(lower > rhs)) continue;
+    for (const double a : bounds.w_tail) dw += a * (rho_i *= rho);
+    const double rhs = 2.0 * (bounds.w0 * dq + dw * bounds.q_norm[1] + dw * dq) * kBoundSlack;
+    if (!(bounds.lower > rhs)) continue;
     // The parameter boxes: |t - t*| <= c^2 rho / b, |s - s*| <= R / b'; half of each,
     // which also absorbs the rounding of these quotients and of the box ends.
     const double ht = 0.5 * (c_low * c_low * rho / t.den);
@@ -329,6 +382,49 @@ std::optional<HighOrderContact> certify_high_order_contact(const Curve& f, const
     return x;
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<RationalParameter> simplest_rational(ParamInterval iv, int max_den) {
+  for (int b = 1; b <= max_den; ++b) {
+    const double den = b;
+    double a = std::ceil(iv.lo * den);
+    // a / b >= lo exactly, and the least such a (the signs of fma are exact).
+    while (std::fma(-iv.lo, den, a) < 0.0) a += 1.0;
+    while (a >= 1.0 && std::fma(-iv.lo, den, a - 1.0) >= 0.0) a -= 1.0;
+    if (std::fma(-iv.hi, den, a) <= 0.0 && a <= den) return RationalParameter{a, den};
+  }
+  return std::nullopt;
+}
+
+std::optional<HighOrderContact> certify_high_order_contact(const Curve& f, const Curve& g,
+                                                           RationalParameter t, RationalParameter s,
+                                                           std::int64_t max_products,
+                                                           std::int64_t& products) {
+  ExactArithmetic ar(max_products);
+  const auto done = [&]() -> std::optional<HighOrderContact> {
+    products = ar.used();
+    return std::nullopt;
+  };
+  products = 0;
+  const int n = f.degree(), m = g.degree();
+  if (n < 1 || m < 1) return done();
+  // 1. The maps, meeting at 0.
+  const std::optional<ContactMaps> maps = contact_maps(f, g, t, s, ar);
+  if (!maps) return done();
+  // 2. The reparametrisation, along the larger component e of Q'(0), and E.
+  PowersOf c_power(maps->Q[maps->e][1], ar);
+  const int max_order = std::min(n * m, kMaxContactOrder);
+  const Reparametrisation psi = reparametrisation(*maps, m, max_order, c_power, ar);
+  if (psi.order < kLeastCertifiedOrder) return done();  // no order found is 0: a common component
+  const std::optional<std::array<Poly, 2>> E = contact_residual(*maps, psi, n, m, c_power, ar);
+  if (!E) return done();
+  // 3. Isolation: |c E_k,o| = |w(0) x Q'(0)| against the tails, all rounded outward.
+  const IsolationBounds bounds = isolation_bounds(*maps, psi, *E, m, ar);
+  if (!ar.ok()) return done();
+  products = ar.used();
+  return isolating_box(bounds, t, s, psi.order);
 }
 
 std::int64_t HighOrderContactFinder::try_box(ParamInterval t, ParamInterval s,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "core/numeric/binomial.hpp"
 #include "core/bernstein/degree.hpp"
@@ -191,14 +192,13 @@ bool top_coefficients_agree(const WorkingCurve& f, const WorkingCurve& g, Point2
   return std::fabs(b_other - r * a_other) <= top_tol;
 }
 
-}  // namespace
-
-std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCurve& g) {
-  std::vector<OverlapFinding> out;
-  if (f.is_point || g.is_point) return out;
-  // The top coefficients' condition below, first, when both curves have their full degree
-  // n (true_degree's test at k = n): a few differences instead of the hull regions and the
-  // conversions, and for two random curves it fails.
+/// The cheap necessary conditions, before any conversion: neither curve is a point; when
+/// both have their full degree n (true_degree's test at k = n), their top coefficients
+/// agree (top_coefficients_agree: a few differences instead of the hull regions and the
+/// conversions, and for two random curves it fails); two of the four end points lie near
+/// the other curve's hull (ends_may_overlap). False: the curves share no piece.
+bool may_overlap(const WorkingCurve& f, const WorkingCurve& g) {
+  if (f.is_point || g.is_point) return false;
   if (f.degree == g.degree && f.degree >= 1) {
     const int n = f.degree;
     const Point2 a_n = {top_monomial_coefficient(f.x), top_monomial_coefficient(f.y)};
@@ -206,44 +206,81 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
     if (significant_coefficient(n, n, a_n.x, a_n.y, f.magnitude) &&
         significant_coefficient(n, n, b_n.x, b_n.y, g.magnitude) &&
         !top_coefficients_agree(f, g, a_n, b_n, n))
-      return out;
+      return false;
   }
-  if (!ends_may_overlap(f, g)) return out;
-  const Coeffs fx = monomial(f.x), fy = monomial(f.y);
-  const Coeffs gx = monomial(g.x), gy = monomial(g.y);
-  const int d = true_degree(fx, fy, f.magnitude);
-  if (d < 1 || d != true_degree(gx, gy, g.magnitude)) return out;
-  const auto at = [](const Coeffs& v, int k) { return v[static_cast<std::size_t>(k)]; };
-  // The coordinate with the larger top coefficient of f.
-  const bool use_x = std::fabs(at(fx, d)) >= std::fabs(at(fy, d));
-  const Coeffs& a = use_x ? fx : fy;
-  const Coeffs& b = use_x ? gx : gy;
-  const Coeffs& a_other = use_x ? fy : fx;
-  const Coeffs& b_other = use_x ? gy : gx;
-  // Necessary conditions first (most pairs stop here), on the coefficients of the whole
-  // curves: g's top coefficients are beta^d times f's in both coordinates, and the next
-  // ones differ from f's (mapped by beta^(d-1)) along f's top coefficient vector. They hold
-  // to within what overlap_tolerance allows of the control points, plus the conversion's
-  // rounding (coefficient_error), with every quotient's error carried through. The
-  // verification below looks at the overlapping pieces only, which cannot tell a short
-  // piece of a coincident curve from a curve that leaves at a small angle (regression test
-  // Overlap.SwappingTheCurvesGivesTheSameKindOfAnswer: segments 2.4e-7 rad apart).
-  if (!top_coefficients_agree(f, g, {at(fx, d), at(fy, d)}, {at(gx, d), at(gy, d)}, d)) return out;
+  return ends_may_overlap(f, g);
+}
+
+double at(const Coeffs& v, int k) {
+  return v[static_cast<std::size_t>(k)];
+}
+
+/// The monomial coefficients of f (a) and g (b) in the main coordinate, the one where f's
+/// top coefficient is the larger, and in the other; d their common true degree (>= 1).
+struct MonomialForms {
+  Coeffs fx, fy, gx, gy;
+  int d = 0;
+  bool use_x = true;
+
+  [[nodiscard]] const Coeffs& a() const { return use_x ? fx : fy; }
+  [[nodiscard]] const Coeffs& b() const { return use_x ? gx : gy; }
+  [[nodiscard]] const Coeffs& a_other() const { return use_x ? fy : fx; }
+  [[nodiscard]] const Coeffs& b_other() const { return use_x ? gy : gx; }
+};
+
+/// The monomial forms of f and g when their true degrees are one d >= 1 and g's top
+/// coefficients are beta^d times f's in both coordinates (top_coefficients_agree, on the
+/// coefficients of the whole curves); nullopt otherwise, where no linear map relates them.
+std::optional<MonomialForms> agreeing_monomial_forms(const WorkingCurve& f, const WorkingCurve& g) {
+  MonomialForms m{monomial(f.x), monomial(f.y), monomial(g.x), monomial(g.y)};
+  m.d = true_degree(m.fx, m.fy, f.magnitude);
+  const int d = m.d;
+  if (d < 1 || d != true_degree(m.gx, m.gy, g.magnitude)) return std::nullopt;
+  m.use_x = std::fabs(at(m.fx, d)) >= std::fabs(at(m.fy, d));
+  // The verification (pieces_coincide) looks at the overlapping pieces only, which cannot
+  // tell a short piece of a coincident curve from a curve that leaves at a small angle
+  // (regression test Overlap.SwappingTheCurvesGivesTheSameKindOfAnswer: segments 2.4e-7 rad
+  // apart): the whole curves' coefficients must agree first.
+  if (!top_coefficients_agree(f, g, {at(m.fx, d), at(m.fy, d)}, {at(m.gx, d), at(m.gy, d)}, d))
+    return std::nullopt;
+  return m;
+}
+
+/// At most two linear maps t = alpha + beta s, in the order found.
+struct CandidateMaps {
+  std::array<CoincidenceMap, 2> maps;
+  std::size_t count = 0;
+  [[nodiscard]] std::span<const CoincidenceMap> all() const { return {maps.data(), count}; }
+};
+
+/// The linear maps t = alpha + beta s that the monomial forms allow, at most two: beta a
+/// real d-th root of r = b_d / a_d (both signs for even d), alpha from the coefficients of
+/// degree d - 1 of the main coordinate, b_{d-1} = beta^(d-1) (a_{d-1} + d alpha a_d), and
+/// the other coordinate's coefficients of degree d - 1 must then agree the same way. Both
+/// hold to within what overlap_tolerance allows of the control points, plus the
+/// conversion's rounding (coefficient_error), with every quotient's error carried through.
+/// The positive root's map first.
+CandidateMaps candidate_maps(const WorkingCurve& f, const WorkingCurve& g, const MonomialForms& m) {
+  const int d = m.d;
+  const Coeffs &a = m.a(), &b = m.b(), &a_other = m.a_other(), &b_other = m.b_other();
   const double r = at(b, d) / at(a, d);
   const int top_degree = std::max(f.degree, g.degree);
   const auto f_error = [&](int k) { return coefficient_error(f, k, top_degree); };
   const auto g_error = [&](int k) { return coefficient_error(g, k, top_degree); };
   const double r_rel_error = g_error(d) / std::fabs(at(b, d)) + f_error(d) / std::fabs(at(a, d));
-  std::vector<double> betas;
+  double betas[2];
+  int beta_count = 0;
   if (d == 3) {
-    betas.push_back(std::cbrt(r));
+    betas[beta_count++] = std::cbrt(r);
   } else if (d % 2 == 1) {
-    betas.push_back(std::copysign(std::pow(std::fabs(r), 1.0 / d), r));
+    betas[beta_count++] = std::copysign(std::pow(std::fabs(r), 1.0 / d), r);
   } else if (r > 0) {
-    betas.push_back(std::pow(r, 1.0 / d));
-    betas.push_back(-betas.back());
+    betas[beta_count++] = std::pow(r, 1.0 / d);
+    betas[beta_count++] = -betas[0];
   }
-  for (const double beta : betas) {
+  CandidateMaps maps;
+  for (int i = 0; i < beta_count; ++i) {
+    const double beta = betas[i];
     if (!(std::isfinite(beta) && beta != 0.0)) continue;
     const double beta_k = std::pow(std::fabs(beta), d - 1);  // |beta|^(d-1)
     const double alpha = (at(b, d - 1) / std::pow(beta, d - 1) - at(a, d - 1)) / (d * at(a, d));
@@ -257,63 +294,100 @@ std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCu
              r_rel_error * (std::fabs(at(b, d - 1)) + std::fabs(at(b_other, d - 1))) +
              beta_k * std::fabs(alpha) * d * f_error(d) * 2);
     if (!(std::fabs(at(b_other, d - 1) - next) <= next_tol)) continue;
-    // s with alpha + beta s in [0, 1], within [0, 1].
-    double raw_lo = -alpha / beta, raw_hi = (1 - alpha) / beta;
-    if (raw_lo > raw_hi) std::swap(raw_lo, raw_hi);
-    // (Comparisons, not max/min: -0.0 must come out as 0.)
-    const double s_a = raw_lo <= 0.0 ? 0.0 : raw_lo, s_b = raw_hi >= 1.0 ? 1.0 : raw_hi;
-    if (!(s_b - s_a > kShortestOverlap)) continue;
-    // Each end is an end of g (s exact) or an end of f (t exact); Newton pins the other.
-    double ends_t[2], ends_s[2];
-    const double s_end[2] = {s_a, s_b};
-    const bool s_exact[2] = {raw_lo <= 0.0, raw_hi >= 1.0};
-    for (int e = 0; e < 2; ++e) {
-      const double phi = alpha + beta * s_end[e];
-      if (s_exact[e]) {
-        ends_s[e] = s_end[e];
-        ends_t[e] = locate_on_curve(f, evaluate_dd(g, s_end[e]),
-                                    min2(1.0, max2(0.0, phi)));
-      } else {
-        ends_t[e] = (e == 0) == (beta > 0) ? 0.0 : 1.0;
-        ends_s[e] = locate_on_curve(g, evaluate_dd(f, ends_t[e]), s_end[e]);
-      }
+    maps.maps[maps.count++] = {alpha, beta};
+  }
+  return maps;
+}
+
+/// The ends of a candidate overlap: (t[0], s[0]) and (t[1], s[1]), s[0] < s[1].
+struct OverlapEnds {
+  double t[2], s[2];
+};
+
+/// The ends in [0, 1]^2 of the overlap that `map` would give: s with alpha + beta s in
+/// [0, 1], within [0, 1]. Each end is an end of g (s exact, t located on f by Newton's
+/// method from alpha + beta s) or an end of f (t exact, s located on g). nullopt when the
+/// range is no longer than kShortestOverlap in s before the ends are pinned, or in s or t
+/// after: a flat end (a piece within the tolerance of a point) otherwise passes the
+/// verification against any curve through that point, as an overlap of width 0 in t in
+/// one order and nothing in the other.
+std::optional<OverlapEnds> pinned_ends(const WorkingCurve& f, const WorkingCurve& g,
+                                       CoincidenceMap map) {
+  const double alpha = map.alpha, beta = map.beta;
+  double raw_lo = -alpha / beta, raw_hi = (1 - alpha) / beta;
+  if (raw_lo > raw_hi) std::swap(raw_lo, raw_hi);
+  // (Comparisons, not max/min: -0.0 must come out as 0.)
+  const double s_a = raw_lo <= 0.0 ? 0.0 : raw_lo, s_b = raw_hi >= 1.0 ? 1.0 : raw_hi;
+  if (!(s_b - s_a > kShortestOverlap)) return std::nullopt;
+  OverlapEnds ends;
+  const double s_end[2] = {s_a, s_b};
+  const bool s_exact[2] = {raw_lo <= 0.0, raw_hi >= 1.0};
+  for (int e = 0; e < 2; ++e) {
+    const double phi = alpha + beta * s_end[e];
+    if (s_exact[e]) {
+      ends.s[e] = s_end[e];
+      ends.t[e] = locate_on_curve(f, evaluate_dd(g, s_end[e]),
+                                  min2(1.0, max2(0.0, phi)));
+    } else {
+      ends.t[e] = (e == 0) == (beta > 0) ? 0.0 : 1.0;
+      ends.s[e] = locate_on_curve(g, evaluate_dd(f, ends.t[e]), s_end[e]);
     }
-    // Long enough in both parameters: a flat end (a piece within the tolerance of a point)
-    // otherwise passes the verification against any curve through that point, as an overlap
-    // of width 0 in t in one order and nothing in the other.
-    if (!(ends_s[1] - ends_s[0] > kShortestOverlap) ||
-        !(std::fabs(ends_t[1] - ends_t[0]) > kShortestOverlap)) {
-      continue;
-    }
-    // Verify: the two pieces, written with the same degree, have the same control points.
-    const int degree = std::max(f.degree, g.degree);
-    const std::vector<double> px = elevated(piece(f.x, ends_t[0], ends_t[1]), degree);
-    const std::vector<double> py = elevated(piece(f.y, ends_t[0], ends_t[1]), degree);
-    const std::vector<double> qx = elevated(piece(g.x, ends_s[0], ends_s[1]), degree);
-    const std::vector<double> qy = elevated(piece(g.y, ends_s[0], ends_s[1]), degree);
-    double gap = 0.0;
-    for (std::size_t i = 0; i < px.size(); ++i) {
-      gap =
-          max2(gap, max2(std::fabs(px[i] - qx[i]), std::fabs(py[i] - qy[i])));
-    }
-    const double tol = coincidence_tolerance(f, g);
-    if (!(gap <= tol)) continue;
-    // Two pieces that both lie within the tolerance of a point (a tiny curve's end next to a
-    // huge one's, within the rounding of the huge one's scale) are not an overlap: two
-    // distinct points may look so, and which pieces pass this test would depend on which
-    // curve comes first (Overlap.TwoEndsWithinRoundingOfEachOtherAreNoOverlap: ends 3e-9
-    // apart). The search decides there as anywhere else. (Such an "overlap" would have its
-    // map extrapolated over the whole square and hide a crossing:
-    // Overlap.AnOverlapWithinRoundingOfAPointHidesNoCrossing.)
-    if (!(extent(px, py) > tol || extent(qx, qy) > tol)) continue;
-    OverlapFinding found;
-    found.map.beta = (ends_t[1] - ends_t[0]) / (ends_s[1] - ends_s[0]);
-    found.map.alpha = ends_t[0] - found.map.beta * ends_s[0];
-    found.overlap.t_interval = {min2(ends_t[0], ends_t[1]),
-                                max2(ends_t[0], ends_t[1])};
-    found.overlap.s_interval = {ends_s[0], ends_s[1]};
-    found.overlap.reversed = found.map.beta < 0;
-    out.push_back(found);
+  }
+  if (!(ends.s[1] - ends.s[0] > kShortestOverlap) ||
+      !(std::fabs(ends.t[1] - ends.t[0]) > kShortestOverlap)) {
+    return std::nullopt;
+  }
+  return ends;
+}
+
+/// The verification: f on [t[0], t[1]] and g on [s[0], s[1]], written with the same degree,
+/// have the same control points to within coincidence_tolerance, and the pieces do not both
+/// lie within that tolerance of a point. (Two such pieces, a tiny curve's end next to a
+/// huge one's within the rounding of the huge one's scale, may be two distinct points, and
+/// which pieces pass would depend on which curve comes first:
+/// Overlap.TwoEndsWithinRoundingOfEachOtherAreNoOverlap, ends 3e-9 apart. The search
+/// decides there as anywhere else. Such an "overlap" would have its map extrapolated over
+/// the whole square and hide a crossing:
+/// Overlap.AnOverlapWithinRoundingOfAPointHidesNoCrossing.)
+bool pieces_coincide(const WorkingCurve& f, const WorkingCurve& g, const OverlapEnds& ends) {
+  const int degree = std::max(f.degree, g.degree);
+  const std::vector<double> px = elevated(piece(f.x, ends.t[0], ends.t[1]), degree);
+  const std::vector<double> py = elevated(piece(f.y, ends.t[0], ends.t[1]), degree);
+  const std::vector<double> qx = elevated(piece(g.x, ends.s[0], ends.s[1]), degree);
+  const std::vector<double> qy = elevated(piece(g.y, ends.s[0], ends.s[1]), degree);
+  double gap = 0.0;
+  for (std::size_t i = 0; i < px.size(); ++i) {
+    gap = max2(gap, max2(std::fabs(px[i] - qx[i]), std::fabs(py[i] - qy[i])));
+  }
+  const double tol = coincidence_tolerance(f, g);
+  if (!(gap <= tol)) return false;
+  return extent(px, py) > tol || extent(qx, qy) > tol;
+}
+
+/// The overlap between verified ends, with the map through them.
+OverlapFinding finding_between(const OverlapEnds& ends) {
+  OverlapFinding found;
+  found.map.beta = (ends.t[1] - ends.t[0]) / (ends.s[1] - ends.s[0]);
+  found.map.alpha = ends.t[0] - found.map.beta * ends.s[0];
+  found.overlap.t_interval = {min2(ends.t[0], ends.t[1]),
+                              max2(ends.t[0], ends.t[1])};
+  found.overlap.s_interval = {ends.s[0], ends.s[1]};
+  found.overlap.reversed = found.map.beta < 0;
+  return found;
+}
+
+}  // namespace
+
+std::vector<OverlapFinding> find_overlaps(const WorkingCurve& f, const WorkingCurve& g) {
+  std::vector<OverlapFinding> out;
+  // Necessary conditions first: most pairs stop at one of them.
+  if (!may_overlap(f, g)) return out;
+  const std::optional<MonomialForms> forms = agreeing_monomial_forms(f, g);
+  if (!forms) return out;
+  const CandidateMaps maps = candidate_maps(f, g, *forms);
+  for (const CoincidenceMap map : maps.all()) {
+    const std::optional<OverlapEnds> ends = pinned_ends(f, g, map);
+    if (ends && pieces_coincide(f, g, *ends)) out.push_back(finding_between(*ends));
   }
   return out;
 }

@@ -5,6 +5,7 @@
 #include <cassert>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "core/bernstein/bernstein1d.hpp"
 #include "core/bernstein/horner_form.hpp"
@@ -235,75 +236,132 @@ struct Found {
   }
 };
 
-}  // namespace
+// The phases of interval_roots below are always inlined into it: inlined late, as functions
+// called once, they would leave the search loop's state in memory instead of registers.
 
-IntervalRoots interval_roots(std::span<const double> c, double a, double b, IntervalEnds ends,
-                             Crossings wanted) {
-  assert(!c.empty() && 0.0 <= a && a <= b && b <= 1.0);
+/// Where the pieces of the first kHalvedDepth levels of a search on [0, 1] come from their
+/// parent's coefficients (`on`): every split point there is a dyadic rational, exactly the
+/// middle of its piece, so one subdivision at 1/2 (halves(), n + 1 entries per stack slot)
+/// gives both halves, cheaper than portion_into from c. Their rounding grows by at most
+/// `error` = 1.01 n u max|c| a level (the pieces are convex combinations of c), so a piece
+/// d levels down is within d n u max|c| of the exact one, and its sign test allows that
+/// much where it exceeds e (from depth 3 on: bound()). Deeper pieces and those of other
+/// intervals are portion_into's, as are all pieces of degree 3 or less (straight-line code
+/// whose end coefficients are p at the ends, no evaluation needed).
+struct Halving {
+  bool on = false;
+  double error = 0.0;
+
+  /// Whether the pieces at `depth` are halves.
+  [[nodiscard]] bool at(int depth) const noexcept { return on && depth <= kHalvedDepth; }
+  /// The rounding bound of a halved piece's coefficients at `depth`.
+  [[nodiscard]] double bound(double e, int depth) const noexcept {
+    return std::max(e, error * depth);
+  }
+};
+
+[[gnu::always_inline]] inline Halving halving_of(std::span<const double> c, double a, double b) {
   const std::size_t n = c.size() - 1;
-  // The rounding bound of a coefficient of a piece (bernstein::portion_into: 3.01 n u max|c|),
-  // and of p at a point (de Casteljau: the same n steps).
-  const double e = 3.02 * static_cast<double>(std::max<std::size_t>(n, 1)) * kUnitRoundoff * bernstein::max_abs(c);
-  IntervalRoots out;
-  // Roots and root-like points as found, sorted and merged in place below.
-  Found found;
-  const Evaluator p_at(c);
-  // De Casteljau's rounds at 0 and 1 are exact: p there is the end coefficient.
-  const double p_a = a == 0.0 ? c.front() : p_at.value(a);
-  const double p_b = b == 1.0 ? c.back() : p_at.value(b);
-  if (p_a == 0.0) found.add(a);
-  if (p_b == 0.0) found.add(b);
-  // Depth first: at most one pending sibling per depth below the piece split last.
-  std::array<Job, kMaxDepth + 2> stack;
+  const bool on = a == 0.0 && b == 1.0 && n > 3;
+  return {on, on ? 1.01 * static_cast<double>(n) * kUnitRoundoff * bernstein::max_abs(c) : 0.0};
+}
+
+/// The search keeps pending <= job.depth (one sibling a level), so the halved pieces need
+/// kHalvedSlots slots of n + 1 coefficients, slot i for the job at stack position i.
+constexpr std::size_t kHalvedSlots = kHalvedDepth + 2;
+
+struct HalvedSlots {
+  double* base;
+  std::size_t size;  ///< n + 1
+  [[nodiscard]] double* slot(std::size_t i) const noexcept { return base + i * size; }
+};
+
+/// The pieces still to examine, depth first: at most one pending sibling per depth below
+/// the piece split last.
+using JobStack = std::array<Job, kMaxDepth + 2>;
+
+/// Splits `job` (its piece q, neither discarded nor resolved, less than kMaxDepth levels
+/// deep, its middle strictly inside) at its middle: pushes the right half, then the left
+/// (examined first), each with p at its ends and the middle flagged when p is exactly zero
+/// there, which is then a root in `found`. A halved piece's children come from q by
+/// halves() (the right half into q's own slot: halves reads q before it writes); their
+/// shared coefficient at the middle is within their bound of p there, so beyond that bound
+/// plus e, p and its evaluation have its sign and neither is zero, and the sign is all that
+/// the tests and the refinement take from a piece's end (beside the first point of the
+/// refinement, which may be anywhere in the bracket). Else p at the middle is evaluated.
+[[gnu::always_inline]] inline void split(const Job& job, double middle, std::span<const double> q,
+                                         const Evaluator& p_at, double e, Halving halving,
+                                         HalvedSlots halved, JobStack& stack, std::size_t& pending,
+                                         Found& found) {
+  assert(pending + 2 <= stack.size());
+  double p_middle = 0.0;
+  bool known_middle = false;
+  if (halving.at(job.depth + 1)) {
+    assert(pending + 1 < kHalvedSlots);
+    p_at.halves(q, halved.slot(pending + 1), halved.slot(pending));
+    const double shared = halved.slot(pending)[0];
+    known_middle = std::fabs(shared) > halving.bound(e, job.depth + 1) + e;
+    if (known_middle) p_middle = shared;
+  }
+  if (!known_middle) p_middle = p_at.value(middle);
+  const bool zero_middle = p_middle == 0.0;
+  if (zero_middle) found.add(middle);
+  const int depth = job.depth + 1;
+  stack[pending++] = {middle, job.hi, p_middle, job.p_hi, depth, zero_middle, job.zero_hi};
+  stack[pending++] = {job.lo, middle, job.p_lo, p_middle, depth, job.zero_lo, zero_middle};
+}
+
+/// The isolation (see the header): subdivides `whole` (the piece [a, b] with p at its
+/// ends), examining each piece's Bernstein coefficients (computed within e, or within
+/// halving.bound for halved pieces) by Descartes' rule; adds to `found` the root refined in
+/// each one-root piece (only the rising ones when `wanted` says so), the middle of each
+/// piece zero to within rounding throughout and of each cluster still unresolved at
+/// kMaxDepth or at one ulp (when a root may be on it), and every exact zero of p at a split
+/// point. `isolated` becomes false when a piece zero to within rounding or an unresolved
+/// cluster is met.
+[[gnu::always_inline]] inline void isolate(std::span<const double> c, const Evaluator& p_at,
+                                           double e, const Job& whole, Crossings wanted,
+                                           Found& found, bool& isolated) {
+  const std::size_t n = c.size() - 1;
+  JobStack stack;
   std::size_t pending = 0;
-  if (a < b) stack[pending++] = {a, b, p_a, p_b, 0, p_a == 0.0, p_b == 0.0};
+  stack[pending++] = whole;
   Coeffs piece(n + 1, Coeffs::Uninitialized{});
-  // On [0, 1] every split point is a dyadic rational, exactly the middle of its piece, so
-  // the pieces of the first kHalvedDepth levels come from their parent's coefficients by
-  // one subdivision at 1/2 (halves(), n + 1 entries per stack slot), cheaper than
-  // portion_into from c. Their rounding grows by at most n u max|c| a level (the pieces are
-  // convex combinations of c), so a piece d levels down is within d n u max|c| of the exact
-  // one, and its sign test allows that much where it exceeds e (from depth 3 on). Deeper
-  // pieces and those of other intervals are portion_into's, as are all pieces of degree 3
-  // or less (straight-line code whose end coefficients are p at the ends, no evaluation
-  // needed). pending <= job.depth (one sibling a level), so the halved pieces need
-  // kHalvedDepth + 2 slots.
-  const bool halving = a == 0.0 && b == 1.0 && n > 3;
-  const double halving_error = halving ? 1.01 * static_cast<double>(n) * kUnitRoundoff * bernstein::max_abs(c) : 0.0;
-  constexpr std::size_t kSlots = kHalvedDepth + 2;
-  std::array<double, kSlots * kUnrolledSizes> slots_inline;
+  const Halving halving = halving_of(c, whole.lo, whole.hi);
+  std::array<double, kHalvedSlots * kUnrolledSizes> slots_inline;
   std::vector<double> slots_beyond;
-  if (halving && n + 1 > kUnrolledSizes) slots_beyond.resize(kSlots * (n + 1));
-  double* const slots = n + 1 > kUnrolledSizes ? slots_beyond.data() : slots_inline.data();
-  const auto slot = [&](std::size_t i) { return slots + i * (n + 1); };
+  if (halving.on && n + 1 > kUnrolledSizes) slots_beyond.resize(kHalvedSlots * (n + 1));
+  const HalvedSlots halved{n + 1 > kUnrolledSizes ? slots_beyond.data() : slots_inline.data(),
+                           n + 1};
   while (pending > 0) {
     const Job job = stack[--pending];
     // On [0, 1] the piece is c itself (de Casteljau steps at 0 and 1 are exact).
-    const bool whole = job.lo == 0.0 && job.hi == 1.0;
-    const bool halved = halving && !whole && job.depth <= kHalvedDepth;
-    if (!whole && !halved) p_at.portion(job.lo, job.hi, piece.data());
-    const std::span<const double> q = whole    ? c
-                                      : halved ? std::span<const double>(slot(pending), n + 1)
-                                               : std::span<const double>(piece);
+    const bool is_whole = job.lo == 0.0 && job.hi == 1.0;
+    const bool is_halved = !is_whole && halving.at(job.depth);
+    if (!is_whole && !is_halved) p_at.portion(job.lo, job.hi, piece.data());
+    const std::span<const double> q = is_whole ? c
+                                      : is_halved
+                                          ? std::span<const double>(halved.slot(pending), n + 1)
+                                          : std::span<const double>(piece);
     // Descartes' rule on the coefficients that are clearly nonzero; an end that is an exact
     // zero is left out (p = (t - end) r(t), and r's coefficients have the others' signs).
     const std::size_t first = job.zero_lo ? 1 : 0, end = job.zero_hi ? n : n + 1;
-    const double bound = halved ? std::max(e, halving_error * job.depth) : e;
+    const double bound = is_halved ? halving.bound(e, job.depth) : e;
     const auto [changes, any_small, all_small] =
         sign_changes(q.subspan(first, end > first ? end - first : 0), bound);
     const double middle = job.lo + (job.hi - job.lo) / 2;
     if (all_small) {
       // Zero to within rounding on the whole piece.
-      out.isolated = false;
+      isolated = false;
       found.add(middle);
       continue;
     }
     if (changes == 0 && !any_small) continue;
     // A piece's end coefficients from portion_into are p at its ends: the same de
     // Casteljau rounds (and exact on [0, 1]); halves' are only near them, so a halved
-    // piece takes the values found where its ends were split (below).
-    const double p_lo = halved ? job.p_lo : q[0];
-    const double p_hi = halved ? job.p_hi : q[n];
+    // piece takes the values found where its ends were split.
+    const double p_lo = is_halved ? job.p_lo : q[0];
+    const double p_hi = is_halved ? job.p_hi : q[n];
     if (changes == 1 && !any_small && p_lo != 0.0 && p_hi != 0.0 && (p_lo < 0) != (p_hi < 0)) {
       if (wanted == Crossings::any || p_lo < 0) {
         found.add(p_at.root(e, job.lo, job.hi, p_lo, polygon_crossing(q, job.lo, job.hi)));
@@ -315,36 +373,26 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
       // (then neither piece of the split shows a clear sign change, but p's signs differ).
       const bool signs_differ = p_lo != 0.0 && p_hi != 0.0 && (p_lo < 0) != (p_hi < 0);
       if (changes > 0 || signs_differ || std::fabs(p_at.value(middle)) <= e) {
-        out.isolated = false;
+        isolated = false;
         found.add(middle);
       }
       continue;
     }
-    assert(pending + 2 <= stack.size());
-    double p_middle = 0.0;
-    bool known_middle = false;
-    if (halving && job.depth + 1 <= kHalvedDepth) {
-      assert(pending + 1 < kSlots);
-      // The right half goes to this piece's slot (halves reads q before it writes).
-      p_at.halves(q, slot(pending + 1), slot(pending));
-      // The halves' shared coefficient at the middle is within their bound of p there:
-      // beyond that bound plus e, p and its evaluation have its sign and neither is zero,
-      // and the sign is all that the tests and the refinement take from a piece's end
-      // (beside the first point of the refinement, which may be anywhere in the bracket).
-      const double shared = slot(pending)[0];
-      known_middle = std::fabs(shared) > std::max(e, halving_error * (job.depth + 1)) + e;
-      if (known_middle) p_middle = shared;
-    }
-    if (!known_middle) p_middle = p_at.value(middle);
-    const bool zero_middle = p_middle == 0.0;
-    if (zero_middle) found.add(middle);
-    stack[pending++] = {middle, job.hi, p_middle, job.p_hi, job.depth + 1, zero_middle, job.zero_hi};
-    stack[pending++] = {job.lo, middle, job.p_lo, p_middle, job.depth + 1, job.zero_lo, zero_middle};
+    split(job, middle, q, p_at, e, halving, halved, stack, pending, found);
   }
+}
+
+/// The points found, sorted, those inside [a, b] (or (a, b)) kept, each flat stretch one
+/// root (see the header): each point is compared with the point before it, kept or not, so
+/// that a stretch is one root however far apart its ends are, and is represented by its
+/// point with the smallest computed |p|. `isolated` becomes false when a stretch holds two
+/// points.
+[[gnu::always_inline]] inline SmallArray<double> merge_flat_stretches(Found& found, double a,
+                                                                      double b, IntervalEnds ends,
+                                                                      const Evaluator& p_at,
+                                                                      double e, bool& isolated) {
   double* const roots = found.values.data();
   std::sort(roots, roots + found.count);
-  // One flat stretch a root (see the header): each point is compared with the point before
-  // it, kept or not, so that a stretch is one root however far apart its ends are.
   std::size_t kept = 0;
   double last = 0.0;         // the point before r, kept or not
   double kept_value = -1.0;  // |p| at the last point kept, once needed (-1 before)
@@ -362,7 +410,7 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
           roots[kept - 1] = r;
           kept_value = value;
         }
-        out.isolated = false;
+        isolated = false;
         last = r;
         continue;
       }
@@ -371,7 +419,31 @@ IntervalRoots interval_roots(std::span<const double> c, double a, double b, Inte
     kept_value = -1.0;
     last = r;
   }
-  out.roots = SmallArray<double>(std::span<const double>(roots, kept));
+  return SmallArray<double>(std::span<const double>(roots, kept));
+}
+
+}  // namespace
+
+IntervalRoots interval_roots(std::span<const double> c, double a, double b, IntervalEnds ends,
+                             Crossings wanted) {
+  assert(!c.empty() && 0.0 <= a && a <= b && b <= 1.0);
+  const std::size_t n = c.size() - 1;
+  // The rounding bound of a coefficient of a piece (bernstein::portion_into: 3.01 n u max|c|),
+  // and of p at a point (de Casteljau: the same n steps).
+  const double e = 3.02 * static_cast<double>(std::max<std::size_t>(n, 1)) * kUnitRoundoff *
+                   bernstein::max_abs(c);
+  IntervalRoots out;
+  // Roots and root-like points as found, sorted and merged in place at the end.
+  Found found;
+  const Evaluator p_at(c);
+  // De Casteljau's rounds at 0 and 1 are exact: p there is the end coefficient.
+  const double p_a = a == 0.0 ? c.front() : p_at.value(a);
+  const double p_b = b == 1.0 ? c.back() : p_at.value(b);
+  if (p_a == 0.0) found.add(a);
+  if (p_b == 0.0) found.add(b);
+  if (a < b)
+    isolate(c, p_at, e, {a, b, p_a, p_b, 0, p_a == 0.0, p_b == 0.0}, wanted, found, out.isolated);
+  out.roots = merge_flat_stretches(found, a, b, ends, p_at, e, out.isolated);
   return out;
 }
 
