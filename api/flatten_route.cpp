@@ -40,9 +40,9 @@ Reply flatten_route(const nlohmann::json& request, const Limits& limits) {
   outline::FlattenOptions options;
   options.tolerance = tolerance;
   options.max_vertices = static_cast<std::size_t>(limits.max_t_values);
-  options.max_work = limits.max_work;
-  const outline::Flattening flat = outline::flatten(p, options);
-  if (flat.status == outline::FlattenStatus::work_cap_reached) {
+  core::WorkBudget budget = request_budget(limits);
+  const outline::Flattening flat = outline::flatten(p, options, budget);
+  if (budget.exhausted()) {
     return problem_reply(
         ProblemKind::work_cap,
         "the chord checks of the polyline took more than the per-request work cap of " +

@@ -56,13 +56,12 @@ Reply offset_route(const nlohmann::json& request, const Limits& limits) {
   }
 
   std::vector<SourcedCubic> cubics;
-  std::int64_t work = 0;
   double error_bound = 0.0;
+  core::WorkBudget budget = request_budget(limits);
   for (std::size_t k = 0; k < p.segments.size(); ++k) {
     const outline::CurveOffset offset =
-        outline::offset_curve(p.segments[k], distance, tolerance, limits.max_work - work);
-    work += offset.work;
-    if (offset.status == outline::OffsetStatus::work_cap_reached || work > limits.max_work) {
+        outline::offset_curve(p.segments[k], distance, tolerance, budget);
+    if (budget.exhausted()) {
       return problem_reply(ProblemKind::work_cap,
                            "fitting the parallel curve of segment " + std::to_string(k) +
                                " took more than the per-request work cap of " +

@@ -113,10 +113,9 @@ ChordEstimate estimate_chords(const core::Curve& curve, double tolerance) {
 namespace {
 
 /// The march of flatten_parameters on a curve whose density table is known.
-CurveFlattening march(const core::Curve& curve, const DensityTable& table, double tolerance,
-                      std::int64_t work_left) {
+std::vector<double> march(const core::Curve& curve, const DensityTable& table, double tolerance,
+                          core::WorkBudget& budget) {
   assert(curve.degree() >= 1 && tolerance > 0.0);
-  CurveFlattening result;
   const double root = std::sqrt(8.0 * tolerance);
   const double total = table.cumulative.back();
   const double margin = rounding_margin(curve);
@@ -146,8 +145,7 @@ CurveFlattening march(const core::Curve& curve, const DensityTable& table, doubl
     int bracketed_tries = 0;
     for (;;) {
       const ChordCheck check = check_chord(points, a, b, tolerance, margin);
-      result.work += check.work;
-      if (result.work > work_left) return result;
+      if (!budget.spend(check.work)) return {};
       if (check.within && b > lo) {
         lo = b;
         lo_distance = check.upper;
@@ -202,36 +200,36 @@ CurveFlattening march(const core::Curve& curve, const DensityTable& table, doubl
         if (lo > a) break;
         // No double strictly between a and the chord's end: the tolerance is below the
         // rounding the precondition excludes; report it as the budget's end.
-        result.work = std::max(result.work, work_left + 1);
-        return result;
+        budget.exhaust();
+        return {};
       }
       b = next;
     }
     vertices.push_back(lo);
   }
-  result.parameters = std::move(vertices);
-  return result;
+  return vertices;
 }
 
 }  // namespace
 
-CurveFlattening flatten_parameters(const core::Curve& curve, double tolerance,
-                                   std::int64_t work_left) {
+std::vector<double> flatten_parameters(const core::Curve& curve, double tolerance,
+                                       core::WorkBudget& budget) {
   const Normalised scaled = normalised(curve, tolerance);
   const DensityTable table = density_table(scaled.curve);
-  CurveFlattening result = march(scaled.curve, table, scaled.tolerance, work_left - table.work);
-  result.work += table.work;
-  return result;
+  if (!budget.spend(table.work)) return {};
+  return march(scaled.curve, table, scaled.tolerance, budget);
 }
 
-Flattening flatten(const core::Curve& curve, const FlattenOptions& options) {
+Flattening flatten(const core::Curve& curve, const FlattenOptions& options,
+                   core::WorkBudget& budget) {
   path::Path single;
   single.segments.push_back(curve);
   single.subpaths.push_back({0, 1, curve.front() == curve.back() && curve.degree() >= 1});
-  return flatten(single, options);
+  return flatten(single, options, budget);
 }
 
-Flattening flatten(const path::Path& path, const FlattenOptions& options) {
+Flattening flatten(const path::Path& path, const FlattenOptions& options,
+                   core::WorkBudget& budget) {
   Flattening result;
   double estimate = static_cast<double>(path.subpaths.size());
   std::vector<Normalised> scaled;
@@ -243,13 +241,9 @@ Flattening flatten(const path::Path& path, const FlattenOptions& options) {
     tables.push_back(density_table(scaled.back().curve));
     const double root = std::sqrt(8.0 * scaled.back().tolerance);
     estimate += std::max(1.0, std::ceil(tables.back().cumulative.back() / root));
-    result.work += tables.back().work;
+    if (!budget.spend(tables.back().work)) return result;
   }
   result.estimated_count = estimate;
-  if (result.work > options.max_work) {
-    result.status = FlattenStatus::work_cap_reached;
-    return result;
-  }
   if (estimate > static_cast<double>(options.max_vertices)) {
     result.status = FlattenStatus::too_many_vertices;
     return result;
@@ -260,21 +254,19 @@ Flattening flatten(const path::Path& path, const FlattenOptions& options) {
     for (std::size_t k = subpath.first_segment; k < subpath.first_segment + subpath.segment_count;
          ++k) {
       const core::Curve& segment = path.segments[k];
-      CurveFlattening flat =
-          march(scaled[k].curve, tables[k], scaled[k].tolerance, options.max_work - result.work);
-      result.work += flat.work;
-      if (flat.parameters.empty() || result.work > options.max_work) {
-        result.status = FlattenStatus::work_cap_reached;
+      const std::vector<double> parameters =
+          march(scaled[k].curve, tables[k], scaled[k].tolerance, budget);
+      if (budget.exhausted()) {
         result.polylines.clear();
         return result;
       }
       // A segment after the first starts at the previous one's end: that vertex is listed.
       const std::size_t first = k == subpath.first_segment ? 0 : 1;
-      for (std::size_t j = first; j < flat.parameters.size(); ++j) {
-        const double t = flat.parameters[j];
+      for (std::size_t j = first; j < parameters.size(); ++j) {
+        const double t = parameters[j];
         polyline.push_back({k, t, core::evaluate(segment, t)});
       }
-      result.count += flat.parameters.size() - first;
+      result.count += parameters.size() - first;
       if (result.count > options.max_vertices) {
         result.status = FlattenStatus::too_many_vertices;
         result.polylines.clear();

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/base/curve.hpp"
+#include "core/base/work_budget.hpp"
 #include "core/path/path.hpp"
 
 namespace bezier::outline {
@@ -19,16 +20,12 @@ struct FlattenOptions {
   /// Most vertices in all polylines: a request whose estimate exceeds it is refused before
   /// any vertex is placed, and one whose verified polylines exceed it is refused too.
   std::size_t max_vertices = 10000;
-  /// Work cap in work units (about one coordinate update of de Casteljau's algorithm each).
-  std::int64_t max_work = 22000000;
 };
 
 enum class FlattenStatus {
   ok,
   /// The estimated or the verified vertex count is above max_vertices (no polylines).
   too_many_vertices,
-  /// The work cap ran out before every chord was verified (no polylines).
-  work_cap_reached,
 };
 
 /// A polyline vertex: the point B_segment(t) of the path (evaluate(), compensated), with
@@ -52,8 +49,6 @@ struct Flattening {
   /// The vertex count the density integral predicted (what a refusal is decided on before
   /// building, see flatten()).
   double estimated_count = 0.0;
-  /// Work units spent.
-  std::int64_t work = 0;
 };
 
 /// The parameters of the vertices of one curve's polyline: 0 = t_0 < t_1 < ... < t_m = 1,
@@ -85,21 +80,17 @@ struct Flattening {
 /// turn the distance can fall again as the step grows, and a certified one becomes the new
 /// start of the search. The farthest certified end is the next vertex. Each chord is thus
 /// about as long as the greedy polyline's from the same start, and the estimate makes the
-/// first try land close where the curvature varies smoothly (a few checks a vertex). The
-/// density table's work and the checks' are charged to `work`.
+/// first try land close where the curvature varies smoothly (a few checks a vertex).
 ///
 /// The curve and the tolerance are first scaled by a power of two (exact) that brings the
 /// largest coordinate to [1, 2): the parameters are the same, and no difference or
 /// derivative overflows or underflows anywhere in the double range.
 ///
-/// `work_left` is the budget; returns nothing when it runs out (work then exceeds it).
-/// Precondition: degree >= 1, finite coordinates, tolerance as in FlattenOptions.
-struct CurveFlattening {
-  std::vector<double> parameters;  ///< empty when the budget ran out
-  std::int64_t work = 0;
-};
-[[nodiscard]] CurveFlattening flatten_parameters(const core::Curve& curve, double tolerance,
-                                                 std::int64_t work_left);
+/// The density table's work and the checks' are charged to `budget`; returns nothing when
+/// it runs out (budget.exhausted()). Precondition: degree >= 1, finite coordinates,
+/// tolerance as in FlattenOptions.
+[[nodiscard]] std::vector<double> flatten_parameters(const core::Curve& curve, double tolerance,
+                                                     core::WorkBudget& budget);
 
 /// The estimate of the chord count N above (F(1) / sqrt(8 ε), not rounded) and its work.
 struct ChordEstimate {
@@ -112,8 +103,11 @@ struct ChordEstimate {
 /// segment flattened by flatten_parameters). Refusals happen before the work they guard:
 /// the estimates of all segments are summed first (one vertex per estimated chord, rounded
 /// up, plus one per subpath), and a sum above max_vertices is too_many_vertices without
-/// any vertex placed; the budget is checked after each segment.
-[[nodiscard]] Flattening flatten(const core::Curve& curve, const FlattenOptions& options);
-[[nodiscard]] Flattening flatten(const path::Path& path, const FlattenOptions& options);
+/// any vertex placed. Every density table and chord check is charged to `budget`; when it
+/// runs out (budget.exhausted(), the one way this says so) there are no polylines.
+[[nodiscard]] Flattening flatten(const core::Curve& curve, const FlattenOptions& options,
+                                 core::WorkBudget& budget);
+[[nodiscard]] Flattening flatten(const path::Path& path, const FlattenOptions& options,
+                                 core::WorkBudget& budget);
 
 }  // namespace bezier::outline

@@ -450,9 +450,8 @@ bool offset_interval(const core::Curve& curve, double a, double b, double d, dou
 }
 
 CurveOffset offset_curve(const core::Curve& curve, double d, double tolerance,
-                         std::int64_t work_left) {
+                         core::WorkBudget& budget) {
   CurveOffset result;
-  core::WorkBudget budget(work_left);
   std::vector<double> cuts{0.0, 1.0};
   for (const double t : offset_cusps(curve, d)) cuts.push_back(t);
   for (const double t : stationary_points(curve)) cuts.push_back(t);
@@ -464,12 +463,10 @@ CurveOffset offset_curve(const core::Curve& curve, double d, double tolerance,
   for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
     if (!(cuts[k + 1] > cuts[k])) continue;
     if (!fit_interval(scaled, cuts[k], cuts[k + 1], budget, result.cubics)) {
-      result.status = OffsetStatus::work_cap_reached;
       result.cubics.clear();
       break;
     }
   }
-  result.work = budget.spent();
   return result;
 }
 

@@ -19,14 +19,11 @@ struct OffsetCubic {
   double error_bound = 0.0;
 };
 
-enum class OffsetStatus { ok, work_cap_reached };
-
 struct CurveOffset {
-  OffsetStatus status = OffsetStatus::ok;
   /// In order of t; consecutive cubics share their end point except across a zero of B'
-  /// (where the normal turns by a half turn and O jumps by 2 |d|).
+  /// (where the normal turns by a half turn and O jumps by 2 |d|). Empty when the budget
+  /// ran out.
   std::vector<OffsetCubic> cubics;
-  std::int64_t work = 0;
 };
 
 /// The parallel curve O(t) = B(t) + d N(t) of a planar Bézier curve of any degree n >= 1 (N
@@ -85,11 +82,11 @@ struct CurveOffset {
 /// than Levien's, and fewer than a fixed subdivision (no measured comparison is claimed here:
 /// counts against other libraries belong in BENCHMARKS.md beside their command).
 ///
-/// Work (units of one de Casteljau coordinate update) is charged for every fit and bound;
-/// `work_left` is the budget. Precondition: finite coordinates, tolerance > 1e-9 of the
-/// coordinates' scale and |d|.
+/// Work (units of one de Casteljau coordinate update) is charged to `budget` for the cuts and
+/// every fit and bound; when it runs out (budget.exhausted()) there are no cubics.
+/// Precondition: finite coordinates, tolerance > 1e-9 of the coordinates' scale and |d|.
 [[nodiscard]] CurveOffset offset_curve(const core::Curve& curve, double d, double tolerance,
-                                       std::int64_t work_left);
+                                       core::WorkBudget& budget);
 
 /// The fit above on one parameter interval [a, b] of `curve` (0 <= a < b <= 1) on which O
 /// has no cusp and B' no zero inside (a piece of offset_curve, or one the caller cut the

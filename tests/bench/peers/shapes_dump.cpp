@@ -183,20 +183,20 @@ void dump_flatten(double tolerance) {
   bezier::outline::FlattenOptions options;
   options.tolerance = tolerance;
   options.max_vertices = 100000000;
-  options.max_work = INT64_MAX / 4;
+  bezier::core::WorkBudget budget;
   std::printf("{\"glyphs\":[");
   bool first = true;
   for (const CubicOutline& g : glyph_outlines()) {
     std::printf("%s", first ? "" : ",");
     first = false;
-    print_flattening(bezier::outline::flatten(region_of(g).path, options));
+    print_flattening(bezier::outline::flatten(region_of(g).path, options, budget));
   }
   std::printf("],\n\"random_cubics\":[");
   first = true;
   for (const auto& c : random_cubics()) {
     std::printf("%s", first ? "" : ",");
     first = false;
-    print_flattening(bezier::outline::flatten(Curve(c), options));
+    print_flattening(bezier::outline::flatten(Curve(c), options, budget));
   }
   std::printf("]}\n");
 }
@@ -210,8 +210,9 @@ void dump_offset(double d, double tolerance) {
     first = false;
     bool first_cubic = true;
     for (const Curve& c : cubics_of(g)) {
-      const auto o = bezier::outline::offset_curve(c, d, tolerance, INT64_MAX / 4);
-      if (o.status != bezier::outline::OffsetStatus::ok) {
+      bezier::core::WorkBudget budget;
+      const auto o = bezier::outline::offset_curve(c, d, tolerance, budget);
+      if (budget.exhausted()) {
         std::fprintf(stderr, "offset failed\n");
         std::exit(1);
       }

@@ -84,7 +84,8 @@ Flattening flatten_with(const Curve& curve, double tolerance) {
   FlattenOptions options;
   options.tolerance = tolerance;
   options.max_vertices = 100000;
-  return flatten(curve, options);
+  core::WorkBudget budget;
+  return flatten(curve, options, budget);
 }
 
 std::vector<Curve> sample_curves() {
@@ -272,7 +273,8 @@ TEST(Flatten, PathHasOnePolylinePerSubpathWithEverySegmentsEnds) {
   p.subpaths.push_back({3, 1, false});
   FlattenOptions options;
   options.tolerance = 1e-3;
-  const Flattening f = flatten(p, options);
+  core::WorkBudget budget;
+  const Flattening f = flatten(p, options, budget);
   ASSERT_EQ(f.status, FlattenStatus::ok);
   ASSERT_EQ(f.polylines.size(), 2u);
   const auto& first = f.polylines[0];
@@ -302,13 +304,14 @@ TEST(Flatten, RefusesBeforeBuildingWhenTheEstimateIsBeyondTheLimit) {
   FlattenOptions options;
   options.tolerance = 1e-8;
   options.max_vertices = 100;
-  const Flattening f = flatten(curve, options);
+  core::WorkBudget budget;
+  const Flattening f = flatten(curve, options, budget);
   EXPECT_EQ(f.status, FlattenStatus::too_many_vertices);
   EXPECT_TRUE(f.polylines.empty());
   EXPECT_GT(f.estimated_count, 100.0);
   // The estimate is the density integral: the certified count is not far from it.
   options.max_vertices = 1000000;
-  const Flattening built = flatten(curve, options);
+  const Flattening built = flatten(curve, options, budget);
   ASSERT_EQ(built.status, FlattenStatus::ok);
   EXPECT_GE(static_cast<double>(built.count), 0.9 * f.estimated_count);
   EXPECT_LE(static_cast<double>(built.count), 1.1 * f.estimated_count);
@@ -318,10 +321,37 @@ TEST(Flatten, WorkCapIsReported) {
   const Curve curve({{0, 0}, {1, 2}, {2, -2}, {3, 0}});
   FlattenOptions options;
   options.tolerance = 1e-6;
-  options.max_work = 1000;
-  const Flattening f = flatten(curve, options);
-  EXPECT_EQ(f.status, FlattenStatus::work_cap_reached);
+  core::WorkBudget budget(1000);
+  const Flattening f = flatten(curve, options, budget);
+  EXPECT_TRUE(budget.exhausted());
   EXPECT_TRUE(f.polylines.empty());
+}
+
+TEST(Flatten, WhatItSpentIsEnoughAndOneUnitLessIsNot) {
+  // The march's choices depend on the chord checks alone, never on the budget, so a budget
+  // of exactly what an unlimited run spent gives the same polylines, and one unit less
+  // runs out at the last charge.
+  path::Path p;
+  p.segments.push_back(Curve({{0, 0}, {1, 2}, {2, -2}, {3, 0}}));
+  p.segments.push_back(Curve({{3, 0}, {4, 3}, {5, 0}}));
+  p.subpaths.push_back({0, 2, false});
+  FlattenOptions options;
+  options.tolerance = 1e-4;
+  core::WorkBudget unlimited;
+  const Flattening reference = flatten(p, options, unlimited);
+  ASSERT_FALSE(unlimited.exhausted());
+  ASSERT_GT(unlimited.spent(), 0);
+
+  core::WorkBudget exact(unlimited.spent());
+  const Flattening again = flatten(p, options, exact);
+  EXPECT_FALSE(exact.exhausted());
+  EXPECT_EQ(exact.spent(), unlimited.spent());
+  EXPECT_EQ(again.count, reference.count);
+
+  core::WorkBudget short_by_one(unlimited.spent() - 1);
+  const Flattening refused = flatten(p, options, short_by_one);
+  EXPECT_TRUE(short_by_one.exhausted());
+  EXPECT_TRUE(refused.polylines.empty());
 }
 
 }  // namespace
