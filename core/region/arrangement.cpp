@@ -261,21 +261,60 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int
     edges_of[i].second = out.edges.size();
   }
 
-  // Coincident groups: within each overlap, the pieces of both segments with the same ends.
+  // Coincident groups: within each overlap, the pieces of both segments that are the same
+  // piece of the shared curve. Both segments run through the overlap monotonically (the
+  // second backwards when it is reversed), so their pieces inside it, listed in that order,
+  // are the same pieces in the same order when their cuts are at the same vertices: then the
+  // k-th piece of one is the k-th of the other. Matching by end vertices alone is not enough
+  // where the shared curve passes a vertex twice (a loop cut once: its two pieces both run
+  // between the same two vertices, one each way). When the cuts differ (a cut on one segment
+  // only), a piece is matched only with the one piece of the other that runs between the
+  // same vertices the same way, and never when it is a loop.
   Clusters groups(out.edges.size());
+  std::vector<std::size_t> along_t, along_s;
   const auto join_overlap = [&](std::size_t i, std::size_t j, const core::Overlap& o) {
     const double slack = 2.0 * kIntersectionTolerance;
+    along_t.clear();
+    along_s.clear();
     for (std::size_t p = edges_of[i].first; p < edges_of[i].second; ++p) {
       const ArrangementEdge& ep = out.edges[p];
       if (ep.t0 < o.t_interval.lo - slack || ep.t1 > o.t_interval.hi + slack) continue;
-      for (std::size_t q = edges_of[j].first; q < edges_of[j].second; ++q) {
-        if (q == p) continue;
-        const ArrangementEdge& eq = out.edges[q];
-        if (eq.t0 < o.s_interval.lo - slack || eq.t1 > o.s_interval.hi + slack) continue;
-        const bool same_ends = (ep.from == eq.from && ep.to == eq.to) ||
-                               (ep.from == eq.to && ep.to == eq.from);
-        if (same_ends) groups.join(p, q);
+      along_t.push_back(p);
+    }
+    for (std::size_t q = edges_of[j].first; q < edges_of[j].second; ++q) {
+      const ArrangementEdge& eq = out.edges[q];
+      if (eq.t0 < o.s_interval.lo - slack || eq.t1 > o.s_interval.hi + slack) continue;
+      along_s.push_back(q);
+    }
+    if (o.reversed) std::reverse(along_s.begin(), along_s.end());
+    // Where a piece of j starts and ends, in the direction it runs along the overlap.
+    const auto start = [&](const ArrangementEdge& e) { return o.reversed ? e.to : e.from; };
+    const auto end = [&](const ArrangementEdge& e) { return o.reversed ? e.from : e.to; };
+    bool same_cuts = along_t.size() == along_s.size();
+    for (std::size_t k = 0; same_cuts && k < along_t.size(); ++k) {
+      const ArrangementEdge& ep = out.edges[along_t[k]];
+      const ArrangementEdge& eq = out.edges[along_s[k]];
+      same_cuts = ep.from == start(eq) && ep.to == end(eq);
+    }
+    if (same_cuts) {
+      for (std::size_t k = 0; k < along_t.size(); ++k) {
+        if (along_t[k] != along_s[k]) groups.join(along_t[k], along_s[k]);
       }
+      return;
+    }
+    for (const std::size_t p : along_t) {
+      const ArrangementEdge& ep = out.edges[p];
+      if (ep.from == ep.to) continue;
+      std::size_t match = SIZE_MAX;
+      int count = 0;
+      for (const std::size_t q : along_s) {
+        const ArrangementEdge& eq = out.edges[q];
+        if (q != p && ep.from == start(eq) && ep.to == end(eq)) {
+          match = q;
+          ++count;
+        }
+      }
+      if (count == 1) groups.join(p, match);
     }
   };
   for (const path::PathOverlap& o : found.overlaps) join_overlap(o.segment_t, o.segment_s, o.overlap);

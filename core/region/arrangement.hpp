@@ -83,8 +83,11 @@ struct Arrangement {
 /// Edges: each segment is cut at its events' parameters in increasing order; consecutive
 /// cuts at the same vertex are one cut unless the piece between them is more than the
 /// vertex's size (a loop); zero-length segments are left out of the search and give no
-/// edge (a single point adds no boundary). The pieces of segments in
-/// one overlap whose end vertices agree are one coincident group, and so are two edges
+/// edge (a single point adds no boundary). The pieces of the two segments
+/// of one overlap are one coincident group piece by piece in their order along it (the k-th
+/// of one with the k-th of the other, when both are cut at the same vertices in that order;
+/// otherwise a piece with the one piece of the other that runs between the same two vertices
+/// the same way, a loop with none), and so are two edges
 /// between the same two vertices whose points at t = k/8 (k = 1..7, matched along their
 /// common direction) are within kRayClearanceRel * scale of each other: a lens thinner than
 /// the side-winding rays can resolve (two crossings a few ulps off a tangency) has no area

@@ -8,6 +8,7 @@
 #include "core/region/contour_chain.hpp"
 #include "core/region/side_links.hpp"
 #include "core/region/side_winding.hpp"
+#include "core/region/vertex_sectors.hpp"
 
 namespace bezier::region {
 
@@ -42,6 +43,7 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
   std::vector<SideWindings> windings(group_count);
   std::vector<bool> known(group_count, false);
   std::vector<std::size_t> pending;
+  bool undecided = false;
   for (std::size_t g = 0; g < group_count; ++g) {
     if (known[g]) continue;
     const SideWindingResult sides = side_windings(arrangement, index, g, budget);
@@ -51,9 +53,9 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
       return result;
     }
     if (sides.status == SideWindingStatus::unclear) {
-      result.work = budget.spent();
-      result.status = BooleanStatus::unresolved;
-      return result;
+      // Decided below from its neighbours around a vertex, if it can be.
+      undecided = true;
+      continue;
     }
     windings[g] = sides.windings;
     known[g] = true;
@@ -68,6 +70,15 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
         known[link.group] = true;
         pending.push_back(link.group);
       }
+    }
+  }
+  if (undecided) {
+    const VertexSectorStatus around = decide_around_vertices(arrangement, windings, known, budget);
+    if (around != VertexSectorStatus::ok) {
+      result.work = budget.spent();
+      result.status = around == VertexSectorStatus::work_cap_reached ? BooleanStatus::work_cap_reached
+                                                                     : BooleanStatus::unresolved;
+      return result;
     }
   }
   std::vector<DirectedEdge> kept;

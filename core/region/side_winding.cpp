@@ -34,6 +34,10 @@ struct Count {
   int crossings = 0;
   bool clear = true;
   bool out_of_work = false;
+  /// Unclear at a piece whose control points all lie within twice the clearance of the
+  /// ray's origin: the edge passes that close to the origin, so every direction meets it
+  /// there and no other ray is tried.
+  bool at_origin = false;
 };
 
 void count_crossings(const core::Curve& piece, const Ray& ray, OriginEnd origin, bool check_ends,
@@ -91,6 +95,9 @@ void count_crossings(const core::Curve& piece, const Ray& ray, OriginEnd origin,
   }
   if (depth >= kRayMaxDepth) {
     count.clear = false;
+    bool near = true;
+    for (const Point2 p : pts) near = near && core::length(p - ray.origin) <= 2.0 * eps;
+    count.at_origin = near;
     return;
   }
   if (!budget.spend(static_cast<std::int64_t>(n + 1) * (n + 1))) {
@@ -220,6 +227,10 @@ SideWindingResult side_windings(const Arrangement& arrangement, const SideWindin
         return result;
       }
       clear = count.clear;
+      if (count.at_origin) {
+        result.status = SideWindingStatus::unclear;
+        return result;
+      }
       left[static_cast<std::size_t>(edge.source)] += count.crossings;
     }
     if (!clear) continue;

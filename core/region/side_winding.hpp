@@ -65,6 +65,10 @@ struct SideWindingIndex {
 /// kRayClearanceRel * scale of a vertex or of its origin, or a piece stays undecided after
 /// kRayMaxDepth halvings (a tangency to the ray). Directions: the left normal of the
 /// representative at m, then turned by fixed angles up to +-1.4 radians (still on the left).
+/// When the piece left undecided at the deepest halving has every control point within
+/// twice the clearance of m, the edge passes that close to m and every direction would meet
+/// it there: the group is unclear at once (boolean.cpp then decides it around its vertices,
+/// vertex_sectors.hpp).
 /// Each control-point pass is charged (n + 1) units and each halving (n + 1)^2, each by
 /// budget.spend (work_cap_reached once the spent work passes the limit).
 ///

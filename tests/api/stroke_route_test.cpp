@@ -49,6 +49,53 @@ TEST(StrokeRoute, RoundStrokeOfAPolylineHoldsThePointsCloserThanHalfTheWidth) {
   EXPECT_EQ(winding_at(r, {-1.01, 0}), 0);
 }
 
+TEST(StrokeRoute, SimplifiedWideRoundStrokesAtATightToleranceAnswer) {
+  // Wide strokes at tolerance 1e-4 whose offset pieces meet near-tangentially (slivers thinner
+  // than the region layer's ray clearance) answer at the default limits, with the round
+  // stroke's region: on a grid of points, winding 1 closer than width / 2 to the curve, 0
+  // farther than width / 2 + tolerance (distances by core::nearest on the one cubic).
+  struct Case {
+    const char* path;
+    core::Curve cubic;
+    double width;
+  };
+  const core::Curve hook({{0, 0}, {12, 0}, {12, 4}, {0, 4}});
+  const core::Curve cusp({{0, 0}, {10, 10}, {0, 10}, {10, 0}});
+  const Case cases[] = {{"M0 0 C12 0 12 4 0 4", hook, 2},
+                        {"M0 0 C12 0 12 4 0 4", hook, 7},
+                        {"M0 0 C30 0 -10 10 20 10", core::Curve({{0, 0}, {30, 0}, {-10, 10}, {20, 10}}), 7},
+                        {"M0 0 C10 10 0 10 10 0", cusp, 2},
+                        {"M0 0 C10 10 0 10 10 0", cusp, 7},
+                        {"M0 0 C10 10 -10 10 0 0 Z", core::Curve({{0, 0}, {10, 10}, {-10, 10}, {0, 0}}), 2}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(testing::Message() << c.path << " width " << c.width);
+    const json r = call(std::string(R"({"path":")") + c.path + R"(","width":)" +
+                            std::to_string(c.width) +
+                            R"(,"join":"round","cap":"round","tolerance":1e-4,"simplify":true})",
+                        200);
+    EXPECT_EQ(r["simplified"], true);
+    path::PathDataParse parse = path::parse_svg_path_data(r["path"].get<std::string>(), 100000);
+    ASSERT_FALSE(parse.error);
+    const region::Region region =
+        region::region_from_path(std::move(parse.path), region::FillRule::nonzero);
+    const double half = c.width / 2;
+    int inside = 0, outside = 0;
+    for (int i = 0; i <= 30; ++i) {
+      for (int j = 0; j <= 30; ++j) {
+        const core::Point2 p{-12 + 44.0 * (i + 0.37) / 31, -6 + 24.0 * (j + 0.61) / 31};
+        const double d = core::nearest(c.cubic, p, 0, 1).distance;
+        if (d > half - 1e-3 && d < half + 1e-3) continue;
+        const std::optional<region::Winding> w = region::winding(region, p, std::int64_t{1} << 40);
+        ASSERT_TRUE(w && !w->boundary);
+        EXPECT_EQ(w->winding, d < half ? 1 : 0) << p.x << " " << p.y;
+        ++(d < half ? inside : outside);
+      }
+    }
+    EXPECT_GT(inside, 20);
+    EXPECT_GT(outside, 20);
+  }
+}
+
 TEST(StrokeRoute, SimplifiedOutlineIsTheSameRegionWithWindingOne) {
   // The ribbons of the two lines and the disks at their ends overlap (winding 2 and 3 about
   // the corner before simplify); simplified, every point inside winds once.

@@ -116,57 +116,79 @@ TEST(Stroke, RoundIsTheDistanceSetAtACuspOfTheCurve) {
   check_round_stroke("M0 0 C10 10 0 10 10 0", 2.0, 1e-3);
 }
 
+/// The round stroke of `data` (one cubic, `cubic`), simplified: every point judged winds once
+/// when closer than width / 2 to the curve, never when farther than width / 2 + tolerance, and
+/// 0 or 1 anywhere.
+void check_simplified_round_stroke(const std::string& data, const core::Curve& cubic, double width,
+                                   double tolerance) {
+  SCOPED_TRACE(testing::Message() << data << " width " << width << " tolerance " << tolerance);
+  const path::Path path = test::parsed_path(data);
+  const StrokeOutline outline = stroke(path, round_style(width), tolerance, kWork, kSegments);
+  ASSERT_EQ(outline.status, StrokeStatus::ok);
+  path::Path boundary;
+  for (const Contour& c : outline.contours) {
+    boundary.subpaths.push_back({boundary.segments.size(), c.size(), true});
+    for (const core::Curve& s : c) boundary.segments.push_back(s);
+  }
+  const region::BooleanResult simple =
+      region::simplify(region::Region{std::move(boundary), region::FillRule::nonzero}, kWork);
+  ASSERT_EQ(simple.status, region::BooleanStatus::ok);
+  path::Path result;
+  for (const region::ResultContour& c : simple.contours) {
+    result.subpaths.push_back({result.segments.size(), c.end_segment - c.first_segment, true});
+    for (std::size_t k = c.first_segment; k < c.end_segment; ++k) {
+      result.segments.push_back(simple.segments[k].curve);
+    }
+  }
+  const region::RegionWinding winding(region::Region{std::move(result), region::FillRule::nonzero});
+  const double r = width / 2;
+  int inside = 0, outside = 0;
+  for (const Point2 p : probe_points(path, r, tolerance, 7, 1500)) {
+    std::int64_t work = kWork;
+    const std::optional<region::Winding> w = winding.at(p, work);
+    ASSERT_TRUE(w);
+    if (w->boundary) continue;
+    EXPECT_TRUE(w->winding == 0 || w->winding == 1) << p.x << " " << p.y;
+    const double d = core::nearest(cubic, p, 0, 1).distance;
+    if (d < r - 1e-12) {
+      EXPECT_EQ(w->winding, 1) << p.x << " " << p.y;
+      ++inside;
+    } else if (d > r + tolerance + 1e-12) {
+      EXPECT_EQ(w->winding, 0) << p.x << " " << p.y;
+      ++outside;
+    }
+  }
+  EXPECT_GT(inside, 100);
+  EXPECT_GT(outside, 100);
+}
+
 TEST(Stroke, SimplifiedOutlineOfACuspIsTheDistanceSetWindingOnce) {
   // The cusp at t = 1/2 and the cusps of the parallel curves (radius of curvature R) cut the
   // cubic into pieces whose normal segments at a cut lie on one line; simplify must remove
-  // the overlaps. Every point judged winds once when closer than r to the curve, never when
-  // farther than r + tolerance, and 0 or 1 anywhere.
-  const std::string data = "M0 0 C10 10 0 10 10 0";
+  // the overlaps.
   const core::Curve cubic({{0, 0}, {10, 10}, {0, 10}, {10, 0}});
   for (const double width : {2.0, 1.0, 3.0}) {
     for (const double tolerance : {1e-2, 1e-3}) {
-      SCOPED_TRACE(testing::Message() << "width " << width << " tolerance " << tolerance);
-      const path::Path path = test::parsed_path(data);
-      const StrokeOutline outline = stroke(path, round_style(width), tolerance, kWork, kSegments);
-      ASSERT_EQ(outline.status, StrokeStatus::ok);
-      path::Path boundary;
-      for (const Contour& c : outline.contours) {
-        boundary.subpaths.push_back({boundary.segments.size(), c.size(), true});
-        for (const core::Curve& s : c) boundary.segments.push_back(s);
-      }
-      const region::BooleanResult simple =
-          region::simplify(region::Region{std::move(boundary), region::FillRule::nonzero}, kWork);
-      ASSERT_EQ(simple.status, region::BooleanStatus::ok);
-      path::Path result;
-      for (const region::ResultContour& c : simple.contours) {
-        result.subpaths.push_back({result.segments.size(), c.end_segment - c.first_segment, true});
-        for (std::size_t k = c.first_segment; k < c.end_segment; ++k) {
-          result.segments.push_back(simple.segments[k].curve);
-        }
-      }
-      const region::RegionWinding winding(
-          region::Region{std::move(result), region::FillRule::nonzero});
-      const double r = width / 2;
-      int inside = 0, outside = 0;
-      for (const Point2 p : probe_points(path, r, tolerance, 7, 1500)) {
-        std::int64_t work = kWork;
-        const std::optional<region::Winding> w = winding.at(p, work);
-        ASSERT_TRUE(w);
-        if (w->boundary) continue;
-        EXPECT_TRUE(w->winding == 0 || w->winding == 1) << p.x << " " << p.y;
-        const double d = core::nearest(cubic, p, 0, 1).distance;
-        if (d < r - 1e-12) {
-          EXPECT_EQ(w->winding, 1) << p.x << " " << p.y;
-          ++inside;
-        } else if (d > r + tolerance + 1e-12) {
-          EXPECT_EQ(w->winding, 0) << p.x << " " << p.y;
-          ++outside;
-        }
-      }
-      EXPECT_GT(inside, 100);
-      EXPECT_GT(outside, 100);
+      check_simplified_round_stroke("M0 0 C10 10 0 10 10 0", cubic, width, tolerance);
     }
   }
+}
+
+TEST(Stroke, SimplifiedWideStrokesAtATightTolerance) {
+  // At tolerance 1e-4, offset pieces of these wide strokes meet near-tangentially a few
+  // times within 1e-8 of each other: slivers thinner than the region layer's ray clearance,
+  // whose sides are decided around their vertices (core/region/vertex_sectors.hpp).
+  const double tolerance = 1e-4;
+  const core::Curve hook({{0, 0}, {12, 0}, {12, 4}, {0, 4}});
+  const core::Curve s_curve({{0, 0}, {30, 0}, {-10, 10}, {20, 10}});
+  const core::Curve cusp({{0, 0}, {10, 10}, {0, 10}, {10, 0}});
+  const core::Curve loop({{0, 0}, {10, 10}, {-10, 10}, {0, 0}});
+  for (const double width : {2.0, 7.0}) {
+    check_simplified_round_stroke("M0 0 C12 0 12 4 0 4", hook, width, tolerance);
+    check_simplified_round_stroke("M0 0 C10 10 0 10 10 0", cusp, width, tolerance);
+  }
+  check_simplified_round_stroke("M0 0 C30 0 -10 10 20 10", s_curve, 7.0, tolerance);
+  check_simplified_round_stroke("M0 0 C10 10 -10 10 0 0 Z", loop, 2.0, tolerance);
 }
 
 TEST(Stroke, RoundIsTheDistanceSetWhereTheRadiusOfCurvatureIsBelowHalfTheWidth) {

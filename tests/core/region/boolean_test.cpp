@@ -476,6 +476,59 @@ TEST(Boolean, DegreeFiveOperand) {
   EXPECT_NEAR(run_simplify(a, FillRule::nonzero).area, area, 1e-14);
 }
 
+/// For points on a grid over `box`, farther than `margin` from both the operand's and the
+/// result's boundaries: the result's winding (polylines through its segments) is 1 exactly
+/// where the operand's winding satisfies `keep`, and 0 elsewhere.
+template <typename Keep>
+void expect_region(const BooleanResult& r, const path::Path& operand, double lo, double hi,
+                   double margin, Keep keep) {
+  const auto in_lines = test::polylines(operand, 1000);
+  const auto out_lines = test::polylines(test::result_path(r), 1000);
+  int checked = 0;
+  for (int i = 0; i <= 40; ++i) {
+    for (int j = 0; j <= 40; ++j) {
+      const Point2 p{lo + (hi - lo) * (i + 0.31) / 41.0, lo + (hi - lo) * (j + 0.47) / 41.0};
+      const test::PolylineWinding w = test::polyline_winding(in_lines, p);
+      const test::PolylineWinding v = test::polyline_winding(out_lines, p);
+      if (w.distance < margin || v.distance < margin) continue;
+      ++checked;
+      EXPECT_EQ(v.winding, keep(w.winding) ? 1 : 0) << "at (" << p.x << ", " << p.y << ")";
+    }
+  }
+  EXPECT_GT(checked, 500);
+}
+
+TEST(Boolean, OperandWithLoopSegmentsCombinedWithItsCopy) {
+  // One contour of two cubics that each start and end at (-3, -8) (one-segment loops crossing
+  // each other). Combined with an exact copy of itself, each loop is shared with its copy:
+  // A and A = A or A = simplify(A), A minus A and A xor A are empty.
+  const path::Path a =
+      parsed_path("M-3 -8 C-5.5 4 -8 6.5 -3 -8 C4 4 -8 6.5 -3 -8 Z");
+  for (const FillRule rule : {FillRule::evenodd, FillRule::nonzero}) {
+    const BooleanResult s = run_simplify(a, rule);
+    const auto keep = [rule](int w) { return rule == FillRule::evenodd ? (w & 1) != 0 : w != 0; };
+    expect_region(s, a, -10.0, 6.0, 1e-3, keep);
+    EXPECT_GT(s.area, 1.0);
+    for (const BooleanOperation op : {BooleanOperation::intersection, BooleanOperation::union_}) {
+      const BooleanResult r = run(op, a, a, rule, rule);
+      EXPECT_NEAR(r.area, s.area, 1e-12 * s.area);
+      expect_region(r, a, -10.0, 6.0, 1e-3, keep);
+    }
+    EXPECT_TRUE(run(BooleanOperation::difference, a, a, rule, rule).contours.empty());
+    EXPECT_TRUE(run(BooleanOperation::xor_, a, a, rule, rule).contours.empty());
+  }
+  // Each loop alone, and with its copy: the loop's area is its Green integral (a simple
+  // closed curve), exactly.
+  for (const char* loop : {"M-3 -8 C-5.5 4 -8 6.5 -3 -8 Z", "M-3 -8 C4 4 -8 6.5 -3 -8 Z"}) {
+    const path::Path l = parsed_path(loop);
+    const double area = std::fabs(exact_area(l).to_double());
+    EXPECT_NEAR(run_simplify(l, FillRule::nonzero).area, area, 1e-12 * area);
+    EXPECT_NEAR(run(BooleanOperation::intersection, l, l).area, area, 1e-12 * area);
+    EXPECT_NEAR(run(BooleanOperation::union_, l, l).area, area, 1e-12 * area);
+    EXPECT_TRUE(run(BooleanOperation::difference, l, l).contours.empty());
+  }
+}
+
 TEST(Boolean, WorkCapIsReported) {
   const path::Path a = parsed_path(circle(0, 0, 1));
   const path::Path b = parsed_path(circle(0.5, 0.25, 1));
