@@ -174,11 +174,12 @@ Reply boolean_route(const nlohmann::json& request, const Limits& limits) {
   };
   refuse_arc_tolerance_without_path(reader, request, operand_has_path("a") || operand_has_path("b"));
   if (!reader.ok()) return reader.refusal();
+  core::WorkBudget budget(limits.max_work);
   const region::BooleanResult result =
       *op == region::BooleanOperation::simplify
-          ? region::simplify(*a, limits.max_work)
-          : region::boolean_operation(*op, *a, *b, limits.max_work);
-  if (result.status == region::BooleanStatus::work_cap_reached) {
+          ? region::simplify(*a, budget)
+          : region::boolean_operation(*op, *a, *b, budget);
+  if (budget.exhausted()) {
     return problem_reply(ProblemKind::work_cap,
                          "the boolean operation spent " + std::to_string(result.work) +
                              " work units without finishing, beyond the per-request work cap of " +

@@ -47,14 +47,14 @@ Reply contains_route(const Json& request, const Limits& limits) {
   if (!reader.ok()) return reader.refusal();
 
   const region::RegionWinding prepared(*operand);
-  std::int64_t work_left = limits.max_work;
+  core::WorkBudget budget(limits.max_work);
   JsonWriter w;
   w.begin_object();
   write_arc_tolerance(w, operand->path.arc_tolerance);
   w.key("fill_rule").value(to_string(operand->fill_rule));
   w.key("results").begin_array();
   for (const core::Point2 target : *targets) {
-    const std::optional<region::Winding> found = prepared.at(target, work_left);
+    const std::optional<region::Winding> found = prepared.at(target, budget);
     if (!found) {
       return problem_reply(ProblemKind::work_cap,
                            "deciding " + std::to_string(targets->size()) + " targets against " +

@@ -161,9 +161,9 @@ Reply stroke_route(const nlohmann::json& request, const Limits& limits) {
       boundary.subpaths.push_back({boundary.segments.size(), c.size(), true});
       for (core::Curve& s : c) boundary.segments.push_back(std::move(s));
     }
-    const region::BooleanResult result = region::simplify(
-        region::Region{std::move(boundary), region::FillRule::nonzero}, budget.remaining());
-    if (result.status == region::BooleanStatus::work_cap_reached) {
+    const region::BooleanResult result =
+        region::simplify(region::Region{std::move(boundary), region::FillRule::nonzero}, budget);
+    if (budget.exhausted()) {
       return problem_reply(ProblemKind::work_cap,
                            "removing the outline's overlaps took more than the per-request work "
                            "cap of " +

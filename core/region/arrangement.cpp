@@ -96,7 +96,8 @@ Combined combined(const path::Path& a, const path::Path* b) {
 
 }  // namespace
 
-Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int64_t max_work) {
+Arrangement build_arrangement(const path::Path& a, const path::Path* b,
+                              core::WorkBudget& budget) {
   Arrangement out;
   const Combined both = combined(a, b);
   const path::Path& all = both.path;
@@ -107,11 +108,10 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, std::int
 
   core::IntersectOptions options;
   options.tolerance = kIntersectionTolerance;
-  options.max_work = max_work;
-  const path::PathSelfIntersectionResult found = path::self_intersections(all, options);
+  const path::PathSelfIntersectionResult found = path::self_intersections(all, options, budget);
   out.work = found.stats.work;
-  out.status = found.status;
-  if (found.status != core::IntersectStatus::ok) return out;
+  out.status = budget.exhausted() ? core::IntersectStatus::work_cap_reached : found.status;
+  if (out.status != core::IntersectStatus::ok) return out;
 
   std::vector<double> speed(all.segments.size());
   for (std::size_t i = 0; i < all.segments.size(); ++i) speed[i] = speed_bound(all.segments[i]);

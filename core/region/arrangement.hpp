@@ -7,6 +7,7 @@
 
 #include "core/base/curve.hpp"
 #include "core/base/point.hpp"
+#include "core/base/work_budget.hpp"
 #include "core/intersect/result.hpp"
 #include "core/path/path.hpp"
 
@@ -93,9 +94,10 @@ struct Arrangement {
 /// the side-winding rays can resolve (two crossings a few ulps off a tangency) has no area
 /// worth a contour, and its two sides are told apart only as one edge.
 ///
-/// Budget: max_work units for the whole search (as path::self_intersections spends them).
+/// The contact search charges `budget` (as path::self_intersections spends it); when it runs
+/// out the status is work_cap_reached and the arrangement must not be used.
 /// Precondition: finite coordinates; every subpath closed.
 [[nodiscard]] Arrangement build_arrangement(const path::Path& a, const path::Path* b,
-                                            std::int64_t max_work);
+                                            core::WorkBudget& budget);
 
 }  // namespace bezier::region

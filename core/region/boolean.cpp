@@ -14,17 +14,17 @@ namespace bezier::region {
 
 namespace {
 
-BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::int64_t max_work) {
+BooleanResult run(BooleanOperation op, const Region& a, const Region* b,
+                  core::WorkBudget& budget) {
   BooleanResult result;
+  const std::int64_t spent_before = budget.spent();
   const Arrangement arrangement =
-      build_arrangement(a.path, b != nullptr ? &b->path : nullptr, max_work);
+      build_arrangement(a.path, b != nullptr ? &b->path : nullptr, budget);
   result.work = arrangement.work;
   if (arrangement.status != core::IntersectStatus::ok) {
     result.status = BooleanStatus::work_cap_reached;
     return result;
   }
-  core::WorkBudget budget(max_work);
-  budget.charge(arrangement.work);
   const FillRule rule_b = b != nullptr ? b->fill_rule : FillRule::nonzero;
   const auto inside = [&](const std::array<int, 2>& w) {
     return keeps(op, fills(a.fill_rule, w[0]), fills(rule_b, w[1]));
@@ -36,7 +36,7 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
   const SideWindingIndex index(arrangement);
   const std::vector<GroupLinks> links = side_links(arrangement);
   if (!budget.spend(static_cast<std::int64_t>(arrangement.edges.size() + group_count))) {
-    result.work = budget.spent();
+    result.work = budget.spent() - spent_before;
     result.status = BooleanStatus::work_cap_reached;
     return result;
   }
@@ -48,7 +48,7 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
     if (known[g]) continue;
     const SideWindingResult sides = side_windings(arrangement, index, g, budget);
     if (sides.status == SideWindingStatus::work_cap_reached) {
-      result.work = budget.spent();
+      result.work = budget.spent() - spent_before;
       result.status = BooleanStatus::work_cap_reached;
       return result;
     }
@@ -75,7 +75,7 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
   if (undecided) {
     const VertexSectorStatus around = decide_around_vertices(arrangement, windings, known, budget);
     if (around != VertexSectorStatus::ok) {
-      result.work = budget.spent();
+      result.work = budget.spent() - spent_before;
       result.status = around == VertexSectorStatus::work_cap_reached ? BooleanStatus::work_cap_reached
                                                                      : BooleanStatus::unresolved;
       return result;
@@ -97,12 +97,12 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
     kept_reversed.push_back(!left);
   }
   if (!budget.spend(static_cast<std::int64_t>(kept.size()) * 16)) {
-    result.work = budget.spent();
+    result.work = budget.spent() - spent_before;
     result.status = BooleanStatus::work_cap_reached;
     return result;
   }
   const auto chains = chain_contours(kept, arrangement.vertices.size());
-  result.work = budget.spent();
+  result.work = budget.spent() - spent_before;
   if (!chains) {
     result.status = BooleanStatus::unresolved;
     return result;
@@ -134,13 +134,23 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, std::in
 }  // namespace
 
 BooleanResult boolean_operation(BooleanOperation op, const Region& a, const Region& b,
+                                core::WorkBudget& budget) {
+  return run(op, a, op == BooleanOperation::simplify ? nullptr : &b, budget);
+}
+
+BooleanResult simplify(const Region& a, core::WorkBudget& budget) {
+  return run(BooleanOperation::simplify, a, nullptr, budget);
+}
+
+BooleanResult boolean_operation(BooleanOperation op, const Region& a, const Region& b,
                                 std::int64_t max_work) {
-  if (op == BooleanOperation::simplify) return run(op, a, nullptr, max_work);
-  return run(op, a, &b, max_work);
+  core::WorkBudget budget(max_work);
+  return boolean_operation(op, a, b, budget);
 }
 
 BooleanResult simplify(const Region& a, std::int64_t max_work) {
-  return run(BooleanOperation::simplify, a, nullptr, max_work);
+  core::WorkBudget budget(max_work);
+  return simplify(a, budget);
 }
 
 }  // namespace bezier::region

@@ -51,6 +51,7 @@
 #include <vector>
 
 #include "core/base/curve.hpp"
+#include "core/base/work_budget.hpp"
 #include "core/intersect/result.hpp"
 #include "core/path/path.hpp"
 #include "core/region/arrangement.hpp"
@@ -114,12 +115,20 @@ struct BooleanResult {
   BooleanStatus status = BooleanStatus::ok;
 };
 
-/// The result of `op` on a and b (b ignored by simplify). max_work bounds the whole call.
+/// The result of `op` on a and b (b ignored by simplify). Every phase charges `budget`, which
+/// the call shares with its caller's other work (a stroke's simplify takes what the stroke
+/// left); when it runs out (budget.exhausted()) the status is work_cap_reached and there is
+/// no result. `work` is what this call charged.
 /// Preconditions: finite coordinates (a Region's subpaths are closed).
 [[nodiscard]] BooleanResult boolean_operation(BooleanOperation op, const Region& a,
-                                              const Region& b, std::int64_t max_work);
+                                              const Region& b, core::WorkBudget& budget);
 
 /// simplify of one operand.
+[[nodiscard]] BooleanResult simplify(const Region& a, core::WorkBudget& budget);
+
+/// The same with a budget of max_work units of their own (tests, benchmarks, fuzzers).
+[[nodiscard]] BooleanResult boolean_operation(BooleanOperation op, const Region& a,
+                                              const Region& b, std::int64_t max_work);
 [[nodiscard]] BooleanResult simplify(const Region& a, std::int64_t max_work);
 
 }  // namespace bezier::region

@@ -224,7 +224,7 @@ struct SegmentOutcome {
 /// The crossings of one segment (scaled control points) with the ray from `target`, by
 /// subdivision (winding.hpp).
 SegmentOutcome refine_segment(std::span<const Point2> points, Point2 target, double band,
-                              std::int64_t& work_left) {
+                              core::WorkBudget& budget) {
   const std::size_t size = points.size();
   const int n = static_cast<int>(size) - 1;
   const std::int64_t piece_cost = core::kCompensatedFactor * (n + 1) * (n + 1);
@@ -240,8 +240,7 @@ SegmentOutcome refine_segment(std::span<const Point2> points, Point2 target, dou
   pieces.push_back({0, false});
   SegmentOutcome out;
   while (!pieces.empty()) {
-    work_left -= piece_cost;
-    if (work_left < 0) {
+    if (!budget.spend(piece_cost)) {
       out.out_of_work = true;
       return out;
     }
@@ -302,10 +301,11 @@ RegionWinding::RegionWinding(const Region& region) {
   scale_ = factor.times(scale);
 }
 
-std::optional<Winding> RegionWinding::at(Point2 target, std::int64_t& work_left) const {
+std::optional<Winding> RegionWinding::at(Point2 target, core::WorkBudget& budget) const {
   const std::size_t count = boxes_.size();
-  work_left -= static_cast<std::int64_t>(count) * region_tuning::kBoxTestCost;
-  if (work_left < 0) return std::nullopt;
+  if (!budget.spend(static_cast<std::int64_t>(count) * region_tuning::kBoxTestCost)) {
+    return std::nullopt;
+  }
   const Point2 q = core::PowerOfTwo(-exponent_).times(target);
   if (scale_ == 0.0) {
     // Every control point is the origin (or there is none): the path is that point.
@@ -327,7 +327,7 @@ std::optional<Winding> RegionWinding::at(Point2 target, std::int64_t& work_left)
       crossings += chord_crossing(points.front().y <= q.y, points.back().y <= q.y);
       continue;
     }
-    const SegmentOutcome outcome = refine_segment(points, q, band, work_left);
+    const SegmentOutcome outcome = refine_segment(points, q, band, budget);
     if (outcome.out_of_work) return std::nullopt;
     if (outcome.boundary) return Winding{true, 0};
     crossings += outcome.crossings;
@@ -336,8 +336,8 @@ std::optional<Winding> RegionWinding::at(Point2 target, std::int64_t& work_left)
 }
 
 std::optional<Winding> winding(const Region& region, core::Point2 target, std::int64_t max_work) {
-  std::int64_t work_left = max_work;
-  return RegionWinding(region).at(target, work_left);
+  core::WorkBudget budget(max_work);
+  return RegionWinding(region).at(target, budget);
 }
 
 }  // namespace bezier::region

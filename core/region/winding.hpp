@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/base/point.hpp"
+#include "core/base/work_budget.hpp"
 #include "core/region/region.hpp"
 
 namespace bezier::region {
@@ -62,8 +63,9 @@ class RegionWinding {
   explicit RegionWinding(const Region& region);
 
   /// The winding of the region's path around `target` (finite), charging its work to
-  /// `work_left`; nullopt, with work_left negative, when the work ran out first.
-  [[nodiscard]] std::optional<Winding> at(core::Point2 target, std::int64_t& work_left) const;
+  /// `budget` (the targets of one request share it); nullopt when it ran out first
+  /// (budget.exhausted()).
+  [[nodiscard]] std::optional<Winding> at(core::Point2 target, core::WorkBudget& budget) const;
 
  private:
   struct Box {

@@ -127,7 +127,7 @@ TEST(StrokeRoute, SimplifiedRoundStrokeOfACurveIsItsDistanceSet) {
   int judged = 0;
   for (double x = -1.5; x <= 11.5; x += 0.13) {
     for (double y = -1.5; y <= 5.5; y += 0.11) {
-      std::int64_t work = std::int64_t{1} << 40;
+      core::WorkBudget work(std::int64_t{1} << 40);
       const std::optional<region::Winding> w = winding.at({x, y}, work);
       ASSERT_TRUE(w);
       if (w->boundary) continue;
@@ -160,7 +160,7 @@ TEST(StrokeRoute, SimplifiedRoundStrokeOfACuspIsItsDistanceSet) {
   int judged = 0;
   for (double x = -1.5; x <= 11.5; x += 0.17) {
     for (double y = -1.5; y <= 9; y += 0.13) {
-      std::int64_t work = std::int64_t{1} << 40;
+      core::WorkBudget work(std::int64_t{1} << 40);
       const std::optional<region::Winding> w = winding.at({x, y}, work);
       ASSERT_TRUE(w);
       if (w->boundary) continue;
@@ -196,7 +196,7 @@ TEST(StrokeRoute, SimplifiedNarrowRoundStrokeOfACuspIsItsDistanceSet) {
     int judged = 0;
     for (double x = -0.5; x <= 10.5; x += 0.037) {
       for (double y = -0.5; y <= 8; y += 0.043) {
-        std::int64_t work = std::int64_t{1} << 40;
+        core::WorkBudget work(std::int64_t{1} << 40);
         const std::optional<region::Winding> w = winding.at({x, y}, work);
         ASSERT_TRUE(w);
         if (w->boundary) continue;

@@ -53,9 +53,9 @@ void run(benchmark::State& state, const bezier::region::Region& region,
   for (auto _ : state) {
     spent = 0;
     for (const Point2 q : targets) {
-      std::int64_t work = INT64_MAX;
+      bezier::core::WorkBudget work;
       const auto w = prepared.at(q, work);
-      spent += INT64_MAX - work;
+      spent += work.spent();
       inside += w && bezier::region::inside(*w, region.fill_rule) ? 1 : 0;
     }
     benchmark::DoNotOptimize(inside);

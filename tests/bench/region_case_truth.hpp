@@ -105,9 +105,9 @@ inline CaseTruth case_truth(const region::Region& a, const region::Region& b) {
       double nearest = INFINITY;
       for (const auto& [s, e] : chords) nearest = std::min(nearest, segment_distance2(p, s, e));
       if (nearest <= clearance * clearance) continue;
-      std::int64_t work = kTruthWork;
+      bezier::core::WorkBudget work(kTruthWork);
       const auto in_a = wa.at(p, work);
-      work = kTruthWork;
+      work = bezier::core::WorkBudget(kTruthWork);
       const auto in_b = wb.at(p, work);
       if (!in_a || !in_b || in_a->boundary || in_b->boundary) continue;
       truth.points.push_back(

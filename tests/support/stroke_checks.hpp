@@ -52,7 +52,7 @@ inline MembershipCounts check_round_membership(const path::Path& path,
   MembershipCounts counts;
   const region::RegionWinding winding(outline_region(outline));
   for (const core::Point2 p : points) {
-    std::int64_t work = std::int64_t{1} << 40;
+    core::WorkBudget work(std::int64_t{1} << 40);
     const std::optional<region::Winding> w = winding.at(p, work);
     EXPECT_TRUE(w.has_value());
     if (!w || w->boundary) continue;

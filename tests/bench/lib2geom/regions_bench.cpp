@@ -157,7 +157,7 @@ void BM_Contains_Ours_Outline64(benchmark::State& state) {
   std::int64_t inside = 0;
   for (auto _ : state) {
     for (const Point2 q : targets) {
-      std::int64_t work = kWork;
+      bezier::core::WorkBudget work(kWork);
       const auto w = prepared.at(q, work);
       inside += w && region::inside(*w, r.fill_rule) ? 1 : 0;
     }

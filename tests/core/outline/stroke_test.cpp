@@ -144,7 +144,7 @@ void check_simplified_round_stroke(const std::string& data, const core::Curve& c
   const double r = width / 2;
   int inside = 0, outside = 0;
   for (const Point2 p : probe_points(path, r, tolerance, 7, 1500)) {
-    std::int64_t work = kWork;
+    core::WorkBudget work(kWork);
     const std::optional<region::Winding> w = winding.at(p, work);
     ASSERT_TRUE(w);
     if (w->boundary) continue;
@@ -203,14 +203,14 @@ TEST(Stroke, ClosedCircleNarrowerThanTheStrokeFillsItsCentre) {
   check_round_stroke(circle, 3.0, 1e-3);
   const path::Path path = test::parsed_path(circle);
   const StrokeOutline wide = stroke(path, round_style(3.0), 1e-3, kWork, kSegments);
-  std::int64_t work = kWork;
+  core::WorkBudget work(kWork);
   const auto at_centre = region::RegionWinding(test::outline_region(wide)).at({0, 0}, work);
   ASSERT_TRUE(at_centre);
   EXPECT_NE(at_centre->winding, 0);
   // Half width 0.99: the centre is at distance 1 > 0.99 + tolerance: a hole.
   check_round_stroke(circle, 1.98, 1e-3);
   const StrokeOutline narrow = stroke(path, round_style(1.98), 1e-3, kWork, kSegments);
-  work = kWork;
+  work = core::WorkBudget(kWork);
   const auto hole = region::RegionWinding(test::outline_region(narrow)).at({0, 0}, work);
   ASSERT_TRUE(hole);
   EXPECT_EQ(hole->winding, 0);
@@ -255,7 +255,7 @@ TEST(Stroke, ZeroLengthSubpathIsADotWithRoundCapsASquareWithSquareCapsNothingWit
   const path::Path path = test::parsed_path("M3 3 L3 3");
   StrokeStyle style = round_style(2.0);
   auto winding_at = [&](const StrokeOutline& o, Point2 p) {
-    std::int64_t work = kWork;
+    core::WorkBudget work(kWork);
     return region::RegionWinding(test::outline_region(o)).at(p, work)->winding;
   };
   const StrokeOutline dot = stroke(path, style, 1e-3, kWork, kSegments);
@@ -278,7 +278,7 @@ std::vector<Point2> vertices(const StrokeOutline& o) {
 }
 
 int winding_at(const StrokeOutline& o, Point2 p) {
-  std::int64_t work = kWork;
+  core::WorkBudget work(kWork);
   const auto w = region::RegionWinding(test::outline_region(o)).at(p, work);
   EXPECT_TRUE(w && !w->boundary);
   return w ? static_cast<int>(w->winding) : 0;

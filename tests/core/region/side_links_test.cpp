@@ -123,7 +123,8 @@ TEST(SideLinks, CarriedWindingsEqualTheRaysOfEveryGroup) {
   int links_checked = 0;
   for (const auto& [pa, pb] : cases) {
     const path::Path a = parsed_path(pa), b = parsed_path(pb);
-    const Arrangement arrangement = build_arrangement(a, &b, 100000000);
+    core::WorkBudget search_budget(100000000);
+    const Arrangement arrangement = build_arrangement(a, &b, search_budget);
     ASSERT_EQ(arrangement.status, core::IntersectStatus::ok);
     const SideWindingIndex index(arrangement);
     const auto links = side_links(arrangement);

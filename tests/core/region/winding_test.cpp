@@ -513,13 +513,19 @@ TEST(Winding, AZeroAreaSpikeIsBoundaryAlongItAndWindsNothingBeside) {
 TEST(Winding, TheWorkCapStopsIt) {
   const Region r = region_of("M0 0 C0 4 4 4 4 0 Z");
   EXPECT_FALSE(winding(r, {2, 3}, 10).has_value());
-  std::int64_t left = 0;
+  core::WorkBudget none(0);
   const RegionWinding prepared(r);
-  EXPECT_FALSE(prepared.at({2, 3}, left).has_value());
-  EXPECT_LT(left, 0);
-  left = kWork;
-  ASSERT_TRUE(prepared.at({2, 3}, left).has_value());
-  EXPECT_LT(left, kWork);
+  EXPECT_FALSE(prepared.at({2, 3}, none).has_value());
+  EXPECT_TRUE(none.exhausted());
+  core::WorkBudget ample(kWork);
+  ASSERT_TRUE(prepared.at({2, 3}, ample).has_value());
+  EXPECT_FALSE(ample.exhausted());
+  EXPECT_GT(ample.spent(), 0);
+  // What one target spent is enough for it, and one unit less is not.
+  core::WorkBudget exact(ample.spent());
+  EXPECT_TRUE(prepared.at({2, 3}, exact).has_value());
+  core::WorkBudget short_by_one(ample.spent() - 1);
+  EXPECT_FALSE(prepared.at({2, 3}, short_by_one).has_value());
 }
 
 }  // namespace
