@@ -33,7 +33,6 @@ struct Ray {
 struct Count {
   int crossings = 0;
   bool clear = true;
-  bool out_of_work = false;
   /// Unclear at a piece whose control points all lie within twice the clearance of the
   /// ray's origin: the edge passes that close to the origin, so every direction meets it
   /// there and no other ray is tried.
@@ -42,12 +41,9 @@ struct Count {
 
 void count_crossings(const core::Curve& piece, const Ray& ray, OriginEnd origin, bool check_ends,
                      int depth, Count& count, core::WorkBudget& budget) {
-  if (!count.clear || count.out_of_work) return;
+  if (!count.clear || budget.exhausted()) return;
   const int n = piece.degree();
-  if (!budget.spend(n + 1)) {
-    count.out_of_work = true;
-    return;
-  }
+  if (!budget.spend(n + 1)) return;
   const auto pts = piece.points();
   double min_c = INFINITY, max_c = -INFINITY, min_r = INFINITY, max_r = -INFINITY;
   bool rising = true, falling = true;
@@ -100,10 +96,7 @@ void count_crossings(const core::Curve& piece, const Ray& ray, OriginEnd origin,
     count.at_origin = near;
     return;
   }
-  if (!budget.spend(static_cast<std::int64_t>(n + 1) * (n + 1))) {
-    count.out_of_work = true;
-    return;
-  }
+  if (!budget.spend(static_cast<std::int64_t>(n + 1) * (n + 1))) return;
   // Halve, away from a point on the ray's line so that no crossing sits at the split.
   double t = 0.5;
   for (const double candidate : {0.5, 0.4375, 0.5625, 0.40625}) {
@@ -222,7 +215,7 @@ SideWindingResult side_windings(const Arrangement& arrangement, const SideWindin
       if (edge.group == group) continue;
       Count count;
       count_crossings(edge.piece, ray, OriginEnd::none, true, 0, count, budget);
-      if (count.out_of_work) {
+      if (budget.exhausted()) {
         result.status = SideWindingStatus::work_cap_reached;
         return result;
       }
@@ -237,7 +230,7 @@ SideWindingResult side_windings(const Arrangement& arrangement, const SideWindin
     Count own;
     count_crossings(halves.left, ray, OriginEnd::back, false, 0, own, budget);
     count_crossings(halves.right, ray, OriginEnd::front, false, 0, own, budget);
-    if (own.out_of_work) {
+    if (budget.exhausted()) {
       result.status = SideWindingStatus::work_cap_reached;
       return result;
     }

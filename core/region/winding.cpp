@@ -218,11 +218,10 @@ PieceTest test_piece(std::span<const DdPoint> q, Point2 target, double band, dou
 struct SegmentOutcome {
   long crossings = 0;
   bool boundary = false;
-  bool out_of_work = false;
 };
 
 /// The crossings of one segment (scaled control points) with the ray from `target`, by
-/// subdivision (winding.hpp).
+/// subdivision (winding.hpp); stops where `budget` runs out (budget.exhausted()).
 SegmentOutcome refine_segment(std::span<const Point2> points, Point2 target, double band,
                               core::WorkBudget& budget) {
   const std::size_t size = points.size();
@@ -240,10 +239,7 @@ SegmentOutcome refine_segment(std::span<const Point2> points, Point2 target, dou
   pieces.push_back({0, false});
   SegmentOutcome out;
   while (!pieces.empty()) {
-    if (!budget.spend(piece_cost)) {
-      out.out_of_work = true;
-      return out;
-    }
+    if (!budget.spend(piece_cost)) return out;
     const Piece piece = pieces.back();
     const std::size_t at = (pieces.size() - 1) * size;
     const std::span<const DdPoint> q(store.data() + at, size);
@@ -328,7 +324,7 @@ std::optional<Winding> RegionWinding::at(Point2 target, core::WorkBudget& budget
       continue;
     }
     const SegmentOutcome outcome = refine_segment(points, q, band, budget);
-    if (outcome.out_of_work) return std::nullopt;
+    if (budget.exhausted()) return std::nullopt;
     if (outcome.boundary) return Winding{true, 0};
     crossings += outcome.crossings;
   }
