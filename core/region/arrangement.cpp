@@ -33,7 +33,9 @@ struct Event {
 /// Union-find over event indices.
 class Clusters {
  public:
-  explicit Clusters(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), std::size_t{0}); }
+  explicit Clusters(std::size_t n) : parent_(n) {
+    std::iota(parent_.begin(), parent_.end(), std::size_t{0});
+  }
   std::size_t find(std::size_t i) {
     while (parent_[i] != i) {
       parent_[i] = parent_[parent_[i]];
@@ -94,31 +96,24 @@ Combined combined(const path::Path& a, const path::Path* b) {
   return all;
 }
 
-}  // namespace
+/// A contact search's findings as events: both ends of every segment (radius base_radius),
+/// and each contact as a pair of events, one on each segment through it, listed in `same`
+/// (a crossing's radius grows by its parameter intervals' widths times the segments'
+/// speed bounds; an overlap's two ends are contacts with exact parameters).
+struct ContactEvents {
+  std::vector<Event> events;
+  std::vector<std::pair<std::size_t, std::size_t>> same;  // events that are one vertex
+};
 
-Arrangement build_arrangement(const path::Path& a, const path::Path* b,
-                              core::WorkBudget& budget) {
-  Arrangement out;
-  const Combined both = combined(a, b);
-  const path::Path& all = both.path;
-  double scale = 0.0;
-  for (const core::Curve& s : all.segments) scale = std::max(scale, core::scale(s));
-  out.scale = scale > 0.0 ? scale : 1.0;
-  const double base_radius = kVertexMergeRel * out.scale;
-
-  core::IntersectOptions options;
-  options.tolerance = kIntersectionTolerance;
-  const path::PathSelfIntersectionResult found = path::self_intersections(all, options, budget);
-  out.work = found.stats.work;
-  out.status = budget.exhausted() ? core::IntersectStatus::work_cap_reached : found.status;
-  if (out.status != core::IntersectStatus::ok) return out;
-
+ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersectionResult& found,
+                             double base_radius) {
+  ContactEvents contacts;
+  std::vector<Event>& events = contacts.events;
+  std::vector<std::pair<std::size_t, std::size_t>>& same = contacts.same;
   std::vector<double> speed(all.segments.size());
   for (std::size_t i = 0; i < all.segments.size(); ++i) speed[i] = speed_bound(all.segments[i]);
 
-  // Events: segment ends first (so that a vertex holding one takes its point), then contacts.
-  std::vector<Event> events;
-  std::vector<std::pair<std::size_t, std::size_t>> same;  // events that are one vertex
+  // Segment ends first (so that a vertex holding one takes its point), then contacts.
   events.reserve(2 * all.segments.size() + 2 * found.intersections.size() +
                  4 * found.overlaps.size());
   for (std::size_t i = 0; i < all.segments.size(); ++i) {
@@ -146,7 +141,8 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b,
     add_pair(i, o.t_interval.hi, 0.0, j, s_at_hi, 0.0,
              core::evaluate(all.segments[i], o.t_interval.hi));
   };
-  for (const path::PathOverlap& o : found.overlaps) add_overlap(o.segment_t, o.segment_s, o.overlap);
+  for (const path::PathOverlap& o : found.overlaps)
+    add_overlap(o.segment_t, o.segment_s, o.overlap);
   for (const path::SegmentSelfIntersections& w : found.within_segments) {
     for (const core::SelfIntersection& p : w.result.pairs) {
       add_pair(w.segment, p.t, 0.0, w.segment, p.s, 0.0, p.point);
@@ -154,17 +150,21 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b,
     for (const core::Overlap& o : w.result.overlaps) add_overlap(w.segment, w.segment, o);
   }
 
-  // Clusters: the pairs above, and every two events within the sum of their radii (a sweep
-  // over x; the largest radius bounds how far to look).
+  return contacts;
+}
+
+/// Joins the events that are one vertex: the pairs of `same`, and every two events within
+/// the sum of their radii (a sweep over x; the largest radius bounds how far to look).
+Clusters close_events(const std::vector<Event>& events,
+                      const std::vector<std::pair<std::size_t, std::size_t>>& same) {
   Clusters clusters(events.size());
   for (const auto& [i, j] : same) clusters.join(i, j);
   double max_radius = 0.0;
   for (const Event& e : events) max_radius = std::max(max_radius, e.radius);
   std::vector<std::size_t> by_x(events.size());
   std::iota(by_x.begin(), by_x.end(), std::size_t{0});
-  std::sort(by_x.begin(), by_x.end(), [&](std::size_t i, std::size_t j) {
-    return events[i].point.x < events[j].point.x;
-  });
+  std::sort(by_x.begin(), by_x.end(),
+            [&](std::size_t i, std::size_t j) { return events[i].point.x < events[j].point.x; });
   for (std::size_t k = 0; k < by_x.size(); ++k) {
     const Event& e = events[by_x[k]];
     for (std::size_t l = k + 1; l < by_x.size(); ++l) {
@@ -178,16 +178,30 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b,
     }
   }
 
-  // Vertices, numbered by their first event; a segment end's point wins.
-  std::vector<std::size_t> vertex_of_root(events.size(), SIZE_MAX);
-  std::vector<std::size_t> vertex_of(events.size());
-  std::vector<bool> from_end;
+  return clusters;
+}
+
+/// Each event's vertex (numbered by the cluster's first event; a segment end's point is the
+/// vertex's point where the cluster holds one) and each vertex's largest radius; the points
+/// are appended to `vertices`.
+struct VertexAssignment {
+  std::vector<std::size_t> vertex_of;
   std::vector<double> vertex_radius;
+};
+
+VertexAssignment assign_vertices(const std::vector<Event>& events, Clusters& clusters,
+                                 std::vector<Point2>& vertices) {
+  VertexAssignment assigned;
+  std::vector<std::size_t>& vertex_of = assigned.vertex_of;
+  std::vector<double>& vertex_radius = assigned.vertex_radius;
+  std::vector<std::size_t> vertex_of_root(events.size(), SIZE_MAX);
+  vertex_of.resize(events.size());
+  std::vector<bool> from_end;
   for (std::size_t e = 0; e < events.size(); ++e) {
     const std::size_t root = clusters.find(e);
     if (vertex_of_root[root] == SIZE_MAX) {
-      vertex_of_root[root] = out.vertices.size();
-      out.vertices.push_back(events[e].point);
+      vertex_of_root[root] = vertices.size();
+      vertices.push_back(events[e].point);
       from_end.push_back(events[e].segment_end);
       vertex_radius.push_back(events[e].radius);
     }
@@ -195,13 +209,27 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b,
     vertex_of[e] = v;
     vertex_radius[v] = std::max(vertex_radius[v], events[e].radius);
     if (events[e].segment_end && !from_end[v]) {
-      out.vertices[v] = events[e].point;
+      vertices[v] = events[e].point;
       from_end[v] = true;
     }
   }
 
-  // Cuts, by segment and then parameter (and vertex), then the edges between consecutive
-  // cuts of each segment.
+  return assigned;
+}
+
+/// The edges: each segment cut at its events' parameters, consecutive cuts at one vertex
+/// merged where the piece between them is within 4 vertex radii (an exact end parameter, 0
+/// or 1, kept), each piece between consecutive cuts an edge from vertex to vertex (its
+/// exact piece, and its snapped copy ending at the vertices' points). Returns each
+/// segment's edges, [first, end) of `arrangement.edges`, in order of t.
+std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(const Combined& both,
+                                                                const std::vector<Event>& events,
+                                                                const VertexAssignment& assigned,
+                                                                Arrangement& arrangement) {
+  const path::Path& all = both.path;
+  const std::vector<std::size_t>& vertex_of = assigned.vertex_of;
+  const std::vector<double>& vertex_radius = assigned.vertex_radius;
+  // Cuts, by segment and then parameter (and vertex).
   struct Cut {
     std::size_t segment;
     double t;
@@ -221,11 +249,13 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b,
   for (std::size_t i = 0; i < all.segments.size(); ++i) {
     std::sort(cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i]),
               cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i + 1]),
-              [](const Cut& p, const Cut& q) { return std::tie(p.t, p.vertex) < std::tie(q.t, q.vertex); });
+              [](const Cut& p, const Cut& q) {
+                return std::tie(p.t, p.vertex) < std::tie(q.t, q.vertex);
+              });
   }
-  // Edges of one segment in order, for the overlap groups below: [first, end) of out.edges.
+  // Edges of one segment in order, for the overlap groups below: [first, end) of arrangement.edges.
   std::vector<std::pair<std::size_t, std::size_t>> edges_of(all.segments.size());
-  out.edges.reserve(cuts.size());
+  arrangement.edges.reserve(cuts.size());
   std::vector<std::pair<double, std::size_t>> kept;
   for (std::size_t c = 0; c < cuts.size();) {
     const std::size_t i = cuts[c].segment;
@@ -245,22 +275,29 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b,
       if (!kept.empty() && kept.back().first == cut.first) continue;
       kept.push_back(cut);
     }
-    edges_of[i].first = out.edges.size();
+    edges_of[i].first = arrangement.edges.size();
     for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
       const double t0 = kept[k].first, t1 = kept[k + 1].first;
       const std::size_t from = kept[k].second, to = kept[k + 1].second;
       core::Curve exact = segment_piece(seg, t0, t1);
       std::vector<Point2> pts(exact.points().begin(), exact.points().end());
-      pts.front() = out.vertices[from];
-      pts.back() = out.vertices[to];
+      pts.front() = arrangement.vertices[from];
+      pts.back() = arrangement.vertices[to];
       // Every member given, so that no default curve is built and thrown away.
-      out.edges.push_back(ArrangementEdge{both.origin[i].first, both.origin[i].second, t0, t1,
-                                          from, to, std::move(exact), core::Curve(std::move(pts)),
-                                          out.edges.size()});
+      arrangement.edges.push_back(
+          ArrangementEdge{both.origin[i].first, both.origin[i].second, t0, t1, from, to,
+                          std::move(exact), core::Curve(std::move(pts)), arrangement.edges.size()});
     }
-    edges_of[i].second = out.edges.size();
+    edges_of[i].second = arrangement.edges.size();
   }
 
+  return edges_of;
+}
+
+/// Joins in `groups` the edges that are the same piece of an overlap's shared curve.
+void join_overlap_pieces(const path::PathSelfIntersectionResult& found,
+                         const std::vector<std::pair<std::size_t, std::size_t>>& edges_of,
+                         const Arrangement& arrangement, Clusters& groups) {
   // Coincident groups: within each overlap, the pieces of both segments that are the same
   // piece of the shared curve. Both segments run through the overlap monotonically (the
   // second backwards when it is reversed), so their pieces inside it, listed in that order,
@@ -270,19 +307,18 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b,
   // between the same two vertices, one each way). When the cuts differ (a cut on one segment
   // only), a piece is matched only with the one piece of the other that runs between the
   // same vertices the same way, and never when it is a loop.
-  Clusters groups(out.edges.size());
   std::vector<std::size_t> along_t, along_s;
   const auto join_overlap = [&](std::size_t i, std::size_t j, const core::Overlap& o) {
     const double slack = 2.0 * kIntersectionTolerance;
     along_t.clear();
     along_s.clear();
     for (std::size_t p = edges_of[i].first; p < edges_of[i].second; ++p) {
-      const ArrangementEdge& ep = out.edges[p];
+      const ArrangementEdge& ep = arrangement.edges[p];
       if (ep.t0 < o.t_interval.lo - slack || ep.t1 > o.t_interval.hi + slack) continue;
       along_t.push_back(p);
     }
     for (std::size_t q = edges_of[j].first; q < edges_of[j].second; ++q) {
-      const ArrangementEdge& eq = out.edges[q];
+      const ArrangementEdge& eq = arrangement.edges[q];
       if (eq.t0 < o.s_interval.lo - slack || eq.t1 > o.s_interval.hi + slack) continue;
       along_s.push_back(q);
     }
@@ -292,8 +328,8 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b,
     const auto end = [&](const ArrangementEdge& e) { return o.reversed ? e.from : e.to; };
     bool same_cuts = along_t.size() == along_s.size();
     for (std::size_t k = 0; same_cuts && k < along_t.size(); ++k) {
-      const ArrangementEdge& ep = out.edges[along_t[k]];
-      const ArrangementEdge& eq = out.edges[along_s[k]];
+      const ArrangementEdge& ep = arrangement.edges[along_t[k]];
+      const ArrangementEdge& eq = arrangement.edges[along_s[k]];
       same_cuts = ep.from == start(eq) && ep.to == end(eq);
     }
     if (same_cuts) {
@@ -303,12 +339,12 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b,
       return;
     }
     for (const std::size_t p : along_t) {
-      const ArrangementEdge& ep = out.edges[p];
+      const ArrangementEdge& ep = arrangement.edges[p];
       if (ep.from == ep.to) continue;
       std::size_t match = SIZE_MAX;
       int count = 0;
       for (const std::size_t q : along_s) {
-        const ArrangementEdge& eq = out.edges[q];
+        const ArrangementEdge& eq = arrangement.edges[q];
         if (q != p && ep.from == start(eq) && ep.to == end(eq)) {
           match = q;
           ++count;
@@ -317,22 +353,28 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b,
       if (count == 1) groups.join(p, match);
     }
   };
-  for (const path::PathOverlap& o : found.overlaps) join_overlap(o.segment_t, o.segment_s, o.overlap);
+  for (const path::PathOverlap& o : found.overlaps)
+    join_overlap(o.segment_t, o.segment_s, o.overlap);
   for (const path::SegmentSelfIntersections& w : found.within_segments) {
     for (const core::Overlap& o : w.result.overlaps) join_overlap(w.segment, w.segment, o);
   }
+}
+
+/// Joins in `groups` the edges between the same two vertices that stay within the ray
+/// clearance of each other.
+void join_thin_lenses(const Arrangement& arrangement, Clusters& groups) {
   // Edges between the same two vertices that stay within the ray clearance of each other
   // (a lens thinner than rounding, e.g. between two crossings of curves that touch to within
   // a few ulps) are one edge for every later decision: no ray can tell their sides apart.
-  const double clearance = kRayClearanceRel * out.scale;
+  const double clearance = kRayClearanceRel * arrangement.scale;
   // The edges by their two vertices (lower first), each run of equal ends in edge order.
   struct Ends {
     std::size_t lo, hi, edge;
   };
   std::vector<Ends> by_ends;
-  by_ends.reserve(out.edges.size());
-  for (std::size_t e = 0; e < out.edges.size(); ++e) {
-    const ArrangementEdge& edge = out.edges[e];
+  by_ends.reserve(arrangement.edges.size());
+  for (std::size_t e = 0; e < arrangement.edges.size(); ++e) {
+    const ArrangementEdge& edge = arrangement.edges[e];
     if (edge.from == edge.to) continue;
     by_ends.push_back({std::min(edge.from, edge.to), std::max(edge.from, edge.to), e});
   }
@@ -347,8 +389,8 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b,
     }
     for (std::size_t x = first; x < end; ++x) {
       for (std::size_t y = x + 1; y < end; ++y) {
-        const ArrangementEdge& p = out.edges[by_ends[x].edge];
-        const ArrangementEdge& q = out.edges[by_ends[y].edge];
+        const ArrangementEdge& p = arrangement.edges[by_ends[x].edge];
+        const ArrangementEdge& q = arrangement.edges[by_ends[y].edge];
         const bool flip = p.from != q.from;
         bool near = true;
         for (const double t : {0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875}) {
@@ -360,32 +402,65 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b,
       }
     }
   }
-  std::vector<std::size_t> group_of_root(out.edges.size(), SIZE_MAX);
-  for (std::size_t e = 0; e < out.edges.size(); ++e) {
+}
+
+/// The coincident groups from the joined edges: numbered in edge order (the first edge of
+/// each is its representative), each edge's group, and each group's multiplicity per
+/// operand (+1 for a member along the representative, -1 against it).
+void number_groups(Clusters& groups, Arrangement& arrangement) {
+  std::vector<std::size_t> group_of_root(arrangement.edges.size(), SIZE_MAX);
+  for (std::size_t e = 0; e < arrangement.edges.size(); ++e) {
     const std::size_t root = groups.find(e);
     if (group_of_root[root] == SIZE_MAX) {
-      group_of_root[root] = out.groups.size();
-      out.groups.push_back({e, {}, {0, 0}});
+      group_of_root[root] = arrangement.groups.size();
+      arrangement.groups.push_back({e, {}, {0, 0}});
     }
-    CoincidentGroup& g = out.groups[group_of_root[root]];
-    out.edges[e].group = group_of_root[root];
+    CoincidentGroup& g = arrangement.groups[group_of_root[root]];
+    arrangement.edges[e].group = group_of_root[root];
     g.edges.push_back(e);
     // Edges are in segment order, a before b: the group's first edge of a comes first.
   }
-  for (CoincidentGroup& g : out.groups) {
-    const ArrangementEdge& r = out.edges[g.representative];
+  for (CoincidentGroup& g : arrangement.groups) {
+    const ArrangementEdge& r = arrangement.edges[g.representative];
     for (std::size_t e : g.edges) {
-      const ArrangementEdge& x = out.edges[e];
+      const ArrangementEdge& x = arrangement.edges[e];
       // Along the representative when it leaves the same vertex; for a loop (both ends at
       // one vertex) when its tangent at the middle points the same way.
-      const bool along =
-          (x.from != x.to && r.from != r.to)
-              ? x.from == r.from
-              : core::dot(core::derivatives_at(x.exact, 0.5, 1).front(),
-                          core::derivatives_at(r.exact, 0.5, 1).front()) > 0.0;
+      const bool along = (x.from != x.to && r.from != r.to)
+                             ? x.from == r.from
+                             : core::dot(core::derivatives_at(x.exact, 0.5, 1).front(),
+                                         core::derivatives_at(r.exact, 0.5, 1).front()) > 0.0;
       g.multiplicity[static_cast<std::size_t>(x.source)] += along ? 1 : -1;
     }
   }
+}
+
+}  // namespace
+
+Arrangement build_arrangement(const path::Path& a, const path::Path* b, core::WorkBudget& budget) {
+  Arrangement out;
+  const Combined both = combined(a, b);
+  const path::Path& all = both.path;
+  double scale = 0.0;
+  for (const core::Curve& s : all.segments) scale = std::max(scale, core::scale(s));
+  out.scale = scale > 0.0 ? scale : 1.0;
+  const double base_radius = kVertexMergeRel * out.scale;
+
+  core::IntersectOptions options;
+  options.tolerance = kIntersectionTolerance;
+  const path::PathSelfIntersectionResult found = path::self_intersections(all, options, budget);
+  out.work = found.stats.work;
+  out.status = budget.exhausted() ? core::IntersectStatus::work_cap_reached : found.status;
+  if (out.status != core::IntersectStatus::ok) return out;
+
+  const ContactEvents contacts = contact_events(all, found, base_radius);
+  Clusters clusters = close_events(contacts.events, contacts.same);
+  const VertexAssignment assigned = assign_vertices(contacts.events, clusters, out.vertices);
+  const auto edges_of = cut_into_edges(both, contacts.events, assigned, out);
+  Clusters groups(out.edges.size());
+  join_overlap_pieces(found, edges_of, out, groups);
+  join_thin_lenses(out, groups);
+  number_groups(groups, out);
   return out;
 }
 

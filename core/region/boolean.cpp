@@ -14,33 +14,18 @@ namespace bezier::region {
 
 namespace {
 
-BooleanResult run(BooleanOperation op, const Region& a, const Region* b,
-                  core::WorkBudget& budget) {
-  BooleanResult result;
-  const std::int64_t spent_before = budget.spent();
-  const Arrangement arrangement =
-      build_arrangement(a.path, b != nullptr ? &b->path : nullptr, budget);
-  result.work = arrangement.work;
-  if (arrangement.status != core::IntersectStatus::ok) {
-    result.status = BooleanStatus::work_cap_reached;
-    return result;
-  }
-  const FillRule rule_b = b != nullptr ? b->fill_rule : FillRule::nonzero;
-  const auto inside = [&](const std::array<int, 2>& w) {
-    return keeps(op, fills(a.fill_rule, w[0]), fills(rule_b, w[1]));
-  };
-
-  // Each group's side windings: a ray for the first group of each chain of groups that
-  // share their sides (side_links.hpp), and from there along the chain.
+/// Every group's side windings: a ray for the first group of each chain of groups that
+/// share their sides (side_links.hpp), and from there along the chain; a group no ray
+/// decides is taken from its neighbours around a vertex (vertex_sectors.hpp). ok, or why not.
+BooleanStatus decide_side_windings(const Arrangement& arrangement, core::WorkBudget& budget,
+                                   std::vector<SideWindings>& windings) {
   const std::size_t group_count = arrangement.groups.size();
   const SideWindingIndex index(arrangement);
   const std::vector<GroupLinks> links = side_links(arrangement);
   if (!budget.spend(static_cast<std::int64_t>(arrangement.edges.size() + group_count))) {
-    result.work = budget.spent() - spent_before;
-    result.status = BooleanStatus::work_cap_reached;
-    return result;
+    return BooleanStatus::work_cap_reached;
   }
-  std::vector<SideWindings> windings(group_count);
+  windings.assign(group_count, SideWindings{});
   std::vector<bool> known(group_count, false);
   std::vector<std::size_t> pending;
   bool undecided = false;
@@ -48,9 +33,7 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b,
     if (known[g]) continue;
     const SideWindingResult sides = side_windings(arrangement, index, g, budget);
     if (sides.status == SideWindingStatus::work_cap_reached) {
-      result.work = budget.spent() - spent_before;
-      result.status = BooleanStatus::work_cap_reached;
-      return result;
+      return BooleanStatus::work_cap_reached;
     }
     if (sides.status == SideWindingStatus::unclear) {
       // Decided below from its neighbours around a vertex, if it can be.
@@ -75,12 +58,36 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b,
   if (undecided) {
     const VertexSectorStatus around = decide_around_vertices(arrangement, windings, known, budget);
     if (around != VertexSectorStatus::ok) {
-      result.work = budget.spent() - spent_before;
-      result.status = around == VertexSectorStatus::work_cap_reached ? BooleanStatus::work_cap_reached
-                                                                     : BooleanStatus::unresolved;
-      return result;
+      return around == VertexSectorStatus::work_cap_reached ? BooleanStatus::work_cap_reached
+                                                            : BooleanStatus::unresolved;
     }
   }
+  return BooleanStatus::ok;
+}
+
+BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::WorkBudget& budget) {
+  BooleanResult result;
+  const std::int64_t spent_before = budget.spent();
+  const Arrangement arrangement =
+      build_arrangement(a.path, b != nullptr ? &b->path : nullptr, budget);
+  result.work = arrangement.work;
+  if (arrangement.status != core::IntersectStatus::ok) {
+    result.status = BooleanStatus::work_cap_reached;
+    return result;
+  }
+  const FillRule rule_b = b != nullptr ? b->fill_rule : FillRule::nonzero;
+  const auto inside = [&](const std::array<int, 2>& w) {
+    return keeps(op, fills(a.fill_rule, w[0]), fills(rule_b, w[1]));
+  };
+
+  std::vector<SideWindings> windings;
+  const BooleanStatus decided = decide_side_windings(arrangement, budget, windings);
+  if (decided != BooleanStatus::ok) {
+    result.work = budget.spent() - spent_before;
+    result.status = decided;
+    return result;
+  }
+  const std::size_t group_count = arrangement.groups.size();
   std::vector<DirectedEdge> kept;
   std::vector<bool> kept_reversed;
   for (std::size_t g = 0; g < group_count; ++g) {
