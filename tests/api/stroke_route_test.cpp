@@ -113,6 +113,45 @@ TEST(StrokeRoute, SimplifiedOutlineIsTheSameRegionWithWindingOne) {
   EXPECT_GT(winding_at(plain, {9.9, -0.1}), 1);
 }
 
+/// A grid of points: x from x0 to x1 in steps dx, y from y0 to y1 in steps dy.
+struct Grid {
+  double x0, x1, dx, y0, y1, dy;
+};
+
+/// Judges a simplified round stroke's answer against the distance set of `curve`: every grid
+/// point off the boundary winds 0 or 1, once where it is nearer than `half` to the curve
+/// (nearest-point kernel), never where it is farther than half + tolerance. Returns how many
+/// points were judged.
+int judged_against_distance(const json& answer, const core::Curve& curve, double half,
+                            double tolerance, const Grid& grid) {
+  EXPECT_EQ(answer["simplified"], true);
+  path::PathDataParse parse = path::parse_svg_path_data(answer["path"].get<std::string>(), 100000);
+  EXPECT_FALSE(parse.error);
+  if (parse.error) return 0;
+  const region::RegionWinding winding(
+      region::region_from_path(std::move(parse.path), region::FillRule::nonzero));
+  int judged = 0;
+  for (double x = grid.x0; x <= grid.x1; x += grid.dx) {
+    for (double y = grid.y0; y <= grid.y1; y += grid.dy) {
+      core::WorkBudget work(std::int64_t{1} << 40);
+      const std::optional<region::Winding> w = winding.at({x, y}, work);
+      EXPECT_TRUE(w);
+      if (!w) return judged;
+      if (w->boundary) continue;
+      EXPECT_TRUE(w->winding == 0 || w->winding == 1) << x << " " << y;
+      const double d = core::nearest(curve, {x, y}, 0, 1).distance;
+      if (d < half - 1e-12) {
+        EXPECT_EQ(w->winding, 1) << x << " " << y;
+        ++judged;
+      } else if (d > half + tolerance + 1e-12) {
+        EXPECT_EQ(w->winding, 0) << x << " " << y;
+        ++judged;
+      }
+    }
+  }
+  return judged;
+}
+
 TEST(StrokeRoute, SimplifiedRoundStrokeOfACurveIsItsDistanceSet) {
   // Every point closer than 1 to the arch winds once, every point farther than 1 + 1e-3 not
   // at all (distances from the nearest-point kernel).
@@ -120,29 +159,7 @@ TEST(StrokeRoute, SimplifiedRoundStrokeOfACurveIsItsDistanceSet) {
   const json r = call(
       R"({"points":[[0,0],[5,5],[5,5],[10,0]],"width":2,"join":"round","cap":"round","tolerance":1e-3,"simplify":true})",
       200);
-  path::PathDataParse parse = path::parse_svg_path_data(r["path"].get<std::string>(), 100000);
-  ASSERT_FALSE(parse.error);
-  const region::RegionWinding winding(
-      region::region_from_path(std::move(parse.path), region::FillRule::nonzero));
-  int judged = 0;
-  for (double x = -1.5; x <= 11.5; x += 0.13) {
-    for (double y = -1.5; y <= 5.5; y += 0.11) {
-      core::WorkBudget work(std::int64_t{1} << 40);
-      const std::optional<region::Winding> w = winding.at({x, y}, work);
-      ASSERT_TRUE(w);
-      if (w->boundary) continue;
-      EXPECT_TRUE(w->winding == 0 || w->winding == 1) << x << " " << y;
-      const double d = core::nearest(arch, {x, y}, 0, 1).distance;
-      if (d < 1 - 1e-12) {
-        EXPECT_EQ(w->winding, 1) << x << " " << y;
-        ++judged;
-      } else if (d > 1 + 1e-3 + 1e-12) {
-        EXPECT_EQ(w->winding, 0) << x << " " << y;
-        ++judged;
-      }
-    }
-  }
-  EXPECT_GT(judged, 5000);
+  EXPECT_GT(judged_against_distance(r, arch, 1, 1e-3, {-1.5, 11.5, 0.13, -1.5, 5.5, 0.11}), 5000);
 }
 
 TEST(StrokeRoute, SimplifiedRoundStrokeOfACuspIsItsDistanceSet) {
@@ -152,29 +169,7 @@ TEST(StrokeRoute, SimplifiedRoundStrokeOfACuspIsItsDistanceSet) {
   const json r = call(
       R"({"path":"M0 0 C10 10 0 10 10 0","width":2,"tolerance":0.01,"join":"round","cap":"round","simplify":true})",
       200);
-  EXPECT_EQ(r["simplified"], true);
-  path::PathDataParse parse = path::parse_svg_path_data(r["path"].get<std::string>(), 100000);
-  ASSERT_FALSE(parse.error);
-  const region::RegionWinding winding(
-      region::region_from_path(std::move(parse.path), region::FillRule::nonzero));
-  int judged = 0;
-  for (double x = -1.5; x <= 11.5; x += 0.17) {
-    for (double y = -1.5; y <= 9; y += 0.13) {
-      core::WorkBudget work(std::int64_t{1} << 40);
-      const std::optional<region::Winding> w = winding.at({x, y}, work);
-      ASSERT_TRUE(w);
-      if (w->boundary) continue;
-      const double d = core::nearest(cusp, {x, y}, 0, 1).distance;
-      if (d < 1 - 1e-12) {
-        EXPECT_EQ(w->winding, 1) << x << " " << y;
-        ++judged;
-      } else if (d > 1 + 1e-2 + 1e-12) {
-        EXPECT_EQ(w->winding, 0) << x << " " << y;
-        ++judged;
-      }
-    }
-  }
-  EXPECT_GT(judged, 3000);
+  EXPECT_GT(judged_against_distance(r, cusp, 1, 1e-2, {-1.5, 11.5, 0.17, -1.5, 9, 0.13}), 3000);
 }
 
 TEST(StrokeRoute, SimplifiedNarrowRoundStrokeOfACuspIsItsDistanceSet) {
@@ -188,29 +183,8 @@ TEST(StrokeRoute, SimplifiedNarrowRoundStrokeOfACuspIsItsDistanceSet) {
                             std::to_string(tolerance) +
                             R"(,"join":"round","cap":"round","simplify":true})",
                         200);
-    EXPECT_EQ(r["simplified"], true);
-    path::PathDataParse parse = path::parse_svg_path_data(r["path"].get<std::string>(), 100000);
-    ASSERT_FALSE(parse.error);
-    const region::RegionWinding winding(
-        region::region_from_path(std::move(parse.path), region::FillRule::nonzero));
-    int judged = 0;
-    for (double x = -0.5; x <= 10.5; x += 0.037) {
-      for (double y = -0.5; y <= 8; y += 0.043) {
-        core::WorkBudget work(std::int64_t{1} << 40);
-        const std::optional<region::Winding> w = winding.at({x, y}, work);
-        ASSERT_TRUE(w);
-        if (w->boundary) continue;
-        const double d = core::nearest(cusp, {x, y}, 0, 1).distance;
-        if (d < 0.25 - 1e-12) {
-          EXPECT_EQ(w->winding, 1) << x << " " << y;
-          ++judged;
-        } else if (d > 0.25 + tolerance + 1e-12) {
-          EXPECT_EQ(w->winding, 0) << x << " " << y;
-          ++judged;
-        }
-      }
-    }
-    EXPECT_GT(judged, 20000);
+    EXPECT_GT(judged_against_distance(r, cusp, 0.25, tolerance, {-0.5, 10.5, 0.037, -0.5, 8, 0.043}),
+              20000);
   }
 }
 
