@@ -23,6 +23,23 @@ constexpr double kTol = 1e-12;
 
 bool meet(core::ParamInterval a, core::ParamInterval b) { return a.lo <= b.hi && b.lo <= a.hi; }
 
+/// Whether a path search reported the crossing x of segments i and j found by searching that
+/// pair alone: on the same pair with meeting parameter intervals, or dropped as the copy of a
+/// contact kept at the same point on a neighbouring pair, at a joint.
+bool reported(const std::vector<PathContact>& contacts, std::size_t i, std::size_t j,
+              const core::Intersection& x) {
+  for (const PathContact& c : contacts) {
+    const bool same_pair = c.segment_t == i && c.segment_s == j &&
+                           meet(c.intersection.t_interval, x.t_interval) &&
+                           meet(c.intersection.s_interval, x.s_interval);
+    const bool at_joint = (x.t_interval.lo == 0 || x.t_interval.hi == 1 ||
+                           x.s_interval.lo == 0 || x.s_interval.hi == 1) &&
+                          core::length(c.intersection.point - x.point) <= 1e-9;
+    if (same_pair || at_joint) return true;
+  }
+  return false;
+}
+
 TEST(PathIntersections, TwoOverlappingSquaresCrossTwice) {
   // A = [0,2]^2 and B = [1,3]^2, both counter-clockwise: A's right side (segment 1) crosses
   // B's bottom (segment 0) at (2, 1), A's top (segment 2, drawn right to left) crosses B's
@@ -119,19 +136,8 @@ TEST(PathIntersections, RandomPathsAgreeWithEverySegmentPairSearchedAlone) {
         const core::IntersectionResult alone = core::intersect(a.segments[i], b.segments[j]);
         for (const core::Intersection& x : alone.intersections) {
           ++total;
-          // Found by the path search on the same pair, or dropped as the copy of a contact
-          // kept at the same point on a neighbouring pair, at a joint.
-          bool found = false;
-          for (const PathContact& c : r.intersections) {
-            const bool same_pair = c.segment_t == i && c.segment_s == j &&
-                                   meet(c.intersection.t_interval, x.t_interval) &&
-                                   meet(c.intersection.s_interval, x.s_interval);
-            const bool at_joint = (x.t_interval.lo == 0 || x.t_interval.hi == 1 ||
-                                   x.s_interval.lo == 0 || x.s_interval.hi == 1) &&
-                                  core::length(c.intersection.point - x.point) <= 1e-9;
-            found = found || same_pair || at_joint;
-          }
-          EXPECT_TRUE(found) << "round " << round << " pair " << i << ", " << j << " t " << x.t;
+          EXPECT_TRUE(reported(r.intersections, i, j, x))
+              << "round " << round << " pair " << i << ", " << j << " t " << x.t;
         }
       }
     }
@@ -257,17 +263,8 @@ TEST(PathSelfIntersections, RandomPathsAgreeWithEverySegmentPairSearchedAlone) {
                                   x.t_interval.lo == 0;
           if (joint_forward || joint_back) continue;
           ++all_rounds;
-          bool found = false;
-          for (const PathContact& c : r.intersections) {
-            const bool same_pair = c.segment_t == i && c.segment_s == j &&
-                                   meet(c.intersection.t_interval, x.t_interval) &&
-                                   meet(c.intersection.s_interval, x.s_interval);
-            const bool at_joint = (x.t_interval.lo == 0 || x.t_interval.hi == 1 ||
-                                   x.s_interval.lo == 0 || x.s_interval.hi == 1) &&
-                                  core::length(c.intersection.point - x.point) <= 1e-9;
-            found = found || same_pair || at_joint;
-          }
-          EXPECT_TRUE(found) << "round " << round << " pair " << i << ", " << j << " t " << x.t;
+          EXPECT_TRUE(reported(r.intersections, i, j, x))
+              << "round " << round << " pair " << i << ", " << j << " t " << x.t;
         }
         for (const core::Overlap& o : alone.overlaps) {
           bool found = false;
