@@ -6,8 +6,6 @@
 #include <vector>
 
 #include "core/curve/evaluate.hpp"
-#include "core/curve/polar.hpp"
-#include "core/measure/bernstein_product.hpp"
 #include "core/measure/frame.hpp"
 #include "core/outline/offset.hpp"
 #include "core/numeric/power_of_two.hpp"
@@ -15,97 +13,13 @@
 #include "core/outline/offset_cusps.hpp"
 #include "core/outline/stroke_shapes.hpp"
 #include "core/outline/tangent_limits.hpp"
+#include "core/outline/tight_side_cover.hpp"
 
 namespace bezier::outline {
 
 namespace {
 
 using core::Point2;
-
-constexpr int kMostHalvings = 64;
-
-std::vector<Point2> hodograph(std::span<const Point2> p) {
-  const double n = static_cast<double>(p.size() - 1);
-  std::vector<Point2> h;
-  for (std::size_t i = 0; i + 1 < p.size(); ++i) h.push_back(n * (p[i + 1] - p[i]));
-  return h;
-}
-
-/// An upper bound of the radius of curvature on the curve q where it turns to `side` (+1
-/// left, -1 right) throughout: M1^3 / min(side cross(B', B'')), the minimum over the
-/// Bernstein coefficients of cross(B', B'') (degree 2n - 3, products of the first and second
-/// hodographs' control points). Infinity when a coefficient is not of the side's sign.
-double radius_of_curvature_bound(std::span<const Point2> q, double side) {
-  const std::vector<Point2> h1 = hodograph(q);
-  if (h1.size() < 2) return std::numeric_limits<double>::infinity();
-  const std::vector<Point2> h2 = hodograph(h1);
-  const int m = static_cast<int>(h1.size()) - 1, k = static_cast<int>(h2.size()) - 1;
-  std::vector<double> c(static_cast<std::size_t>(m + k + 1), 0.0);
-  for (int i = 0; i <= m; ++i) {
-    for (int j = 0; j <= k; ++j) {
-      const double weight = core::choose(m, i) * core::choose(k, j) / core::choose(m + k, i + j);
-      c[static_cast<std::size_t>(i + j)] +=
-          weight * core::cross(h1[static_cast<std::size_t>(i)], h2[static_cast<std::size_t>(j)]);
-    }
-  }
-  double least = std::numeric_limits<double>::infinity();
-  for (const double v : c) least = std::min(least, side * v);
-  // Rounding of the coefficients: each is a sum of (m + 1)(k + 1) products, within
-  // 4 (m + k + 2) u of the sum of their magnitudes.
-  double magnitude = 0.0;
-  for (const Point2 a : h1)
-    for (const Point2 b : h2) magnitude = std::max(magnitude, core::length(a) * core::length(b));
-  least -= 4.0 * (m + k + 2) * std::numeric_limits<double>::epsilon() * magnitude;
-  if (!(least > 0.0)) return std::numeric_limits<double>::infinity();
-  double speed = 0.0;
-  for (const Point2 p : h1) speed = std::max(speed, core::length(p));
-  return speed * speed * speed / least;
-}
-
-/// The disks of radius R that cover the tight side `side` of the piece q (segment_cover.hpp).
-/// A disk already drawn (about a zero of B', or for an earlier part) is reused when it holds
-/// the part by the same test, so that parts crowding towards a zero of B' add no nearly
-/// coincident circles; `centres` are the centres of the segment's disks of radius R so far.
-void cover_tight_side(const core::Curve& q, double side, const CoverSizes& sizes,
-                      OutlineSink& sink, std::vector<Point2>& centres) {
-  struct Part {
-    double a, b;
-    int depth;
-  };
-  const auto n = static_cast<std::int64_t>(q.degree());
-  const double margin = 64.0 * std::numeric_limits<double>::epsilon() *
-                        (core::scale(q) + sizes.reach);
-  std::vector<Part> stack{{0.0, 1.0, 0}};
-  while (!stack.empty()) {
-    const Part part = stack.back();
-    stack.pop_back();
-    if (!sink.charge(16 * (n + 1) * (n + 1))) return;
-    const core::Curve piece = core::portion(q, part.a, part.b);
-    const Point2 centre = core::evaluate(piece, 0.5);
-    const double depth =
-        std::min(radius_of_curvature_bound(piece.points(), side), sizes.radius) + margin;
-    auto holds = [&](Point2 c) {
-      double spread = 0.0;
-      for (const Point2 p : piece.points()) spread = std::max(spread, core::length(p - c));
-      return depth + spread < sizes.reach;
-    };
-    if (!sink.charge(static_cast<std::int64_t>(centres.size()) * (n + 1))) return;
-    if (std::any_of(centres.begin(), centres.end(), holds)) continue;
-    if (holds(centre)) {
-      if (!sink.charge(16 * static_cast<std::int64_t>(sizes.circle_pieces))) return;
-      sink.add(circle(centre, sizes.disk_radius, sizes.circle_pieces));
-      centres.push_back(centre);
-      continue;
-    }
-    if (part.depth >= kMostHalvings) {
-      sink.fail_work();
-      return;
-    }
-    const double mid = 0.5 * (part.a + part.b);
-    stack.push_back({mid, part.b, part.depth + 1});
-    stack.push_back({part.a, mid, part.depth + 1});
-  }
-}
 
 /// The piece [a, b] of the segment itself as a tight side's edge, its ends B(a), B(b) as
 /// the loose pieces' ends are computed (from the whole curve): its control points when it is
@@ -244,7 +158,7 @@ bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
           continue;
         }
         if (!curve_edge(segment, c0, c1, sizes, sink, chain)) return false;
-        cover_tight_side(core::portion(segment, c0, c1), sign, sizes, sink, centres);
+        cover_tight_side(segment, c0, c1, sign, sizes, sink, centres);
         if (!sink.ok()) return false;
       }
     }

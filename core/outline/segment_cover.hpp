@@ -67,20 +67,20 @@ struct SegmentCover {
 /// tight; lo = -R or 0 likewise for the right side; never both 0, since the two sides are
 /// not tight at once), whose Jacobian is >= 0 throughout.
 ///
-/// A tight side is covered by disks of radius R instead: the piece is halved until on each
-/// part P, with c = P(1/2) and ℓ = max |P_i - c| (so |B(t) - c| <= ℓ on P, convex hull),
-/// ρ_max an upper bound of ρ on P (|B'|^3 / |cross(B', B'')| with |B'| <= the first
-/// hodograph's largest control point and |cross| >= the least Bernstein coefficient of
-/// cross(B', B''), all of one sign on a tight side), min(ρ_max, r) + ℓ < R: then every point
-/// B(t) + s N(t) with 0 <= s <= min(ρ(t), r) is within min(ρ_max, r) + ℓ < R of c, inside the
-/// disk about c. A disk of the segment already drawn (about a zero of B', or for an earlier
-/// part) serves instead of a new one when the same test holds with its centre for c.
+/// A tight side is covered by disks of radius R instead (tight_side_cover.hpp): the piece is
+/// halved until a disk about a point c of each part holds every B(t) + s N(t) of the part
+/// with 0 <= s <= min(ρ(t), r), by the hull test (min(ρ_max, r) + max |P_i - c| < R, ρ_max an
+/// upper bound of ρ on the part) or, where the part turns to the side by less than a quarter
+/// turn, by the tangent-disk test (the part lies in the disk of radius ρ_max tangent to it at
+/// each of its points), which lets a disk hold a part about as long as the stroke is wide,
+/// also next to an end where ρ reaches R. A disk of the segment already drawn (about a zero
+/// of B', or for an earlier part) serves instead of a new one when the hull test holds with
+/// its centre.
 ///
-/// The count of disks: where ρ_max is well below r a part may be as long as R - ρ_max; next
-/// to an end where ρ reaches R, or a zero of B' (where the bound of ρ is lost because
-/// cross(B', B'') vanishes there too), the parts shrink geometrically to a spread of ε/2,
-/// a few disks per halving; a curve whose ρ stays within about ε/2 of r over a long stretch
-/// needs about its length / ε disks, and may be refused by the segment limit.
+/// The count of disks: a few per quarter turn of the tight side or per length r of it;
+/// next to a zero of B' (where cross(B', B'') vanishes, so neither a bound of ρ nor the
+/// tangent-disk test applies) the parts shrink geometrically to a spread of ε/2, a few disks
+/// per halving.
 ///
 /// Work is charged to `sink` (de Casteljau coordinate updates), and so are the disks'
 /// segments; false when the sink stopped (a part still failing the test after 64 halvings
