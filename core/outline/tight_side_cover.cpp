@@ -140,10 +140,8 @@ Bounded derivative(const Bounded& p) {
   return out;
 }
 
-/// The tangent-disk test (tight_side_cover.hpp, test 2) on the part with control points
-/// `piece`, whose computed points are within `point_error` of the exact part's, about the
-/// computed centre `centre` = piece(1/2), within `centre_error` of the exact part's B(1/2).
-/// `margin` is the hull test's rounding margin.
+}  // namespace
+
 bool tangent_disk_holds(std::span<const Point2> piece, Point2 centre, double point_error,
                         double centre_error, double margin, double side,
                         const CoverSizes& sizes) {
@@ -218,8 +216,6 @@ bool tangent_disk_holds(std::span<const Point2> piece, Point2 centre, double poi
   const double bound = std::sqrt(std::max(l2, far)) * (1.0 + 4.0 * kUnit);
   return bound + centre_error + margin < sizes.reach;
 }
-
-}  // namespace
 
 void cover_tight_side(const core::Curve& segment, double c0, double c1, double side,
                       const CoverSizes& sizes, OutlineSink& sink, std::vector<Point2>& centres) {

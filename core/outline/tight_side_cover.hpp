@@ -1,5 +1,6 @@
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "core/base/curve.hpp"
@@ -72,6 +73,17 @@ namespace bezier::outline {
 // one when the hull test holds with its centre. Near a zero of B' (where cross(B', B'')
 // vanishes and no test 2 applies) the parts still shrink to a spread of ε/2, a few disks per
 // halving.
+
+/// Test 2 above for one part: whether the disk of radius sizes.reach about `centre` (the
+/// computed B(1/2) of the part, within `centre_error` of the exact one) holds every
+/// B(t) + s N(t), t in [0, 1], 0 <= s <= min(ρ(t), sizes.radius), N the unit normal towards
+/// `side` (+1 left, -1 right), of the part whose computed control points `piece` are within
+/// `point_error` of the exact ones; `margin` is kept free besides. False whenever a
+/// certificate fails (the part does not turn to the side throughout, or turns by a quarter
+/// turn or more, or the bound is not below the radius).
+[[nodiscard]] bool tangent_disk_holds(std::span<const core::Point2> piece, core::Point2 centre,
+                                      double point_error, double centre_error, double margin,
+                                      double side, const CoverSizes& sizes);
 
 /// Adds to `sink` the disks (circles of radius sizes.disk_radius >= R, stroke_shapes.hpp) that
 /// cover the side `side` (+1 left, -1 right) of `segment` on [c0, c1], a piece where the side is

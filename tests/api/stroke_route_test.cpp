@@ -4,9 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "api/handler.hpp"
 #include "core/measure/nearest.hpp"
@@ -120,10 +124,13 @@ struct Grid {
 
 /// Judges a simplified round stroke's answer against the distance set of `curve`: every grid
 /// point off the boundary winds 0 or 1, once where it is nearer than `half` to the curve
-/// (nearest-point kernel), never where it is farther than half + tolerance. Returns how many
-/// points were judged.
+/// (nearest-point kernel), never where it is farther than half + tolerance. Points within
+/// `corner_radius` of one of `corners` (where other joins and caps than round ones draw
+/// something else) are only checked to wind 0 or 1. Returns how many points were judged.
 int judged_against_distance(const json& answer, const core::Curve& curve, double half,
-                            double tolerance, const Grid& grid) {
+                            double tolerance, const Grid& grid,
+                            std::span<const core::Point2> corners = {},
+                            double corner_radius = 0.0) {
   EXPECT_EQ(answer["simplified"], true);
   path::PathDataParse parse = path::parse_svg_path_data(answer["path"].get<std::string>(), 100000);
   EXPECT_FALSE(parse.error);
@@ -139,6 +146,11 @@ int judged_against_distance(const json& answer, const core::Curve& curve, double
       if (!w) return judged;
       if (w->boundary) continue;
       EXPECT_TRUE(w->winding == 0 || w->winding == 1) << x << " " << y;
+      if (std::any_of(corners.begin(), corners.end(), [&](core::Point2 c) {
+            return core::length(core::Point2{x, y} - c) <= corner_radius;
+          })) {
+        continue;
+      }
       const double d = core::nearest(curve, {x, y}, 0, 1).distance;
       if (d < half - 1e-12) {
         EXPECT_EQ(w->winding, 1) << x << " " << y;
@@ -185,6 +197,44 @@ TEST(StrokeRoute, SimplifiedNarrowRoundStrokeOfACuspIsItsDistanceSet) {
                         200);
     EXPECT_GT(judged_against_distance(r, cusp, 0.25, tolerance, {-0.5, 10.5, 0.037, -0.5, 8, 0.043}),
               20000);
+  }
+}
+
+TEST(StrokeRoute, SimplifiedStrokesOfTightBendsAnswerWithinTheWorkCap) {
+  // Two bends tighter than the stroke is wide, at tolerance 1e-4: the S-curve 2 wide (two
+  // bends of radius of curvature below 1) and the loop closed at a right-angled corner 7 wide
+  // (its whole inner side tight). At the default limits each answers, with every join and
+  // cap; with round ones the answer is the distance set, and with the others it is too away
+  // from the ends and the corner (farther than r √2 + tolerance from them: the reach of a
+  // square cap and of the right angle's miter tip).
+  struct Case {
+    const char* path;
+    core::Curve cubic;
+    double width;
+    std::vector<core::Point2> corners;
+    Grid grid;
+  };
+  const Case cases[] = {
+      {"M0 0 C30 0 -10 10 20 10", core::Curve({{0, 0}, {30, 0}, {-10, 10}, {20, 10}}), 2,
+       {{0, 0}, {20, 10}}, {-1.5, 21.5, 0.11, -1.5, 11.5, 0.097}},
+      {"M0 0 C10 10 -10 10 0 0 Z", core::Curve({{0, 0}, {10, 10}, {-10, 10}, {0, 0}}), 7,
+       {{0, 0}}, {-7, 7, 0.093, -5, 11.5, 0.101}},
+  };
+  const char* styles[][2] = {{"round", "round"}, {"miter", "butt"}, {"bevel", "square"},
+                             {"miter", "square"}, {"bevel", "butt"}};
+  for (const Case& c : cases) {
+    const double half = c.width / 2;
+    for (const auto& [join, cap] : styles) {
+      SCOPED_TRACE(testing::Message() << c.path << " width " << c.width << " " << join << " " << cap);
+      const json r = call(std::string(R"({"path":")") + c.path + R"(","width":)" +
+                              std::to_string(c.width) + R"(,"join":")" + join + R"(","cap":")" +
+                              cap + R"(","tolerance":1e-4,"simplify":true})",
+                          200);
+      const bool round = std::string(join) == "round" && std::string(cap) == "round";
+      EXPECT_GT(judged_against_distance(r, c.cubic, half, 1e-4, c.grid, c.corners,
+                                        round ? 0.0 : half * std::sqrt(2.0) + 1e-4),
+                10000);
+    }
   }
 }
 
