@@ -15,7 +15,8 @@ namespace bezier::outline {
 // and the ribbon cannot hold them (its map folds where s > ρ).
 //
 // The piece is halved until a disk of radius R about one point c of each part holds the part,
-// by one of two tests (u the unit roundoff; both with the margins below):
+// by one of two tests (u the unit roundoff; both keep a margin of 128 u (scale + R) for the
+// rounding of the distances, scale the largest coordinate of the piece):
 //
 //  1. The hull test: with ℓ = max |P_i - c| over the part's control points (|B(t) - c| <= ℓ
 //     on the part, which lies in their convex hull) and ρ_max an upper bound of ρ on the part
@@ -63,11 +64,11 @@ namespace bezier::outline {
 //        end's hodograph points, bounded up), whichever is smaller. dρ/dt has the sign of
 //          Y = 3 (B' · B'') X - |B'|^2 X',   X = side · cross(B', B'')
 //        (ρ = |B'|^3 / X), a polynomial of degree 4n - 6 whose coefficients, all beyond their
-//        error and of one sign, show it monotone. Next to an end where ρ reaches R this is
-//        what keeps ρ_m within rounding of R.
+//        error and of one sign, show it monotone. Next to an end where ρ reaches R (a cusp
+//        of the parallel curve, found to about 1e-12 in t) this keeps ρ_m that close to R.
 //     The centre c is computed (within 4 u scale of the piece's B(1/2)), ℓ is increased by the
-//     control points' and the centre's errors, and the disk must hold the part to
-//     R - (the centre's error) - 64 u (scale + R).
+//     control points' and the centre's errors, and the disk must hold the part to within
+//     R - (the centre's error) - the margin.
 //
 // A disk already drawn (about a zero of B', or for an earlier part) serves instead of a new
 // one when the hull test holds with its centre. Near a zero of B' (where cross(B', B'')
