@@ -237,6 +237,22 @@ TEST(Stroke, RoundIsTheDistanceSetForRandomCubicPaths) {
   }
 }
 
+TEST(Stroke, SimplifiedRoundStrokesOfRandomCubicsAreTheDistanceSet) {
+  // Random cubics stroked wider than their tightest bends at tolerance 1e-4: the tight sides'
+  // disks (tight_side_cover.hpp) are most of what simplify takes apart.
+  test::Mulberry32 rng(4242);
+  for (int i = 0; i < 10; ++i) {
+    std::vector<Point2> points;
+    std::ostringstream data;
+    data.precision(17);
+    for (int k = 0; k < 4; ++k) {
+      points.push_back({rng.uniform(-10, 10), rng.uniform(-10, 10)});
+      data << (k == 0 ? "M" : k == 1 ? " C" : " ") << points.back().x << " " << points.back().y;
+    }
+    check_simplified_round_stroke(data.str(), core::Curve(points), rng.uniform(2.0, 8.0), 1e-4);
+  }
+}
+
 TEST(Stroke, RoundIsTheDistanceSetForACurveOfDegreeFive) {
   path::Path path;
   path.segments.push_back(core::Curve({{0, 0}, {8, 9}, {-4, 6}, {9, -3}, {2, 7}, {10, 10}}));
