@@ -3,7 +3,7 @@
 #include <cmath>
 #include <optional>
 
-#include "core/path/bounded_projection.hpp"
+#include "core/numeric/bounded_projection.hpp"
 #include "core/path/tuning.hpp"
 
 namespace bezier::path {
@@ -23,7 +23,7 @@ std::optional<Point2> unit(Point2 v) noexcept {
 /// joint itself (an exact zero, allowed where `zero_allowed`).
 bool on_side(Point2 d, Point2 p, Point2 joint, double sign, bool zero_allowed) noexcept {
   if (p == joint) return zero_allowed;
-  const BoundedProjection x = bounded_projection(d, p, joint);
+  const core::BoundedProjection x = core::bounded_projection(d, p, joint);
   // Written so that NaN or an infinite bound fails.
   return sign * x.value - x.error > path_tuning::kSeparationMargin * x.size;
 }
