@@ -34,10 +34,11 @@ std::optional<Point2> unit(Point2 v) noexcept {
 /// d . (p - joint) has the sign `sign` (+1 or -1) for certain and by the margin, or p is the
 /// joint itself (an exact zero, allowed where `zero_allowed`).
 bool on_side(Point2 d, Point2 p, Point2 joint, double sign, bool zero_allowed) noexcept {
-  if (p == joint) return zero_allowed;
   const core::BoundedProjection x = core::bounded_projection(d, p, joint);
-  // Written so that NaN or an infinite bound fails.
-  return sign * x.value - x.error > path_tuning::kSeparationMargin * x.size;
+  // Written so that NaN or an infinite bound fails. The joint itself never passes (its
+  // projection is 0 or NaN, its bound positive), so it is looked at only on failure.
+  if (sign * x.value - x.error > path_tuning::kSeparationMargin * x.size) return true;
+  return zero_allowed && p == joint;
 }
 
 /// The conditions of the header for one direction d, on the control points of `before`

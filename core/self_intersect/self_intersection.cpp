@@ -546,10 +546,12 @@ bool certainly_loop_free_cubic(const Curve& curve, const SelfIntersectionOptions
   // finite) and the smallest nonzero |coordinate|, in one pass without branches.
   double s = 0.0, smallest = std::numeric_limits<double>::infinity();
   for (const Point2 p : points) {
-    for (const double c : {std::fabs(p.x), std::fabs(p.y)}) {
-      s = std::max(s, c);
-      smallest = std::min(smallest, c == 0.0 ? std::numeric_limits<double>::infinity() : c);
-    }
+    const double ax = std::fabs(p.x), ay = std::fabs(p.y);
+    s = std::max(s, std::max(ax, ay));
+    // A zero coordinate loses nothing; it counts as infinite here.
+    const double nx = ax > 0.0 ? ax : std::numeric_limits<double>::infinity();
+    const double ny = ay > 0.0 ? ay : std::numeric_limits<double>::infinity();
+    smallest = std::min(smallest, std::min(nx, ny));
   }
   return self_intersect_tuning::kSmallestUnscaled <= s &&
          s <= self_intersect_tuning::kLargestUnscaled && smallest >= kExactPredicatesRange * s &&
