@@ -2,8 +2,9 @@
 
 #include <cmath>
 #include <optional>
+#include <span>
 
-#include "core/path/bounded_projection.hpp"
+#include "core/numeric/bounded_projection.hpp"
 #include "core/path/tuning.hpp"
 
 namespace bezier::path {
@@ -12,9 +13,20 @@ namespace {
 
 using core::Point2;
 
+/// |v|: the plain square root of v . v where that sum is a normal double far from
+/// overflow (then within about an ulp of hypot: a square that underflows loses at most
+/// 2^-1074 against a sum of at least 2^-960), else hypot. Only the direction of d matters to
+/// the certificate (separates takes any d as exact); the length keeps the two unit vectors
+/// of the directions below comparable.
+double length_of(Point2 v) noexcept {
+  const double squared = v.x * v.x + v.y * v.y;
+  if (0x1p-960 <= squared && squared <= 0x1p960) return std::sqrt(squared);
+  return std::hypot(v.x, v.y);
+}
+
 /// v / |v|, or nullopt when that is not a finite nonzero vector.
 std::optional<Point2> unit(Point2 v) noexcept {
-  const double length = std::hypot(v.x, v.y);
+  const double length = length_of(v);
   if (!(length > 0.0) || !std::isfinite(length)) return std::nullopt;
   return v / length;
 }
@@ -22,34 +34,36 @@ std::optional<Point2> unit(Point2 v) noexcept {
 /// d . (p - joint) has the sign `sign` (+1 or -1) for certain and by the margin, or p is the
 /// joint itself (an exact zero, allowed where `zero_allowed`).
 bool on_side(Point2 d, Point2 p, Point2 joint, double sign, bool zero_allowed) noexcept {
-  if (p == joint) return zero_allowed;
-  const BoundedProjection x = bounded_projection(d, p, joint);
-  // Written so that NaN or an infinite bound fails.
-  return sign * x.value - x.error > path_tuning::kSeparationMargin * x.size;
+  const core::BoundedProjection x = core::bounded_projection(d, p, joint);
+  // Written so that NaN or an infinite bound fails. The joint itself never passes (its
+  // projection is 0 or NaN, its bound positive), so it is looked at only on failure.
+  if (sign * x.value - x.error > path_tuning::kSeparationMargin * x.size) return true;
+  return zero_allowed && p == joint;
 }
 
-/// The conditions of the header for one direction d.
-bool separates(Point2 d, const core::Curve& before, const core::Curve& after) noexcept {
+/// The conditions of the header for one direction d, on the control points of `before`
+/// (ending at the joint) and of `after` (starting there).
+bool separates(Point2 d, std::span<const Point2> before, std::span<const Point2> after) noexcept {
   const Point2 joint = after.front();
-  const int n = before.degree();
-  const int m = after.degree();
-  for (int i = 0; i < n; ++i) {
+  const std::size_t n = before.size() - 1, m = after.size() - 1;
+  for (std::size_t i = 0; i < n; ++i) {
     if (!on_side(d, before[i], joint, 1.0, i > 0)) return false;
   }
-  for (int j = 1; j <= m; ++j) {
+  for (std::size_t j = 1; j <= m; ++j) {
     if (!on_side(d, after[j], joint, -1.0, j < m)) return false;
   }
   return true;
 }
 
 /// The difference of the two end tangents' unit vectors (see the header).
-std::optional<Point2> tangent_direction(const core::Curve& before, const core::Curve& after) noexcept {
+std::optional<Point2> tangent_direction(std::span<const Point2> before,
+                                        std::span<const Point2> after) noexcept {
   const Point2 joint = after.front();
   std::optional<Point2> v, w;
-  for (int i = before.degree() - 1; i >= 0 && !v; --i) {
+  for (std::size_t i = before.size() - 1; i-- > 0 && !v;) {
     if (before[i] != joint) v = unit(before[i] - joint);
   }
-  for (int j = 1; j <= after.degree() && !w; ++j) {
+  for (std::size_t j = 1; j < after.size() && !w; ++j) {
     if (after[j] != joint) w = unit(after[j] - joint);
   }
   if (!v || !w) return std::nullopt;
@@ -57,16 +71,17 @@ std::optional<Point2> tangent_direction(const core::Curve& before, const core::C
 }
 
 /// The difference of the control polygons' mean directions from the joint (see the header).
-std::optional<Point2> mean_direction(const core::Curve& before, const core::Curve& after) noexcept {
+std::optional<Point2> mean_direction(std::span<const Point2> before,
+                                     std::span<const Point2> after) noexcept {
   const Point2 joint = after.front();
   Point2 v_sum{}, w_sum{};
-  for (int i = 0; i < before.degree(); ++i) {
+  for (std::size_t i = 0; i + 1 < before.size(); ++i) {
     if (before[i] == joint) continue;
     const auto u = unit(before[i] - joint);
     if (!u) return std::nullopt;
     v_sum = v_sum + *u;
   }
-  for (int j = 1; j <= after.degree(); ++j) {
+  for (std::size_t j = 1; j < after.size(); ++j) {
     if (after[j] == joint) continue;
     const auto u = unit(after[j] - joint);
     if (!u) return std::nullopt;
@@ -80,8 +95,9 @@ std::optional<Point2> mean_direction(const core::Curve& before, const core::Curv
 
 }  // namespace
 
-bool meet_only_at_joint(const core::Curve& before, const core::Curve& after) noexcept {
-  if (before.degree() < 1 || after.degree() < 1 || before.back() != after.front()) return false;
+bool meet_only_at_joint(const core::Curve& before_curve, const core::Curve& after_curve) noexcept {
+  const std::span<const Point2> before = before_curve.points(), after = after_curve.points();
+  if (before.size() < 2 || after.size() < 2 || before.back() != after.front()) return false;
   if (const auto d = tangent_direction(before, after); d && separates(*d, before, after)) return true;
   const auto d = mean_direction(before, after);
   return d && separates(*d, before, after);

@@ -147,11 +147,14 @@ PathSelfIntersectionResult unsorted_self_intersections(const Path& path,
   search_pairs(path, path, pairs, options, budget, out.intersections, out.overlaps, out.stats,
                settled);
   // A segment against itself: a line (or a point) has no self-intersection.
+  const core::SelfIntersectionOptions own_options;
   for (std::size_t k = 0; k < path.segments.size() && !budget.exhausted(); ++k) {
     const core::Curve& segment = path.segments[k];
     if (segment.degree() < 2 || core::is_point(segment)) continue;
-    core::SelfIntersectionResult r =
-        core::self_intersections(segment, core::SelfIntersectionOptions{}, budget);
+    // A segment shown to have nothing to report is not searched: the search would report
+    // nothing and charge nothing for it.
+    if (core::certainly_without_self_intersections(segment, own_options)) continue;
+    core::SelfIntersectionResult r = core::self_intersections(segment, own_options, budget);
     if (budget.exhausted()) break;
     if (!r.pairs.empty() || !r.overlaps.empty()) out.within_segments.push_back({k, std::move(r)});
   }

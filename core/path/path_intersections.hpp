@@ -83,7 +83,9 @@ struct PathSelfIntersectionResult {
 
 /// Every self-intersection of a path: each pair of different segments whose control boxes
 /// meet, searched as two curves, and each segment against itself (core::self_intersections,
-/// charged to the same budget). Not intersections: the joint two
+/// charged to the same budget; not called for a segment that
+/// core::certainly_without_self_intersections clears, for which it would report and charge
+/// nothing). Not intersections: the joint two
 /// consecutive segments of a subpath share, and the start of a closed subpath meeting its
 /// end (two consecutive segments still meet anywhere else, e.g. where a cubic loops back
 /// across the line before it). A contact at a joint of other segments is reported once.

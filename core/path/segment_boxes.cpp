@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <optional>
 #include <queue>
 #include <tuple>
 
@@ -134,59 +135,98 @@ struct Entry {
   int set;
 };
 
+/// The pair of two entries as reported: (lower index, higher index) over one set, (index in
+/// the first set, index in the second) over two.
+std::pair<std::size_t, std::size_t> oriented_pair(int sets, const Entry& e, const Entry& o) {
+  if (sets == 1) return {std::min(e.index, o.index), std::max(e.index, o.index)};
+  return {e.set == 0 ? e.index : o.index, e.set == 0 ? o.index : e.index};
+}
+
 /// Stores the pair when the memory budget covers it; false (nothing stored) when not.
 bool report_pair(MeetingBoxes& out, int sets, const Entry& e, const Entry& o,
                  core::WorkBudget& budget) {
   if (!budget.charge_memory(kStoredPairBytes)) return false;
-  if (sets == 1) {
-    out.pairs.emplace_back(std::min(e.index, o.index), std::max(e.index, o.index));
-  } else {
-    out.pairs.emplace_back(e.set == 0 ? e.index : o.index, e.set == 0 ? o.index : e.index);
-  }
+  out.pairs.push_back(oriented_pair(sets, e, o));
   return true;
 }
 
 /// Which set's open boxes a box of `set` is compared with.
 std::size_t other_set(int sets, int set) { return static_cast<std::size_t>(sets == 1 ? 0 : 1 - set); }
 
-/// The pairs a box is compared with in the plain sweep below: for each box (sorted by min.x),
-/// the boxes of the other set whose x ranges hold its min.x. O(N) on the sorted boxes, with
-/// each set's max.x sorted.
-std::int64_t x_overlapping_pairs(const std::vector<Entry>& entries, int sets) {
-  std::vector<double> x_hi[2];
-  for (const Entry& e : entries) x_hi[e.set].push_back(e.box.max.x);
-  for (auto& v : x_hi) std::sort(v.begin(), v.end());
-  std::size_t started[2] = {0, 0}, ended[2] = {0, 0};
-  std::int64_t pairs = 0;
-  for (const Entry& e : entries) {
-    const std::size_t o = other_set(sets, e.set);
-    while (ended[o] < x_hi[o].size() && x_hi[o][ended[o]] < e.box.min.x) ++ended[o];
-    pairs += static_cast<std::int64_t>(started[o]) - static_cast<std::int64_t>(std::min(ended[o], started[o]));
-    ++started[static_cast<std::size_t>(e.set)];
-  }
-  return pairs;
-}
+/// An open box of the plain sweep: what its tests read, and where its entry is.
+struct OpenEntry {
+  double max_x;
+  double min_y;
+  double max_y;
+  std::size_t entry;
+};
+
+/// What the plain sweep found before anything is charged: per box (in sweep order) the open
+/// boxes of the other set it was compared with and the number of pairs found up to and
+/// including its own; the pairs themselves, up to a number that the memory budget can
+/// certainly not pass.
+struct PlainFindings {
+  std::vector<std::size_t> compared;
+  std::vector<std::size_t> pairs_end;
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+};
 
 /// Sort and sweep: each box compared with every open box of the other set, O(P) for the P
-/// pairs whose x ranges overlap.
-void plain_sweep(const std::vector<Entry>& entries, int sets, core::WorkBudget& budget,
-                 MeetingBoxes& out) {
-  const std::int64_t log_n = std::bit_width(entries.size());
-  std::vector<Entry> open[2];
-  for (const Entry& e : entries) {
-    std::vector<Entry>& other = open[other_set(sets, e.set)];
-    // Boxes that end before this one starts never meet it nor any later one.
-    std::erase_if(other, [&](const Entry& o) { return o.box.max.x < e.box.min.x; });
-    if (!budget.spend(static_cast<std::int64_t>(other.size()) + 1)) return;
-    for (const Entry& o : other) {
-      if (e.box.min.y <= o.box.max.y && o.box.min.y <= e.box.max.y) {
-        // Each pair pays its share of the final sort: log2 of at most N^2 pairs.
-        budget.charge(2 * log_n);
-        if (!report_pair(out, sets, e, o, budget)) return;
+/// pairs whose x ranges overlap. Each box first drops the open boxes that end before it
+/// starts (they never meet it nor any later one) while it notes the ones it meets, in one
+/// pass. The open boxes it is compared with are exactly the boxes of the other set before
+/// it in the order whose x ranges hold its min.x, so their count summed over the boxes is
+/// the number of x-overlapping pairs: nullopt (nothing charged) as soon as that passes
+/// `most_compared`. Only the first `most_kept` pairs are kept (the memory budget refuses
+/// the later ones), so what it holds uncharged stays within that budget.
+std::optional<PlainFindings> plain_sweep_findings(const std::vector<Entry>& entries, int sets,
+                                                  std::int64_t most_compared,
+                                                  std::size_t most_kept) {
+  PlainFindings found;
+  found.compared.resize(entries.size());
+  found.pairs_end.resize(entries.size());
+  std::vector<OpenEntry> open[2];
+  std::int64_t compared = 0;
+  std::size_t pairs = 0;
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const Entry& e = entries[k];
+    std::vector<OpenEntry>& other = open[other_set(sets, e.set)];
+    std::size_t kept = 0;
+    for (const OpenEntry& o : other) {
+      if (o.max_x < e.box.min.x) continue;
+      if (e.box.min.y <= o.max_y && o.min_y <= e.box.max.y && pairs++ < most_kept) {
+        found.pairs.push_back(oriented_pair(sets, e, entries[o.entry]));
       }
+      other[kept++] = o;
     }
-    open[sets == 1 ? 0 : e.set].push_back(e);
+    other.resize(kept);
+    compared += static_cast<std::int64_t>(kept);
+    if (compared > most_compared) return std::nullopt;
+    found.compared[k] = kept;
+    found.pairs_end[k] = pairs;
+    open[sets == 1 ? 0 : e.set].push_back({e.box.max.x, e.box.min.y, e.box.max.y, k});
   }
+  return found;
+}
+
+/// The plain sweep's charges, box by box in sweep order, as it goes: one unit per open box
+/// compared and one for the box itself (judged before the box's pairs are stored), and per
+/// pair its share of the final sort (log2 of at most N^2 pairs) and its memory, before it is
+/// stored. Stores the pairs found up to where the budget ran out.
+void charge_plain_sweep(PlainFindings&& found, std::size_t n, core::WorkBudget& budget,
+                        MeetingBoxes& out) {
+  const std::int64_t log_n = std::bit_width(n);
+  std::size_t stored = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!budget.spend(static_cast<std::int64_t>(found.compared[k]) + 1)) break;
+    for (; stored < found.pairs_end[k]; ++stored) {
+      budget.charge(2 * log_n);
+      if (!budget.charge_memory(kStoredPairBytes)) break;
+    }
+    if (stored < found.pairs_end[k]) break;
+  }
+  found.pairs.resize(stored);
+  out.pairs = std::move(found.pairs);
 }
 
 /// Bentley-Wood: the open boxes in OpenBoxes, each box's query reporting only the boxes it
@@ -241,27 +281,63 @@ void tree_sweep(const std::vector<Entry>& entries, int sets, core::WorkBudget& b
 /// and its cost is then within a constant of N log N.
 constexpr std::int64_t kPlainSweepPairsPerBoxAndLog = 8;
 
+/// The pairs sorted: by the first index into buckets (counting sort, O(N + P)), each bucket
+/// by the second index (insertion sort: a box meets few others). The same order as
+/// std::sort, the pairs being distinct.
+void sort_pairs(std::vector<std::pair<std::size_t, std::size_t>>& pairs, std::size_t n) {
+  std::vector<std::size_t> bucket_start(n + 1, 0);
+  for (const auto& p : pairs) ++bucket_start[p.first + 1];
+  for (std::size_t i = 0; i < n; ++i) bucket_start[i + 1] += bucket_start[i];
+  std::vector<std::pair<std::size_t, std::size_t>> sorted(pairs.size());
+  std::vector<std::size_t> next(bucket_start.begin(), bucket_start.end() - 1);
+  for (const auto& p : pairs) sorted[next[p.first]++] = p;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = bucket_start[i] + 1; k < bucket_start[i + 1]; ++k) {
+      const auto p = sorted[k];
+      std::size_t m = k;
+      for (; m > bucket_start[i] && p.second < sorted[m - 1].second; --m) sorted[m] = sorted[m - 1];
+      sorted[m] = p;
+    }
+  }
+  pairs = std::move(sorted);
+}
+
 /// All pairs of boxes that meet, over one or two sets: the boxes sorted by min.x, then
 /// whichever sweep costs less, the plain one when the x-overlapping pairs are at most
-/// kPlainSweepPairsPerBoxAndLog N log2 N (so O(N log N) in all), else the tree's.
-MeetingBoxes sweep(std::vector<Entry> entries, int sets, core::WorkBudget& budget) {
+/// kPlainSweepPairsPerBoxAndLog N log2 N (so O(N log N) in all), else the tree's. The plain
+/// sweep runs first, counting them, and stops (nothing charged) once they pass that bound.
+MeetingBoxes sweep(const std::vector<Entry>& unsorted, int sets, core::WorkBudget& budget) {
   MeetingBoxes out;
-  const std::size_t n = entries.size();
+  const std::size_t n = unsorted.size();
   if (n == 0) return out;
   if (!budget.spend(3 * sort_work(n))) return out;
-  std::sort(entries.begin(), entries.end(), [](const Entry& p, const Entry& q) {
-    return std::tie(p.box.min.x, p.set, p.index) < std::tie(q.box.min.x, q.set, q.index);
+  // Sorted by (min.x, set, index): the entries come in (set, index) order, so their
+  // positions break ties in min.x; sorting small keys and gathering once moves less.
+  std::vector<std::pair<double, std::size_t>> keys(n);
+  for (std::size_t k = 0; k < n; ++k) keys[k] = {unsorted[k].box.min.x, k};
+  std::sort(keys.begin(), keys.end(), [](const auto& p, const auto& q) {
+    return p.first < q.first || (!(q.first < p.first) && p.second < q.second);
   });
+  std::vector<Entry> entries(n);
+  std::size_t first_indices = 0;  // the first index of a pair is below this
+  for (std::size_t k = 0; k < n; ++k) {
+    entries[k] = unsorted[keys[k].second];
+    if (entries[k].set == 0) first_indices = std::max(first_indices, entries[k].index + 1);
+  }
   const std::int64_t log_n = std::bit_width(n);
-  if (x_overlapping_pairs(entries, sets) <=
-      kPlainSweepPairsPerBoxAndLog * static_cast<std::int64_t>(n) * log_n) {
-    plain_sweep(entries, sets, budget, out);
+  // The pairs a plain sweep can store: the memory budget refuses the one after these.
+  const std::size_t most_kept = static_cast<std::size_t>(
+      std::max<std::int64_t>(budget.memory_limit() - budget.memory(), 0) / kStoredPairBytes);
+  if (auto found = plain_sweep_findings(
+          entries, sets, kPlainSweepPairsPerBoxAndLog * static_cast<std::int64_t>(n) * log_n,
+          most_kept)) {
+    charge_plain_sweep(std::move(*found), n, budget, out);
   } else {
     budget.charge(sort_work(2 * n));
     tree_sweep(entries, sets, budget, out);
   }
   if (budget.exhausted()) return out;
-  std::sort(out.pairs.begin(), out.pairs.end());
+  sort_pairs(out.pairs, first_indices);
   return out;
 }
 
@@ -277,14 +353,14 @@ MeetingBoxes meeting_boxes(std::span<const core::Rect> a, std::span<const core::
   entries.reserve(a.size() + b.size());
   for (std::size_t i = 0; i < a.size(); ++i) entries.push_back({a[i], i, 0});
   for (std::size_t j = 0; j < b.size(); ++j) entries.push_back({b[j], j, 1});
-  return sweep(std::move(entries), 2, budget);
+  return sweep(entries, 2, budget);
 }
 
 MeetingBoxes meeting_boxes(std::span<const core::Rect> boxes, core::WorkBudget& budget) {
   std::vector<Entry> entries;
   entries.reserve(boxes.size());
   for (std::size_t i = 0; i < boxes.size(); ++i) entries.push_back({boxes[i], i, 0});
-  return sweep(std::move(entries), 1, budget);
+  return sweep(entries, 1, budget);
 }
 
 }  // namespace bezier::path

@@ -10,6 +10,7 @@
 #include "core/bernstein/roots.hpp"
 #include "core/bernstein/casteljau_row.hpp"
 #include "core/self_intersect/collinear_fold.hpp"
+#include "core/self_intersect/monotone_direction.hpp"
 #include "core/cubic/double_point.hpp"
 #include "core/cubic/predicates.hpp"
 #include "core/numeric/error_free.hpp"
@@ -519,7 +520,51 @@ bool runs_backwards(const Curve& curve, const Overlap& o) {
   return opposite < same;
 }
 
+/// cubic_predicates is exact for every cubic whose nonzero coordinates are all at least this
+/// times its largest one: its exact path scales the largest coordinate into [2^200, 2^201)
+/// and loses only coordinates that fall below 2^-216 there, i.e. below 2^-416 times the
+/// largest (core/cubic/predicates.cpp); its filter is exact whenever it decides.
+constexpr double kExactPredicatesRange = 0x1p-415;
+
+/// Whether a cubic is one that closed_form_cubic and the branches after it answer with
+/// nothing (no pair, no overlap, method closed_form_cubic, nothing charged), shown without
+/// them:
+///  - its largest coordinate s lies in [kSmallestUnscaled, kLargestUnscaled], so it is
+///    worked on as given, and every nonzero coordinate is at least kExactPredicatesRange s,
+///    so the closed form's predicates are exact (closed_form_cubic answers loop or no_loop);
+///  - it is certainly monotone along a direction (certainly_monotone), hence injective on
+///    [0, 1]: the closed form, whose on_segment is decided exactly, has no double point
+///    there (one would be a pair t1 < t2 with B(t1) = B(t2)), and P_0 != P_3, so the cubic
+///    is neither closed nor palindromic;
+///  - collinear_frame finds no line at the distance tolerance, so the collinear branch,
+///    tried before "no loop" is accepted, is not taken (a collinear curve can be monotone
+///    along some direction and fold back along its line within the tolerance).
+/// Degree 3 has no improper branch (improper_result starts at degree 4).
+bool certainly_loop_free_cubic(const Curve& curve, const SelfIntersectionOptions& options) noexcept {
+  const std::span<const Point2> points = curve.points();
+  // s = scale(curve) (the same maximum, without the libm calls of fmax; the coordinates are
+  // finite) and the smallest nonzero |coordinate|, in one pass without branches.
+  double s = 0.0, smallest = std::numeric_limits<double>::infinity();
+  for (const Point2 p : points) {
+    const double ax = std::fabs(p.x), ay = std::fabs(p.y);
+    s = std::max(s, std::max(ax, ay));
+    // A zero coordinate loses nothing; it counts as infinite here.
+    const double nx = ax > 0.0 ? ax : std::numeric_limits<double>::infinity();
+    const double ny = ay > 0.0 ? ay : std::numeric_limits<double>::infinity();
+    smallest = std::min(smallest, std::min(nx, ny));
+  }
+  return self_intersect_tuning::kSmallestUnscaled <= s &&
+         s <= self_intersect_tuning::kLargestUnscaled && smallest >= kExactPredicatesRange * s &&
+         certainly_monotone(points) && !collinear_frame(points, options.dist_rel * s);
+}
+
 }  // namespace
+
+bool certainly_without_self_intersections(const Curve& curve,
+                                          const SelfIntersectionOptions& options) noexcept {
+  return curve.degree() == 3 && options.cubic_closed_form &&
+         certainly_loop_free_cubic(curve, options);
+}
 
 SelfIntersectionResult self_intersections(const Curve& curve,
                                           const SelfIntersectionOptions& options) {
@@ -532,6 +577,11 @@ SelfIntersectionResult self_intersections(const Curve& curve,
 SelfIntersectionResult self_intersections(const Curve& curve,
                                           const SelfIntersectionOptions& options,
                                           WorkBudget& budget) {
+  if (certainly_without_self_intersections(curve, options)) {
+    SelfIntersectionResult result;
+    result.stats.method = SelfIntersectionMethod::closed_form_cubic;
+    return result;
+  }
   const std::int64_t spent_before = budget.spent();
   // Squared lengths in the inner loops (sqrt(v·v), not the slower overflow-safe hypot) need
   // coordinates within about 2^±300: outside that range, work on the curve scaled by 2^k

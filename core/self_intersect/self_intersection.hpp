@@ -123,7 +123,11 @@ struct SelfIntersectionOptions {
 /// twice. Cubics take the exact closed form of cubic_double_point.hpp instead of the search
 /// (unless options.cubic_closed_form is off); where its predicates are not exact (coordinates
 /// spanning more than about 2^400) it is trusted only for a pair with B(t) = B(s) to within
-/// the distance tolerance, and the search decides otherwise. Curves that retrace themselves
+/// the distance tolerance, and the search decides otherwise. Before the closed form, a cubic
+/// shown injective by its hodograph (certainly_monotone, monotone_direction.hpp) that is not
+/// collinear and lies where the closed form is exact is answered at once with what the
+/// closed form would answer: nothing, method closed_form_cubic, nothing charged (the
+/// argument is at certainly_loop_free_cubic in self_intersection.cpp). Curves that retrace themselves
 /// get a named branch each (see SelfIntersectionResult::overlaps):
 /// collinear ones a 1-D analysis, palindromic control points (B(1 - t) = B(t)) the
 /// self-intersections of the outbound half and their mirror images.
@@ -170,5 +174,13 @@ struct SelfIntersectionOptions {
 /// as status work_cap_reached.
 [[nodiscard]] SelfIntersectionResult self_intersections(
     const Curve& curve, const SelfIntersectionOptions& options = {});
+
+/// True only when self_intersections(curve, options, budget) answers nothing (no pair, no
+/// overlap) and charges nothing: a cubic that self_intersections() answers at once, without
+/// its closed form (see there; the argument is at certainly_loop_free_cubic in
+/// self_intersection.cpp). False means "not shown". Lets a caller with many segments skip
+/// the call and its result. Cost: O(1), no allocation.
+[[nodiscard]] bool certainly_without_self_intersections(
+    const Curve& curve, const SelfIntersectionOptions& options = {}) noexcept;
 
 }  // namespace bezier::core

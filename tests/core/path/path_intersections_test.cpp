@@ -8,6 +8,7 @@
 #include <tuple>
 #include <vector>
 
+#include "core/cubic/double_point.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/intersect/intersect.hpp"
 #include "core/path/segment_boxes.hpp"
@@ -186,6 +187,23 @@ TEST(PathSelfIntersections, SmoothClosedOutlineOfCubicsHasNone) {
   EXPECT_EQ(r.status, core::IntersectStatus::ok);
   EXPECT_TRUE(r.intersections.empty());
   EXPECT_TRUE(r.within_segments.empty());
+}
+
+TEST(PathSelfIntersections, ALoopingSegmentIsSearchedAndMonotoneOnesAddNothing) {
+  // Segment 0 loops (its exact double point lies on it); segments 1 and 2 are monotone along
+  // x, which the search clears without looking further.
+  const Path path = parsed_path("M0 0 C3 2 -1 2 2 0 L4 0 C5 1 6 -1 7 0");
+  const PathSelfIntersectionResult r = self_intersections(path, {});
+  ASSERT_EQ(r.status, core::IntersectStatus::ok);
+  ASSERT_EQ(r.within_segments.size(), 1u);
+  EXPECT_EQ(r.within_segments[0].segment, 0u);
+  const auto loop = core::cubic_double_point(path.segments[0]);
+  ASSERT_TRUE(loop.has_value() && loop->on_segment);
+  ASSERT_EQ(r.within_segments[0].result.pairs.size(), 1u);
+  EXPECT_NEAR(r.within_segments[0].result.pairs[0].t, loop->t1, 1e-12);
+  EXPECT_NEAR(r.within_segments[0].result.pairs[0].s, loop->t2, 1e-12);
+  EXPECT_FALSE(core::certainly_without_self_intersections(path.segments[0]));
+  EXPECT_TRUE(core::certainly_without_self_intersections(path.segments[2]));
 }
 
 TEST(PathSelfIntersections, BowTieCrossesOnceAtItsCentre) {

@@ -99,6 +99,23 @@ TEST(SegmentBoxes, StopsBeforeStoringPastItsMemoryLimit) {
   }
 }
 
+TEST(SegmentBoxes, AMemoryLimitPartlyUsedBeforeTheSweepStopsItWhereItsRestRunsOut) {
+  // 60 equal boxes (1770 pairs, the plain sweep): with 100 pairs' bytes plus 7 bytes left
+  // of the limit, 100 pairs fit and the 101st is charged and refused.
+  std::vector<core::Rect> boxes(60, core::Rect{{0, 0}, {1, 1}});
+  const std::int64_t used = 1000;
+  core::WorkBudget budget(core::WorkBudget::kUnlimited, used + 100 * kStoredPairBytes + 7);
+  ASSERT_TRUE(budget.charge_memory(used));
+  const MeetingBoxes found = meeting_boxes(boxes, budget);
+  EXPECT_EQ(budget.exhaustion(), core::Exhaustion::memory);
+  EXPECT_EQ(found.pairs.size(), 100u);
+  EXPECT_EQ(budget.memory(), used + 101 * kStoredPairBytes);
+  // Already past its limit: nothing is stored.
+  core::WorkBudget spent(core::WorkBudget::kUnlimited, 10);
+  (void)spent.charge_memory(11);
+  EXPECT_TRUE(meeting_boxes(boxes, spent).pairs.empty());
+}
+
 TEST(SegmentBoxes, WorkGrowsWithThePairsThatMeetNotWithTheirXOverlaps) {
   // 200 thin horizontal boxes spanning the same x range at distinct heights: all overlap in
   // x, none meets another. The work stays below the 19900 x-overlapping pairs a sweep over

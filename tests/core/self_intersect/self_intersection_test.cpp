@@ -205,6 +205,55 @@ TEST(SelfIntersection, CubicFastPathAgreesWithTheGeneralPath) {
   EXPECT_GT(loops, 100);  // the comparison covered many loops
 }
 
+TEST(SelfIntersection, CubicsShownWithoutSelfIntersectionsHaveNone) {
+  // certainly_without_self_intersections: true only for cubics the general search finds
+  // nothing on, and self_intersections() then answers at once, charging nothing.
+  test::Mulberry32 rng(3);
+  int shown = 0;
+  for (int k = 0; k < 2000; ++k) {
+    std::vector<Point2> p;
+    for (int i = 0; i < 4; ++i) p.push_back({rng.next(), rng.next()});
+    const Curve c(p);
+    if (!certainly_without_self_intersections(c)) continue;
+    ++shown;
+    const SelfIntersectionResult general = self_intersections(c, general_path());
+    EXPECT_TRUE(general.pairs.empty() && general.overlaps.empty()) << k;
+    WorkBudget budget;
+    const SelfIntersectionResult r = self_intersections(c, {}, budget);
+    EXPECT_TRUE(r.pairs.empty() && r.overlaps.empty());
+    EXPECT_EQ(r.stats.method, SelfIntersectionMethod::closed_form_cubic);
+    EXPECT_EQ(budget.spent(), 0);
+  }
+  EXPECT_GT(shown, 500);
+  // Never a loop, never with the closed form off.
+  for (const Curve& c : random_loop_cubics(5, 40)) {
+    EXPECT_FALSE(certainly_without_self_intersections(c));
+  }
+  EXPECT_FALSE(certainly_without_self_intersections(Curve({{0, 0}, {1, 1}, {0, 1}, {1, 0}})));
+  EXPECT_FALSE(certainly_without_self_intersections(Curve({{0, 0}, {1, 2}, {2, -1}, {3, 0}}),
+                                                    general_path()));
+  EXPECT_TRUE(certainly_without_self_intersections(Curve({{0, 0}, {1, 2}, {2, -1}, {3, 0}})));
+}
+
+TEST(SelfIntersection, MonotoneCubicsTheClosedFormDoesNotSettleAreStillSearched) {
+  // Monotone along its chord, but within the distance tolerance of that line while x folds
+  // back: the collinear branch answers it (and would report any retraced piece).
+  const double e = 0x1p-50;
+  const Curve thin({{1, 1}, {1 + 3 * e, 1 + 4 * e}, {1 - 2 * e, 1 + 8 * e}, {1 + e, 1 + 12 * e}});
+  EXPECT_FALSE(certainly_without_self_intersections(thin));
+  EXPECT_EQ(self_intersections(thin).stats.method, SelfIntersectionMethod::collinear);
+  // Monotone in x, but coordinates spanning more than 2^400 leave the closed form's
+  // predicates inexact (a tiny y lost to underflow in their exact path): the search decides.
+  const double big = 0x1p210;
+  const Curve spread({{0, 0}, {big, 0x1p-300}, {2 * big, big}, {3 * big, big}});
+  EXPECT_FALSE(certainly_without_self_intersections(spread));
+  WorkBudget budget;
+  const SelfIntersectionResult r = self_intersections(spread, {}, budget);
+  EXPECT_TRUE(r.pairs.empty());
+  EXPECT_EQ(r.stats.method, SelfIntersectionMethod::subdivision);
+  EXPECT_GT(budget.spent(), 0);
+}
+
 // --- hard cases ---------------------------------------------------------------------------
 
 TEST(SelfIntersection, TinyLoopIsFound) {

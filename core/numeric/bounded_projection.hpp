@@ -6,7 +6,7 @@
 #include "core/base/point.hpp"
 #include "core/numeric/unit_roundoff.hpp"
 
-namespace bezier::path {
+namespace bezier::core {
 
 /// The projection d . (p - r) of the difference of two points onto a direction, computed in
 /// doubles, with a bound on its rounding error: the exact real value E lies in
@@ -38,12 +38,12 @@ struct BoundedProjection {
   [[nodiscard]] bool certainly_negative() const noexcept { return -value > error; }
 };
 
-[[nodiscard]] inline BoundedProjection bounded_projection(core::Point2 d, core::Point2 p,
-                                                          core::Point2 r) noexcept {
+[[nodiscard]] inline BoundedProjection bounded_projection(Point2 d, Point2 p,
+                                                          Point2 r) noexcept {
   const double a = d.x * (p.x - r.x);
   const double b = d.y * (p.y - r.y);
   const double size = std::fabs(a) + std::fabs(b);
-  return {a + b, 4.0 * core::kUnitRoundoff * size + std::numeric_limits<double>::min(), size};
+  return {a + b, 4.0 * kUnitRoundoff * size + std::numeric_limits<double>::min(), size};
 }
 
-}  // namespace bezier::path
+}  // namespace bezier::core
