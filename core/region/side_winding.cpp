@@ -119,18 +119,32 @@ void count_crossings(const core::Curve& piece, const Ray& ray, OriginEnd origin,
 /// -ffp-contract=off keeps them separate), so their extremes over the box's points are
 /// bounded by their values at the box's corners chosen by the signs of d; the margin of
 /// twice the clearance leaves room beyond that. Only called when no value can overflow
-/// (SideWindingIndex::prune).
-bool may_meet(const EdgeBox& box, const Ray& ray) {
-  const Point2 d = ray.direction;
-  const Point2 c_low{d.y >= 0.0 ? box.x_hi : box.x_lo, d.x >= 0.0 ? box.y_lo : box.y_hi};
-  const Point2 c_high{d.y >= 0.0 ? box.x_lo : box.x_hi, d.x >= 0.0 ? box.y_hi : box.y_lo};
-  const Point2 r_high{d.x >= 0.0 ? box.x_hi : box.x_lo, d.y >= 0.0 ? box.y_hi : box.y_lo};
-  const double margin = 2.0 * ray.clearance;
-  if (core::cross(d, c_low - ray.origin) > margin) return false;
-  if (core::cross(d, c_high - ray.origin) < -margin) return false;
-  if (core::dot(d, r_high - ray.origin) < -margin) return false;
-  return true;
-}
+/// (SideWindingIndex::prune). The corners depend only on the ray, so they are chosen once per ray.
+class MayMeet {
+ public:
+  explicit MayMeet(const Ray& ray)
+      : origin_(ray.origin),
+        d_(ray.direction),
+        margin_(2.0 * ray.clearance),
+        x_up_(ray.direction.x >= 0.0),
+        y_up_(ray.direction.y >= 0.0) {}
+
+  bool operator()(const EdgeBox& box) const {
+    const Point2 c_low{y_up_ ? box.x_hi : box.x_lo, x_up_ ? box.y_lo : box.y_hi};
+    const Point2 c_high{y_up_ ? box.x_lo : box.x_hi, x_up_ ? box.y_hi : box.y_lo};
+    const Point2 r_high{x_up_ ? box.x_hi : box.x_lo, y_up_ ? box.y_hi : box.y_lo};
+    if (core::cross(d_, c_low - origin_) > margin_) return false;
+    if (core::cross(d_, c_high - origin_) < -margin_) return false;
+    if (core::dot(d_, r_high - origin_) < -margin_) return false;
+    return true;
+  }
+
+ private:
+  Point2 origin_;
+  Point2 d_;
+  double margin_;
+  bool x_up_, y_up_;
+};
 
 /// Charges the first control-point pass (n + 1 units) of every edge in [from, until) outside
 /// `group`, as testing them one by one would; false, with the budget spent up to and
@@ -165,10 +179,12 @@ Point2 tangent_at(const core::Curve& curve, double t) {
 }  // namespace
 
 SideWindingIndex::SideWindingIndex(const Arrangement& arrangement)
-    : boxes(arrangement), prune(arrangement.scale <= kPruneScaleLimit) {
+    : prune(arrangement.scale <= kPruneScaleLimit) {
+  boxes.reserve(arrangement.edges.size());
   pass_cost_before.reserve(arrangement.edges.size() + 1);
   pass_cost_before.push_back(0);
   for (const ArrangementEdge& edge : arrangement.edges) {
+    boxes.push_back(control_point_box(edge.piece));
     pass_cost_before.push_back(pass_cost_before.back() + edge.piece.degree() + 1);
   }
 }
@@ -196,9 +212,7 @@ SideWindingResult side_windings(const Arrangement& arrangement, const SideWindin
     std::array<int, 2> left{0, 0};
     bool clear = true;
     candidates.clear();
-    index.boxes.collect(
-        [&](const EdgeBox& box) { return !index.prune || may_meet(box, ray); }, candidates);
-    std::sort(candidates.begin(), candidates.end());
+    index.collect(MayMeet(ray), candidates);
     // Edges before `next` not yet charged: the skipped ones are charged what their first
     // control-point pass costs, so the work (and where the cap is met) stays that of
     // testing every edge in order.
