@@ -1,6 +1,7 @@
 #include "core/curve/area.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <vector>
@@ -17,11 +18,18 @@ namespace {
 double enclosed_area_as_given(std::span<const Point2> points) {
   const int n = static_cast<int>(points.size()) - 1;
   if (n < 2) return 0.0;  // a point or a segment closed by itself encloses nothing
-  // C(n, i) and C(2n - 2, k) once: every weight is then one division (see the header).
-  std::vector<double> cn(static_cast<std::size_t>(n) + 1);
-  for (int i = 0; i <= n; ++i) cn[static_cast<std::size_t>(i)] = binomial(n, i);
-  std::vector<double> c2(static_cast<std::size_t>(2 * n - 1));
-  for (int k = 0; k <= 2 * n - 2; ++k) c2[static_cast<std::size_t>(k)] = binomial(2 * n - 2, k);
+  // C(n, i) and C(2n - 2, k) once: every weight is then one division (see the header). The
+  // 3n values live on the stack for the usual degrees, on the heap beyond.
+  std::array<double, 48> on_stack;
+  std::vector<double> on_heap;
+  double* const buffer =
+      3 * n <= static_cast<int>(on_stack.size())
+          ? on_stack.data()
+          : (on_heap.resize(static_cast<std::size_t>(3 * n)), on_heap.data());
+  double* const cn = buffer;
+  double* const c2 = buffer + n + 1;
+  for (int i = 0; i <= n; ++i) cn[i] = binomial(n, i);
+  for (int k = 0; k <= 2 * n - 2; ++k) c2[k] = binomial(2 * n - 2, k);
   const Point2 origin = points[0];
   const double scale = 2.0 * (2 * n - 1);
   double area = 0.0;
@@ -31,8 +39,7 @@ double enclosed_area_as_given(std::span<const Point2> points) {
     double row = 0.0;
     for (int j = i + 1; j <= n; ++j) {
       const double weight =
-          ((j - i) * cn[static_cast<std::size_t>(i)] * cn[static_cast<std::size_t>(j)]) /
-          (scale * c2[static_cast<std::size_t>(i + j - 1)]);
+          ((j - i) * cn[i] * cn[j]) / (scale * c2[i + j - 1]);
       row += weight * cross(pi, points[static_cast<std::size_t>(j)] - origin);
     }
     area += row;
