@@ -91,6 +91,9 @@ void append(Combined& all, const path::Path& p, Operand source) {
 
 Combined combined(const path::Path& a, const path::Path* b) {
   Combined all;
+  const std::size_t most = a.segments.size() + (b != nullptr ? b->segments.size() : 0);
+  all.path.segments.reserve(most);
+  all.origin.reserve(most);
   append(all, a, Operand::a);
   if (b != nullptr) append(all, *b, Operand::b);
   return all;
@@ -221,12 +224,13 @@ VertexAssignment assign_vertices(const std::vector<Event>& events, Clusters& clu
 /// merged where the piece between them is within 4 vertex radii (an exact end parameter, 0
 /// or 1, kept), each piece between consecutive cuts an edge from vertex to vertex (its
 /// exact piece, and its snapped copy ending at the vertices' points). Returns each
-/// segment's edges, [first, end) of `arrangement.edges`, in order of t.
-std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(const Combined& both,
+/// segment's edges, [first, end) of `arrangement.edges`, in order of t. A segment that is
+/// its own one edge's exact piece is moved there (left empty in `both`).
+std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
                                                                 const std::vector<Event>& events,
                                                                 const VertexAssignment& assigned,
                                                                 Arrangement& arrangement) {
-  const path::Path& all = both.path;
+  path::Path& all = both.path;
   const std::vector<std::size_t>& vertex_of = assigned.vertex_of;
   const std::vector<double>& vertex_radius = assigned.vertex_radius;
   // Cuts, by segment and then parameter (and vertex).
@@ -279,7 +283,9 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(const Combined& 
     for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
       const double t0 = kept[k].first, t1 = kept[k + 1].first;
       const std::size_t from = kept[k].second, to = kept[k + 1].second;
-      core::Curve exact = segment_piece(seg, t0, t1);
+      // A segment cut nowhere inside is not needed any more: its one piece may take it.
+      core::Curve exact = kept.size() == 2 ? segment_piece(std::move(all.segments[i]), t0, t1)
+                                           : segment_piece(seg, t0, t1);
       std::vector<Point2> pts(exact.points().begin(), exact.points().end());
       pts.front() = arrangement.vertices[from];
       pts.back() = arrangement.vertices[to];
@@ -439,7 +445,7 @@ void number_groups(Clusters& groups, Arrangement& arrangement) {
 
 Arrangement build_arrangement(const path::Path& a, const path::Path* b, core::WorkBudget& budget) {
   Arrangement out;
-  const Combined both = combined(a, b);
+  Combined both = combined(a, b);
   const path::Path& all = both.path;
   double scale = 0.0;
   for (const core::Curve& s : all.segments) scale = std::max(scale, core::scale(s));
