@@ -419,16 +419,28 @@ void number_groups(Clusters& groups, Arrangement& arrangement) {
     const std::size_t root = groups.find(e);
     if (group_of_root[root] == SIZE_MAX) {
       group_of_root[root] = arrangement.groups.size();
-      arrangement.groups.push_back({e, {}, {0, 0}});
+      arrangement.groups.push_back({e, 0, 0, {0, 0}});
     }
-    CoincidentGroup& g = arrangement.groups[group_of_root[root]];
     arrangement.edges[e].group = group_of_root[root];
-    g.edges.push_back(e);
+    ++arrangement.groups[group_of_root[root]].member_count;
     // Edges are in segment order, a before b: the group's first edge of a comes first.
   }
+  // Each group's edges in one list, group by group, each group's in edge order.
+  std::size_t next = 0;
   for (CoincidentGroup& g : arrangement.groups) {
+    g.first_member = next;
+    next += g.member_count;
+  }
+  arrangement.group_members.resize(arrangement.edges.size());
+  std::vector<std::size_t> filled(arrangement.groups.size(), 0);
+  for (std::size_t e = 0; e < arrangement.edges.size(); ++e) {
+    const std::size_t g = arrangement.edges[e].group;
+    arrangement.group_members[arrangement.groups[g].first_member + filled[g]++] = e;
+  }
+  for (std::size_t h = 0; h < arrangement.groups.size(); ++h) {
+    CoincidentGroup& g = arrangement.groups[h];
     const ArrangementEdge& r = arrangement.edges[g.representative];
-    for (std::size_t e : g.edges) {
+    for (const std::size_t e : arrangement.group_edges(h)) {
       const ArrangementEdge& x = arrangement.edges[e];
       // Along the representative when it leaves the same vertex; for a loop (both ends at
       // one vertex) when its tangent at the middle points the same way.

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/base/curve.hpp"
@@ -42,7 +43,10 @@ struct ArrangementEdge {
 struct CoincidentGroup {
   /// The edge that stands for the group: the first one of operand a if there is one.
   std::size_t representative = 0;
-  std::vector<std::size_t> edges;
+  /// The group's edges, in increasing order, are Arrangement::group_members
+  /// [first_member, first_member + member_count) (Arrangement::group_edges).
+  std::size_t first_member = 0;
+  std::size_t member_count = 0;
   /// For each operand, the number of its edges in the group that run the representative's
   /// way minus those that run against it: what crossing the group from its right to its
   /// left adds to that operand's winding number.
@@ -54,6 +58,8 @@ struct Arrangement {
   std::vector<core::Point2> vertices;
   std::vector<ArrangementEdge> edges;
   std::vector<CoincidentGroup> groups;
+  /// Every group's edges, group after group (one list for all, not one per group).
+  std::vector<std::size_t> group_members;
   /// The largest absolute control-point coordinate of both operands (1 when both are empty
   /// or at the origin): the unit of every relative distance.
   double scale = 1.0;
@@ -61,6 +67,12 @@ struct Arrangement {
   std::int64_t work = 0;
   /// ok, or work_cap_reached (the arrangement is then incomplete and must not be used).
   core::IntersectStatus status = core::IntersectStatus::ok;
+
+  /// The edges of group g, in increasing order.
+  [[nodiscard]] std::span<const std::size_t> group_edges(std::size_t g) const {
+    return std::span<const std::size_t>(group_members).subspan(groups[g].first_member,
+                                                               groups[g].member_count);
+  }
 };
 
 /// The arrangement of the boundaries of a and b (b may be null: the arrangement of a alone).

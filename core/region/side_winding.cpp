@@ -153,7 +153,7 @@ bool charge_skipped(const Arrangement& arrangement, const SideWindingIndex& inde
                     std::size_t group, std::size_t from, std::size_t until, core::WorkBudget& budget) {
   if (from >= until) return true;
   std::int64_t cost = index.pass_cost_before[until] - index.pass_cost_before[from];
-  for (const std::size_t e : arrangement.groups[group].edges) {
+  for (const std::size_t e : arrangement.group_edges(group)) {
     if (e >= from && e < until) cost -= arrangement.edges[e].piece.degree() + 1;
   }
   if (cost <= budget.remaining()) {
