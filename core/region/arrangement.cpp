@@ -113,8 +113,12 @@ ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersec
   ContactEvents contacts;
   std::vector<Event>& events = contacts.events;
   std::vector<std::pair<std::size_t, std::size_t>>& same = contacts.same;
-  std::vector<double> speed(all.segments.size());
-  for (std::size_t i = 0; i < all.segments.size(); ++i) speed[i] = speed_bound(all.segments[i]);
+  // Each segment's speed bound, found when a contact on it first needs it (-1: not yet).
+  std::vector<double> speed(all.segments.size(), -1.0);
+  const auto speed_of = [&](std::size_t i) {
+    if (speed[i] == -1.0) speed[i] = speed_bound(all.segments[i]);
+    return speed[i];
+  };
 
   // Segment ends first (so that a vertex holding one takes its point), then contacts.
   events.reserve(2 * all.segments.size() + 2 * found.intersections.size() +
@@ -126,7 +130,7 @@ ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersec
   }
   const auto add_pair = [&](std::size_t i, double t, double t_width, std::size_t j, double s,
                             double s_width, Point2 p) {
-    const double r = base_radius + std::max(t_width * speed[i], s_width * speed[j]);
+    const double r = base_radius + std::max(t_width * speed_of(i), s_width * speed_of(j));
     events.push_back({i, t, p, r, false});
     events.push_back({j, s, p, r, false});
     same.emplace_back(events.size() - 2, events.size() - 1);
@@ -164,19 +168,21 @@ Clusters close_events(const std::vector<Event>& events,
   for (const auto& [i, j] : same) clusters.join(i, j);
   double max_radius = 0.0;
   for (const Event& e : events) max_radius = std::max(max_radius, e.radius);
-  std::vector<std::size_t> by_x(events.size());
-  std::iota(by_x.begin(), by_x.end(), std::size_t{0});
-  std::sort(by_x.begin(), by_x.end(),
-            [&](std::size_t i, std::size_t j) { return events[i].point.x < events[j].point.x; });
+  // The events by x (ties by index), each with its x beside it so that the sort compares
+  // in place. Which pairs are joined, and so the clusters, do not depend on the order of
+  // ties: each pair within reach is met from whichever of its two comes first.
+  std::vector<std::pair<double, std::size_t>> by_x(events.size());
+  for (std::size_t i = 0; i < events.size(); ++i) by_x[i] = {events[i].point.x, i};
+  std::sort(by_x.begin(), by_x.end());
   for (std::size_t k = 0; k < by_x.size(); ++k) {
-    const Event& e = events[by_x[k]];
+    const Event& e = events[by_x[k].second];
     for (std::size_t l = k + 1; l < by_x.size(); ++l) {
-      const Event& f = events[by_x[l]];
+      const Event& f = events[by_x[l].second];
       if (f.point.x - e.point.x > e.radius + max_radius) break;
       const double reach = e.radius + f.radius;
       if (std::fabs(f.point.x - e.point.x) <= reach && std::fabs(f.point.y - e.point.y) <= reach &&
           core::length(f.point - e.point) <= reach) {
-        clusters.join(by_x[k], by_x[l]);
+        clusters.join(by_x[k].second, by_x[l].second);
       }
     }
   }
@@ -377,16 +383,30 @@ void join_thin_lenses(const Arrangement& arrangement, Clusters& groups) {
   struct Ends {
     std::size_t lo, hi, edge;
   };
-  std::vector<Ends> by_ends;
-  by_ends.reserve(arrangement.edges.size());
-  for (std::size_t e = 0; e < arrangement.edges.size(); ++e) {
-    const ArrangementEdge& edge = arrangement.edges[e];
-    if (edge.from == edge.to) continue;
-    by_ends.push_back({std::min(edge.from, edge.to), std::max(edge.from, edge.to), e});
+  // Placed by lower vertex (a counting sort, each vertex's edges in edge order), then each
+  // vertex's few edges sorted by upper vertex.
+  const std::size_t vertex_count = arrangement.vertices.size();
+  std::vector<std::size_t> start(vertex_count + 1, 0);
+  for (const ArrangementEdge& edge : arrangement.edges) {
+    if (edge.from != edge.to) ++start[std::min(edge.from, edge.to) + 1];
   }
-  std::sort(by_ends.begin(), by_ends.end(), [](const Ends& p, const Ends& q) {
-    return std::tie(p.lo, p.hi, p.edge) < std::tie(q.lo, q.hi, q.edge);
-  });
+  for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
+  std::vector<Ends> by_ends(start[vertex_count]);
+  {
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    for (std::size_t e = 0; e < arrangement.edges.size(); ++e) {
+      const ArrangementEdge& edge = arrangement.edges[e];
+      if (edge.from == edge.to) continue;
+      const std::size_t lo = std::min(edge.from, edge.to);
+      by_ends[next[lo]++] = {lo, std::max(edge.from, edge.to), e};
+    }
+  }
+  for (std::size_t v = 0; v < vertex_count; ++v) {
+    if (start[v + 1] - start[v] < 2) continue;
+    std::sort(by_ends.begin() + static_cast<std::ptrdiff_t>(start[v]),
+              by_ends.begin() + static_cast<std::ptrdiff_t>(start[v + 1]),
+              [](const Ends& p, const Ends& q) { return std::tie(p.hi, p.edge) < std::tie(q.hi, q.edge); });
+  }
   for (std::size_t first = 0, end = 0; first < by_ends.size(); first = end) {
     end = first + 1;
     while (end < by_ends.size() && by_ends[end].lo == by_ends[first].lo &&
