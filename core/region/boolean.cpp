@@ -68,8 +68,9 @@ BooleanStatus decide_side_windings(const Arrangement& arrangement, core::WorkBud
 BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::WorkBudget& budget) {
   BooleanResult result;
   const std::int64_t spent_before = budget.spent();
-  const Arrangement arrangement =
-      build_arrangement(a.path, b != nullptr ? &b->path : nullptr, budget);
+  // Not const: once every side is decided, a kept group's representative gives its piece
+  // to the result (below).
+  Arrangement arrangement = build_arrangement(a.path, b != nullptr ? &b->path : nullptr, budget);
   result.work = arrangement.work;
   if (arrangement.status != core::IntersectStatus::ok) {
     result.status = BooleanStatus::work_cap_reached;
@@ -95,9 +96,11 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::W
     const bool right = inside(windings[g].right);
     if (left == right) continue;
     const std::size_t e = arrangement.groups[g].representative;
-    const ArrangementEdge& edge = arrangement.edges[e];
+    ArrangementEdge& edge = arrangement.edges[e];
     if (left) {
-      kept.push_back({edge.from, edge.to, edge.piece, e});
+      // Each group is looked at once here and its representative's piece is not read again
+      // (the result takes only its source and parameters), so the piece moves.
+      kept.push_back({edge.from, edge.to, std::move(edge.piece), e});
     } else {
       kept.push_back({edge.to, edge.from, core::reversed(edge.piece), e});
     }
