@@ -1,6 +1,8 @@
 #include "core/region/arrangement.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <numeric>
 #include <tuple>
@@ -54,6 +56,12 @@ class Clusters {
  private:
   std::vector<std::size_t> parent_;
 };
+
+/// Whether two points have the same coordinates bit for bit (+0 and -0 differ).
+bool same_bits(Point2 p, Point2 q) {
+  return std::bit_cast<std::uint64_t>(p.x) == std::bit_cast<std::uint64_t>(q.x) &&
+         std::bit_cast<std::uint64_t>(p.y) == std::bit_cast<std::uint64_t>(q.y);
+}
 
 /// n max |P_{i+1} - P_i|: a bound on |B'(t)| over [0, 1].
 double speed_bound(const core::Curve& c) {
@@ -292,13 +300,20 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
       // A segment cut nowhere inside is not needed any more: its one piece may take it.
       core::Curve exact = kept.size() == 2 ? segment_piece(std::move(all.segments[i]), t0, t1)
                                            : segment_piece(seg, t0, t1);
-      std::vector<Point2> pts(exact.points().begin(), exact.points().end());
-      pts.front() = arrangement.vertices[from];
-      pts.back() = arrangement.vertices[to];
+      const Point2 front = arrangement.vertices[from], back = arrangement.vertices[to];
       // Every member given, so that no default curve is built and thrown away.
+      if (same_bits(exact.front(), front) && same_bits(exact.back(), back)) {
+        arrangement.edges.push_back(ArrangementEdge{both.origin[i].first, both.origin[i].second,
+                                                    t0, t1, from, to, std::move(exact),
+                                                    std::nullopt, arrangement.edges.size()});
+        continue;
+      }
+      std::vector<Point2> pts(exact.points().begin(), exact.points().end());
+      pts.front() = front;
+      pts.back() = back;
       arrangement.edges.push_back(
           ArrangementEdge{both.origin[i].first, both.origin[i].second, t0, t1, from, to,
-                          std::move(exact), core::Curve(std::move(pts)), arrangement.edges.size()});
+                          core::Curve(std::move(pts)), std::move(exact), arrangement.edges.size()});
     }
     edges_of[i].second = arrangement.edges.size();
   }
@@ -420,8 +435,8 @@ void join_thin_lenses(const Arrangement& arrangement, Clusters& groups) {
         const bool flip = p.from != q.from;
         bool near = true;
         for (const double t : {0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875}) {
-          const Point2 at_p = core::evaluate(p.exact, t);
-          const Point2 at_q = core::evaluate(q.exact, flip ? 1.0 - t : t);
+          const Point2 at_p = core::evaluate(p.exact(), t);
+          const Point2 at_q = core::evaluate(q.exact(), flip ? 1.0 - t : t);
           near = near && core::length(at_p - at_q) <= clearance;
         }
         if (near) groups.join(by_ends[x].edge, by_ends[y].edge);
@@ -466,8 +481,8 @@ void number_groups(Clusters& groups, Arrangement& arrangement) {
       // one vertex) when its tangent at the middle points the same way.
       const bool along = (x.from != x.to && r.from != r.to)
                              ? x.from == r.from
-                             : core::dot(core::derivatives_at(x.exact, 0.5, 1).front(),
-                                         core::derivatives_at(r.exact, 0.5, 1).front()) > 0.0;
+                             : core::dot(core::derivatives_at(x.exact(), 0.5, 1).front(),
+                                         core::derivatives_at(r.exact(), 0.5, 1).front()) > 0.0;
       g.multiplicity[static_cast<std::size_t>(x.source)] += along ? 1 : -1;
     }
   }

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -28,14 +29,20 @@ struct ArrangementEdge {
   /// The vertices at t0 and at t1 (they may be the same vertex for a piece that loops).
   std::size_t from = 0;
   std::size_t to = 0;
-  /// core::portion(segment, t0, t1): the de Casteljau (blossom) piece, unchanged.
-  core::Curve exact = core::Curve({core::Point2{}});
-  /// `exact` with its end points replaced by the vertices' points, so that every edge
+  /// exact() with its end points replaced by the vertices' points, so that every edge
   /// through a vertex meets it at the same double. Each end moves by at most the vertex's
   /// merge radius (a contact's own interval, or kVertexMergeRel of scale).
   core::Curve piece = core::Curve({core::Point2{}});
+  /// exact() where it differs from `piece` (bit for bit); nullopt where the vertices' points
+  /// are its own end points, so that one curve serves as both.
+  std::optional<core::Curve> exact_if_snapped;
   /// The coincident group holding the edge.
   std::size_t group = 0;
+
+  /// core::portion(segment, t0, t1): the de Casteljau (blossom) piece, unchanged.
+  [[nodiscard]] const core::Curve& exact() const {
+    return exact_if_snapped ? *exact_if_snapped : piece;
+  }
 };
 
 /// Edges that are the same point set: pieces of shared boundary (an overlap reported by the

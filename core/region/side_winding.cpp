@@ -196,9 +196,9 @@ SideWindingResult side_windings(const Arrangement& arrangement, const SideWindin
   std::vector<std::size_t> candidates;
   const CoincidentGroup& g = arrangement.groups[group];
   const ArrangementEdge& rep = arrangement.edges[g.representative];
-  const core::Split<Point2> halves = core::subdivide(rep.exact, 0.5);
+  const core::Split<Point2> halves = core::subdivide(rep.exact(), 0.5);
   const Point2 middle = halves.left.back();
-  const Point2 tangent = tangent_at(rep.exact, 0.5);
+  const Point2 tangent = tangent_at(rep.exact(), 0.5);
   const double norm = core::length(tangent);
   if (!(norm > 0.0)) {
     result.status = SideWindingStatus::unclear;
