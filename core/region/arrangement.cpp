@@ -494,8 +494,16 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, core::Wo
   Arrangement out;
   Combined both = combined(a, b);
   const path::Path& all = both.path;
+  // The largest core::scale of the segments, by comparisons rather than library fmax calls:
+  // for finite coordinates (the precondition) both give the same largest |coordinate|.
   double scale = 0.0;
-  for (const core::Curve& s : all.segments) scale = std::max(scale, core::scale(s));
+  for (const core::Curve& s : all.segments) {
+    for (const Point2 p : s.points()) {
+      const double x = std::fabs(p.x), y = std::fabs(p.y);
+      if (x > scale) scale = x;
+      if (y > scale) scale = y;
+    }
+  }
   out.scale = scale > 0.0 ? scale : 1.0;
   const double base_radius = kVertexMergeRel * out.scale;
 
