@@ -91,6 +91,8 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::W
   const std::size_t group_count = arrangement.groups.size();
   std::vector<DirectedEdge> kept;
   std::vector<bool> kept_reversed;
+  kept.reserve(group_count);
+  kept_reversed.reserve(group_count);
   for (std::size_t g = 0; g < group_count; ++g) {
     const bool left = inside(windings[g].left);
     const bool right = inside(windings[g].right);
@@ -119,6 +121,8 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::W
   }
   const double zero_area = 0x1p-80 * arrangement.scale * arrangement.scale;
   std::vector<const core::Curve*> contour_curves;
+  result.segments.reserve(kept.size());
+  result.contours.reserve(chains->size());
   for (const std::vector<std::size_t>& chain : *chains) {
     contour_curves.clear();
     for (std::size_t k : chain) contour_curves.push_back(&kept[k].curve);
