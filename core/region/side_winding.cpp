@@ -126,24 +126,27 @@ class MayMeet {
       : origin_(ray.origin),
         d_(ray.direction),
         margin_(2.0 * ray.clearance),
-        x_up_(ray.direction.x >= 0.0),
-        y_up_(ray.direction.y >= 0.0) {}
+        c_low_x_(ray.direction.y >= 0.0 ? &EdgeBox::x_hi : &EdgeBox::x_lo),
+        c_low_y_(ray.direction.x >= 0.0 ? &EdgeBox::y_lo : &EdgeBox::y_hi),
+        c_high_x_(ray.direction.y >= 0.0 ? &EdgeBox::x_lo : &EdgeBox::x_hi),
+        c_high_y_(ray.direction.x >= 0.0 ? &EdgeBox::y_hi : &EdgeBox::y_lo),
+        r_high_x_(ray.direction.x >= 0.0 ? &EdgeBox::x_hi : &EdgeBox::x_lo),
+        r_high_y_(ray.direction.y >= 0.0 ? &EdgeBox::y_hi : &EdgeBox::y_lo) {}
 
   bool operator()(const EdgeBox& box) const {
-    const Point2 c_low{y_up_ ? box.x_hi : box.x_lo, x_up_ ? box.y_lo : box.y_hi};
-    const Point2 c_high{y_up_ ? box.x_lo : box.x_hi, x_up_ ? box.y_hi : box.y_lo};
-    const Point2 r_high{x_up_ ? box.x_hi : box.x_lo, y_up_ ? box.y_hi : box.y_lo};
-    if (core::cross(d_, c_low - origin_) > margin_) return false;
-    if (core::cross(d_, c_high - origin_) < -margin_) return false;
-    if (core::dot(d_, r_high - origin_) < -margin_) return false;
+    if (core::cross(d_, Point2{box.*c_low_x_, box.*c_low_y_} - origin_) > margin_) return false;
+    if (core::cross(d_, Point2{box.*c_high_x_, box.*c_high_y_} - origin_) < -margin_) return false;
+    if (core::dot(d_, Point2{box.*r_high_x_, box.*r_high_y_} - origin_) < -margin_) return false;
     return true;
   }
 
  private:
+  using Side = double EdgeBox::*;
   Point2 origin_;
   Point2 d_;
   double margin_;
-  bool x_up_, y_up_;
+  // The corners: c_low gives the least c, c_high the largest, r_high the largest r.
+  Side c_low_x_, c_low_y_, c_high_x_, c_high_y_, r_high_x_, r_high_y_;
 };
 
 /// Charges the first control-point pass (n + 1 units) of every edge in [from, until) outside
