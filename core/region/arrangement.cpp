@@ -214,6 +214,10 @@ VertexAssignment assign_vertices(const std::vector<Event>& events, Clusters& clu
   std::vector<std::size_t> vertex_of_root(events.size(), SIZE_MAX);
   vertex_of.resize(events.size());
   std::vector<bool> from_end;
+  // At most one vertex per event.
+  vertices.reserve(events.size());
+  vertex_radius.reserve(events.size());
+  from_end.reserve(events.size());
   for (std::size_t e = 0; e < events.size(); ++e) {
     const std::size_t root = clusters.find(e);
     if (vertex_of_root[root] == SIZE_MAX) {
@@ -450,6 +454,7 @@ void join_thin_lenses(const Arrangement& arrangement, Clusters& groups) {
 /// operand (+1 for a member along the representative, -1 against it).
 void number_groups(Clusters& groups, Arrangement& arrangement) {
   std::vector<std::size_t> group_of_root(arrangement.edges.size(), SIZE_MAX);
+  arrangement.groups.reserve(arrangement.edges.size());  // at most one group per edge
   for (std::size_t e = 0; e < arrangement.edges.size(); ++e) {
     const std::size_t root = groups.find(e);
     if (group_of_root[root] == SIZE_MAX) {
