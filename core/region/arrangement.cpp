@@ -213,7 +213,7 @@ VertexAssignment assign_vertices(const std::vector<Event>& events, Clusters& clu
   std::vector<double>& vertex_radius = assigned.vertex_radius;
   std::vector<std::size_t> vertex_of_root(events.size(), SIZE_MAX);
   vertex_of.resize(events.size());
-  std::vector<bool> from_end;
+  std::vector<char> from_end;  // bytes, not bits: read and written once per event
   // At most one vertex per event.
   vertices.reserve(events.size());
   vertex_radius.reserve(events.size());
@@ -223,7 +223,7 @@ VertexAssignment assign_vertices(const std::vector<Event>& events, Clusters& clu
     if (vertex_of_root[root] == SIZE_MAX) {
       vertex_of_root[root] = vertices.size();
       vertices.push_back(events[e].point);
-      from_end.push_back(events[e].segment_end);
+      from_end.push_back(events[e].segment_end ? 1 : 0);
       vertex_radius.push_back(events[e].radius);
     }
     const std::size_t v = vertex_of_root[root];
@@ -231,7 +231,7 @@ VertexAssignment assign_vertices(const std::vector<Event>& events, Clusters& clu
     vertex_radius[v] = std::max(vertex_radius[v], events[e].radius);
     if (events[e].segment_end && !from_end[v]) {
       vertices[v] = events[e].point;
-      from_end[v] = true;
+      from_end[v] = 1;
     }
   }
 

@@ -6,17 +6,6 @@
 
 namespace bezier::region {
 
-EdgeBox control_point_box(const core::Curve& curve) {
-  EdgeBox box{curve.front().x, curve.front().x, curve.front().y, curve.front().y};
-  for (const core::Point2 p : curve.points()) {
-    box.x_lo = std::min(box.x_lo, p.x);
-    box.x_hi = std::max(box.x_hi, p.x);
-    box.y_lo = std::min(box.y_lo, p.y);
-    box.y_hi = std::max(box.y_hi, p.y);
-  }
-  return box;
-}
-
 namespace {
 
 EdgeBox joined(const EdgeBox& a, const EdgeBox& b) {

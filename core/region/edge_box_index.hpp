@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -14,7 +15,16 @@ struct EdgeBox {
 };
 
 /// The box of a curve's control points, which holds the curve (convex hull property).
-[[nodiscard]] EdgeBox control_point_box(const core::Curve& curve);
+[[nodiscard]] inline EdgeBox control_point_box(const core::Curve& curve) {
+  EdgeBox box{curve.front().x, curve.front().x, curve.front().y, curve.front().y};
+  for (const core::Point2 p : curve.points()) {
+    box.x_lo = std::min(box.x_lo, p.x);
+    box.x_hi = std::max(box.x_hi, p.x);
+    box.y_lo = std::min(box.y_lo, p.y);
+    box.y_hi = std::max(box.y_hi, p.y);
+  }
+  return box;
+}
 
 /// The boxes of an arrangement's edges in a bounding-volume hierarchy, so that each ray of
 /// side_windings visits only the edges near it (built once per operation, and only when an
