@@ -190,6 +190,17 @@ SideWindingIndex::SideWindingIndex(const Arrangement& arrangement)
     boxes.push_back(control_point_box(edge.piece));
     pass_cost_before.push_back(pass_cost_before.back() + edge.piece.degree() + 1);
   }
+  block_boxes.reserve((boxes.size() + kBlockEdges - 1) / kBlockEdges);
+  for (std::size_t first = 0; first < boxes.size(); first += kBlockEdges) {
+    EdgeBox block = boxes[first];
+    for (std::size_t e = first + 1; e < std::min(boxes.size(), first + kBlockEdges); ++e) {
+      block.x_lo = std::min(block.x_lo, boxes[e].x_lo);
+      block.x_hi = std::max(block.x_hi, boxes[e].x_hi);
+      block.y_lo = std::min(block.y_lo, boxes[e].y_lo);
+      block.y_hi = std::max(block.y_hi, boxes[e].y_hi);
+    }
+    block_boxes.push_back(block);
+  }
 }
 
 SideWindingResult side_windings(const Arrangement& arrangement, const SideWindingIndex& index,
