@@ -305,19 +305,20 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
       core::Curve exact = kept.size() == 2 ? segment_piece(std::move(all.segments[i]), t0, t1)
                                            : segment_piece(seg, t0, t1);
       const Point2 front = arrangement.vertices[from], back = arrangement.vertices[to];
-      // Every member given, so that no default curve is built and thrown away.
+      // Every member given and built in place, so that no default curve is built and thrown
+      // away.
       if (same_bits(exact.front(), front) && same_bits(exact.back(), back)) {
-        arrangement.edges.push_back(ArrangementEdge{both.origin[i].first, both.origin[i].second,
-                                                    t0, t1, from, to, std::move(exact),
-                                                    std::nullopt, arrangement.edges.size()});
+        arrangement.edges.emplace_back(both.origin[i].first, both.origin[i].second, t0, t1, from,
+                                       to, std::move(exact), std::nullopt,
+                                       arrangement.edges.size());
         continue;
       }
       std::vector<Point2> pts(exact.points().begin(), exact.points().end());
       pts.front() = front;
       pts.back() = back;
-      arrangement.edges.push_back(
-          ArrangementEdge{both.origin[i].first, both.origin[i].second, t0, t1, from, to,
-                          core::Curve(std::move(pts)), std::move(exact), arrangement.edges.size()});
+      arrangement.edges.emplace_back(both.origin[i].first, both.origin[i].second, t0, t1, from, to,
+                                     core::Curve(std::move(pts)), std::move(exact),
+                                     arrangement.edges.size());
     }
     edges_of[i].second = arrangement.edges.size();
   }
