@@ -268,12 +268,24 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
       cuts[next[events[e].segment]++] = {events[e].segment, events[e].t, vertex_of[e]};
     }
   }
+  // Cuts that compare equal are equal in every member, so any sort gives the same list; a
+  // segment's few cuts (most often its two ends, already in order) by insertion.
+  const auto before = [](const Cut& p, const Cut& q) {
+    return std::tie(p.t, p.vertex) < std::tie(q.t, q.vertex);
+  };
   for (std::size_t i = 0; i < all.segments.size(); ++i) {
-    std::sort(cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i]),
-              cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i + 1]),
-              [](const Cut& p, const Cut& q) {
-                return std::tie(p.t, p.vertex) < std::tie(q.t, q.vertex);
-              });
+    const auto first = cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i]);
+    const auto last = cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i + 1]);
+    if (last - first > 16) {
+      std::sort(first, last, before);
+      continue;
+    }
+    for (auto k = first + (first != last ? 1 : 0); k < last; ++k) {
+      const Cut moving = *k;
+      auto j = k;
+      for (; j > first && before(moving, *(j - 1)); --j) *j = *(j - 1);
+      *j = moving;
+    }
   }
   // Edges of one segment in order, for the overlap groups below: [first, end) of arrangement.edges.
   std::vector<std::pair<std::size_t, std::size_t>> edges_of(all.segments.size());
