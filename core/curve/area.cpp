@@ -13,27 +13,69 @@ namespace bezier::core {
 
 namespace {
 
+/// The weight of cross(P_i - P_0, P_j - P_0) in enclosed_area() for degree n, 0 < i < j <= n,
+/// given C(n, i), C(n, j) and C(2n - 2, i + j - 1): one division (see the header).
+double area_weight(int n, int i, int j, double cn_i, double cn_j, double c2_ij) {
+  const double scale = 2.0 * (2 * n - 1);
+  return ((j - i) * cn_i * cn_j) / (scale * c2_ij);
+}
+
+/// Degrees whose weights are computed once (on first use) and then looked up.
+constexpr int kTabledDegree = 12;
+
+/// weights(n)[i * (n + 1) + j] = area_weight(n, i, j, ...) for n <= kTabledDegree: the same
+/// doubles as computing them on the spot.
+const double* tabled_weights(int n) {
+  static const std::vector<std::vector<double>> tables = [] {
+    std::vector<std::vector<double>> all(kTabledDegree + 1);
+    for (int m = 2; m <= kTabledDegree; ++m) {
+      std::vector<double>& w = all[static_cast<std::size_t>(m)];
+      w.assign(static_cast<std::size_t>((m + 1) * (m + 1)), 0.0);
+      for (int i = 1; i < m; ++i) {
+        for (int j = i + 1; j <= m; ++j) {
+          w[static_cast<std::size_t>(i * (m + 1) + j)] = area_weight(
+              m, i, j, binomial(m, i), binomial(m, j), binomial(2 * m - 2, i + j - 1));
+        }
+      }
+    }
+    return all;
+  }();
+  return tables[static_cast<std::size_t>(n)].data();
+}
+
 /// The double sum of enclosed_area() on the coordinates as given.
 double enclosed_area_as_given(std::span<const Point2> points) {
   const int n = static_cast<int>(points.size()) - 1;
   if (n < 2) return 0.0;  // a point or a segment closed by itself encloses nothing
-  // C(n, i) and C(2n - 2, k) once: every weight is then one division (see the header).
-  std::vector<double> cn(static_cast<std::size_t>(n) + 1);
-  for (int i = 0; i <= n; ++i) cn[static_cast<std::size_t>(i)] = binomial(n, i);
-  std::vector<double> c2(static_cast<std::size_t>(2 * n - 1));
-  for (int k = 0; k <= 2 * n - 2; ++k) c2[static_cast<std::size_t>(k)] = binomial(2 * n - 2, k);
+  // The weights from the table for the usual degrees; beyond, C(n, i) and C(2n - 2, k) once
+  // and each weight from them.
+  std::vector<double> computed;
+  const double* weight = nullptr;
+  if (n <= kTabledDegree) {
+    weight = tabled_weights(n);
+  } else {
+    std::vector<double> cn(static_cast<std::size_t>(n) + 1);
+    for (int i = 0; i <= n; ++i) cn[static_cast<std::size_t>(i)] = binomial(n, i);
+    std::vector<double> c2(static_cast<std::size_t>(2 * n - 1));
+    for (int k = 0; k <= 2 * n - 2; ++k) c2[static_cast<std::size_t>(k)] = binomial(2 * n - 2, k);
+    computed.assign(static_cast<std::size_t>((n + 1) * (n + 1)), 0.0);
+    for (int i = 1; i < n; ++i) {
+      for (int j = i + 1; j <= n; ++j) {
+        computed[static_cast<std::size_t>(i * (n + 1) + j)] =
+            area_weight(n, i, j, cn[static_cast<std::size_t>(i)], cn[static_cast<std::size_t>(j)],
+                        c2[static_cast<std::size_t>(i + j - 1)]);
+      }
+    }
+    weight = computed.data();
+  }
   const Point2 origin = points[0];
-  const double scale = 2.0 * (2 * n - 1);
   double area = 0.0;
   // i = 0 drops out: P_0 - P_0 = 0.
   for (int i = 1; i < n; ++i) {
     const Point2 pi = points[static_cast<std::size_t>(i)] - origin;
     double row = 0.0;
     for (int j = i + 1; j <= n; ++j) {
-      const double weight =
-          ((j - i) * cn[static_cast<std::size_t>(i)] * cn[static_cast<std::size_t>(j)]) /
-          (scale * c2[static_cast<std::size_t>(i + j - 1)]);
-      row += weight * cross(pi, points[static_cast<std::size_t>(j)] - origin);
+      row += weight[i * (n + 1) + j] * cross(pi, points[static_cast<std::size_t>(j)] - origin);
     }
     area += row;
   }

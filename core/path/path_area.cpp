@@ -20,14 +20,17 @@ double polygon_area(const std::vector<core::Point2>& v) {
 }  // namespace
 
 double closed_chain_area(std::span<const core::Curve* const> chain) {
-  std::vector<core::Point2> corners;
-  corners.reserve(chain.size());
+  // polygon_area of the segments' first points, summed as it sums them, without the list.
   double area = 0.0;
-  for (const core::Curve* segment : chain) {
-    corners.push_back(segment->front());
-    area += core::enclosed_area(*segment);
+  double twice = 0.0;
+  const core::Point2 first = chain.empty() ? core::Point2{} : chain.front()->front();
+  for (std::size_t k = 0; k < chain.size(); ++k) {
+    area += core::enclosed_area(*chain[k]);
+    if (k >= 1 && k + 1 < chain.size()) {
+      twice += core::cross(chain[k]->front() - first, chain[k + 1]->front() - first);
+    }
   }
-  return area + polygon_area(corners);
+  return area + 0.5 * twice;
 }
 
 double closed_subpath_area(const Path& path, const Subpath& subpath) {

@@ -1,6 +1,8 @@
 #include "core/region/arrangement.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <numeric>
 #include <tuple>
@@ -55,6 +57,12 @@ class Clusters {
   std::vector<std::size_t> parent_;
 };
 
+/// Whether two points have the same coordinates bit for bit (+0 and -0 differ).
+bool same_bits(Point2 p, Point2 q) {
+  return std::bit_cast<std::uint64_t>(p.x) == std::bit_cast<std::uint64_t>(q.x) &&
+         std::bit_cast<std::uint64_t>(p.y) == std::bit_cast<std::uint64_t>(q.y);
+}
+
 /// n max |P_{i+1} - P_i|: a bound on |B'(t)| over [0, 1].
 double speed_bound(const core::Curve& c) {
   double m = 0.0;
@@ -91,6 +99,9 @@ void append(Combined& all, const path::Path& p, Operand source) {
 
 Combined combined(const path::Path& a, const path::Path* b) {
   Combined all;
+  const std::size_t most = a.segments.size() + (b != nullptr ? b->segments.size() : 0);
+  all.path.segments.reserve(most);
+  all.origin.reserve(most);
   append(all, a, Operand::a);
   if (b != nullptr) append(all, *b, Operand::b);
   return all;
@@ -110,8 +121,12 @@ ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersec
   ContactEvents contacts;
   std::vector<Event>& events = contacts.events;
   std::vector<std::pair<std::size_t, std::size_t>>& same = contacts.same;
-  std::vector<double> speed(all.segments.size());
-  for (std::size_t i = 0; i < all.segments.size(); ++i) speed[i] = speed_bound(all.segments[i]);
+  // Each segment's speed bound, found when a contact on it first needs it (-1: not yet).
+  std::vector<double> speed(all.segments.size(), -1.0);
+  const auto speed_of = [&](std::size_t i) {
+    if (speed[i] == -1.0) speed[i] = speed_bound(all.segments[i]);
+    return speed[i];
+  };
 
   // Segment ends first (so that a vertex holding one takes its point), then contacts.
   events.reserve(2 * all.segments.size() + 2 * found.intersections.size() +
@@ -123,7 +138,7 @@ ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersec
   }
   const auto add_pair = [&](std::size_t i, double t, double t_width, std::size_t j, double s,
                             double s_width, Point2 p) {
-    const double r = base_radius + std::max(t_width * speed[i], s_width * speed[j]);
+    const double r = base_radius + std::max(t_width * speed_of(i), s_width * speed_of(j));
     events.push_back({i, t, p, r, false});
     events.push_back({j, s, p, r, false});
     same.emplace_back(events.size() - 2, events.size() - 1);
@@ -161,19 +176,21 @@ Clusters close_events(const std::vector<Event>& events,
   for (const auto& [i, j] : same) clusters.join(i, j);
   double max_radius = 0.0;
   for (const Event& e : events) max_radius = std::max(max_radius, e.radius);
-  std::vector<std::size_t> by_x(events.size());
-  std::iota(by_x.begin(), by_x.end(), std::size_t{0});
-  std::sort(by_x.begin(), by_x.end(),
-            [&](std::size_t i, std::size_t j) { return events[i].point.x < events[j].point.x; });
+  // The events by x (ties by index), each with its x beside it so that the sort compares
+  // in place. Which pairs are joined, and so the clusters, do not depend on the order of
+  // ties: each pair within reach is met from whichever of its two comes first.
+  std::vector<std::pair<double, std::size_t>> by_x(events.size());
+  for (std::size_t i = 0; i < events.size(); ++i) by_x[i] = {events[i].point.x, i};
+  std::sort(by_x.begin(), by_x.end());
   for (std::size_t k = 0; k < by_x.size(); ++k) {
-    const Event& e = events[by_x[k]];
+    const Event& e = events[by_x[k].second];
     for (std::size_t l = k + 1; l < by_x.size(); ++l) {
-      const Event& f = events[by_x[l]];
+      const Event& f = events[by_x[l].second];
       if (f.point.x - e.point.x > e.radius + max_radius) break;
       const double reach = e.radius + f.radius;
       if (std::fabs(f.point.x - e.point.x) <= reach && std::fabs(f.point.y - e.point.y) <= reach &&
           core::length(f.point - e.point) <= reach) {
-        clusters.join(by_x[k], by_x[l]);
+        clusters.join(by_x[k].second, by_x[l].second);
       }
     }
   }
@@ -196,13 +213,17 @@ VertexAssignment assign_vertices(const std::vector<Event>& events, Clusters& clu
   std::vector<double>& vertex_radius = assigned.vertex_radius;
   std::vector<std::size_t> vertex_of_root(events.size(), SIZE_MAX);
   vertex_of.resize(events.size());
-  std::vector<bool> from_end;
+  std::vector<char> from_end;  // bytes, not bits: read and written once per event
+  // At most one vertex per event.
+  vertices.reserve(events.size());
+  vertex_radius.reserve(events.size());
+  from_end.reserve(events.size());
   for (std::size_t e = 0; e < events.size(); ++e) {
     const std::size_t root = clusters.find(e);
     if (vertex_of_root[root] == SIZE_MAX) {
       vertex_of_root[root] = vertices.size();
       vertices.push_back(events[e].point);
-      from_end.push_back(events[e].segment_end);
+      from_end.push_back(events[e].segment_end ? 1 : 0);
       vertex_radius.push_back(events[e].radius);
     }
     const std::size_t v = vertex_of_root[root];
@@ -210,7 +231,7 @@ VertexAssignment assign_vertices(const std::vector<Event>& events, Clusters& clu
     vertex_radius[v] = std::max(vertex_radius[v], events[e].radius);
     if (events[e].segment_end && !from_end[v]) {
       vertices[v] = events[e].point;
-      from_end[v] = true;
+      from_end[v] = 1;
     }
   }
 
@@ -221,12 +242,13 @@ VertexAssignment assign_vertices(const std::vector<Event>& events, Clusters& clu
 /// merged where the piece between them is within 4 vertex radii (an exact end parameter, 0
 /// or 1, kept), each piece between consecutive cuts an edge from vertex to vertex (its
 /// exact piece, and its snapped copy ending at the vertices' points). Returns each
-/// segment's edges, [first, end) of `arrangement.edges`, in order of t.
-std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(const Combined& both,
+/// segment's edges, [first, end) of `arrangement.edges`, in order of t. A segment that is
+/// its own one edge's exact piece is moved there (left empty in `both`).
+std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
                                                                 const std::vector<Event>& events,
                                                                 const VertexAssignment& assigned,
                                                                 Arrangement& arrangement) {
-  const path::Path& all = both.path;
+  path::Path& all = both.path;
   const std::vector<std::size_t>& vertex_of = assigned.vertex_of;
   const std::vector<double>& vertex_radius = assigned.vertex_radius;
   // Cuts, by segment and then parameter (and vertex).
@@ -246,12 +268,24 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(const Combined& 
       cuts[next[events[e].segment]++] = {events[e].segment, events[e].t, vertex_of[e]};
     }
   }
+  // Cuts that compare equal are equal in every member, so any sort gives the same list; a
+  // segment's few cuts (most often its two ends, already in order) by insertion.
+  const auto before = [](const Cut& p, const Cut& q) {
+    return std::tie(p.t, p.vertex) < std::tie(q.t, q.vertex);
+  };
   for (std::size_t i = 0; i < all.segments.size(); ++i) {
-    std::sort(cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i]),
-              cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i + 1]),
-              [](const Cut& p, const Cut& q) {
-                return std::tie(p.t, p.vertex) < std::tie(q.t, q.vertex);
-              });
+    const auto first = cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i]);
+    const auto last = cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i + 1]);
+    if (last - first > 16) {
+      std::sort(first, last, before);
+      continue;
+    }
+    for (auto k = first + (first != last ? 1 : 0); k < last; ++k) {
+      const Cut moving = *k;
+      auto j = k;
+      for (; j > first && before(moving, *(j - 1)); --j) *j = *(j - 1);
+      *j = moving;
+    }
   }
   // Edges of one segment in order, for the overlap groups below: [first, end) of arrangement.edges.
   std::vector<std::pair<std::size_t, std::size_t>> edges_of(all.segments.size());
@@ -279,14 +313,24 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(const Combined& 
     for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
       const double t0 = kept[k].first, t1 = kept[k + 1].first;
       const std::size_t from = kept[k].second, to = kept[k + 1].second;
-      core::Curve exact = segment_piece(seg, t0, t1);
+      // A segment cut nowhere inside is not needed any more: its one piece may take it.
+      core::Curve exact = kept.size() == 2 ? segment_piece(std::move(all.segments[i]), t0, t1)
+                                           : segment_piece(seg, t0, t1);
+      const Point2 front = arrangement.vertices[from], back = arrangement.vertices[to];
+      // Every member given and built in place, so that no default curve is built and thrown
+      // away.
+      if (same_bits(exact.front(), front) && same_bits(exact.back(), back)) {
+        arrangement.edges.emplace_back(both.origin[i].first, both.origin[i].second, t0, t1, from,
+                                       to, std::move(exact), std::nullopt,
+                                       arrangement.edges.size());
+        continue;
+      }
       std::vector<Point2> pts(exact.points().begin(), exact.points().end());
-      pts.front() = arrangement.vertices[from];
-      pts.back() = arrangement.vertices[to];
-      // Every member given, so that no default curve is built and thrown away.
-      arrangement.edges.push_back(
-          ArrangementEdge{both.origin[i].first, both.origin[i].second, t0, t1, from, to,
-                          std::move(exact), core::Curve(std::move(pts)), arrangement.edges.size()});
+      pts.front() = front;
+      pts.back() = back;
+      arrangement.edges.emplace_back(both.origin[i].first, both.origin[i].second, t0, t1, from, to,
+                                     core::Curve(std::move(pts)), std::move(exact),
+                                     arrangement.edges.size());
     }
     edges_of[i].second = arrangement.edges.size();
   }
@@ -371,16 +415,30 @@ void join_thin_lenses(const Arrangement& arrangement, Clusters& groups) {
   struct Ends {
     std::size_t lo, hi, edge;
   };
-  std::vector<Ends> by_ends;
-  by_ends.reserve(arrangement.edges.size());
-  for (std::size_t e = 0; e < arrangement.edges.size(); ++e) {
-    const ArrangementEdge& edge = arrangement.edges[e];
-    if (edge.from == edge.to) continue;
-    by_ends.push_back({std::min(edge.from, edge.to), std::max(edge.from, edge.to), e});
+  // Placed by lower vertex (a counting sort, each vertex's edges in edge order), then each
+  // vertex's few edges sorted by upper vertex.
+  const std::size_t vertex_count = arrangement.vertices.size();
+  std::vector<std::size_t> start(vertex_count + 1, 0);
+  for (const ArrangementEdge& edge : arrangement.edges) {
+    if (edge.from != edge.to) ++start[std::min(edge.from, edge.to) + 1];
   }
-  std::sort(by_ends.begin(), by_ends.end(), [](const Ends& p, const Ends& q) {
-    return std::tie(p.lo, p.hi, p.edge) < std::tie(q.lo, q.hi, q.edge);
-  });
+  for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
+  std::vector<Ends> by_ends(start[vertex_count]);
+  {
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    for (std::size_t e = 0; e < arrangement.edges.size(); ++e) {
+      const ArrangementEdge& edge = arrangement.edges[e];
+      if (edge.from == edge.to) continue;
+      const std::size_t lo = std::min(edge.from, edge.to);
+      by_ends[next[lo]++] = {lo, std::max(edge.from, edge.to), e};
+    }
+  }
+  for (std::size_t v = 0; v < vertex_count; ++v) {
+    if (start[v + 1] - start[v] < 2) continue;
+    std::sort(by_ends.begin() + static_cast<std::ptrdiff_t>(start[v]),
+              by_ends.begin() + static_cast<std::ptrdiff_t>(start[v + 1]),
+              [](const Ends& p, const Ends& q) { return std::tie(p.hi, p.edge) < std::tie(q.hi, q.edge); });
+  }
   for (std::size_t first = 0, end = 0; first < by_ends.size(); first = end) {
     end = first + 1;
     while (end < by_ends.size() && by_ends[end].lo == by_ends[first].lo &&
@@ -394,8 +452,8 @@ void join_thin_lenses(const Arrangement& arrangement, Clusters& groups) {
         const bool flip = p.from != q.from;
         bool near = true;
         for (const double t : {0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875}) {
-          const Point2 at_p = core::evaluate(p.exact, t);
-          const Point2 at_q = core::evaluate(q.exact, flip ? 1.0 - t : t);
+          const Point2 at_p = core::evaluate(p.exact(), t);
+          const Point2 at_q = core::evaluate(q.exact(), flip ? 1.0 - t : t);
           near = near && core::length(at_p - at_q) <= clearance;
         }
         if (near) groups.join(by_ends[x].edge, by_ends[y].edge);
@@ -409,27 +467,40 @@ void join_thin_lenses(const Arrangement& arrangement, Clusters& groups) {
 /// operand (+1 for a member along the representative, -1 against it).
 void number_groups(Clusters& groups, Arrangement& arrangement) {
   std::vector<std::size_t> group_of_root(arrangement.edges.size(), SIZE_MAX);
+  arrangement.groups.reserve(arrangement.edges.size());  // at most one group per edge
   for (std::size_t e = 0; e < arrangement.edges.size(); ++e) {
     const std::size_t root = groups.find(e);
     if (group_of_root[root] == SIZE_MAX) {
       group_of_root[root] = arrangement.groups.size();
-      arrangement.groups.push_back({e, {}, {0, 0}});
+      arrangement.groups.push_back({e, 0, 0, {0, 0}});
     }
-    CoincidentGroup& g = arrangement.groups[group_of_root[root]];
     arrangement.edges[e].group = group_of_root[root];
-    g.edges.push_back(e);
+    ++arrangement.groups[group_of_root[root]].member_count;
     // Edges are in segment order, a before b: the group's first edge of a comes first.
   }
+  // Each group's edges in one list, group by group, each group's in edge order.
+  std::size_t next = 0;
   for (CoincidentGroup& g : arrangement.groups) {
+    g.first_member = next;
+    next += g.member_count;
+  }
+  arrangement.group_members.resize(arrangement.edges.size());
+  std::vector<std::size_t> filled(arrangement.groups.size(), 0);
+  for (std::size_t e = 0; e < arrangement.edges.size(); ++e) {
+    const std::size_t g = arrangement.edges[e].group;
+    arrangement.group_members[arrangement.groups[g].first_member + filled[g]++] = e;
+  }
+  for (std::size_t h = 0; h < arrangement.groups.size(); ++h) {
+    CoincidentGroup& g = arrangement.groups[h];
     const ArrangementEdge& r = arrangement.edges[g.representative];
-    for (std::size_t e : g.edges) {
+    for (const std::size_t e : arrangement.group_edges(h)) {
       const ArrangementEdge& x = arrangement.edges[e];
       // Along the representative when it leaves the same vertex; for a loop (both ends at
       // one vertex) when its tangent at the middle points the same way.
       const bool along = (x.from != x.to && r.from != r.to)
                              ? x.from == r.from
-                             : core::dot(core::derivatives_at(x.exact, 0.5, 1).front(),
-                                         core::derivatives_at(r.exact, 0.5, 1).front()) > 0.0;
+                             : core::dot(core::derivatives_at(x.exact(), 0.5, 1).front(),
+                                         core::derivatives_at(r.exact(), 0.5, 1).front()) > 0.0;
       g.multiplicity[static_cast<std::size_t>(x.source)] += along ? 1 : -1;
     }
   }
@@ -439,10 +510,18 @@ void number_groups(Clusters& groups, Arrangement& arrangement) {
 
 Arrangement build_arrangement(const path::Path& a, const path::Path* b, core::WorkBudget& budget) {
   Arrangement out;
-  const Combined both = combined(a, b);
+  Combined both = combined(a, b);
   const path::Path& all = both.path;
+  // The largest core::scale of the segments, by comparisons rather than library fmax calls:
+  // for finite coordinates (the precondition) both give the same largest |coordinate|.
   double scale = 0.0;
-  for (const core::Curve& s : all.segments) scale = std::max(scale, core::scale(s));
+  for (const core::Curve& s : all.segments) {
+    for (const Point2 p : s.points()) {
+      const double x = std::fabs(p.x), y = std::fabs(p.y);
+      if (x > scale) scale = x;
+      if (y > scale) scale = y;
+    }
+  }
   out.scale = scale > 0.0 ? scale : 1.0;
   const double base_radius = kVertexMergeRel * out.scale;
 

@@ -3,6 +3,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "core/base/curve.hpp"
@@ -27,14 +29,20 @@ struct ArrangementEdge {
   /// The vertices at t0 and at t1 (they may be the same vertex for a piece that loops).
   std::size_t from = 0;
   std::size_t to = 0;
-  /// core::portion(segment, t0, t1): the de Casteljau (blossom) piece, unchanged.
-  core::Curve exact = core::Curve({core::Point2{}});
-  /// `exact` with its end points replaced by the vertices' points, so that every edge
+  /// exact() with its end points replaced by the vertices' points, so that every edge
   /// through a vertex meets it at the same double. Each end moves by at most the vertex's
   /// merge radius (a contact's own interval, or kVertexMergeRel of scale).
   core::Curve piece = core::Curve({core::Point2{}});
+  /// exact() where it differs from `piece` (bit for bit); nullopt where the vertices' points
+  /// are its own end points, so that one curve serves as both.
+  std::optional<core::Curve> exact_if_snapped;
   /// The coincident group holding the edge.
   std::size_t group = 0;
+
+  /// core::portion(segment, t0, t1): the de Casteljau (blossom) piece, unchanged.
+  [[nodiscard]] const core::Curve& exact() const {
+    return exact_if_snapped ? *exact_if_snapped : piece;
+  }
 };
 
 /// Edges that are the same point set: pieces of shared boundary (an overlap reported by the
@@ -42,7 +50,10 @@ struct ArrangementEdge {
 struct CoincidentGroup {
   /// The edge that stands for the group: the first one of operand a if there is one.
   std::size_t representative = 0;
-  std::vector<std::size_t> edges;
+  /// The group's edges, in increasing order, are Arrangement::group_members
+  /// [first_member, first_member + member_count) (Arrangement::group_edges).
+  std::size_t first_member = 0;
+  std::size_t member_count = 0;
   /// For each operand, the number of its edges in the group that run the representative's
   /// way minus those that run against it: what crossing the group from its right to its
   /// left adds to that operand's winding number.
@@ -54,6 +65,8 @@ struct Arrangement {
   std::vector<core::Point2> vertices;
   std::vector<ArrangementEdge> edges;
   std::vector<CoincidentGroup> groups;
+  /// Every group's edges, group after group (one list for all, not one per group).
+  std::vector<std::size_t> group_members;
   /// The largest absolute control-point coordinate of both operands (1 when both are empty
   /// or at the origin): the unit of every relative distance.
   double scale = 1.0;
@@ -61,6 +74,12 @@ struct Arrangement {
   std::int64_t work = 0;
   /// ok, or work_cap_reached (the arrangement is then incomplete and must not be used).
   core::IntersectStatus status = core::IntersectStatus::ok;
+
+  /// The edges of group g, in increasing order.
+  [[nodiscard]] std::span<const std::size_t> group_edges(std::size_t g) const {
+    return std::span<const std::size_t>(group_members).subspan(groups[g].first_member,
+                                                               groups[g].member_count);
+  }
 };
 
 /// The arrangement of the boundaries of a and b (b may be null: the arrangement of a alone).

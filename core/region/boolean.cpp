@@ -68,8 +68,9 @@ BooleanStatus decide_side_windings(const Arrangement& arrangement, core::WorkBud
 BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::WorkBudget& budget) {
   BooleanResult result;
   const std::int64_t spent_before = budget.spent();
-  const Arrangement arrangement =
-      build_arrangement(a.path, b != nullptr ? &b->path : nullptr, budget);
+  // Not const: once every side is decided, a kept group's representative gives its piece
+  // to the result (below).
+  Arrangement arrangement = build_arrangement(a.path, b != nullptr ? &b->path : nullptr, budget);
   result.work = arrangement.work;
   if (arrangement.status != core::IntersectStatus::ok) {
     result.status = BooleanStatus::work_cap_reached;
@@ -90,14 +91,18 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::W
   const std::size_t group_count = arrangement.groups.size();
   std::vector<DirectedEdge> kept;
   std::vector<bool> kept_reversed;
+  kept.reserve(group_count);
+  kept_reversed.reserve(group_count);
   for (std::size_t g = 0; g < group_count; ++g) {
     const bool left = inside(windings[g].left);
     const bool right = inside(windings[g].right);
     if (left == right) continue;
     const std::size_t e = arrangement.groups[g].representative;
-    const ArrangementEdge& edge = arrangement.edges[e];
+    ArrangementEdge& edge = arrangement.edges[e];
     if (left) {
-      kept.push_back({edge.from, edge.to, edge.piece, e});
+      // Each group is looked at once here and its representative's piece is not read again
+      // (the result takes only its source and parameters), so the piece moves.
+      kept.push_back({edge.from, edge.to, std::move(edge.piece), e});
     } else {
       kept.push_back({edge.to, edge.from, core::reversed(edge.piece), e});
     }
@@ -116,6 +121,8 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::W
   }
   const double zero_area = 0x1p-80 * arrangement.scale * arrangement.scale;
   std::vector<const core::Curve*> contour_curves;
+  result.segments.reserve(kept.size());
+  result.contours.reserve(chains->size());
   for (const std::vector<std::size_t>& chain : *chains) {
     contour_curves.clear();
     for (std::size_t k : chain) contour_curves.push_back(&kept[k].curve);

@@ -6,8 +6,16 @@ namespace bezier::region {
 
 std::optional<std::vector<std::vector<std::size_t>>> chain_contours(
     const std::vector<DirectedEdge>& edges, std::size_t vertex_count) {
-  std::vector<std::vector<std::size_t>> leaving(vertex_count);
-  for (std::size_t e = 0; e < edges.size(); ++e) leaving[edges[e].from].push_back(e);
+  // The edges leaving each vertex, in edge order: leaving[leaving_start[v] ..
+  // leaving_start[v + 1]) (a counting sort, one list for all vertices).
+  std::vector<std::size_t> leaving_start(vertex_count + 1, 0);
+  for (const DirectedEdge& e : edges) ++leaving_start[e.from + 1];
+  for (std::size_t v = 0; v < vertex_count; ++v) leaving_start[v + 1] += leaving_start[v];
+  std::vector<std::size_t> leaving(edges.size());
+  {
+    std::vector<std::size_t> next(leaving_start.begin(), leaving_start.end() - 1);
+    for (std::size_t e = 0; e < edges.size(); ++e) leaving[next[edges[e].from]++] = e;
+  }
   std::vector<bool> used(edges.size(), false);
   std::vector<std::vector<std::size_t>> contours;
   for (std::size_t first = 0; first < edges.size(); ++first) {
@@ -20,7 +28,8 @@ std::optional<std::vector<std::vector<std::size_t>>> chain_contours(
       std::optional<std::size_t> next;
       std::optional<EdgeGerm> back;
       double best = -1.0;
-      for (std::size_t candidate : leaving[v]) {
+      for (std::size_t k = leaving_start[v]; k < leaving_start[v + 1]; ++k) {
+        const std::size_t candidate = leaving[k];
         if (used[candidate]) continue;
         if (!next) {
           next = candidate;

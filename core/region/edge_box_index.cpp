@@ -2,21 +2,11 @@
 
 #include <algorithm>
 #include <numeric>
+#include <utility>
 
 namespace bezier::region {
 
 namespace {
-
-EdgeBox box_of(const core::Curve& curve) {
-  EdgeBox box{curve.front().x, curve.front().x, curve.front().y, curve.front().y};
-  for (const core::Point2 p : curve.points()) {
-    box.x_lo = std::min(box.x_lo, p.x);
-    box.x_hi = std::max(box.x_hi, p.x);
-    box.y_lo = std::min(box.y_lo, p.y);
-    box.y_hi = std::max(box.y_hi, p.y);
-  }
-  return box;
-}
 
 EdgeBox joined(const EdgeBox& a, const EdgeBox& b) {
   return {std::min(a.x_lo, b.x_lo), std::max(a.x_hi, b.x_hi), std::min(a.y_lo, b.y_lo),
@@ -25,9 +15,7 @@ EdgeBox joined(const EdgeBox& a, const EdgeBox& b) {
 
 }  // namespace
 
-EdgeBoxIndex::EdgeBoxIndex(const Arrangement& arrangement) {
-  boxes_.reserve(arrangement.edges.size());
-  for (const ArrangementEdge& edge : arrangement.edges) boxes_.push_back(box_of(edge.piece));
+EdgeBoxIndex::EdgeBoxIndex(std::vector<EdgeBox> boxes) : boxes_(std::move(boxes)) {
   order_.resize(boxes_.size());
   std::iota(order_.begin(), order_.end(), std::size_t{0});
   if (!boxes_.empty()) {

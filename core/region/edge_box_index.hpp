@@ -1,10 +1,11 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-#include "core/region/arrangement.hpp"
+#include "core/base/curve.hpp"
 
 namespace bezier::region {
 
@@ -13,11 +14,23 @@ struct EdgeBox {
   double x_lo = 0.0, x_hi = 0.0, y_lo = 0.0, y_hi = 0.0;
 };
 
-/// The boxes of an arrangement's edges in a bounding-volume hierarchy, built once per
-/// operation so that each ray of side_windings visits only the edges near it.
+/// The box of a curve's control points, which holds the curve (convex hull property).
+[[nodiscard]] inline EdgeBox control_point_box(const core::Curve& curve) {
+  EdgeBox box{curve.front().x, curve.front().x, curve.front().y, curve.front().y};
+  for (const core::Point2 p : curve.points()) {
+    box.x_lo = std::min(box.x_lo, p.x);
+    box.x_hi = std::max(box.x_hi, p.x);
+    box.y_lo = std::min(box.y_lo, p.y);
+    box.y_hi = std::max(box.y_hi, p.y);
+  }
+  return box;
+}
+
+/// The boxes of an arrangement's edges in a bounding-volume hierarchy, so that each ray of
+/// side_windings visits only the edges near it (built once per operation, and only when an
+/// operation casts enough rays to repay it: side_winding.hpp).
 ///
-/// Each edge's box is the box of the control points of its `piece` (the curve the rays
-/// test), which holds the piece (convex hull property). Each node's box is the smallest box
+/// Each edge's box is control_point_box of its `piece` (the curve the rays test). Each node's box is the smallest box
 /// holding its edges' boxes: a node is a range of the edges, ordered by their boxes'
 /// centres, split at the median along the longer side of its box until a range holds at
 /// most kLeafEdges edges.
@@ -27,7 +40,8 @@ struct EdgeBox {
 /// edge. Building costs O(E log E) for E edges; a query visits the nodes whose boxes pass.
 class EdgeBoxIndex {
  public:
-  explicit EdgeBoxIndex(const Arrangement& arrangement);
+  /// The hierarchy over `boxes`, edge e's box at index e.
+  explicit EdgeBoxIndex(std::vector<EdgeBox> boxes);
 
   /// The box of edge e's piece.
   [[nodiscard]] const EdgeBox& box(std::size_t e) const { return boxes_[e]; }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <algorithm>
+#include <utility>
 
 #include "core/base/curve.hpp"
 #include "core/curve/polar.hpp"
@@ -18,12 +19,22 @@ namespace bezier::region {
 /// with error part zero, and the point, value plus error part, is that coordinate. The one
 /// exception is the sign of a zero (-0 + 0 = +0): a segment with a zero coordinate takes
 /// core::portion. Checked against core::portion in tests/core/region/segment_piece_test.cpp.
+[[nodiscard]] inline bool segment_piece_is_segment(const core::Curve& segment, double t0,
+                                                   double t1) {
+  return t0 == 0.0 && t1 == 1.0 &&
+         std::none_of(segment.points().begin(), segment.points().end(),
+                      [](core::Point2 p) { return p.x == 0.0 || p.y == 0.0; });
+}
+
 [[nodiscard]] inline core::Curve segment_piece(const core::Curve& segment, double t0, double t1) {
-  if (t0 == 0.0 && t1 == 1.0 &&
-      std::none_of(segment.points().begin(), segment.points().end(),
-                   [](core::Point2 p) { return p.x == 0.0 || p.y == 0.0; })) {
-    return segment;
-  }
+  if (segment_piece_is_segment(segment, t0, t1)) return segment;
+  return core::portion(segment, t0, t1);
+}
+
+/// segment_piece of a segment the caller no longer needs: the segment itself is moved into
+/// the result when it is the piece, and left unchanged otherwise.
+[[nodiscard]] inline core::Curve segment_piece(core::Curve&& segment, double t0, double t1) {
+  if (segment_piece_is_segment(segment, t0, t1)) return std::move(segment);
   return core::portion(segment, t0, t1);
 }
 

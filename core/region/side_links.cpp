@@ -31,14 +31,14 @@ std::vector<GroupLinks> side_links(const Arrangement& arrangement) {
     const CoincidentGroup& group = arrangement.groups[g];
     const ArrangementEdge& rep = arrangement.edges[group.representative];
     bool arc = rep.from != rep.to;
-    for (const std::size_t e : group.edges) {
+    for (const std::size_t e : arrangement.group_edges(g)) {
       const ArrangementEdge& edge = arrangement.edges[e];
       const bool same_ends = (edge.from == rep.from && edge.to == rep.to) ||
                              (edge.from == rep.to && edge.to == rep.from);
       arc = arc && same_ends;
     }
     if (!arc) {
-      for (const std::size_t e : group.edges) {
+      for (const std::size_t e : arrangement.group_edges(g)) {
         at[arrangement.edges[e].from].blocked = true;
         at[arrangement.edges[e].to].blocked = true;
       }

@@ -119,18 +119,35 @@ void count_crossings(const core::Curve& piece, const Ray& ray, OriginEnd origin,
 /// -ffp-contract=off keeps them separate), so their extremes over the box's points are
 /// bounded by their values at the box's corners chosen by the signs of d; the margin of
 /// twice the clearance leaves room beyond that. Only called when no value can overflow
-/// (SideWindingIndex::prune).
-bool may_meet(const EdgeBox& box, const Ray& ray) {
-  const Point2 d = ray.direction;
-  const Point2 c_low{d.y >= 0.0 ? box.x_hi : box.x_lo, d.x >= 0.0 ? box.y_lo : box.y_hi};
-  const Point2 c_high{d.y >= 0.0 ? box.x_lo : box.x_hi, d.x >= 0.0 ? box.y_hi : box.y_lo};
-  const Point2 r_high{d.x >= 0.0 ? box.x_hi : box.x_lo, d.y >= 0.0 ? box.y_hi : box.y_lo};
-  const double margin = 2.0 * ray.clearance;
-  if (core::cross(d, c_low - ray.origin) > margin) return false;
-  if (core::cross(d, c_high - ray.origin) < -margin) return false;
-  if (core::dot(d, r_high - ray.origin) < -margin) return false;
-  return true;
-}
+/// (SideWindingIndex::prune). The corners depend only on the ray, so they are chosen once per ray.
+class MayMeet {
+ public:
+  explicit MayMeet(const Ray& ray)
+      : origin_(ray.origin),
+        d_(ray.direction),
+        margin_(2.0 * ray.clearance),
+        c_low_x_(ray.direction.y >= 0.0 ? &EdgeBox::x_hi : &EdgeBox::x_lo),
+        c_low_y_(ray.direction.x >= 0.0 ? &EdgeBox::y_lo : &EdgeBox::y_hi),
+        c_high_x_(ray.direction.y >= 0.0 ? &EdgeBox::x_lo : &EdgeBox::x_hi),
+        c_high_y_(ray.direction.x >= 0.0 ? &EdgeBox::y_hi : &EdgeBox::y_lo),
+        r_high_x_(ray.direction.x >= 0.0 ? &EdgeBox::x_hi : &EdgeBox::x_lo),
+        r_high_y_(ray.direction.y >= 0.0 ? &EdgeBox::y_hi : &EdgeBox::y_lo) {}
+
+  bool operator()(const EdgeBox& box) const {
+    if (core::cross(d_, Point2{box.*c_low_x_, box.*c_low_y_} - origin_) > margin_) return false;
+    if (core::cross(d_, Point2{box.*c_high_x_, box.*c_high_y_} - origin_) < -margin_) return false;
+    if (core::dot(d_, Point2{box.*r_high_x_, box.*r_high_y_} - origin_) < -margin_) return false;
+    return true;
+  }
+
+ private:
+  using Side = double EdgeBox::*;
+  Point2 origin_;
+  Point2 d_;
+  double margin_;
+  // The corners: c_low gives the least c, c_high the largest, r_high the largest r.
+  Side c_low_x_, c_low_y_, c_high_x_, c_high_y_, r_high_x_, r_high_y_;
+};
 
 /// Charges the first control-point pass (n + 1 units) of every edge in [from, until) outside
 /// `group`, as testing them one by one would; false, with the budget spent up to and
@@ -139,7 +156,7 @@ bool charge_skipped(const Arrangement& arrangement, const SideWindingIndex& inde
                     std::size_t group, std::size_t from, std::size_t until, core::WorkBudget& budget) {
   if (from >= until) return true;
   std::int64_t cost = index.pass_cost_before[until] - index.pass_cost_before[from];
-  for (const std::size_t e : arrangement.groups[group].edges) {
+  for (const std::size_t e : arrangement.group_edges(group)) {
     if (e >= from && e < until) cost -= arrangement.edges[e].piece.degree() + 1;
   }
   if (cost <= budget.remaining()) {
@@ -165,11 +182,24 @@ Point2 tangent_at(const core::Curve& curve, double t) {
 }  // namespace
 
 SideWindingIndex::SideWindingIndex(const Arrangement& arrangement)
-    : boxes(arrangement), prune(arrangement.scale <= kPruneScaleLimit) {
+    : prune(arrangement.scale <= kPruneScaleLimit) {
+  boxes.reserve(arrangement.edges.size());
   pass_cost_before.reserve(arrangement.edges.size() + 1);
   pass_cost_before.push_back(0);
   for (const ArrangementEdge& edge : arrangement.edges) {
+    boxes.push_back(control_point_box(edge.piece));
     pass_cost_before.push_back(pass_cost_before.back() + edge.piece.degree() + 1);
+  }
+  block_boxes.reserve((boxes.size() + kBlockEdges - 1) / kBlockEdges);
+  for (std::size_t first = 0; first < boxes.size(); first += kBlockEdges) {
+    EdgeBox block = boxes[first];
+    for (std::size_t e = first + 1; e < std::min(boxes.size(), first + kBlockEdges); ++e) {
+      block.x_lo = std::min(block.x_lo, boxes[e].x_lo);
+      block.x_hi = std::max(block.x_hi, boxes[e].x_hi);
+      block.y_lo = std::min(block.y_lo, boxes[e].y_lo);
+      block.y_hi = std::max(block.y_hi, boxes[e].y_hi);
+    }
+    block_boxes.push_back(block);
   }
 }
 
@@ -180,9 +210,9 @@ SideWindingResult side_windings(const Arrangement& arrangement, const SideWindin
   std::vector<std::size_t> candidates;
   const CoincidentGroup& g = arrangement.groups[group];
   const ArrangementEdge& rep = arrangement.edges[g.representative];
-  const core::Split<Point2> halves = core::subdivide(rep.exact, 0.5);
+  const core::Split<Point2> halves = core::subdivide(rep.exact(), 0.5);
   const Point2 middle = halves.left.back();
-  const Point2 tangent = tangent_at(rep.exact, 0.5);
+  const Point2 tangent = tangent_at(rep.exact(), 0.5);
   const double norm = core::length(tangent);
   if (!(norm > 0.0)) {
     result.status = SideWindingStatus::unclear;
@@ -196,9 +226,7 @@ SideWindingResult side_windings(const Arrangement& arrangement, const SideWindin
     std::array<int, 2> left{0, 0};
     bool clear = true;
     candidates.clear();
-    index.boxes.collect(
-        [&](const EdgeBox& box) { return !index.prune || may_meet(box, ray); }, candidates);
-    std::sort(candidates.begin(), candidates.end());
+    index.collect(MayMeet(ray), candidates);
     // Edges before `next` not yet charged: the skipped ones are charged what their first
     // control-point pass costs, so the work (and where the cap is met) stays that of
     // testing every edge in order.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -33,15 +34,60 @@ struct SideWindingIndex {
   /// 2^1000: then no difference or product of coordinates overflows.
   static constexpr double kPruneScaleLimit = 0x1p1000;
 
+  /// Rays that scan the edges' boxes in turn before the hierarchy is built. A scan tests
+  /// the boxes of blocks of kBlockEdges consecutive edges and then the edges' own boxes in
+  /// the blocks that pass (consecutive edges follow their path, so a block's box stays near
+  /// its edges); building the hierarchy sorts the boxes (O(E log E), a few dozen box
+  /// operations per edge), after which a ray visits about log E nodes plus those near it.
+  /// Most operations cast only a few rays (one per chain of linked groups, side_links.hpp),
+  /// which the scan serves for less than the build; an operation that casts more builds it
+  /// once.
+  static constexpr std::size_t kLinearScanRays = 16;
+  static constexpr std::size_t kBlockEdges = 8;
+
   explicit SideWindingIndex(const Arrangement& arrangement);
 
-  /// The edges' boxes.
-  EdgeBoxIndex boxes;
+  /// Appends to `out`, in increasing order, every edge whose box passes
+  /// `may_meet(const EdgeBox&)` (every edge when the scale is beyond kPruneScaleLimit): by
+  /// a scan of the boxes for the first kLinearScanRays calls, then through the hierarchy
+  /// (both report the same edges as testing every edge's box: a box that fails a test
+  /// monotone in its corners fails with every box holding it, so an edge in a block or node
+  /// whose box fails fails too). Not thread-safe: it builds the hierarchy on first need.
+  template <class MayMeet>
+  void collect(const MayMeet& may_meet, std::vector<std::size_t>& out) const;
+
+  /// The edges' boxes, edge e's at index e (control_point_box of its piece).
+  std::vector<EdgeBox> boxes;
+  /// block_boxes[b]: the smallest box holding those of edges b * kBlockEdges up to
+  /// (b + 1) * kBlockEdges - 1 (fewer in the last block).
+  std::vector<EdgeBox> block_boxes;
+  /// The hierarchy over `boxes`, once built.
+  mutable std::optional<EdgeBoxIndex> hierarchy;
+  /// How many times collect has been called.
+  mutable std::size_t rays = 0;
   /// pass_cost_before[e]: the work of the first control-point pass of edges 0 .. e - 1, the
   /// sum of their (n + 1).
   std::vector<std::int64_t> pass_cost_before;
   bool prune = true;
 };
+
+template <class MayMeet>
+void SideWindingIndex::collect(const MayMeet& may_meet, std::vector<std::size_t>& out) const {
+  const std::size_t first = out.size();
+  if (rays++ < kLinearScanRays) {
+    for (std::size_t b = 0; b < block_boxes.size(); ++b) {
+      if (prune && !may_meet(block_boxes[b])) continue;
+      const std::size_t end = std::min(boxes.size(), (b + 1) * kBlockEdges);
+      for (std::size_t e = b * kBlockEdges; e < end; ++e) {
+        if (!prune || may_meet(boxes[e])) out.push_back(e);
+      }
+    }
+    return;
+  }
+  if (!hierarchy) hierarchy.emplace(boxes);
+  hierarchy->collect([&](const EdgeBox& box) { return !prune || may_meet(box); }, out);
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+}
 
 /// Each operand's winding number on both sides of group g, by a ray from the middle m of the
 /// representative edge (its exact piece at t = 1/2) into its left side.

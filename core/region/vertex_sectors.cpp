@@ -33,7 +33,7 @@ VertexSectorStatus decide_around_vertices(const Arrangement& arrangement,
   for (std::size_t g = 0; g < arrangement.groups.size(); ++g) {
     const CoincidentGroup& group = arrangement.groups[g];
     const ArrangementEdge& rep = arrangement.edges[group.representative];
-    for (const std::size_t e : group.edges) {
+    for (const std::size_t e : arrangement.group_edges(g)) {
       const ArrangementEdge& x = arrangement.edges[e];
       const bool same_ends = (x.from == rep.from && x.to == rep.to) ||
                              (x.from == rep.to && x.to == rep.from);

@@ -1,12 +1,14 @@
 // core/region/segment_piece.hpp: the same control points as core::portion, bit for bit
 // (signs of zeros included), for whole segments without zero coordinates (returned as they
-// are), for whole segments with zeros and for proper pieces (computed by core::portion).
+// are), for whole segments with zeros and for proper pieces (computed by core::portion), also
+// through the overload that takes a segment it may move.
 #include "core/region/segment_piece.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "core/curve/polar.hpp"
@@ -48,6 +50,12 @@ TEST(SegmentPiece, TheWholeSegmentIsWhatPortionGivesBitForBit) {
     EXPECT_TRUE(same_bits(segment_piece(c, 0.0, 1.0), core::portion(c, 0.0, 1.0))) << "round " << round;
     const double a = rng.next(), b = rng.next();
     EXPECT_TRUE(same_bits(segment_piece(c, a, b), core::portion(c, a, b))) << "round " << round;
+    // The overload that may take the segment over gives the same bits.
+    Curve whole = c, part = c;
+    EXPECT_TRUE(same_bits(segment_piece(std::move(whole), 0.0, 1.0), core::portion(c, 0.0, 1.0)))
+        << "round " << round;
+    EXPECT_TRUE(same_bits(segment_piece(std::move(part), a, b), core::portion(c, a, b)))
+        << "round " << round;
     bool zero = false;
     for (const Point2 p : c.points()) zero = zero || p.x == 0.0 || p.y == 0.0;
     if (!zero) {

@@ -36,7 +36,9 @@ Arrangement hand_built(std::size_t vertices, const std::vector<std::pair<std::si
   for (std::size_t g = 0; g < groups.size(); ++g) {
     CoincidentGroup group;
     group.representative = groups[g].front();
-    group.edges = groups[g];
+    group.first_member = a.group_members.size();
+    group.member_count = groups[g].size();
+    a.group_members.insert(a.group_members.end(), groups[g].begin(), groups[g].end());
     for (const std::size_t e : groups[g]) a.edges[e].group = g;
     a.groups.push_back(group);
   }
