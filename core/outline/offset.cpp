@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/numeric/power_of_two.hpp"
+#include "core/outline/area_moment_fit.hpp"
 #include "core/outline/control_points.hpp"
 #include "core/outline/offset_cusps.hpp"
 #include "core/outline/tangent_limits.hpp"
@@ -21,9 +22,19 @@ constexpr int kFitSamples = 12;
 constexpr int kMaxSamples = 4096;
 constexpr int kMaxDepth = 40;
 constexpr int kMostParts = 8;
+// The share of the tolerance the first K leaves to the remainder, and the share below
+// which a cubic's samples must stay for a denser K to be tried.
+constexpr double kFirstRemainder = 0.5;
+constexpr double kDenserBelow = 0.6;
 
 /// The buffer of one thread's samples of O, reused from fit to fit.
 std::vector<Point2>& sample_buffer() {
+  thread_local std::vector<Point2> buffer;
+  return buffer;
+}
+
+/// The buffer of one thread's denser samples of O for a bound that needs more of them.
+std::vector<Point2>& dense_buffer() {
   thread_local std::vector<Point2> buffer;
   return buffer;
 }
@@ -176,6 +187,7 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
   out.front() = start;
   out.back() = end;
   bool all = true;
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   if (q.size() == 4) {
     // A cubic (the common case), its point and hodograph from the Bernstein weights inline.
     const Point2 q0 = q[0], q1 = q[1], q2 = q[2], q3 = q[3];
@@ -187,7 +199,6 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
       const Point2 v = (w * w) * g0 + (2.0 * u * w) * g1 + (u * u) * g2;
       const double speed_squared = squared_length(v);
       if (!(speed_squared > 0.0)) {
-        constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
         o[j] = {kNaN, kNaN};
         all = false;
         continue;
@@ -204,7 +215,6 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
     const Point2 v = point_at(h1, u);
     const double speed_squared = squared_length(v);
     if (!(speed_squared > 0.0)) {
-      constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
       out[static_cast<std::size_t>(j)] = {kNaN, kNaN};
       all = false;
       continue;
@@ -212,6 +222,59 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
     out[static_cast<std::size_t>(j)] = point_at(q, u) + d * left_normal(v / std::sqrt(speed_squared));
   }
   return all;
+}
+
+/// The signed area ∫ y dx and moment ∫ x y dx of O on the piece in the frame of its chord
+/// (area_moment_fit.hpp: O(0) at (0, 0), O(1) at (1, 0)), by Gauss-Legendre quadrature on
+/// kMomentNodes nodes, with O' = B_p' (1 - d κ), κ = cross(B_p', B_p'') / |B_p'|^3. Only
+/// proposes a cubic (the bound decides), so the quadrature's error needs no bound; not valid
+/// where B_p' vanishes at a node or the chord is empty.
+struct ChordMoments {
+  double area = 0.0, moment = 0.0;
+  bool valid = false;
+};
+
+ChordMoments chord_moments(const ControlPoints& q, const ControlPoints& h1,
+                           const ControlPoints& h2, double d, Point2 start, Point2 end) {
+  // The 8-point Gauss-Legendre rule on [-1, 1] (Abramowitz and Stegun, table 25.4).
+  static constexpr std::array<double, 4> kNodes{0.1834346424956498, 0.5255324099163290,
+                                                0.7966664774136267, 0.9602898564975363};
+  static constexpr std::array<double, 4> kWeights{0.3626837833783620, 0.3137066458778873,
+                                                  0.2223810344533745, 0.1012285362903763};
+  ChordMoments result;
+  const Point2 chord = end - start;
+  const double chord_squared = squared_length(chord);
+  if (!(chord_squared > 0.0)) return result;
+  const Point2 axis = chord / chord_squared;
+  double area = 0.0, moment = 0.0;
+  const bool cubic = q.size() == 4;
+  for (std::size_t i = 0; i < 8; ++i) {
+    const double node = i < 4 ? kNodes[i] : -kNodes[i - 4];
+    const double u = 0.5 + 0.5 * node, w = 1.0 - u, weight = kWeights[i % 4];
+    // A cubic's point and derivatives from its control points and hodographs inline.
+    const Point2 v = cubic ? (w * w) * h1[0] + (2.0 * u * w) * h1[1] + (u * u) * h1[2]
+                           : point_at(h1, u);
+    const double speed_squared = squared_length(v);
+    if (!(speed_squared > 0.0)) return result;
+    const Point2 acc = cubic ? w * h2[0] + u * h2[1]
+                             : (h2.empty() ? Point2{0, 0} : point_at(h2, u));
+    const Point2 b = cubic ? (w * w * w) * q[0] + (3.0 * u * w * w) * q[1] +
+                                 (3.0 * u * u * w) * q[2] + (u * u * u) * q[3]
+                           : point_at(q, u);
+    const double inverse = 1.0 / std::sqrt(speed_squared);
+    const Point2 at = b + (d * inverse) * left_normal(v);
+    const double rate = 1.0 - d * core::cross(v, acc) * (inverse * inverse * inverse);
+    const Point2 r = at - start;
+    const double x = core::dot(r, axis), y = core::cross(axis, r);
+    const double dx = weight * rate * core::dot(v, axis);
+    area += y * dx;
+    moment += x * y * dx;
+  }
+  // The rule's weights sum to 2 on [-1, 1]: half of that on [0, 1].
+  result.area = 0.5 * area;
+  result.moment = 0.5 * moment;
+  result.valid = std::isfinite(result.area) && std::isfinite(result.moment);
+  return result;
 }
 
 /// The cubic of offset.hpp with ends p0, p3 and unit end directions d0, d3 (the direction of
@@ -262,22 +325,71 @@ std::array<Point2, 4> fit(const std::vector<Point2>& o, const CubicWeights& w, b
   return {p0, p0 + alpha * d0, p3 - beta * d3, p3};
 }
 
-/// The largest |C(u_j) - O(u_j)| over the samples, or the first that exceeds `reach` (a
-/// failing piece needs no more).
-double largest_sampled_error(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
-                             const CubicWeights& w, double reach, int& taken) {
-  const int count = w.count;
+/// The sampled part of offset.hpp's bound for the cubic c against the samples o_j = O(t_j),
+/// t_j = j / K, under the correspondence t -> u = ψ(t) that is linear between the u_j, each
+/// u_j the foot of o_j on c (two Newton steps of (C(u) - o_j) · C'(u) = 0 from the previous
+/// sample's offset u - t, kept in [0, 1]; u_0 = 0, u_K = 1).
+struct SampledBound {
+  double largest = 0.0;  // max_j |C(u_j) - o_j|, or the first one beyond `reach`
+  double second = 0.0;   // the bound of |(C o ψ)'' - B_p''| between samples
+  bool within = true;    // no sample beyond `reach`
+};
+
+SampledBound foot_bound(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
+                        const ControlPoints& h2, double reach, int& taken) {
+  const auto count = static_cast<int>(o.size()) - 1;
+  const double h = 1.0 / count;
+  // Power form of C: C(u) = a0 + u (a1 + u (a2 + u a3)).
+  const Point2 a0 = c[0], a1 = 3.0 * (c[1] - c[0]), a2 = 3.0 * (c[2] - 2.0 * c[1] + c[0]),
+               a3 = c[3] - c[0] + 3.0 * (c[1] - c[2]);
+  const Point2 c0 = 2.0 * a2, c1 = 2.0 * a2 + 6.0 * a3;  // C''(0), C''(1)
+  const bool linear_second = h2.size() <= 2;
+  const Point2 k0 = h2.empty() ? Point2{0, 0} : h2[0];
+  const Point2 k1 = h2.empty() ? Point2{0, 0} : h2[h2.size() - 1];
+  auto second_of_b = [&](double t) {
+    return linear_second ? (1.0 - t) * k0 + t * k1 : point_at(h2, t);
+  };
   const double reach_squared = reach > 0.0 ? reach * reach : 0.0;
-  double largest = 0.0;
+  SampledBound result;
+  double largest = 0.0, second = 0.0;
+  double u_prev = 0.0, u_before = -h;
+  Point2 c2_prev = c0, b2_prev = second_of_b(0.0);
   taken = 0;
-  for (int j = 0; j <= count; ++j) {
+  for (int j = 1; j <= count; ++j) {
     ++taken;
-    const auto i = static_cast<std::size_t>(j);
-    const Point2 on_cubic = w.b0[i] * c[0] + w.b1[i] * c[1] + w.b2[i] * c[2] + w.b3[i] * c[3];
-    largest = std::max(largest, squared_length(on_cubic - o[i]));
-    if (largest > reach_squared) break;
+    const double t = j == count ? 1.0 : j * h;
+    double u = 1.0;
+    if (j < count) {
+      const Point2 target = o[static_cast<std::size_t>(j)];
+      u = std::clamp(u_prev + (u_prev - u_before), 0.0, 1.0);
+      {
+        const Point2 r = a0 + u * (a1 + u * (a2 + u * a3)) - target;
+        const Point2 v = a1 + u * (2.0 * a2 + u * (3.0 * a3));
+        const Point2 acc = c0 + (6.0 * u) * a3;
+        const double slope = squared_length(v) + core::dot(r, acc);
+        if (slope > 0.0) u = std::clamp(u - core::dot(r, v) / slope, 0.0, 1.0);
+      }
+      const Point2 r = a0 + u * (a1 + u * (a2 + u * a3)) - target;
+      largest = std::max(largest, squared_length(r));
+      if (largest > reach_squared) {
+        result.within = false;
+        break;
+      }
+    }
+    // Between t_prev and t: ψ' = s, (C o ψ)'' = s^2 C''(ψ), linear in t as C'' is (and
+    // B_p'' too for n <= 3): its largest distance from B_p'' is at an end.
+    const double s = (u - u_prev) / h, s2 = s * s;
+    const Point2 c2 = (1.0 - u) * c0 + u * c1, b2 = second_of_b(t);
+    second = std::max({second, squared_length(s2 * c2_prev - b2_prev),
+                       squared_length(s2 * c2 - b2)});
+    u_before = u_prev;
+    u_prev = u;
+    c2_prev = c2;
+    b2_prev = b2;
   }
-  return std::sqrt(largest);
+  result.largest = std::sqrt(largest);
+  result.second = std::sqrt(second);
+  return result;
 }
 
 /// The bound of offset.hpp where m is not positive: two balls about O(0), the cubic within
@@ -339,35 +451,82 @@ PieceFit fit_piece(const ControlPoints& q, const EndFrame& start, const EndFrame
   const Point2 p0 = start.point + d * n0, p3 = end.point + d * n1;
   const Point2 d0 = direction * start.tangent, d3 = direction * end.tangent;
   result.work = 8 * (n + 1) * (n + 1);
-  auto samples_for = [&](double second) {
+  // The K for which the remainder h^2 / 8 |e''| is within `budget`.
+  auto samples_for = [&](double second, double budget) {
     return static_cast<int>(
-        std::clamp(std::ceil(std::sqrt(second / (2.0 * tolerance))), 1.0, double{kMaxSamples}));
+        std::clamp(std::ceil(std::sqrt(second / (8.0 * budget))), 1.0, double{kMaxSamples}));
   };
   if (shape.m > 0.0) {
     const double turning = shape.normal_second(d);
-    // C'' - B_p'' is about d N'': K for twice its bound at first.
-    int count = std::max(samples_for(3.0 * turning), kFitSamples);
-    const CubicWeights* weights = &cubic_weights(count);
-    if (!sample_parallel(q, shape.h1, d, p0, p3, *weights, o)) return result;
+    // Between samples, |B_p'' - its linear interpolant| <= M3 h / 2 (zero when n <= 3).
+    const double bend = q.size() > 4 ? 0.5 * shape.M3 : 0.0;
+    // C'' - B_p'' is about d N'': K for a remainder within kFirstRemainder of the tolerance
+    // with |e''| three times the bound of |d N''|.
+    const int count =
+        std::max(samples_for(3.0 * turning, kFirstRemainder * tolerance), kFitSamples);
+    const CubicWeights& weights = cubic_weights(count);
+    if (!sample_parallel(q, shape.h1, d, p0, p3, weights, o)) return result;
     result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
-    result.cubic = fit(o, *weights, true, d0, d3);
-    const std::array<Point2, 4>& c = result.cubic;
-    const double second = shape.second_difference(c) + turning;
-    const int needed = samples_for(second);
-    if (needed > count) {
-      count = needed;
-      weights = &cubic_weights(count);
-      if (!sample_parallel(q, shape.h1, d, p0, p3, *weights, o)) return result;
-      result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
+    // The candidates: the cubics of area_moment_fit.hpp, then the least squares.
+    std::array<std::array<Point2, 4>, 5> candidates;
+    std::size_t candidate_count = 0;
+    const ChordMoments moments = chord_moments(q, shape.h1, shape.h2, d, p0, p3);
+    result.work += 8 * (n * (n + 1) + 24) + 400;
+    if (moments.valid) {
+      const Point2 chord = p3 - p0;
+      const double chord_length = std::sqrt(squared_length(chord));
+      const Point2 axis = chord / chord_length;
+      const Point2 t0{core::dot(d0, axis), core::cross(axis, d0)};
+      const Point2 t3{core::dot(d3, axis), core::cross(axis, d3)};
+      const HandleCandidates handles = area_moment_handles(t0, t3, moments.area, moments.moment);
+      for (std::size_t i = 0; i < handles.count; ++i) {
+        const double a = handles.pairs[i].start * chord_length;
+        const double b = handles.pairs[i].end * chord_length;
+        candidates[candidate_count++] = {p0, p0 + a * d0, p3 - b * d3, p3};
+      }
     }
-    const double step = 1.0 / count;
-    const double remainder = step * step / 8.0 * second;
-    int taken = 0;
-    const double largest = largest_sampled_error(c, o, *weights, tolerance - remainder, taken);
-    result.work += 4 * static_cast<std::int64_t>(taken);
-    result.bound = largest + remainder;
-    result.excess = largest / std::max(tolerance - remainder, 0.25 * tolerance);
-    if (result.bound <= tolerance) return result;
+    // The bound of offset.hpp for the cubic c on K samples of O.
+    auto judge = [&](const std::array<Point2, 4>& c, const std::vector<Point2>& samples,
+                     int k, double& largest) {
+      int taken = 0;
+      const SampledBound sampled = foot_bound(c, samples, shape.h2, tolerance, taken);
+      result.work += 24 * static_cast<std::int64_t>(taken);
+      largest = sampled.largest;
+      const double second = sampled.second + bend / k + turning;
+      const double remainder = second / (8.0 * k * k);
+      if (sampled.within) result.excess = std::min(result.excess, largest / std::max(tolerance - remainder, 0.25 * tolerance));
+      else result.excess = std::min(result.excess, largest / tolerance);
+      return std::pair{sampled.within ? largest + remainder : std::numeric_limits<double>::infinity(), second};
+    };
+    result.excess = std::numeric_limits<double>::infinity();
+    bool least_squares = false;
+    for (std::size_t tried = 0;; ++tried) {
+      if (tried == candidate_count) {
+        if (least_squares) break;
+        candidates[candidate_count++] = fit(o, weights, true, d0, d3);
+        least_squares = true;
+      }
+      const std::array<Point2, 4>& c = candidates[tried];
+      double largest = 0.0;
+      auto [bound, second] = judge(c, o, count, largest);
+      // The samples are well within the tolerance and the remainder alone fails: K for the
+      // remainder to fit in what the samples leave (with a quarter more for the samples a
+      // denser set may find), and the bound again on those samples.
+      if (std::isfinite(bound) && bound > tolerance && largest < kDenserBelow * tolerance) {
+        const int more = samples_for(second, tolerance - 1.25 * largest);
+        if (more > count) {
+          std::vector<Point2>& dense = dense_buffer();
+          if (!sample_parallel(q, shape.h1, d, p0, p3, cubic_weights(more), dense)) return result;
+          result.work += static_cast<std::int64_t>(more) * (n * (n + 1) + 12);
+          bound = judge(c, dense, more, largest).first;
+        }
+      }
+      if (tried == 0 || bound < result.bound) {
+        result.bound = std::min(result.bound, bound);
+        result.cubic = c;
+      }
+      if (result.bound <= tolerance) return result;
+    }
   } else {
     const CubicWeights& weights = cubic_weights(kFitSamples);
     const bool all_numbers = sample_parallel(q, shape.h1, d, p0, p3, weights, o);
