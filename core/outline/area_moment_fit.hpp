@@ -13,7 +13,7 @@ struct HandleLengths {
   double end = 0.0;
 };
 
-/// Up to four handle pairs, in increasing order of `start`.
+/// Up to four handle pairs (area_moment_handles gives the order).
 struct HandleCandidates {
   std::array<HandleLengths, 4> pairs{};
   std::size_t count = 0;
@@ -34,16 +34,29 @@ struct HandleCandidates {
 ///       + (9/280 c0 s3 - 33/280 s0 c3) a b - 9/280 c0 k a^2 b + 9/280 c3 k a b^2,
 /// with t0 = (c0, s0), t3 = (c3, s3), k = s0 c3 - c0 s3. The area is linear in b:
 /// b = N(a) / D(a), N = 2 s0 a - 20/3 A, D = 2 s3 + k a; then D^2 (M(a, b(a)) - M) is a
-/// quartic in a, whose real roots in [0, kMaxHandle] are found where its sign changes
-/// between the ends of equal cells of that range, each refined by Newton steps kept inside
-/// its cell (two roots in one cell, with no change of sign between them, are not found: a
-/// near-double root, where the cubic is not well determined anyway). Only the pairs with a >= 0, b >= 0 (a cubic that starts and ends along the
-/// tangents of travel) and |D| not vanishing are returned.
+/// quartic in a. Its real roots in [0, kMaxHandle] are found between the zeros of its
+/// derivative (found the same way from the zeros of the second derivative, a quadratic),
+/// where it is monotone: each stretch with a change of sign holds one, refined by Newton
+/// steps kept inside the stretch. Where the quartic comes near zero without crossing it (a
+/// zero of its derivative where |q| is within 1e-3 of its largest coefficient), no cubic
+/// matches both exactly and that zero of the derivative is a candidate too: its area is
+/// exact and its moment nearly so. The pairs are returned with the roots first, then these
+/// near roots, each with a >= 0, b >= 0 (a cubic that starts and ends along the tangents of
+/// travel) and D not vanishing.
 ///
 /// Precondition: unit tangents, finite area and moment. The result only proposes cubics:
 /// the caller measures each against the curve.
 [[nodiscard]] HandleCandidates area_moment_handles(core::Point2 t0, core::Point2 t3, double area,
                                                    double moment);
+
+/// The root of the same quartic that Newton's method reaches from the handles of the
+/// circular arc with these end tangents (both 1 / (3 cos^2(φ / 4)) chords, φ the angle
+/// from t0 to t3), in at most a dozen steps: the cubic nearest an arc, which is the one that
+/// fits where O is smooth and turns little; false when the steps leave [0, kMaxHandle], do
+/// not settle, or give b < 0. Costs a few evaluations of the quartic, against the search of
+/// all its roots.
+[[nodiscard]] bool arc_started_handles(core::Point2 t0, core::Point2 t3, double area,
+                                       double moment, HandleLengths& out);
 
 /// The largest handle length (in chords) searched: a longer handle makes a cubic that
 /// overshoots its chord, not the parallel curve of a piece that turns by less than a half

@@ -24,8 +24,8 @@ constexpr int kMaxDepth = 40;
 constexpr int kMostParts = 8;
 // The share of the tolerance the first K leaves to the remainder, and the share below
 // which a cubic's samples must stay for a denser K to be tried.
-constexpr double kFirstRemainder = 0.5;
-constexpr double kDenserBelow = 0.6;
+constexpr double kFirstRemainder = 0.75;
+constexpr double kDenserBelow = 0.9;
 
 /// The buffer of one thread's samples of O, reused from fit to fit.
 std::vector<Point2>& sample_buffer() {
@@ -116,21 +116,6 @@ struct PieceShape {
     const double w = M1 * M2 / (m * m);
     const double w1 = M1 * M3 / (m * m) + 2.0 * w * w;
     return std::fabs(d) * (w1 + w * w);
-  }
-
-  /// The largest |C''(u) - B_p''(u)| (convex hull): C'' (linear) and B_p'' (degree n - 2,
-  /// the second hodograph h2) raised to the degree k = max(1, n - 2), where the raised line
-  /// has the control points C''(i / k), and the largest distance between control points.
-  [[nodiscard]] double second_difference(const std::array<Point2, 4>& c) const {
-    const Point2 c0 = 6.0 * (c[2] - 2.0 * c[1] + c[0]), c1 = 6.0 * (c[3] - 2.0 * c[2] + c[1]);
-    const std::size_t k = std::max<std::size_t>(1, h2.size() > 0 ? h2.size() - 1 : 0);
-    double largest = 0.0;
-    for (std::size_t i = 0; i <= k; ++i) {
-      const double u = static_cast<double>(i) / static_cast<double>(k);
-      const Point2 on_curve = h2.empty() ? Point2{0, 0} : h2[std::min(i, h2.size() - 1)];
-      largest = std::max(largest, squared_length(core::lerp(c0, c1, u) - on_curve));
-    }
-    return std::sqrt(largest);
   }
 };
 
@@ -327,8 +312,9 @@ std::array<Point2, 4> fit(const std::vector<Point2>& o, const CubicWeights& w, b
 
 /// The sampled part of offset.hpp's bound for the cubic c against the samples o_j = O(t_j),
 /// t_j = j / K, under the correspondence t -> u = ψ(t) that is linear between the u_j, each
-/// u_j the foot of o_j on c (two Newton steps of (C(u) - o_j) · C'(u) = 0 from the previous
-/// sample's offset u - t, kept in [0, 1]; u_0 = 0, u_K = 1).
+/// u_j near the foot of o_j on c: one Gauss-Newton step of (C(u) - o_j) · C'(u) = 0 from
+/// the linear extrapolation of the previous two, kept in [0, 1]; u_0 = 0, u_K = 1. Any u_j
+/// in [0, 1] gives a valid bound; the nearer the foot, the smaller it is.
 struct SampledBound {
   double largest = 0.0;  // max_j |C(u_j) - o_j|, or the first one beyond `reach`
   double second = 0.0;   // the bound of |(C o ψ)'' - B_p''| between samples
@@ -339,8 +325,8 @@ SampledBound foot_bound(const std::array<Point2, 4>& c, const std::vector<Point2
                         const ControlPoints& h2, double reach, int& taken) {
   const auto count = static_cast<int>(o.size()) - 1;
   const double h = 1.0 / count;
-  // Power form of C: C(u) = a0 + u (a1 + u (a2 + u a3)).
-  const Point2 a0 = c[0], a1 = 3.0 * (c[1] - c[0]), a2 = 3.0 * (c[2] - 2.0 * c[1] + c[0]),
+  // C'(u) = a1 + u (2 a2 + 3 u a3) (the power form C(u) = c[0] + u (a1 + u (a2 + u a3))).
+  const Point2 a1 = 3.0 * (c[1] - c[0]), a2 = 3.0 * (c[2] - 2.0 * c[1] + c[0]),
                a3 = c[3] - c[0] + 3.0 * (c[1] - c[2]);
   const Point2 c0 = 2.0 * a2, c1 = 2.0 * a2 + 6.0 * a3;  // C''(0), C''(1)
   const bool linear_second = h2.size() <= 2;
@@ -351,7 +337,7 @@ SampledBound foot_bound(const std::array<Point2, 4>& c, const std::vector<Point2
   };
   const double reach_squared = reach > 0.0 ? reach * reach : 0.0;
   SampledBound result;
-  double largest = 0.0, second = 0.0;
+  double largest = 0.0, second = 0.0, steps = 0.0;
   double u_prev = 0.0, u_before = -h;
   Point2 c2_prev = c0, b2_prev = second_of_b(0.0);
   taken = 0;
@@ -361,16 +347,21 @@ SampledBound foot_bound(const std::array<Point2, 4>& c, const std::vector<Point2
     double u = 1.0;
     if (j < count) {
       const Point2 target = o[static_cast<std::size_t>(j)];
-      u = std::clamp(u_prev + (u_prev - u_before), 0.0, 1.0);
-      {
-        const Point2 r = a0 + u * (a1 + u * (a2 + u * a3)) - target;
-        const Point2 v = a1 + u * (2.0 * a2 + u * (3.0 * a3));
-        const Point2 acc = c0 + (6.0 * u) * a3;
-        const double slope = squared_length(v) + core::dot(r, acc);
-        if (slope > 0.0) u = std::clamp(u - core::dot(r, v) / slope, 0.0, 1.0);
-      }
-      const Point2 r = a0 + u * (a1 + u * (a2 + u * a3)) - target;
-      largest = std::max(largest, squared_length(r));
+      // From the linear extrapolation u of the previous two, the Gauss-Newton step δ =
+      // -r · C'(u) / |C'(u)|^2 (r = C(u) - o_j) towards the foot, u_j = u + δ: by Taylor's
+      // formula |C(u_j) - o_j| <= |r + δ C'(u)| + δ^2 / 2 max |C''|, with C(u) in Bernstein
+      // form (positive weights: within a few units of rounding of the coordinates, as
+      // offset.hpp's margin assumes).
+      const double guess = std::clamp(u_prev + (u_prev - u_before), 0.0, 1.0), w = 1.0 - guess;
+      const Point2 r = (w * w * w) * c[0] + (3.0 * guess * w * w) * c[1] +
+                       (3.0 * guess * guess * w) * c[2] + (guess * guess * guess) * c[3] - target;
+      const Point2 v = a1 + guess * (2.0 * a2 + guess * (3.0 * a3));
+      const double speed_squared = squared_length(v);
+      u = speed_squared > 0.0 ? std::clamp(guess - core::dot(r, v) / speed_squared, 0.0, 1.0)
+                              : guess;
+      const double step = u - guess;
+      largest = std::max(largest, squared_length(r + step * v));
+      steps = std::max(steps, step * step);
       if (largest > reach_squared) {
         result.within = false;
         break;
@@ -387,7 +378,8 @@ SampledBound foot_bound(const std::array<Point2, 4>& c, const std::vector<Point2
     c2_prev = c2;
     b2_prev = b2;
   }
-  result.largest = std::sqrt(largest);
+  const double curving = std::sqrt(std::max(squared_length(c0), squared_length(c1)));
+  result.largest = std::sqrt(largest) + 0.5 * steps * curving;
   result.second = std::sqrt(second);
   return result;
 }
@@ -428,9 +420,10 @@ struct PieceFit {
 };
 
 /// Fits the piece q between the end frames and bounds the fit (offset.hpp). O is sampled
-/// once, at K + 1 uniform u (K from the bound of |e''|, at least kFitSamples), and the same
-/// samples serve the least squares and the sampled bound; where the fitted cubic bends more
-/// than the estimate of K allowed for, the bound samples O again at the K it needs.
+/// once, at K + 1 uniform t (K from the bound of |d N''|, at least kFitSamples); the area
+/// and moment cubics are tried first, then the least squares on the same samples, each
+/// bounded on them (and on denser ones where the remainder alone fails), the first within
+/// the tolerance kept.
 PieceFit fit_piece(const ControlPoints& q, const EndFrame& start, const EndFrame& end, double d,
                    double tolerance, double direction, std::vector<Point2>& o) {
   PieceFit result;
@@ -460,31 +453,35 @@ PieceFit fit_piece(const ControlPoints& q, const EndFrame& start, const EndFrame
     const double turning = shape.normal_second(d);
     // Between samples, |B_p'' - its linear interpolant| <= M3 h / 2 (zero when n <= 3).
     const double bend = q.size() > 4 ? 0.5 * shape.M3 : 0.0;
-    // C'' - B_p'' is about d N'': K for a remainder within kFirstRemainder of the tolerance
-    // with |e''| three times the bound of |d N''|.
+    // K for a remainder within kFirstRemainder of the tolerance with |e''| estimated at the
+    // bound of |d N''| (the area and moment cubic's C'' follows B_p'' closely).
     const int count =
-        std::max(samples_for(3.0 * turning, kFirstRemainder * tolerance), kFitSamples);
+        std::max(samples_for(turning, kFirstRemainder * tolerance), kFitSamples);
     const CubicWeights& weights = cubic_weights(count);
     if (!sample_parallel(q, shape.h1, d, p0, p3, weights, o)) return result;
     result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
-    // The candidates: the cubics of area_moment_fit.hpp, then the least squares.
-    std::array<std::array<Point2, 4>, 5> candidates;
+    // The candidates: the area and moment cubic nearest an arc, then the others of
+    // area_moment_fit.hpp, then the least squares.
+    std::array<std::array<Point2, 4>, 6> candidates;
     std::size_t candidate_count = 0;
     const ChordMoments moments = chord_moments(q, shape.h1, shape.h2, d, p0, p3);
-    result.work += 8 * (n * (n + 1) + 24) + 400;
+    result.work += 8 * (n * (n + 1) + 24) + 100;
+    Point2 t0{0, 0}, t3{0, 0};
+    double chord_length = 0.0;
+    HandleLengths arc{-1.0, -1.0};
+    auto cubic_of = [&](HandleLengths h) -> std::array<Point2, 4> {
+      return {p0, p0 + (h.start * chord_length) * d0, p3 - (h.end * chord_length) * d3, p3};
+    };
     if (moments.valid) {
       const Point2 chord = p3 - p0;
-      const double chord_length = std::sqrt(squared_length(chord));
+      chord_length = std::sqrt(squared_length(chord));
       const Point2 axis = chord / chord_length;
-      const Point2 t0{core::dot(d0, axis), core::cross(axis, d0)};
-      const Point2 t3{core::dot(d3, axis), core::cross(axis, d3)};
-      const HandleCandidates handles = area_moment_handles(t0, t3, moments.area, moments.moment);
-      for (std::size_t i = 0; i < handles.count; ++i) {
-        const double a = handles.pairs[i].start * chord_length;
-        const double b = handles.pairs[i].end * chord_length;
-        candidates[candidate_count++] = {p0, p0 + a * d0, p3 - b * d3, p3};
-      }
+      t0 = {core::dot(d0, axis), core::cross(axis, d0)};
+      t3 = {core::dot(d3, axis), core::cross(axis, d3)};
+      if (arc_started_handles(t0, t3, moments.area, moments.moment, arc))
+        candidates[candidate_count++] = cubic_of(arc);
     }
+    bool searched = !moments.valid, least_squares = false;
     // The bound of offset.hpp for the cubic c on K samples of O.
     auto judge = [&](const std::array<Point2, 4>& c, const std::vector<Point2>& samples,
                      int k, double& largest) {
@@ -499,8 +496,18 @@ PieceFit fit_piece(const ControlPoints& q, const EndFrame& start, const EndFrame
       return std::pair{sampled.within ? largest + remainder : std::numeric_limits<double>::infinity(), second};
     };
     result.excess = std::numeric_limits<double>::infinity();
-    bool least_squares = false;
     for (std::size_t tried = 0;; ++tried) {
+      if (tried == candidate_count && !searched) {
+        searched = true;
+        result.work += 400;
+        const HandleCandidates handles =
+            area_moment_handles(t0, t3, moments.area, moments.moment);
+        for (std::size_t i = 0; i < handles.count; ++i) {
+          const HandleLengths h = handles.pairs[i];
+          if (std::fabs(h.start - arc.start) + std::fabs(h.end - arc.end) > 1e-9)
+            candidates[candidate_count++] = cubic_of(h);
+        }
+      }
       if (tried == candidate_count) {
         if (least_squares) break;
         candidates[candidate_count++] = fit(o, weights, true, d0, d3);
@@ -509,11 +516,13 @@ PieceFit fit_piece(const ControlPoints& q, const EndFrame& start, const EndFrame
       const std::array<Point2, 4>& c = candidates[tried];
       double largest = 0.0;
       auto [bound, second] = judge(c, o, count, largest);
-      // The samples are well within the tolerance and the remainder alone fails: K for the
-      // remainder to fit in what the samples leave (with a quarter more for the samples a
+      // The samples are within the tolerance and the remainder alone fails: K for the
+      // remainder to fit in the room the samples leave (with a tenth more for the samples a
       // denser set may find), and the bound again on those samples.
-      if (std::isfinite(bound) && bound > tolerance && largest < kDenserBelow * tolerance) {
-        const int more = samples_for(second, tolerance - 1.25 * largest);
+      const double room = tolerance - 1.1 * largest;
+      if (std::isfinite(bound) && bound > tolerance && largest < kDenserBelow * tolerance &&
+          room > 0.0) {
+        const int more = samples_for(second, room);
         if (more > count) {
           std::vector<Point2>& dense = dense_buffer();
           if (!sample_parallel(q, shape.h1, d, p0, p3, cubic_weights(more), dense)) return result;
