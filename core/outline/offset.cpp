@@ -211,7 +211,7 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
 
 /// The signed area ∫ y dx and moment ∫ x y dx of O on the piece in the frame of its chord
 /// (area_moment_fit.hpp: O(0) at (0, 0), O(1) at (1, 0)), by Gauss-Legendre quadrature on
-/// kMomentNodes nodes, with O' = B_p' (1 - d κ), κ = cross(B_p', B_p'') / |B_p'|^3. Only
+/// six nodes, with O' = B_p' (1 - d κ), κ = cross(B_p', B_p'') / |B_p'|^3. Only
 /// proposes a cubic (the bound decides), so the quadrature's error needs no bound; not valid
 /// where B_p' vanishes at a node or the chord is empty.
 struct ChordMoments {
@@ -221,11 +221,11 @@ struct ChordMoments {
 
 ChordMoments chord_moments(const ControlPoints& q, const ControlPoints& h1,
                            const ControlPoints& h2, double d, Point2 start, Point2 end) {
-  // The 8-point Gauss-Legendre rule on [-1, 1] (Abramowitz and Stegun, table 25.4).
-  static constexpr std::array<double, 4> kNodes{0.1834346424956498, 0.5255324099163290,
-                                                0.7966664774136267, 0.9602898564975363};
-  static constexpr std::array<double, 4> kWeights{0.3626837833783620, 0.3137066458778873,
-                                                  0.2223810344533745, 0.1012285362903763};
+  // The 6-point Gauss-Legendre rule on [-1, 1] (Abramowitz and Stegun, table 25.4).
+  static constexpr std::array<double, 3> kNodes{0.2386191860831969, 0.6612093864662645,
+                                                0.9324695142031521};
+  static constexpr std::array<double, 3> kWeights{0.4679139345726910, 0.3607615730481386,
+                                                  0.1713244923791704};
   ChordMoments result;
   const Point2 chord = end - start;
   const double chord_squared = squared_length(chord);
@@ -233,9 +233,10 @@ ChordMoments chord_moments(const ControlPoints& q, const ControlPoints& h1,
   const Point2 axis = chord / chord_squared;
   double area = 0.0, moment = 0.0;
   const bool cubic = q.size() == 4;
-  for (std::size_t i = 0; i < 8; ++i) {
-    const double node = i < 4 ? kNodes[i] : -kNodes[i - 4];
-    const double u = 0.5 + 0.5 * node, w = 1.0 - u, weight = kWeights[i % 4];
+  for (std::size_t i = 0; i < 2 * kNodes.size(); ++i) {
+    const std::size_t k = i % kNodes.size();
+    const double node = i < kNodes.size() ? kNodes[k] : -kNodes[k];
+    const double u = 0.5 + 0.5 * node, w = 1.0 - u, weight = kWeights[k];
     // A cubic's point and derivatives from its control points and hodographs inline.
     const Point2 v = cubic ? (w * w) * h1[0] + (2.0 * u * w) * h1[1] + (u * u) * h1[2]
                            : point_at(h1, u);

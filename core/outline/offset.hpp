@@ -40,7 +40,7 @@ struct CurveOffset {
 /// turn by:
 /// 1. R. Levien's parallel-curve fit ("Parallel curves of cubic Béziers", 2022;
 ///    area_moment_fit.hpp): the handles for which the cubic's signed area and first moment
-///    in the chord frame equal those of O on the piece (8-point Gauss-Legendre quadrature of
+///    in the chord frame equal those of O on the piece (6-point Gauss-Legendre quadrature of
 ///    ∫ y dx and ∫ x y dx with O' = |B'| (1 - d κ) T), the roots of a quartic, each a
 ///    candidate in turn. Matching the ends, tangents, area and moment reaches the sixth
 ///    order of the geometric Hermite cubic (de Boor, Höllig and Sabin, "High accuracy
