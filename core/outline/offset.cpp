@@ -18,7 +18,7 @@ namespace {
 
 using core::Point2;
 
-constexpr int kFitSamples = 12;
+constexpr int kFitSamples = 8;
 constexpr int kMaxSamples = 4096;
 constexpr int kMaxDepth = 40;
 constexpr int kMostParts = 8;

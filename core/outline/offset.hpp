@@ -80,7 +80,7 @@ struct CurveOffset {
 /// turning rate ω = cross(B_p', B_p'') / |B_p'|^2 gives N'' = -ω' T - ω^2 N, so
 ///   |N''| <= |ω'| + ω^2,  |ω| <= M_1 M_2 / m^2,  |ω'| <= M_1 M_3 / m^2 + 2 M_1^2 M_2^2 / m^4.
 /// K is chosen first for a remainder within three quarters of the tolerance with |e''|
-/// estimated at the bound of |d N''| (at least 12); where the samples are inside the
+/// estimated at the bound of |d N''| (at least 8); where the samples are inside the
 /// tolerance and the remainder alone fails, O is sampled again at the K the remainder needs
 /// beside them.
 /// Where m is not positive (B' vanishes on or near the piece), the cubic is the least
