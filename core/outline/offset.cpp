@@ -121,7 +121,8 @@ struct PieceShape {
 
 /// The uniform parameters u_j = j / K (j = 0..K) and the cubic Bernstein weights there, with
 /// the sums the least squares of fit() needs, per K: built once per thread for K up to
-/// kTabledCounts, and for a larger K whenever it differs from the last one.
+/// kTabledCounts (when first used: at most about 40 (K + 1) bytes each, 1.3 MB for all),
+/// and for a larger K whenever it differs from the last one.
 struct CubicWeights {
   int count = 0;
   std::vector<double> u, b0, b1, b2, b3;
@@ -152,7 +153,7 @@ struct CubicWeights {
   }
 };
 
-constexpr int kTabledCounts = 64;
+constexpr int kTabledCounts = 256;
 
 const CubicWeights& cubic_weights(int count) {
   thread_local std::array<CubicWeights, kTabledCounts + 1> tabled;
