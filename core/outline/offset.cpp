@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/numeric/power_of_two.hpp"
+#include "core/outline/area_moment_fit.hpp"
 #include "core/outline/control_points.hpp"
 #include "core/outline/offset_cusps.hpp"
 #include "core/outline/tangent_limits.hpp"
@@ -17,13 +18,23 @@ namespace {
 
 using core::Point2;
 
-constexpr int kFitSamples = 12;
+constexpr int kFitSamples = 8;
 constexpr int kMaxSamples = 4096;
 constexpr int kMaxDepth = 40;
 constexpr int kMostParts = 8;
+// The share of the tolerance the first K leaves to the remainder, and the share below
+// which a cubic's samples must stay for a denser K to be tried.
+constexpr double kFirstRemainder = 0.75;
+constexpr double kDenserBelow = 0.9;
 
 /// The buffer of one thread's samples of O, reused from fit to fit.
 std::vector<Point2>& sample_buffer() {
+  thread_local std::vector<Point2> buffer;
+  return buffer;
+}
+
+/// The buffer of one thread's denser samples of O for a bound that needs more of them.
+std::vector<Point2>& dense_buffer() {
   thread_local std::vector<Point2> buffer;
   return buffer;
 }
@@ -106,26 +117,12 @@ struct PieceShape {
     const double w1 = M1 * M3 / (m * m) + 2.0 * w * w;
     return std::fabs(d) * (w1 + w * w);
   }
-
-  /// The largest |C''(u) - B_p''(u)| (convex hull): C'' (linear) and B_p'' (degree n - 2,
-  /// the second hodograph h2) raised to the degree k = max(1, n - 2), where the raised line
-  /// has the control points C''(i / k), and the largest distance between control points.
-  [[nodiscard]] double second_difference(const std::array<Point2, 4>& c) const {
-    const Point2 c0 = 6.0 * (c[2] - 2.0 * c[1] + c[0]), c1 = 6.0 * (c[3] - 2.0 * c[2] + c[1]);
-    const std::size_t k = std::max<std::size_t>(1, h2.size() > 0 ? h2.size() - 1 : 0);
-    double largest = 0.0;
-    for (std::size_t i = 0; i <= k; ++i) {
-      const double u = static_cast<double>(i) / static_cast<double>(k);
-      const Point2 on_curve = h2.empty() ? Point2{0, 0} : h2[std::min(i, h2.size() - 1)];
-      largest = std::max(largest, squared_length(core::lerp(c0, c1, u) - on_curve));
-    }
-    return std::sqrt(largest);
-  }
 };
 
 /// The uniform parameters u_j = j / K (j = 0..K) and the cubic Bernstein weights there, with
 /// the sums the least squares of fit() needs, per K: built once per thread for K up to
-/// kTabledCounts, and for a larger K whenever it differs from the last one.
+/// kTabledCounts (when first used: at most about 40 (K + 1) bytes each, 1.3 MB for all),
+/// and for a larger K whenever it differs from the last one.
 struct CubicWeights {
   int count = 0;
   std::vector<double> u, b0, b1, b2, b3;
@@ -156,7 +153,7 @@ struct CubicWeights {
   }
 };
 
-constexpr int kTabledCounts = 64;
+constexpr int kTabledCounts = 256;
 
 const CubicWeights& cubic_weights(int count) {
   thread_local std::array<CubicWeights, kTabledCounts + 1> tabled;
@@ -176,6 +173,7 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
   out.front() = start;
   out.back() = end;
   bool all = true;
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   if (q.size() == 4) {
     // A cubic (the common case), its point and hodograph from the Bernstein weights inline.
     const Point2 q0 = q[0], q1 = q[1], q2 = q[2], q3 = q[3];
@@ -187,7 +185,6 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
       const Point2 v = (w * w) * g0 + (2.0 * u * w) * g1 + (u * u) * g2;
       const double speed_squared = squared_length(v);
       if (!(speed_squared > 0.0)) {
-        constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
         o[j] = {kNaN, kNaN};
         all = false;
         continue;
@@ -204,7 +201,6 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
     const Point2 v = point_at(h1, u);
     const double speed_squared = squared_length(v);
     if (!(speed_squared > 0.0)) {
-      constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
       out[static_cast<std::size_t>(j)] = {kNaN, kNaN};
       all = false;
       continue;
@@ -212,6 +208,60 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
     out[static_cast<std::size_t>(j)] = point_at(q, u) + d * left_normal(v / std::sqrt(speed_squared));
   }
   return all;
+}
+
+/// The signed area ∫ y dx and moment ∫ x y dx of O on the piece in the frame of its chord
+/// (area_moment_fit.hpp: O(0) at (0, 0), O(1) at (1, 0)), by Gauss-Legendre quadrature on
+/// six nodes, with O' = B_p' (1 - d κ), κ = cross(B_p', B_p'') / |B_p'|^3. Only
+/// proposes a cubic (the bound decides), so the quadrature's error needs no bound; not valid
+/// where B_p' vanishes at a node or the chord is empty.
+struct ChordMoments {
+  double area = 0.0, moment = 0.0;
+  bool valid = false;
+};
+
+ChordMoments chord_moments(const ControlPoints& q, const ControlPoints& h1,
+                           const ControlPoints& h2, double d, Point2 start, Point2 end) {
+  // The 6-point Gauss-Legendre rule on [-1, 1] (Abramowitz and Stegun, table 25.4).
+  static constexpr std::array<double, 3> kNodes{0.2386191860831969, 0.6612093864662645,
+                                                0.9324695142031521};
+  static constexpr std::array<double, 3> kWeights{0.4679139345726910, 0.3607615730481386,
+                                                  0.1713244923791704};
+  ChordMoments result;
+  const Point2 chord = end - start;
+  const double chord_squared = squared_length(chord);
+  if (!(chord_squared > 0.0)) return result;
+  const Point2 axis = chord / chord_squared;
+  double area = 0.0, moment = 0.0;
+  const bool cubic = q.size() == 4;
+  for (std::size_t i = 0; i < 2 * kNodes.size(); ++i) {
+    const std::size_t k = i % kNodes.size();
+    const double node = i < kNodes.size() ? kNodes[k] : -kNodes[k];
+    const double u = 0.5 + 0.5 * node, w = 1.0 - u, weight = kWeights[k];
+    // A cubic's point and derivatives from its control points and hodographs inline.
+    const Point2 v = cubic ? (w * w) * h1[0] + (2.0 * u * w) * h1[1] + (u * u) * h1[2]
+                           : point_at(h1, u);
+    const double speed_squared = squared_length(v);
+    if (!(speed_squared > 0.0)) return result;
+    const Point2 acc = cubic ? w * h2[0] + u * h2[1]
+                             : (h2.empty() ? Point2{0, 0} : point_at(h2, u));
+    const Point2 b = cubic ? (w * w * w) * q[0] + (3.0 * u * w * w) * q[1] +
+                                 (3.0 * u * u * w) * q[2] + (u * u * u) * q[3]
+                           : point_at(q, u);
+    const double inverse = 1.0 / std::sqrt(speed_squared);
+    const Point2 at = b + (d * inverse) * left_normal(v);
+    const double rate = 1.0 - d * core::cross(v, acc) * (inverse * inverse * inverse);
+    const Point2 r = at - start;
+    const double x = core::dot(r, axis), y = core::cross(axis, r);
+    const double dx = weight * rate * core::dot(v, axis);
+    area += y * dx;
+    moment += x * y * dx;
+  }
+  // The rule's weights sum to 2 on [-1, 1]: half of that on [0, 1].
+  result.area = 0.5 * area;
+  result.moment = 0.5 * moment;
+  result.valid = std::isfinite(result.area) && std::isfinite(result.moment);
+  return result;
 }
 
 /// The cubic of offset.hpp with ends p0, p3 and unit end directions d0, d3 (the direction of
@@ -262,22 +312,78 @@ std::array<Point2, 4> fit(const std::vector<Point2>& o, const CubicWeights& w, b
   return {p0, p0 + alpha * d0, p3 - beta * d3, p3};
 }
 
-/// The largest |C(u_j) - O(u_j)| over the samples, or the first that exceeds `reach` (a
-/// failing piece needs no more).
-double largest_sampled_error(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
-                             const CubicWeights& w, double reach, int& taken) {
-  const int count = w.count;
+/// The sampled part of offset.hpp's bound for the cubic c against the samples o_j = O(t_j),
+/// t_j = j / K, under the correspondence t -> u = ψ(t) that is linear between the u_j, each
+/// u_j near the foot of o_j on c: one Gauss-Newton step of (C(u) - o_j) · C'(u) = 0 from
+/// the linear extrapolation of the previous two, kept in [0, 1]; u_0 = 0, u_K = 1. Any u_j
+/// in [0, 1] gives a valid bound; the nearer the foot, the smaller it is.
+struct SampledBound {
+  double largest = 0.0;  // max_j |C(u_j) - o_j|, or the first one beyond `reach`
+  double second = 0.0;   // the bound of |(C o ψ)'' - B_p''| between samples
+  bool within = true;    // no sample beyond `reach`
+};
+
+SampledBound foot_bound(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
+                        const ControlPoints& h2, double reach, int& taken) {
+  const auto count = static_cast<int>(o.size()) - 1;
+  const double h = 1.0 / count;
+  // C'(u) = a1 + u (2 a2 + 3 u a3) (the power form C(u) = c[0] + u (a1 + u (a2 + u a3))).
+  const Point2 a1 = 3.0 * (c[1] - c[0]), a2 = 3.0 * (c[2] - 2.0 * c[1] + c[0]),
+               a3 = c[3] - c[0] + 3.0 * (c[1] - c[2]);
+  const Point2 c0 = 2.0 * a2, c1 = 2.0 * a2 + 6.0 * a3;  // C''(0), C''(1)
+  const bool linear_second = h2.size() <= 2;
+  const Point2 k0 = h2.empty() ? Point2{0, 0} : h2[0];
+  const Point2 k1 = h2.empty() ? Point2{0, 0} : h2[h2.size() - 1];
+  auto second_of_b = [&](double t) {
+    return linear_second ? (1.0 - t) * k0 + t * k1 : point_at(h2, t);
+  };
   const double reach_squared = reach > 0.0 ? reach * reach : 0.0;
-  double largest = 0.0;
+  SampledBound result;
+  double largest = 0.0, second = 0.0, steps = 0.0;
+  double u_prev = 0.0, u_before = -h;
+  Point2 c2_prev = c0, b2_prev = second_of_b(0.0);
   taken = 0;
-  for (int j = 0; j <= count; ++j) {
+  for (int j = 1; j <= count; ++j) {
     ++taken;
-    const auto i = static_cast<std::size_t>(j);
-    const Point2 on_cubic = w.b0[i] * c[0] + w.b1[i] * c[1] + w.b2[i] * c[2] + w.b3[i] * c[3];
-    largest = std::max(largest, squared_length(on_cubic - o[i]));
-    if (largest > reach_squared) break;
+    const double t = j == count ? 1.0 : j * h;
+    double u = 1.0;
+    if (j < count) {
+      const Point2 target = o[static_cast<std::size_t>(j)];
+      // From the linear extrapolation u of the previous two, the Gauss-Newton step δ =
+      // -r · C'(u) / |C'(u)|^2 (r = C(u) - o_j) towards the foot, u_j = u + δ: by Taylor's
+      // formula |C(u_j) - o_j| <= |r + δ C'(u)| + δ^2 / 2 max |C''|, with C(u) in Bernstein
+      // form (positive weights: within a few units of rounding of the coordinates, as
+      // offset.hpp's margin assumes).
+      const double guess = std::clamp(u_prev + (u_prev - u_before), 0.0, 1.0), w = 1.0 - guess;
+      const Point2 r = (w * w * w) * c[0] + (3.0 * guess * w * w) * c[1] +
+                       (3.0 * guess * guess * w) * c[2] + (guess * guess * guess) * c[3] - target;
+      const Point2 v = a1 + guess * (2.0 * a2 + guess * (3.0 * a3));
+      const double speed_squared = squared_length(v);
+      u = speed_squared > 0.0 ? std::clamp(guess - core::dot(r, v) / speed_squared, 0.0, 1.0)
+                              : guess;
+      const double step = u - guess;
+      largest = std::max(largest, squared_length(r + step * v));
+      steps = std::max(steps, step * step);
+      if (largest > reach_squared) {
+        result.within = false;
+        break;
+      }
+    }
+    // Between t_prev and t: ψ' = s, (C o ψ)'' = s^2 C''(ψ), linear in t as C'' is (and
+    // B_p'' too for n <= 3): its largest distance from B_p'' is at an end.
+    const double s = (u - u_prev) / h, s2 = s * s;
+    const Point2 c2 = (1.0 - u) * c0 + u * c1, b2 = second_of_b(t);
+    second = std::max({second, squared_length(s2 * c2_prev - b2_prev),
+                       squared_length(s2 * c2 - b2)});
+    u_before = u_prev;
+    u_prev = u;
+    c2_prev = c2;
+    b2_prev = b2;
   }
-  return std::sqrt(largest);
+  const double curving = std::sqrt(std::max(squared_length(c0), squared_length(c1)));
+  result.largest = std::sqrt(largest) + 0.5 * steps * curving;
+  result.second = std::sqrt(second);
+  return result;
 }
 
 /// The bound of offset.hpp where m is not positive: two balls about O(0), the cubic within
@@ -316,9 +422,10 @@ struct PieceFit {
 };
 
 /// Fits the piece q between the end frames and bounds the fit (offset.hpp). O is sampled
-/// once, at K + 1 uniform u (K from the bound of |e''|, at least kFitSamples), and the same
-/// samples serve the least squares and the sampled bound; where the fitted cubic bends more
-/// than the estimate of K allowed for, the bound samples O again at the K it needs.
+/// once, at K + 1 uniform t (K from the bound of |d N''|, at least kFitSamples); the area
+/// and moment cubics are tried first, then the least squares on the same samples, each
+/// bounded on them (and on denser ones where the remainder alone fails), the first within
+/// the tolerance kept.
 PieceFit fit_piece(const ControlPoints& q, const EndFrame& start, const EndFrame& end, double d,
                    double tolerance, double direction, std::vector<Point2>& o) {
   PieceFit result;
@@ -339,35 +446,98 @@ PieceFit fit_piece(const ControlPoints& q, const EndFrame& start, const EndFrame
   const Point2 p0 = start.point + d * n0, p3 = end.point + d * n1;
   const Point2 d0 = direction * start.tangent, d3 = direction * end.tangent;
   result.work = 8 * (n + 1) * (n + 1);
-  auto samples_for = [&](double second) {
+  // The K for which the remainder h^2 / 8 |e''| is within `budget`.
+  auto samples_for = [&](double second, double budget) {
     return static_cast<int>(
-        std::clamp(std::ceil(std::sqrt(second / (2.0 * tolerance))), 1.0, double{kMaxSamples}));
+        std::clamp(std::ceil(std::sqrt(second / (8.0 * budget))), 1.0, double{kMaxSamples}));
   };
   if (shape.m > 0.0) {
     const double turning = shape.normal_second(d);
-    // C'' - B_p'' is about d N'': K for twice its bound at first.
-    int count = std::max(samples_for(3.0 * turning), kFitSamples);
-    const CubicWeights* weights = &cubic_weights(count);
-    if (!sample_parallel(q, shape.h1, d, p0, p3, *weights, o)) return result;
+    // Between samples, |B_p'' - its linear interpolant| <= M3 h / 2 (zero when n <= 3).
+    const double bend = q.size() > 4 ? 0.5 * shape.M3 : 0.0;
+    // K for a remainder within kFirstRemainder of the tolerance with |e''| estimated at the
+    // bound of |d N''| (the area and moment cubic's C'' follows B_p'' closely).
+    const int count =
+        std::max(samples_for(turning, kFirstRemainder * tolerance), kFitSamples);
+    const CubicWeights& weights = cubic_weights(count);
+    if (!sample_parallel(q, shape.h1, d, p0, p3, weights, o)) return result;
     result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
-    result.cubic = fit(o, *weights, true, d0, d3);
-    const std::array<Point2, 4>& c = result.cubic;
-    const double second = shape.second_difference(c) + turning;
-    const int needed = samples_for(second);
-    if (needed > count) {
-      count = needed;
-      weights = &cubic_weights(count);
-      if (!sample_parallel(q, shape.h1, d, p0, p3, *weights, o)) return result;
-      result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
+    // The candidates: the area and moment cubic nearest an arc, then the others of
+    // area_moment_fit.hpp, then the least squares.
+    std::array<std::array<Point2, 4>, 6> candidates;
+    std::size_t candidate_count = 0;
+    const ChordMoments moments = chord_moments(q, shape.h1, shape.h2, d, p0, p3);
+    result.work += 8 * (n * (n + 1) + 24) + 100;
+    Point2 t0{0, 0}, t3{0, 0};
+    double chord_length = 0.0;
+    HandleLengths arc{-1.0, -1.0};
+    auto cubic_of = [&](HandleLengths h) -> std::array<Point2, 4> {
+      return {p0, p0 + (h.start * chord_length) * d0, p3 - (h.end * chord_length) * d3, p3};
+    };
+    if (moments.valid) {
+      const Point2 chord = p3 - p0;
+      chord_length = std::sqrt(squared_length(chord));
+      const Point2 axis = chord / chord_length;
+      t0 = {core::dot(d0, axis), core::cross(axis, d0)};
+      t3 = {core::dot(d3, axis), core::cross(axis, d3)};
+      if (arc_started_handles(t0, t3, moments.area, moments.moment, arc))
+        candidates[candidate_count++] = cubic_of(arc);
     }
-    const double step = 1.0 / count;
-    const double remainder = step * step / 8.0 * second;
-    int taken = 0;
-    const double largest = largest_sampled_error(c, o, *weights, tolerance - remainder, taken);
-    result.work += 4 * static_cast<std::int64_t>(taken);
-    result.bound = largest + remainder;
-    result.excess = largest / std::max(tolerance - remainder, 0.25 * tolerance);
-    if (result.bound <= tolerance) return result;
+    bool searched = !moments.valid, least_squares = false;
+    // The bound of offset.hpp for the cubic c on K samples of O.
+    auto judge = [&](const std::array<Point2, 4>& c, const std::vector<Point2>& samples,
+                     int k, double& largest) {
+      int taken = 0;
+      const SampledBound sampled = foot_bound(c, samples, shape.h2, tolerance, taken);
+      result.work += 24 * static_cast<std::int64_t>(taken);
+      largest = sampled.largest;
+      const double second = sampled.second + bend / k + turning;
+      const double remainder = second / (8.0 * k * k);
+      if (sampled.within) result.excess = std::min(result.excess, largest / std::max(tolerance - remainder, 0.25 * tolerance));
+      else result.excess = std::min(result.excess, largest / tolerance);
+      return std::pair{sampled.within ? largest + remainder : std::numeric_limits<double>::infinity(), second};
+    };
+    result.excess = std::numeric_limits<double>::infinity();
+    for (std::size_t tried = 0;; ++tried) {
+      if (tried == candidate_count && !searched) {
+        searched = true;
+        result.work += 400;
+        const HandleCandidates handles =
+            area_moment_handles(t0, t3, moments.area, moments.moment);
+        for (std::size_t i = 0; i < handles.count; ++i) {
+          const HandleLengths h = handles.pairs[i];
+          if (std::fabs(h.start - arc.start) + std::fabs(h.end - arc.end) > 1e-9)
+            candidates[candidate_count++] = cubic_of(h);
+        }
+      }
+      if (tried == candidate_count) {
+        if (least_squares) break;
+        candidates[candidate_count++] = fit(o, weights, true, d0, d3);
+        least_squares = true;
+      }
+      const std::array<Point2, 4>& c = candidates[tried];
+      double largest = 0.0;
+      auto [bound, second] = judge(c, o, count, largest);
+      // The samples are within the tolerance and the remainder alone fails: K for the
+      // remainder to fit in the room the samples leave (with a tenth more for the samples a
+      // denser set may find), and the bound again on those samples.
+      const double room = tolerance - 1.1 * largest;
+      if (std::isfinite(bound) && bound > tolerance && largest < kDenserBelow * tolerance &&
+          room > 0.0) {
+        const int more = samples_for(second, room);
+        if (more > count) {
+          std::vector<Point2>& dense = dense_buffer();
+          if (!sample_parallel(q, shape.h1, d, p0, p3, cubic_weights(more), dense)) return result;
+          result.work += static_cast<std::int64_t>(more) * (n * (n + 1) + 12);
+          bound = judge(c, dense, more, largest).first;
+        }
+      }
+      if (tried == 0 || bound < result.bound) {
+        result.bound = std::min(result.bound, bound);
+        result.cubic = c;
+      }
+      if (result.bound <= tolerance) return result;
+    }
   } else {
     const CubicWeights& weights = cubic_weights(kFitSamples);
     const bool all_numbers = sample_parallel(q, shape.h1, d, p0, p3, weights, o);

@@ -35,52 +35,68 @@ struct CurveOffset {
 /// 1e-9 of the hodograph's scale), so that on each piece O' = |B'| (1 - d κ) T keeps its
 /// direction sign: each cusp of O is the end of a cubic.
 ///
-/// Fit (Tiller and Hanson's construction, 1984, with the handle lengths by least squares):
-/// the cubic has the ends O(t0), O(t1) and end tangents along ±T there (the sign of 1 - d κ
-/// on the piece: O turns back between cusps), and its two handle lengths minimise
-/// Σ |C(u_j) - O(t0 + u_j (t1 - t0))|^2 over the interior samples u_j = j / K of the bound
-/// below (at least 16), each handle at least 0 (a negative one would start the cubic against
-/// O's direction of travel and fold it back beside its end: next to a cusp of O, where O's
-/// speed vanishes, the unconstrained least squares can prefer that hook; it is set to 0 and
-/// the other handle fitted alone). Then the bound is computed, and a piece whose bound
-/// exceeds the tolerance is split (in t) into parts, two or more as the sampled error
-/// exceeds what the tolerance allows (the error of a fit falls about as the fifth power of
-/// the length), and each is fitted again.
+/// Fit. The cubic has the ends O(t0), O(t1) and end tangents along ±T there (the sign of
+/// 1 - d κ on the piece: O turns back between cusps); its two handle lengths are chosen in
+/// turn by:
+/// 1. R. Levien's parallel-curve fit ("Parallel curves of cubic Béziers", 2022;
+///    area_moment_fit.hpp): the handles for which the cubic's signed area and first moment
+///    in the chord frame equal those of O on the piece (6-point Gauss-Legendre quadrature of
+///    ∫ y dx and ∫ x y dx with O' = |B'| (1 - d κ) T), the roots of a quartic, each a
+///    candidate in turn. Matching the ends, tangents, area and moment reaches the sixth
+///    order of the geometric Hermite cubic (de Boor, Höllig and Sabin, "High accuracy
+///    geometric Hermite interpolation", CAGD 4, 1987): halving a piece divides the error
+///    by about 64.
+/// 2. Where no candidate passes the bound (no root with both handles >= 0, near a cusp of
+///    O, or a piece too long for one cubic), Tiller and Hanson's construction (1984) with
+///    the handles by least squares: they minimise Σ |C(u_j) - O(t0 + u_j (t1 - t0))|^2
+///    over the interior samples u_j = j / K of the bound below, each handle at least 0 (a
+///    negative one would start the cubic against O's direction of travel and fold it back
+///    beside its end: next to a cusp of O, where O's speed vanishes, the unconstrained
+///    least squares can prefer that hook; it is set to 0 and the other fitted alone).
+/// The first cubic whose bound is within the tolerance is kept; otherwise the piece is
+/// split (in t) into parts, two or more as the sampled error exceeds what the tolerance
+/// allows (assuming the error falls as the fifth power of the length, which overestimates
+/// the parts a sixth-order fit needs), and each is fitted again.
 ///
-/// The bound. With the linear correspondence u -> t = t0 + u (t1 - t0), the Hausdorff
-/// distance is at most max_u |e(u)|, e(u) = C(u) - O(t(u)) (each point of one is that close
-/// to a point of the other). On K uniform samples u_j, between two of them
-///   |e(u)| <= max(|e(u_j)|, |e(u_{j+1})|) + h^2 / 8 max |e''|,  h = 1 / K,
-/// (the linear interpolant of e plus its remainder). O_p (the piece's parallel curve in u) is
-/// B_p + d N, so e'' = (C'' - B_p'') - d N'': |e''| <= max |C'' - B_p''| + |d| max |N''|, the
-/// first the largest distance between the control points of C'' (a line) and B_p'' (the
-/// second hodograph), both raised to the degree max(1, n - 2) (convex hull; the two nearly
-/// cancel, since C follows O). For the piece B_p (de Casteljau, local parameter u) with
-/// M_k >= |B_p^(k)| (the largest control point of its k-th hodograph: convex hull) and
-/// m <= |B_p'| (the least projection of B_p's first hodograph's control points on the
-/// direction of B_p'(1/2), when positive), the turning rate ω = cross(B_p', B_p'') / |B_p'|^2
-/// gives N'' = -ω' T - ω^2 N, so
+/// The bound. A fit only proposes a cubic; this bound decides. Let u = ψ(t) be any
+/// continuous map of [0, 1] onto itself with ψ(0) = 0, ψ(1) = 1 (t the piece's parameter,
+/// u the cubic's); then the Hausdorff distance is at most max_t |e(t)|, e(t) = C(ψ(t)) -
+/// O(t): each O(t) is that close to C(ψ(t)), and each C(u) is C(ψ(t)) for some t (ψ is
+/// onto). O is sampled at the K + 1 uniform t_j = j / K, and ψ is linear between the nodes
+/// ψ(t_j) = u_j, each u_j in [0, 1] near the foot of O(t_j) on C (one Newton step; the
+/// area-and-moment cubic follows O geometrically but not in parameter, so the linear
+/// correspondence u = t would overstate its distance many times). Between two samples e is
+/// smooth and
+///   |e(t)| <= max(|e(t_j)|, |e(t_{j+1})|) + h^2 / 8 max |e''|,  h = 1 / K,
+/// (the linear interpolant of e plus its remainder, by the interpolation kernel, which is
+/// positive). There ψ' = s_j = (u_{j+1} - u_j) / h and ψ'' = 0, and O = B_p + d N, so
+///   e'' = (s_j^2 C''(ψ(t)) - B_p''(t)) - d N''(t).
+/// The first term is linear in t for n <= 3 (C'' is linear in u, ψ in t, B_p'' of degree
+/// n - 2), so its largest norm is at the two samples, where it is computed; for n > 3 its
+/// distance from that linear function is at most M_3 h / 2 more (|B_p'''| <= M_3). For the
+/// piece B_p (de Casteljau, local parameter t) with M_k >= |B_p^(k)| (the largest control
+/// point of its k-th hodograph: convex hull) and m <= |B_p'| (the least projection of B_p's
+/// first hodograph's control points on the direction of B_p'(1/2), when positive), the
+/// turning rate ω = cross(B_p', B_p'') / |B_p'|^2 gives N'' = -ω' T - ω^2 N, so
 ///   |N''| <= |ω'| + ω^2,  |ω| <= M_1 M_2 / m^2,  |ω'| <= M_1 M_3 / m^2 + 2 M_1^2 M_2^2 / m^4.
-/// O is sampled once per fit, at K from three times the bound of |d N''| (C'' - B_p'' is
-/// about d N''), and again only when the fitted cubic's bound of |e''| needs a larger K; K
-/// keeps the remainder at most a quarter of the tolerance. Where m is not positive (B'
-/// vanishes on or near the piece), the bound is the sum of the radii of two balls about
-/// O(t0): the cubic is within its control points' largest distance from O(t0), and O within
-/// max |B_p(u) - B_p(0)| + |d| θ, θ the angle spanned by the nonzero control points of the
-/// first hodograph (the normal turns by at most θ, |N(u) - N(0)| <= θ), when θ < π.
-/// Evaluations and de Casteljau steps are in doubles, on the curve scaled by a power of two
-/// (exact) so that its coordinates and |d| are at most about 1 and the squared distances the
-/// bound compares neither overflow nor underflow at the tolerances accepted; the bound adds
-/// 64 n u S for their rounding (S the largest coordinate plus |d|). The samples' distances
-/// are compared squared, and the square root taken of the largest only.
+/// K is chosen first for a remainder within three quarters of the tolerance with |e''|
+/// estimated at the bound of |d N''| (at least 8); where the samples are inside the
+/// tolerance and the remainder alone fails, O is sampled again at the K the remainder needs
+/// beside them.
+/// Where m is not positive (B' vanishes on or near the piece), the cubic is the least
+/// squares one and the bound is the sum of the radii of two balls about O(t0): the cubic is
+/// within its control points' largest distance from O(t0), and O within max |B_p(u) -
+/// B_p(0)| + |d| θ, θ the angle spanned by the nonzero control points of the first
+/// hodograph (the normal turns by at most θ, |N(u) - N(0)| <= θ), when θ < π.
+/// Evaluations and de Casteljau steps are in doubles (the cubic's points at the u_j in
+/// Bernstein form), on the curve scaled by a power of two (exact) so that its coordinates
+/// and |d| are at most about 1 and the squared distances the bound compares neither
+/// overflow nor underflow at the tolerances accepted; the bound adds 64 n u S for their
+/// rounding (S the largest coordinate plus |d|). The samples' distances are compared
+/// squared, and the square root taken of the largest only.
 ///
-/// Segment count. The ends, end tangents and cusps are exact, and the handles minimise the
-/// squared distance at the samples; this does not reach the sixth order of the geometric
-/// Hermite cubic (de Boor, Höllig and Sabin, "High accuracy geometric Hermite interpolation",
-/// CAGD 4, 1987), which R. Levien's fit ("Parallel curves of cubic Béziers", 2022) attains by
-/// matching the piece's signed area and moment: at tight tolerances this makes more cubics
-/// than Levien's, and fewer than a fixed subdivision (no measured comparison is claimed here:
-/// counts against other libraries belong in BENCHMARKS.md beside their command).
+/// Segment count. The fit is of the sixth order where O is smooth, so most pieces need one
+/// cubic (counts against other libraries belong in BENCHMARKS.md beside their command).
 ///
 /// Work (units of one de Casteljau coordinate update) is charged to `budget` for the cuts and
 /// every fit and bound; when it runs out (budget.exhausted()) there are no cubics.
