@@ -94,9 +94,20 @@ struct PieceShape {
   double M1 = 0.0, M2 = 0.0, M3 = 0.0;
   double m = 0.0;  // least projection of h1 on the direction of B'(1/2); 0 when not positive
 
-  explicit PieceShape(const ControlPoints& q) {
-    hodograph_into(q, h1);
-    hodograph_into(h1, h2);
+  /// The piece [a, b] of the scaled curve s: its first and second hodographs are (b - a)
+  /// and (b - a)^2 times the pieces of B' and B'' on [a, b], taken from B' and B'' rather
+  /// than by differencing the piece's own control points. Those carry rounding of about u
+  /// times the curve's size, which is not small against the differences of a short piece
+  /// (next to a cusp of O the parts grow very short): from B' the direction of B_p' at each
+  /// sample keeps the relative accuracy of B' itself, however short the piece.
+  PieceShape(const ScaledCurve& s, double a, double b) {
+    const double length = b - a;
+    piece_into(s.first, a, b, h1);
+    for (Point2& p : h1) p = length * p;
+    if (!s.second.empty()) {
+      piece_into(s.second, a, b, h2);
+      for (Point2& p : h2) p = (length * length) * p;
+    }
     hodograph_into(h2, h3);
     M1 = std::sqrt(largest_squared_length(h1));
     M2 = std::sqrt(largest_squared_length(h2));
@@ -421,13 +432,14 @@ struct PieceFit {
   std::int64_t work = 0;
 };
 
-/// Fits the piece q between the end frames and bounds the fit (offset.hpp). O is sampled
-/// once, at K + 1 uniform t (K from the bound of |d N''|, at least kFitSamples); the area
-/// and moment cubics are tried first, then the least squares on the same samples, each
-/// bounded on them (and on denser ones where the remainder alone fails), the first within
-/// the tolerance kept.
-PieceFit fit_piece(const ControlPoints& q, const EndFrame& start, const EndFrame& end, double d,
-                   double tolerance, double direction, std::vector<Point2>& o) {
+/// Fits the piece q ([a, b] of s) between the end frames and bounds the fit (offset.hpp).
+/// O is sampled once, at K + 1 uniform t (K from the bound of |d N''|, at least
+/// kFitSamples); the area and moment cubics are tried first, then the least squares on the
+/// same samples, each bounded on them (and on denser ones where the remainder alone fails),
+/// the first within the tolerance kept.
+PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints& q,
+                   const EndFrame& start, const EndFrame& end, double d, double tolerance,
+                   double direction, std::vector<Point2>& o) {
   PieceFit result;
   if (q.size() == 2) {
     // A line's parallel curve is the line through the offset ends: the cubic with its
@@ -441,7 +453,7 @@ PieceFit fit_piece(const ControlPoints& q, const EndFrame& start, const EndFrame
     return result;
   }
   const auto n = static_cast<std::int64_t>(q.size()) - 1;
-  const PieceShape shape(q);
+  const PieceShape shape(s, a, b);
   const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
   const Point2 p0 = start.point + d * n0, p3 = end.point + d * n1;
   const Point2 d0 = direction * start.tangent, d3 = direction * end.tangent;
@@ -577,8 +589,8 @@ bool fit_interval(const ScaledCurve& s, double a, double b, core::WorkBudget& bu
     const Pending piece = stack.back();
     stack.pop_back();
     piece_into(s.points, piece.a, piece.b, q);
-    const PieceFit fitted = fit_piece(q, piece.start, piece.end, s.d, s.tolerance - s.margin,
-                                      direction, samples);
+    const PieceFit fitted = fit_piece(s, piece.a, piece.b, q, piece.start, piece.end, s.d,
+                                      s.tolerance - s.margin, direction, samples);
     if (!budget.spend(fitted.work + 16 * (n + 1) * (n + 1))) {
       out.resize(kept);
       return false;

@@ -155,6 +155,18 @@ TEST(Offset, ZeroDerivativeAtAnEndAndInside) {
   EXPECT_TRUE(cut);
 }
 
+TEST(Offset, NextToACuspOfTheCurveAtTightTolerances) {
+  // B'(1/2) = 0: next to it the curvature grows without bound, so O has a cusp of its own
+  // within a few 1e-6 of t = 1/2, and the pieces between the two cusps are short against
+  // the curve's size (their own control points differ by little more than rounding).
+  const Curve cusped({{0, 0}, {10, 10}, {0, 10}, {10, 0}});
+  for (const double tolerance : {1e-5, 1e-6}) {
+    for (const double d : {1.0, -1.0, 0.25}) {
+      expect_within(cusped, d, tolerance, unbounded_offset(cusped, d, tolerance));
+    }
+  }
+}
+
 TEST(Offset, TheChecksTellAnotherDistanceApart) {
   // The independent check is sharp enough to see a parallel curve 0.01 away.
   const Curve parabola({{-1, 1}, {0, -1}, {1, 1}});
