@@ -45,9 +45,9 @@ double bisect(F f, double lo, double hi, int s_lo) {
   return 0.5 * (lo + hi);
 }
 
-}  // namespace
-
-std::optional<CollinearFrame> collinear_frame(std::span<const Point2> points, double dist_tol) {
+/// collinear_frame over a span of any extent (fixed for a cubic: the loops unroll).
+template <std::size_t Extent>
+std::optional<CollinearFrame> frame_of(std::span<const Point2, Extent> points, double dist_tol) {
   assert(!points.empty());
   const Point2 origin = points[0];
   Point2 direction{};
@@ -67,6 +67,16 @@ std::optional<CollinearFrame> collinear_frame(std::span<const Point2> points, do
     if (!(std::fabs(cross(p - origin, direction)) <= bound)) return std::nullopt;
   }
   return CollinearFrame{origin, direction};
+}
+
+}  // namespace
+
+std::optional<CollinearFrame> collinear_frame(std::span<const Point2> points, double dist_tol) {
+  return frame_of(points, dist_tol);
+}
+
+std::optional<CollinearFrame> collinear_frame(std::span<const Point2, 4> points, double dist_tol) {
+  return frame_of(points, dist_tol);
 }
 
 namespace {
