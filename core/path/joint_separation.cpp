@@ -42,8 +42,12 @@ bool on_side(Point2 d, Point2 p, Point2 joint, double sign, bool zero_allowed) n
 }
 
 /// The conditions of the header for one direction d, on the control points of `before`
-/// (ending at the joint) and of `after` (starting there).
-bool separates(Point2 d, std::span<const Point2> before, std::span<const Point2> after) noexcept {
+/// (ending at the joint) and of `after` (starting there). Written over spans of any extent:
+/// with the sizes fixed (two cubics, the common case) the loops unroll; the tests and their
+/// order are the same either way.
+template <std::size_t Before, std::size_t After>
+bool separates(Point2 d, std::span<const Point2, Before> before,
+               std::span<const Point2, After> after) noexcept {
   const Point2 joint = after.front();
   const std::size_t n = before.size() - 1, m = after.size() - 1;
   for (std::size_t i = 0; i < n; ++i) {
@@ -56,8 +60,9 @@ bool separates(Point2 d, std::span<const Point2> before, std::span<const Point2>
 }
 
 /// The difference of the two end tangents' unit vectors (see the header).
-std::optional<Point2> tangent_direction(std::span<const Point2> before,
-                                        std::span<const Point2> after) noexcept {
+template <std::size_t Before, std::size_t After>
+std::optional<Point2> tangent_direction(std::span<const Point2, Before> before,
+                                        std::span<const Point2, After> after) noexcept {
   const Point2 joint = after.front();
   std::optional<Point2> v, w;
   for (std::size_t i = before.size() - 1; i-- > 0 && !v;) {
@@ -71,8 +76,9 @@ std::optional<Point2> tangent_direction(std::span<const Point2> before,
 }
 
 /// The difference of the control polygons' mean directions from the joint (see the header).
-std::optional<Point2> mean_direction(std::span<const Point2> before,
-                                     std::span<const Point2> after) noexcept {
+template <std::size_t Before, std::size_t After>
+std::optional<Point2> mean_direction(std::span<const Point2, Before> before,
+                                     std::span<const Point2, After> after) noexcept {
   const Point2 joint = after.front();
   Point2 v_sum{}, w_sum{};
   for (std::size_t i = 0; i + 1 < before.size(); ++i) {
@@ -93,14 +99,29 @@ std::optional<Point2> mean_direction(std::span<const Point2> before,
   return *v - *w;
 }
 
+/// meet_only_at_joint on control points known to share the joint.
+template <std::size_t Before, std::size_t After>
+bool separated_at_joint(std::span<const Point2, Before> before,
+                        std::span<const Point2, After> after) noexcept {
+  if (const auto d = tangent_direction(before, after); d && separates(*d, before, after)) return true;
+  const auto d = mean_direction(before, after);
+  return d && separates(*d, before, after);
+}
+
 }  // namespace
 
 bool meet_only_at_joint(const core::Curve& before_curve, const core::Curve& after_curve) noexcept {
   const std::span<const Point2> before = before_curve.points(), after = after_curve.points();
   if (before.size() < 2 || after.size() < 2 || before.back() != after.front()) return false;
-  if (const auto d = tangent_direction(before, after); d && separates(*d, before, after)) return true;
-  const auto d = mean_direction(before, after);
-  return d && separates(*d, before, after);
+  // Cubics and lines, the usual segments, with fixed extents; other degrees as they come.
+  const auto with_after = [&](auto fixed_before) {
+    if (after.size() == 4) return separated_at_joint(fixed_before, after.first<4>());
+    if (after.size() == 2) return separated_at_joint(fixed_before, after.first<2>());
+    return separated_at_joint(fixed_before, after);
+  };
+  if (before.size() == 4) return with_after(before.first<4>());
+  if (before.size() == 2) return with_after(before.first<2>());
+  return with_after(before);
 }
 
 }  // namespace bezier::path

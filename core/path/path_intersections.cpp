@@ -121,6 +121,38 @@ PathIntersectionResult intersect(const Path& a, const Path& b,
 
 namespace {
 
+/// What the search of one path reads of each segment, gathered in one pass over the
+/// segments: its control box, whether it is a single point (core::is_point), and the
+/// segment that follows it in its subpath (next_segment; kNone when there is none), each the
+/// same as computed where it is used.
+struct SegmentFacts {
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  std::vector<core::Rect> boxes;
+  std::vector<char> point;
+  std::vector<std::size_t> next;
+};
+
+SegmentFacts segment_facts(const Path& path) {
+  const std::size_t n = path.segments.size();
+  SegmentFacts facts;
+  facts.boxes.reserve(n);
+  facts.point.reserve(n);
+  for (const core::Curve& segment : path.segments) {
+    facts.boxes.push_back(control_box(segment));
+    facts.point.push_back(core::is_point(segment) ? 1 : 0);
+  }
+  // next_segment, subpath by subpath: the following segment, and for a closed subpath of
+  // more than one segment its first after its last.
+  facts.next.assign(n, SegmentFacts::kNone);
+  for (const Subpath& sub : path.subpaths) {
+    if (sub.segment_count == 0) continue;
+    const std::size_t last = sub.first_segment + sub.segment_count - 1;
+    for (std::size_t k = sub.first_segment; k < last; ++k) facts.next[k] = k + 1;
+    if (sub.closed && sub.segment_count > 1) facts.next[last] = sub.first_segment;
+  }
+  return facts;
+}
+
 /// self_intersections() before its contacts are sorted.
 PathSelfIntersectionResult unsorted_self_intersections(const Path& path,
                                                        const core::IntersectOptions& options,
@@ -128,10 +160,11 @@ PathSelfIntersectionResult unsorted_self_intersections(const Path& path,
   auto out = started<PathSelfIntersectionResult>(options);
   if (out.status != core::IntersectStatus::ok) return out;
   const std::int64_t spent_before = budget.spent();
-  const auto swept = swept_pairs(budget, [&] { return meeting_boxes(boxes_of(path), budget); });
+  const SegmentFacts facts = segment_facts(path);
+  const auto swept = swept_pairs(budget, [&] { return meeting_boxes(facts.boxes, budget); });
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (const auto& [i, j] : swept) {
-    if (core::is_point(path.segments[i]) || core::is_point(path.segments[j])) continue;
+    if (facts.point[i] != 0 || facts.point[j] != 0) continue;
     // The copy is charged as the sweep's pairs are.
     if (!budget.charge_memory(kStoredPairBytes)) break;
     pairs.emplace_back(i, j);
@@ -140,8 +173,8 @@ PathSelfIntersectionResult unsorted_self_intersections(const Path& path,
   // pair whose only common point is that joint (meet_only_at_joint) has nothing to report
   // (the search would find the joint alone, which is not an intersection).
   const auto settled = [&](std::size_t i, std::size_t j) {
-    if (next_segment(path, i) == j) return meet_only_at_joint(path.segments[i], path.segments[j]);
-    if (next_segment(path, j) == i) return meet_only_at_joint(path.segments[j], path.segments[i]);
+    if (facts.next[i] == j) return meet_only_at_joint(path.segments[i], path.segments[j]);
+    if (facts.next[j] == i) return meet_only_at_joint(path.segments[j], path.segments[i]);
     return false;
   };
   search_pairs(path, path, pairs, options, budget, out.intersections, out.overlaps, out.stats,
@@ -150,7 +183,7 @@ PathSelfIntersectionResult unsorted_self_intersections(const Path& path,
   const core::SelfIntersectionOptions own_options;
   for (std::size_t k = 0; k < path.segments.size() && !budget.exhausted(); ++k) {
     const core::Curve& segment = path.segments[k];
-    if (segment.degree() < 2 || core::is_point(segment)) continue;
+    if (segment.degree() < 2 || facts.point[k] != 0) continue;
     // A segment shown to have nothing to report is not searched: the search would report
     // nothing and charge nothing for it.
     if (core::certainly_without_self_intersections(segment, own_options)) continue;

@@ -344,7 +344,15 @@ MeetingBoxes sweep(const std::vector<Entry>& unsorted, int sets, core::WorkBudge
 }  // namespace
 
 core::Rect control_box(const core::Curve& segment) noexcept {
-  return core::bounding_rect(segment.points());
+  const std::span<const core::Point2> points = segment.points();
+  // A cubic's four points with a fixed extent (the loop unrolls): the same faces, as
+  // including P_0 in the box {P_0, P_0} leaves it as it is.
+  if (points.size() == 4) {
+    core::Rect box{points[0], points[0]};
+    for (std::size_t k = 1; k < 4; ++k) box = box.including(points[k]);
+    return box;
+  }
+  return core::bounding_rect(points);
 }
 
 MeetingBoxes meeting_boxes(std::span<const core::Rect> a, std::span<const core::Rect> b,

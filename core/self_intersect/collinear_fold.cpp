@@ -45,14 +45,17 @@ double bisect(F f, double lo, double hi, int s_lo) {
   return 0.5 * (lo + hi);
 }
 
-}  // namespace
-
-std::optional<CollinearFrame> collinear_frame(std::span<const Point2> points, double dist_tol) {
+/// collinear_frame over a span of any extent (fixed for a cubic: the loops unroll).
+template <std::size_t Extent>
+std::optional<CollinearFrame> frame_of(std::span<const Point2, Extent> points, double dist_tol) {
   assert(!points.empty());
   const Point2 origin = points[0];
   Point2 direction{};
   double farthest2 = 0.0;  // squared distances: this runs before every search
-  for (const Point2 p : points) {
+  // P_0 itself is left out of both passes: for finite coordinates P_0 - origin is exactly
+  // zero, never the farthest, and its cross product 0 is within any bound another point
+  // is within (and there is another point once farthest2 > 0).
+  for (const Point2 p : points.template subspan<1>()) {
     const Point2 r = p - origin;
     const double d2 = dot(r, r);
     if (d2 > farthest2) {
@@ -63,10 +66,20 @@ std::optional<CollinearFrame> collinear_frame(std::span<const Point2> points, do
   if (farthest2 == 0.0) return CollinearFrame{origin, {}};
   // |cross| / |direction| <= dist_tol; sqrt rather than hypot: the caller normalises.
   const double bound = dist_tol * std::sqrt(farthest2);
-  for (const Point2 p : points) {
+  for (const Point2 p : points.template subspan<1>()) {
     if (!(std::fabs(cross(p - origin, direction)) <= bound)) return std::nullopt;
   }
   return CollinearFrame{origin, direction};
+}
+
+}  // namespace
+
+std::optional<CollinearFrame> collinear_frame(std::span<const Point2> points, double dist_tol) {
+  return frame_of(points, dist_tol);
+}
+
+std::optional<CollinearFrame> collinear_frame(std::span<const Point2, 4> points, double dist_tol) {
+  return frame_of(points, dist_tol);
 }
 
 namespace {

@@ -26,6 +26,10 @@ struct CollinearFrame {
 [[nodiscard]] std::optional<CollinearFrame> collinear_frame(std::span<const Point2> points,
                                                             double dist_tol);
 
+/// The same for a cubic's four control points (the same computation).
+[[nodiscard]] std::optional<CollinearFrame> collinear_frame(std::span<const Point2, 4> points,
+                                                            double dist_tol);
+
 /// Self-overlaps of a collinear curve, in four phases. Along the line B is the scalar
 /// Bernstein polynomial x(t) = Σ x_i b_i(t), x_i = (P_i - origin)·direction / |direction|^2
 /// (line coordinates). Its sign runs: the coefficients of x' (x_{i+1} - x_i) subdivided until

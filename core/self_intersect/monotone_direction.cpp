@@ -11,7 +11,8 @@ namespace bezier::core {
 namespace {
 
 /// d . (p[i + 1] - p[i]) > 0 for certain, for every i.
-bool increasing_along(Point2 d, std::span<const Point2> p) noexcept {
+template <std::size_t Extent>
+bool increasing_along(Point2 d, std::span<const Point2, Extent> p) noexcept {
   for (std::size_t i = 0; i + 1 < p.size(); ++i) {
     if (!bounded_projection(d, p[i + 1], p[i]).certainly_positive()) return false;
   }
@@ -26,15 +27,25 @@ std::optional<Point2> direction_of(Point2 v) noexcept {
   return v / length;
 }
 
-}  // namespace
-
-bool certainly_monotone(std::span<const Point2> p) noexcept {
+/// certainly_monotone over a span of any extent (fixed for a cubic: the loops unroll).
+template <std::size_t Extent>
+bool monotone_along_a_direction(std::span<const Point2, Extent> p) noexcept {
   if (p.size() < 2) return false;
   if (increasing_along(p.back() - p.front(), p)) return true;
   const std::size_t n = p.size() - 1;
   if (n < 2) return false;  // a line: the chord is its only difference vector
   const auto first = direction_of(p[1] - p[0]), last = direction_of(p[n] - p[n - 1]);
   return first && last && increasing_along(*first + *last, p);
+}
+
+}  // namespace
+
+bool certainly_monotone(std::span<const Point2> p) noexcept {
+  return monotone_along_a_direction(p);
+}
+
+bool certainly_monotone(std::span<const Point2, 4> p) noexcept {
+  return monotone_along_a_direction(p);
 }
 
 }  // namespace bezier::core

@@ -28,4 +28,7 @@ namespace bezier::core {
 /// Cost: O(n) for each direction, no allocation.
 [[nodiscard]] bool certainly_monotone(std::span<const Point2> p) noexcept;
 
+/// The same for a cubic's four control points (the same tests in the same order).
+[[nodiscard]] bool certainly_monotone(std::span<const Point2, 4> p) noexcept;
+
 }  // namespace bezier::core

@@ -540,8 +540,9 @@ constexpr double kExactPredicatesRange = 0x1p-415;
 ///    tried before "no loop" is accepted, is not taken (a collinear curve can be monotone
 ///    along some direction and fold back along its line within the tolerance).
 /// Degree 3 has no improper branch (improper_result starts at degree 4).
+/// Precondition: a cubic (four control points, read with a fixed extent).
 bool certainly_loop_free_cubic(const Curve& curve, const SelfIntersectionOptions& options) noexcept {
-  const std::span<const Point2> points = curve.points();
+  const std::span<const Point2, 4> points = curve.points().first<4>();
   // s = scale(curve) (the same maximum, without the libm calls of fmax; the coordinates are
   // finite) and the smallest nonzero |coordinate|, in one pass without branches.
   double s = 0.0, smallest = std::numeric_limits<double>::infinity();

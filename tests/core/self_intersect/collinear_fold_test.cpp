@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <span>
 #include <vector>
 
 #include "core/self_intersect/work_cost.hpp"
@@ -36,6 +37,19 @@ TEST(CollinearFrame, LineThroughTheFirstAndFarthestPoint) {
   ASSERT_TRUE(frame.has_value());
   EXPECT_EQ(frame->origin, (Point2{1, 1}));
   EXPECT_EQ(frame->direction, pts[1] - pts[0]);  // x = 3 is the farthest from x = 0
+}
+
+TEST(CollinearFrame, FourPointOverload) {
+  // The overload for a cubic's four points (fixed extent): the same line, and no line for
+  // a cubic bent farther from it than the tolerance.
+  const auto pts = on_line({0, 3, -2, 1}, {1, 1}, {0.5, 0.25});
+  const auto frame = collinear_frame(std::span<const Point2, 4>(pts.data(), 4), kTol);
+  ASSERT_TRUE(frame.has_value());
+  EXPECT_EQ(frame->origin, (Point2{1, 1}));
+  EXPECT_EQ(frame->direction, pts[1] - pts[0]);
+  const std::vector<Point2> bent{{0, 0}, {1, 0}, {2, 1e-6}, {3, 0}};
+  EXPECT_FALSE(collinear_frame(std::span<const Point2, 4>(bent.data(), 4), 1e-9).has_value());
+  EXPECT_TRUE(collinear_frame(std::span<const Point2, 4>(bent.data(), 4), 1e-5).has_value());
 }
 
 TEST(CollinearFrame, NotCollinearAndPointCurves) {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <span>
 #include <vector>
 
 #include "core/base/curve.hpp"
@@ -103,6 +104,34 @@ TEST(CertainlyMonotone, RandomCubicsAgreeWithTheExactCriterion) {
   // Both kinds were met often.
   EXPECT_GT(shown, 500);
   EXPECT_GT(loops, 100);
+}
+
+TEST(CertainlyMonotone, FourPointOverloadAgreesWithTheExactCriterion) {
+  // The overload for a cubic's four points (fixed extent), on random cubics and the cases
+  // above: never true for a loop or when 0 is in the differences' hull, and true for the
+  // curves shown above.
+  test::Mulberry32 rng(11);
+  int shown = 0, loops = 0;
+  for (int k = 0; k < 4000; ++k) {
+    std::vector<Point2> p;
+    for (int i = 0; i < 4; ++i) p.push_back({rng.next(), rng.next()});
+    const bool monotone = certainly_monotone(std::span<const Point2, 4>(p.data(), 4));
+    const auto dp = cubic_double_point(Curve(p));
+    if (dp && dp->on_segment) {
+      ++loops;
+      EXPECT_FALSE(monotone) << k;
+    }
+    if (monotone) {
+      ++shown;
+      EXPECT_FALSE(origin_in_hull(differences(p))) << k;
+    }
+  }
+  EXPECT_GT(shown, 500);
+  EXPECT_GT(loops, 100);
+  const std::vector<Point2> hook{{0, 0}, {1, 0}, {1, 1}, {0, 1.1}};
+  EXPECT_TRUE(certainly_monotone(std::span<const Point2, 4>(hook.data(), 4)));
+  const std::vector<Point2> cusp{{0, 0}, {1, 1}, {0, 1}, {1, 0}};
+  EXPECT_FALSE(certainly_monotone(std::span<const Point2, 4>(cusp.data(), 4)));
 }
 
 TEST(CertainlyMonotone, NearlyParallelDifferencesAreDecidedBySign) {
