@@ -38,9 +38,20 @@ double largest_length(std::span<const Point2> p) {
 /// `side` (+1 left, -1 right) throughout: M1^3 / min(side cross(B', B'')), the minimum over
 /// the Bernstein coefficients of cross(B', B'') (degree 2n - 3, products of the first and
 /// second hodographs' control points). Infinity when a coefficient is not of the side's sign.
+/// The radius scales with the curve, so it is computed for the curve scaled by 2^-e (e the
+/// exponent of the first hodograph's largest coordinate; exact) and scaled back: on q itself
+/// M1^3 underflows for coordinates near 1e-109 (a bound of 0 would accept every part) and
+/// overflows above about 1e+102. Infinity where the radius scaled back is not a normal double.
 double radius_of_curvature_bound(std::span<const Point2> q, double side) {
-  const std::vector<Point2> h1 = hodograph(q);
+  std::vector<Point2> h1 = hodograph(q);
   if (h1.size() < 2) return std::numeric_limits<double>::infinity();
+  double largest_coordinate = 0.0;
+  for (const Point2 p : h1)
+    largest_coordinate = std::max(largest_coordinate, core::max_abs_coordinate(p));
+  if (!(largest_coordinate > 0.0)) return std::numeric_limits<double>::infinity();
+  const int e = core::exponent_of(largest_coordinate);
+  const core::PowerOfTwo down(-e);
+  for (Point2& p : h1) p = down.times(p);
   const std::vector<Point2> h2 = hodograph(h1);
   const int m = static_cast<int>(h1.size()) - 1, k = static_cast<int>(h2.size()) - 1;
   std::vector<double> c(static_cast<std::size_t>(m + k + 1), 0.0);
@@ -61,7 +72,9 @@ double radius_of_curvature_bound(std::span<const Point2> q, double side) {
   least -= 4.0 * (m + k + 2) * std::numeric_limits<double>::epsilon() * magnitude;
   if (!(least > 0.0)) return std::numeric_limits<double>::infinity();
   const double speed = largest_length(h1);
-  return speed * speed * speed / least;
+  const double radius = core::PowerOfTwo(e).times(speed * speed * speed / least);
+  return radius >= std::numeric_limits<double>::min() ? radius
+                                                       : std::numeric_limits<double>::infinity();
 }
 
 /// A scalar polynomial in Bernstein form and a bound of each coefficient's distance from the

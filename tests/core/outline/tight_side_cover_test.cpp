@@ -16,6 +16,7 @@
 #include "core/curve/polar.hpp"
 #include "core/measure/frame.hpp"
 #include "core/measure/nearest.hpp"
+#include "core/numeric/power_of_two.hpp"
 #include "core/outline/offset_cusps.hpp"
 #include "core/outline/stroke_shapes.hpp"
 #include "tests/support/mulberry32.hpp"
@@ -209,6 +210,67 @@ TEST(TightSideCover, DisksHoldTheTightSidesOfBends) {
     check_tight_sides("loop", loop, 7.0, tolerance);
     check_tight_sides("arch", arch, 30.0, tolerance);
     check_tight_sides("hook", hook, 6.0, tolerance);
+  }
+}
+
+/// The disks of `curve`'s tight pieces (cuts as check_tight_sides makes them), with every
+/// coordinate and size times 2^k.
+std::vector<Point2> tight_side_centres(const core::Curve& curve, double width, double tolerance,
+                                       int k) {
+  const core::PowerOfTwo factor(k);
+  std::vector<Point2> points;
+  for (const Point2 p : curve.points()) points.push_back(factor.times(p));
+  const core::Curve scaled(points);
+  const CoverSizes unit = sizes_for(width / 2, tolerance);
+  CoverSizes sizes = unit;
+  sizes.radius = factor.times(unit.radius);
+  sizes.reach = factor.times(unit.reach);
+  sizes.fit_tolerance = factor.times(unit.fit_tolerance);
+  sizes.snap = factor.times(unit.snap);
+  sizes.disk_radius = factor.times(unit.disk_radius);
+  std::vector<Point2> centres;
+  for (const double side : {1.0, -1.0}) {
+    std::vector<double> cuts{0.0};
+    for (const double t : offset_cusps(curve, side * unit.reach)) cuts.push_back(t);
+    cuts.push_back(1.0);
+    for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
+      const double c0 = cuts[j], c1 = cuts[j + 1];
+      const std::optional<core::Frame<Point2>> f = core::frame(curve, 0.5 * (c0 + c1));
+      if (!(c1 > c0) || !f || !(side * f->curvature * unit.reach > 1.0)) continue;
+      core::WorkBudget budget(std::int64_t{1} << 40);
+      OutlineSink sink(budget, 1000000);
+      cover_tight_side(scaled, c0, c1, side, sizes, sink, centres);
+    }
+  }
+  return centres;
+}
+
+TEST(TightSideCover, TheSameDisksAtEveryPowerOfTwoScale) {
+  // Every length the cover compares (spreads, radii of curvature, margins) scales with the
+  // curve, so a curve scaled by 2^k gets its disks scaled by 2^k, as long as the bounds are
+  // computed where they neither underflow nor overflow: coordinates near 1e-109 make the cube
+  // of a hodograph's size underflow, and near 1e+90 overflow, unless it is taken on a scaled
+  // copy.
+  const core::Curve s_curve({{0, 0}, {30, 0}, {-10, 10}, {20, 10}});
+  const core::Curve loop({{0, 0}, {10, 10}, {-10, 10}, {0, 0}});
+  const core::Curve arch({{0, 0}, {10, 10}, {20, 0}});
+  const core::Curve near_cusp({{0, 0}, {10, 10}, {0.5, 10}, {10, 0}});
+  struct Case {
+    const char* name;
+    const core::Curve* curve;
+    double width;
+  };
+  for (const Case& c : {Case{"s-curve", &s_curve, 7.0}, Case{"loop", &loop, 7.0},
+                        Case{"arch", &arch, 30.0}, Case{"near cusp", &near_cusp, 2.0}}) {
+    const std::vector<Point2> unit = tight_side_centres(*c.curve, c.width, 1e-4, 0);
+    ASSERT_FALSE(unit.empty()) << c.name;
+    for (const int k : {-362, 300}) {
+      SCOPED_TRACE(testing::Message() << c.name << " at 2^" << k);
+      const std::vector<Point2> scaled = tight_side_centres(*c.curve, c.width, 1e-4, k);
+      ASSERT_EQ(scaled.size(), unit.size());
+      const core::PowerOfTwo factor(k);
+      for (std::size_t i = 0; i < unit.size(); ++i) EXPECT_EQ(scaled[i], factor.times(unit[i]));
+    }
   }
 }
 
