@@ -31,10 +31,11 @@ namespace bezier::outline {
 //     Lemma. Every point x of such an arc lies in the closed disk of radius ρ_m tangent to the
 //     arc at any other of its points y on the side of N(y): |x - y - ρ_m N(y)| <= ρ_m, that
 //     is (x - y) · N(y) >= |x - y|^2 / (2 ρ_m).
-//     Proof. Let x follow y (the other order is the same statement for the reversed arc,
-//     mirrored). Take y = 0, the tangent at y along e(0), N(y) = e(π/2), e(φ) = (cos φ,
-//     sin φ), and parametrise the arc from y by its tangent's angle θ (increasing, since κ > 0
-//     after mirroring): B(θ) = ∫_0^θ ρ(φ) e(φ) dφ, θ in [0, Θ], Θ < π/2. With C = ρ_m e(π/2),
+//     Proof. Let x follow y (the other order is the same statement for the arc reversed and
+//     mirrored in the normal line at y, which keeps N(y) and y + ρ_m N(y)). Take y = 0, the
+//     tangent at y along e(0), N(y) = e(π/2), e(φ) = (cos φ, sin φ), and parametrise the
+//     arc from y by its tangent's angle θ (increasing, since κ > 0 after mirroring):
+//     B(θ) = ∫_0^θ ρ(φ) e(φ) dφ, θ in [0, Θ], Θ < π/2. With C = ρ_m e(π/2),
 //     d/dθ |B - C|^2 = 2 ρ(θ) (B(θ) - C) · e(θ), and
 //       (B(θ) - C) · e(θ) = ∫_0^θ ρ(φ) cos(θ - φ) dφ - ρ_m sin θ
 //                        <= ρ_m ∫_0^θ cos(θ - φ) dφ - ρ_m sin θ = 0,
