@@ -170,17 +170,31 @@ ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersec
 
 /// Joins the events that are one vertex: the pairs of `same`, and every two events within
 /// the sum of their radii (a sweep over x; the largest radius bounds how far to look).
+///
+/// An event with the same point (by value) and the same radius as the event before it (a
+/// joint's two segment ends, a contact's two events) is joined to it and left out of the
+/// sweep: whether an event f is within reach of it is computed from the points' coordinate
+/// differences and the radii alone, so f is within reach of it exactly when f is within
+/// reach of the event before it, which the sweep tests; the clusters are the same.
 Clusters close_events(const std::vector<Event>& events,
                       const std::vector<std::pair<std::size_t, std::size_t>>& same) {
   Clusters clusters(events.size());
   for (const auto& [i, j] : same) clusters.join(i, j);
   double max_radius = 0.0;
   for (const Event& e : events) max_radius = std::max(max_radius, e.radius);
-  // The events by x (ties by index), each with its x beside it so that the sort compares
-  // in place. Which pairs are joined, and so the clusters, do not depend on the order of
-  // ties: each pair within reach is met from whichever of its two comes first.
-  std::vector<std::pair<double, std::size_t>> by_x(events.size());
-  for (std::size_t i = 0; i < events.size(); ++i) by_x[i] = {events[i].point.x, i};
+  // The swept events by x (ties by index), each with its x beside it so that the sort
+  // compares in place. Which pairs are joined, and so the clusters, do not depend on the
+  // order of ties: each pair within reach is met from whichever of its two comes first.
+  std::vector<std::pair<double, std::size_t>> by_x;
+  by_x.reserve(events.size());
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    if (i > 0 && events[i].point == events[i - 1].point &&
+        events[i].radius == events[i - 1].radius) {
+      clusters.join(i - 1, i);
+      continue;
+    }
+    by_x.emplace_back(events[i].point.x, i);
+  }
   std::sort(by_x.begin(), by_x.end());
   for (std::size_t k = 0; k < by_x.size(); ++k) {
     const Event& e = events[by_x[k].second];
@@ -188,8 +202,10 @@ Clusters close_events(const std::vector<Event>& events,
       const Event& f = events[by_x[l].second];
       if (f.point.x - e.point.x > e.radius + max_radius) break;
       const double reach = e.radius + f.radius;
-      if (std::fabs(f.point.x - e.point.x) <= reach && std::fabs(f.point.y - e.point.y) <= reach &&
-          core::length(f.point - e.point) <= reach) {
+      const Point2 d = f.point - e.point;
+      // A zero difference is within every reach (radii are not negative) without hypot.
+      if (std::fabs(d.x) <= reach && std::fabs(d.y) <= reach &&
+          ((d.x == 0.0 && d.y == 0.0) || core::length(d) <= reach)) {
         clusters.join(by_x[k].second, by_x[l].second);
       }
     }
