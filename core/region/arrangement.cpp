@@ -11,7 +11,6 @@
 #include "core/base/curve.hpp"
 #include "core/curve/derivative.hpp"
 #include "core/curve/evaluate.hpp"
-#include "core/curve/polar.hpp"
 #include "core/intersect/options.hpp"
 #include "core/path/path_intersections.hpp"
 #include "core/region/boolean_tuning.hpp"
@@ -316,7 +315,7 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
       const std::pair<double, std::size_t> cut{cuts[c].t, cuts[c].vertex};
       if (!kept.empty() && kept.back().second == cut.second) {
         const double lo = kept.back().first;
-        const core::Curve between = core::portion(seg, lo, cut.first);
+        const core::Curve between = exact_portion(seg, lo, cut.first);
         if (diameter_bound(between) <= 4.0 * vertex_radius[cut.second]) {
           if (cut.first == 1.0) kept.back().first = 1.0;
           continue;
