@@ -11,8 +11,10 @@ namespace bezier::region {
 /// core::portion makes one per control point and more: control point i is the blossom
 /// b(a^(n-i), b^i), computed as core::portion computes it (core::polar's compensated de
 /// Casteljau rounds, core/bernstein/casteljau_row.hpp, with a for the first n - i rounds and
-/// b for the rest, then the row's first entry rounded to a point), in a row that keeps a
-/// cubic's entries in place. Checked against core::portion in
+/// b for the rest, then the row's first entry rounded to a point), in rows that keep a
+/// cubic's entries in place; the rounds with a, the same for every control point, are done
+/// once and their rows shared (the same operations on the same values). Checked against
+/// core::portion in
 /// tests/core/region/segment_piece_test.cpp.
 [[nodiscard]] core::Curve exact_portion(const core::Curve& curve, double a, double b);
 
