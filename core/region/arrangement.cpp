@@ -300,7 +300,8 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
 
   // Edges of one segment in order, for the overlap groups below: [first, end) of arrangement.edges.
   std::vector<std::pair<std::size_t, std::size_t>> edges_of(segment_count);
-  arrangement.edges.reserve(events.size());
+  // At most one edge fewer than a segment's cuts (its two ends and its contacts' events).
+  arrangement.edges.reserve(events.size() - segment_count);
   // A segment's cuts (parameter, vertex), and those kept.
   std::vector<std::pair<double, std::size_t>> cuts;
   std::vector<std::pair<double, std::size_t>> kept;
