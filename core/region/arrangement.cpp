@@ -11,7 +11,6 @@
 #include "core/base/curve.hpp"
 #include "core/curve/derivative.hpp"
 #include "core/curve/evaluate.hpp"
-#include "core/curve/polar.hpp"
 #include "core/intersect/options.hpp"
 #include "core/path/path_intersections.hpp"
 #include "core/region/boolean_tuning.hpp"
@@ -110,7 +109,8 @@ Combined combined(const path::Path& a, const path::Path* b) {
 /// A contact search's findings as events: both ends of every segment (radius base_radius),
 /// and each contact as a pair of events, one on each segment through it, listed in `same`
 /// (a crossing's radius grows by its parameter intervals' widths times the segments'
-/// speed bounds; an overlap's two ends are contacts with exact parameters).
+/// speed bounds; an overlap's two ends are contacts with exact parameters). Events 2i and
+/// 2i + 1 are segment i's ends (t = 0 and t = 1); the contacts' events follow.
 struct ContactEvents {
   std::vector<Event> events;
   std::vector<std::pair<std::size_t, std::size_t>> same;  // events that are one vertex
@@ -170,17 +170,31 @@ ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersec
 
 /// Joins the events that are one vertex: the pairs of `same`, and every two events within
 /// the sum of their radii (a sweep over x; the largest radius bounds how far to look).
+///
+/// An event with the same point (by value) and the same radius as the event before it (a
+/// joint's two segment ends, a contact's two events) is joined to it and left out of the
+/// sweep: whether an event f is within reach of it is computed from the points' coordinate
+/// differences and the radii alone, so f is within reach of it exactly when f is within
+/// reach of the event before it, which the sweep tests; the clusters are the same.
 Clusters close_events(const std::vector<Event>& events,
                       const std::vector<std::pair<std::size_t, std::size_t>>& same) {
   Clusters clusters(events.size());
   for (const auto& [i, j] : same) clusters.join(i, j);
   double max_radius = 0.0;
   for (const Event& e : events) max_radius = std::max(max_radius, e.radius);
-  // The events by x (ties by index), each with its x beside it so that the sort compares
-  // in place. Which pairs are joined, and so the clusters, do not depend on the order of
-  // ties: each pair within reach is met from whichever of its two comes first.
-  std::vector<std::pair<double, std::size_t>> by_x(events.size());
-  for (std::size_t i = 0; i < events.size(); ++i) by_x[i] = {events[i].point.x, i};
+  // The swept events by x (ties by index), each with its x beside it so that the sort
+  // compares in place. Which pairs are joined, and so the clusters, do not depend on the
+  // order of ties: each pair within reach is met from whichever of its two comes first.
+  std::vector<std::pair<double, std::size_t>> by_x;
+  by_x.reserve(events.size());
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    if (i > 0 && events[i].point == events[i - 1].point &&
+        events[i].radius == events[i - 1].radius) {
+      clusters.join(i - 1, i);
+      continue;
+    }
+    by_x.emplace_back(events[i].point.x, i);
+  }
   std::sort(by_x.begin(), by_x.end());
   for (std::size_t k = 0; k < by_x.size(); ++k) {
     const Event& e = events[by_x[k].second];
@@ -188,8 +202,10 @@ Clusters close_events(const std::vector<Event>& events,
       const Event& f = events[by_x[l].second];
       if (f.point.x - e.point.x > e.radius + max_radius) break;
       const double reach = e.radius + f.radius;
-      if (std::fabs(f.point.x - e.point.x) <= reach && std::fabs(f.point.y - e.point.y) <= reach &&
-          core::length(f.point - e.point) <= reach) {
+      const Point2 d = f.point - e.point;
+      // A zero difference is within every reach (radii are not negative) without hypot.
+      if (std::fabs(d.x) <= reach && std::fabs(d.y) <= reach &&
+          ((d.x == 0.0 && d.y == 0.0) || core::length(d) <= reach)) {
         clusters.join(by_x[k].second, by_x[l].second);
       }
     }
@@ -249,58 +265,82 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
                                                                 const VertexAssignment& assigned,
                                                                 Arrangement& arrangement) {
   path::Path& all = both.path;
+  const std::size_t segment_count = all.segments.size();
   const std::vector<std::size_t>& vertex_of = assigned.vertex_of;
   const std::vector<double>& vertex_radius = assigned.vertex_radius;
-  // Cuts, by segment and then parameter (and vertex).
-  struct Cut {
-    std::size_t segment;
-    double t;
-    std::size_t vertex;
-  };
-  // Placed by segment (a counting sort), then each segment's few cuts sorted.
-  std::vector<std::size_t> cut_start(all.segments.size() + 1, 0);
-  for (const Event& e : events) ++cut_start[e.segment + 1];
-  for (std::size_t i = 0; i < all.segments.size(); ++i) cut_start[i + 1] += cut_start[i];
-  std::vector<Cut> cuts(events.size());
-  {
-    std::vector<std::size_t> next(cut_start.begin(), cut_start.end() - 1);
-    for (std::size_t e = 0; e < events.size(); ++e) {
-      cuts[next[events[e].segment]++] = {events[e].segment, events[e].t, vertex_of[e]};
-    }
+  // The contacts' events (after the 2 segment_count ends, contact_events' order) by segment,
+  // then event.
+  std::vector<std::pair<std::size_t, std::size_t>> contacts_by_segment;
+  contacts_by_segment.reserve(events.size() - 2 * segment_count);
+  for (std::size_t e = 2 * segment_count; e < events.size(); ++e) {
+    contacts_by_segment.emplace_back(events[e].segment, e);
   }
-  // Cuts that compare equal are equal in every member, so any sort gives the same list; a
-  // segment's few cuts (most often its two ends, already in order) by insertion.
-  const auto before = [](const Cut& p, const Cut& q) {
-    return std::tie(p.t, p.vertex) < std::tie(q.t, q.vertex);
+  std::sort(contacts_by_segment.begin(), contacts_by_segment.end());
+
+  const auto add_edge = [&](std::size_t i, double t0, double t1, std::size_t from,
+                            std::size_t to, bool whole_cut) {
+    // A segment cut nowhere inside is not needed any more: its one piece may take it.
+    core::Curve exact = whole_cut ? segment_piece(std::move(all.segments[i]), t0, t1)
+                                  : segment_piece(all.segments[i], t0, t1);
+    const Point2 front = arrangement.vertices[from], back = arrangement.vertices[to];
+    // Every member given and built in place, so that no default curve is built and thrown
+    // away.
+    if (same_bits(exact.front(), front) && same_bits(exact.back(), back)) {
+      arrangement.edges.emplace_back(both.origin[i].first, both.origin[i].second, t0, t1, from,
+                                     to, std::move(exact), std::nullopt, arrangement.edges.size());
+      return;
+    }
+    std::vector<Point2> pts(exact.points().begin(), exact.points().end());
+    pts.front() = front;
+    pts.back() = back;
+    arrangement.edges.emplace_back(both.origin[i].first, both.origin[i].second, t0, t1, from, to,
+                                   core::Curve(std::move(pts)), std::move(exact),
+                                   arrangement.edges.size());
   };
-  for (std::size_t i = 0; i < all.segments.size(); ++i) {
-    const auto first = cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i]);
-    const auto last = cuts.begin() + static_cast<std::ptrdiff_t>(cut_start[i + 1]);
-    if (last - first > 16) {
-      std::sort(first, last, before);
+
+  // Edges of one segment in order, for the overlap groups below: [first, end) of arrangement.edges.
+  std::vector<std::pair<std::size_t, std::size_t>> edges_of(segment_count);
+  // At most one edge fewer than a segment's cuts (its two ends and its contacts' events).
+  arrangement.edges.reserve(events.size() - segment_count);
+  // A segment's cuts (parameter, vertex), and those kept.
+  std::vector<std::pair<double, std::size_t>> cuts;
+  std::vector<std::pair<double, std::size_t>> kept;
+  std::size_t next_contact = 0;
+  for (std::size_t i = 0; i < segment_count; ++i) {
+    const std::size_t start_vertex = vertex_of[2 * i], end_vertex = vertex_of[2 * i + 1];
+    const bool has_contacts = next_contact < contacts_by_segment.size() &&
+                              contacts_by_segment[next_contact].first == i;
+    edges_of[i].first = arrangement.edges.size();
+    if (!has_contacts && start_vertex != end_vertex) {
+      // Cut at its two ends only, at two vertices: what the general case below gives.
+      add_edge(i, 0.0, 1.0, start_vertex, end_vertex, true);
+      edges_of[i].second = arrangement.edges.size();
       continue;
     }
-    for (auto k = first + (first != last ? 1 : 0); k < last; ++k) {
-      const Cut moving = *k;
-      auto j = k;
-      for (; j > first && before(moving, *(j - 1)); --j) *j = *(j - 1);
-      *j = moving;
+    // The cuts by parameter, then vertex: cuts that compare equal are equal, so any sort
+    // gives the same list; the few cuts of a segment by insertion.
+    cuts.clear();
+    cuts.emplace_back(0.0, start_vertex);
+    for (; next_contact < contacts_by_segment.size() &&
+           contacts_by_segment[next_contact].first == i;
+         ++next_contact) {
+      const std::size_t e = contacts_by_segment[next_contact].second;
+      cuts.emplace_back(events[e].t, vertex_of[e]);
     }
-  }
-  // Edges of one segment in order, for the overlap groups below: [first, end) of arrangement.edges.
-  std::vector<std::pair<std::size_t, std::size_t>> edges_of(all.segments.size());
-  arrangement.edges.reserve(cuts.size());
-  std::vector<std::pair<double, std::size_t>> kept;
-  for (std::size_t c = 0; c < cuts.size();) {
-    const std::size_t i = cuts[c].segment;
+    cuts.emplace_back(1.0, end_vertex);
+    for (std::size_t k = 1; k < cuts.size(); ++k) {
+      const std::pair<double, std::size_t> moving = cuts[k];
+      std::size_t j = k;
+      for (; j > 0 && moving < cuts[j - 1]; --j) cuts[j] = cuts[j - 1];
+      cuts[j] = moving;
+    }
     const core::Curve& seg = all.segments[i];
     // Merge consecutive cuts at one vertex, keeping an exact end parameter (0 or 1).
     kept.clear();
-    for (; c < cuts.size() && cuts[c].segment == i; ++c) {
-      const std::pair<double, std::size_t> cut{cuts[c].t, cuts[c].vertex};
+    for (const std::pair<double, std::size_t>& cut : cuts) {
       if (!kept.empty() && kept.back().second == cut.second) {
         const double lo = kept.back().first;
-        const core::Curve between = core::portion(seg, lo, cut.first);
+        const core::Curve between = exact_portion(seg, lo, cut.first);
         if (diameter_bound(between) <= 4.0 * vertex_radius[cut.second]) {
           if (cut.first == 1.0) kept.back().first = 1.0;
           continue;
@@ -309,28 +349,9 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
       if (!kept.empty() && kept.back().first == cut.first) continue;
       kept.push_back(cut);
     }
-    edges_of[i].first = arrangement.edges.size();
     for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
-      const double t0 = kept[k].first, t1 = kept[k + 1].first;
-      const std::size_t from = kept[k].second, to = kept[k + 1].second;
-      // A segment cut nowhere inside is not needed any more: its one piece may take it.
-      core::Curve exact = kept.size() == 2 ? segment_piece(std::move(all.segments[i]), t0, t1)
-                                           : segment_piece(seg, t0, t1);
-      const Point2 front = arrangement.vertices[from], back = arrangement.vertices[to];
-      // Every member given and built in place, so that no default curve is built and thrown
-      // away.
-      if (same_bits(exact.front(), front) && same_bits(exact.back(), back)) {
-        arrangement.edges.emplace_back(both.origin[i].first, both.origin[i].second, t0, t1, from,
-                                       to, std::move(exact), std::nullopt,
-                                       arrangement.edges.size());
-        continue;
-      }
-      std::vector<Point2> pts(exact.points().begin(), exact.points().end());
-      pts.front() = front;
-      pts.back() = back;
-      arrangement.edges.emplace_back(both.origin[i].first, both.origin[i].second, t0, t1, from, to,
-                                     core::Curve(std::move(pts)), std::move(exact),
-                                     arrangement.edges.size());
+      add_edge(i, kept[k].first, kept[k + 1].first, kept[k].second, kept[k + 1].second,
+               kept.size() == 2);
     }
     edges_of[i].second = arrangement.edges.size();
   }

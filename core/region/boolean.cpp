@@ -26,7 +26,7 @@ BooleanStatus decide_side_windings(const Arrangement& arrangement, core::WorkBud
     return BooleanStatus::work_cap_reached;
   }
   windings.assign(group_count, SideWindings{});
-  std::vector<bool> known(group_count, false);
+  std::vector<char> known(group_count, 0);  // bytes, not bits: each read and written often
   std::vector<std::size_t> pending;
   bool undecided = false;
   for (std::size_t g = 0; g < group_count; ++g) {
@@ -41,7 +41,7 @@ BooleanStatus decide_side_windings(const Arrangement& arrangement, core::WorkBud
       continue;
     }
     windings[g] = sides.windings;
-    known[g] = true;
+    known[g] = 1;
     pending.assign(1, g);
     while (!pending.empty()) {
       const std::size_t h = pending.back();
@@ -50,7 +50,7 @@ BooleanStatus decide_side_windings(const Arrangement& arrangement, core::WorkBud
         if (known[link.group]) continue;
         const SideWindings& w = windings[h];
         windings[link.group] = link.flipped ? SideWindings{w.right, w.left} : w;
-        known[link.group] = true;
+        known[link.group] = 1;
         pending.push_back(link.group);
       }
     }
@@ -90,7 +90,7 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::W
   }
   const std::size_t group_count = arrangement.groups.size();
   std::vector<DirectedEdge> kept;
-  std::vector<bool> kept_reversed;
+  std::vector<char> kept_reversed;  // bytes, not bits
   kept.reserve(group_count);
   kept_reversed.reserve(group_count);
   for (std::size_t g = 0; g < group_count; ++g) {
@@ -106,7 +106,7 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::W
     } else {
       kept.push_back({edge.to, edge.from, core::reversed(edge.piece), e});
     }
-    kept_reversed.push_back(!left);
+    kept_reversed.push_back(left ? 0 : 1);
   }
   if (!budget.spend(static_cast<std::int64_t>(kept.size()) * 16)) {
     result.work = budget.spent() - spent_before;
@@ -132,7 +132,7 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::W
     contour.first_segment = result.segments.size();
     for (std::size_t k : chain) {
       const ArrangementEdge& edge = arrangement.edges[kept[k].tag];
-      const bool backwards = kept_reversed[k];
+      const bool backwards = kept_reversed[k] != 0;
       // Each kept edge is in one chain only: its curve moves to the result.
       result.segments.push_back({edge.source, edge.segment, backwards ? edge.t1 : edge.t0,
                                  backwards ? edge.t0 : edge.t1, std::move(kept[k].curve)});

@@ -16,12 +16,12 @@ std::optional<std::vector<std::vector<std::size_t>>> chain_contours(
     std::vector<std::size_t> next(leaving_start.begin(), leaving_start.end() - 1);
     for (std::size_t e = 0; e < edges.size(); ++e) leaving[next[edges[e].from]++] = e;
   }
-  std::vector<bool> used(edges.size(), false);
+  std::vector<char> used(edges.size(), 0);  // bytes, not bits
   std::vector<std::vector<std::size_t>> contours;
   for (std::size_t first = 0; first < edges.size(); ++first) {
     if (used[first]) continue;
     std::vector<std::size_t> contour{first};
-    used[first] = true;
+    used[first] = 1;
     std::size_t current = first;
     while (edges[current].to != edges[first].from) {
       const std::size_t v = edges[current].to;
@@ -46,7 +46,7 @@ std::optional<std::vector<std::vector<std::size_t>>> chain_contours(
         }
       }
       if (!next) return std::nullopt;
-      used[*next] = true;
+      used[*next] = 1;
       contour.push_back(*next);
       current = *next;
     }

@@ -26,7 +26,7 @@ std::array<int, 2> plus(const std::array<int, 2>& w, const std::array<int, 2>& m
 
 VertexSectorStatus decide_around_vertices(const Arrangement& arrangement,
                                           std::vector<SideWindings>& windings,
-                                          std::vector<bool>& known, core::WorkBudget& budget) {
+                                          std::vector<char>& known, core::WorkBudget& budget) {
   const std::size_t vertex_count = arrangement.vertices.size();
   std::vector<std::vector<GroupEnd>> around(vertex_count);
   std::vector<bool> usable(vertex_count, true);
@@ -96,7 +96,7 @@ VertexSectorStatus decide_around_vertices(const Arrangement& arrangement,
             x.left = face;
             x.right = plus(face, mult(b.group), -1);
           }
-          known[b.group] = true;
+          known[b.group] = 1;
         } else {
           const SideWindings& w = windings[b.group];
           const std::array<int, 2> face = b.leaves ? w.right : w.left;
@@ -108,13 +108,13 @@ VertexSectorStatus decide_around_vertices(const Arrangement& arrangement,
             x.right = face;
             x.left = plus(face, mult(a.group), 1);
           }
-          known[a.group] = true;
+          known[a.group] = 1;
         }
         changed = true;
       }
     }
   }
-  for (const bool k : known) {
+  for (const char k : known) {
     if (!k) return VertexSectorStatus::undecided;
   }
   return VertexSectorStatus::ok;

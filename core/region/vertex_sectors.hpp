@@ -38,7 +38,7 @@ enum class VertexSectorStatus { ok, undecided, work_cap_reached };
 /// (budget.spend). undecided when some group stays unknown.
 [[nodiscard]] VertexSectorStatus decide_around_vertices(const Arrangement& arrangement,
                                                         std::vector<SideWindings>& windings,
-                                                        std::vector<bool>& known,
+                                                        std::vector<char>& known,
                                                         core::WorkBudget& budget);
 
 }  // namespace bezier::region
