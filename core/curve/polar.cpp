@@ -1,6 +1,9 @@
 #include "core/curve/polar.hpp"
 
+#include <algorithm>
 #include <cassert>
+#include <utility>
+#include <vector>
 
 #include "core/bernstein/casteljau_row.hpp"
 #include "core/base/multiversion.hpp"
@@ -20,9 +23,40 @@ BasicCurve<P> casteljau_rounds(const BasicCurve<P>& curve, std::span<const doubl
   return BasicCurve<P>(std::move(points));
 }
 
+/// portion(): control point i takes n - i rounds with a, then i with b. After k rounds
+/// with a, `row_a` is the row every control point i <= n - k has gone through, so control
+/// point i starts from a copy of the row after n - i of them and the same arithmetic
+/// follows. Built from i = n down to 0, then reversed.
+template <class P>
+BasicCurve<P> shared_row_portion(const BasicCurve<P>& curve, double a, double b) {
+  const int n = curve.degree();
+  std::vector<P> points;
+  points.reserve(static_cast<std::size_t>(n) + 1);
+  if (n == 0) {
+    points.push_back(curve.front());
+    return BasicCurve<P>(std::move(points));
+  }
+  CasteljauRow<P> row_a(curve.points());
+  for (int k = 0; k <= n; ++k) {
+    if (k > 0) row_a.casteljau_step(a);
+    CasteljauRow<P> row = row_a;
+    for (int j = 0; j < n - k; ++j) row.casteljau_step(b);
+    points.push_back(row.point(0));
+  }
+  std::reverse(points.begin(), points.end());
+  return BasicCurve<P>(std::move(points));
+}
+
 }  // namespace
 
 BEZIER_FMA_CLONES Curve polar(const Curve& curve, std::span<const double> us) { return casteljau_rounds(curve, us); }
 BEZIER_FMA_CLONES Curve3 polar(const Curve3& curve, std::span<const double> us) { return casteljau_rounds(curve, us); }
+
+BEZIER_FMA_CLONES Curve portion(const Curve& curve, double a, double b) {
+  return shared_row_portion(curve, a, b);
+}
+BEZIER_FMA_CLONES Curve3 portion(const Curve3& curve, double a, double b) {
+  return shared_row_portion(curve, a, b);
+}
 
 }  // namespace bezier::core

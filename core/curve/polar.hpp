@@ -40,19 +40,13 @@ template <class P>
 }
 
 /// B restricted to [a, b], reparametrised to [0, 1]: control point i is the blossom
-/// value b(a^(n-i), b^i) (Ramshaw 1987). Exact in the sense that no division appears,
-/// so a = b, a > b (reversed piece) and values outside [0, 1] all work. O(n^3).
-template <class P>
-[[nodiscard]] BasicCurve<P> portion(const BasicCurve<P>& curve, double a, double b) {
-  const int n = curve.degree();
-  std::vector<double> args(static_cast<std::size_t>(n));
-  std::vector<P> pts;
-  pts.reserve(static_cast<std::size_t>(n) + 1);
-  for (int i = 0; i <= n; ++i) {
-    for (int j = 0; j < n; ++j) args[static_cast<std::size_t>(j)] = j < n - i ? a : b;
-    pts.push_back(n == 0 ? curve.front() : blossom(curve, args));
-  }
-  return BasicCurve<P>(std::move(pts));
-}
+/// value b(a^(n-i), b^i) (Ramshaw 1987), bit for bit blossom(curve, {a, ..., a, b, ..., b})
+/// (polar's rounds, n - i with a, then i with b). Exact in the sense that no division
+/// appears, so a = b, a > b (reversed piece) and values outside [0, 1] all work. The rounds
+/// with a are the same for every control point, so they are done once and their rows
+/// shared: O(n^3) operations, one allocation (the result's points) for the degrees a
+/// CasteljauRow keeps inline.
+[[nodiscard]] Curve portion(const Curve& curve, double a, double b);
+[[nodiscard]] Curve3 portion(const Curve3& curve, double a, double b);
 
 }  // namespace bezier::core

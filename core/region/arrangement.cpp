@@ -340,7 +340,7 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
     for (const std::pair<double, std::size_t>& cut : cuts) {
       if (!kept.empty() && kept.back().second == cut.second) {
         const double lo = kept.back().first;
-        const core::Curve between = exact_portion(seg, lo, cut.first);
+        const core::Curve between = core::portion(seg, lo, cut.first);
         if (diameter_bound(between) <= 4.0 * vertex_radius[cut.second]) {
           if (cut.first == 1.0) kept.back().first = 1.0;
           continue;

@@ -4,19 +4,9 @@
 #include <utility>
 
 #include "core/base/curve.hpp"
+#include "core/curve/polar.hpp"
 
 namespace bezier::region {
-
-/// core::portion(curve, a, b) bit for bit, with one allocation (the result's points) where
-/// core::portion makes one per control point and more: control point i is the blossom
-/// b(a^(n-i), b^i), computed as core::portion computes it (core::polar's compensated de
-/// Casteljau rounds, core/bernstein/casteljau_row.hpp, with a for the first n - i rounds and
-/// b for the rest, then the row's first entry rounded to a point), in rows that keep a
-/// cubic's entries in place; the rounds with a, the same for every control point, are done
-/// once and their rows shared (the same operations on the same values). Checked against
-/// core::portion in
-/// tests/core/region/segment_piece_test.cpp.
-[[nodiscard]] core::Curve exact_portion(const core::Curve& curve, double a, double b);
 
 /// core::portion(segment, t0, t1), bit for bit, without its arithmetic when the piece is the
 /// whole segment (t0 = 0, t1 = 1) and no control-point coordinate is zero.
@@ -38,14 +28,14 @@ namespace bezier::region {
 
 [[nodiscard]] inline core::Curve segment_piece(const core::Curve& segment, double t0, double t1) {
   if (segment_piece_is_segment(segment, t0, t1)) return segment;
-  return exact_portion(segment, t0, t1);
+  return core::portion(segment, t0, t1);
 }
 
 /// segment_piece of a segment the caller no longer needs: the segment itself is moved into
 /// the result when it is the piece, and left unchanged otherwise.
 [[nodiscard]] inline core::Curve segment_piece(core::Curve&& segment, double t0, double t1) {
   if (segment_piece_is_segment(segment, t0, t1)) return std::move(segment);
-  return exact_portion(segment, t0, t1);
+  return core::portion(segment, t0, t1);
 }
 
 }  // namespace bezier::region

@@ -14,6 +14,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <string>
 #include <type_traits>
@@ -292,6 +294,50 @@ TEST(Portion, SpecialIntervalsBitForBit) {
     EXPECT_EQ(portion(c, t, 1.0), halves.right) << where;
   });
   EXPECT_EQ(portion(Curve({{3, 4}}), 0.2, 0.9), Curve({{3, 4}}));
+}
+
+TEST(Portion, EachControlPointIsItsBlossomBitForBit) {
+  // portion shares the rounds with a among the control points; each must still be the
+  // blossom b(a^(n-i), b^i) as polar rounds it, to the bit (signs of zeros included), for
+  // any parameters: inside [0, 1], reversed, equal, at the ends and outside; degrees 0 to 12
+  // (past the rows' inline entries), in 2-D and 3-D.
+  Mulberry32 rng(4242);
+  const auto coordinate = [&]() {
+    const double u = rng.next();
+    if (u < 0.05) return u < 0.025 ? 0.0 : -0.0;
+    return std::ldexp(rng.next() - 0.5, static_cast<int>(rng.next() * 200) - 100);
+  };
+  const auto same_bits = [](double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; };
+  const double fixed[] = {0.0, 1.0, -0.0, 0.5, -0.75, 1.25, 0x1p-60, 1.0 - 0x1p-53};
+  const auto pick = [&]() { return fixed[static_cast<std::size_t>(rng.next() * 8)]; };
+  for (int round = 0; round < 3000; ++round) {
+    const int n = round % 13;
+    const double a = round % 3 == 0 ? pick() : rng.next() * 1.5 - 0.25;
+    const double b = round % 5 == 0 ? a : (round % 3 == 1 ? pick() : rng.next());
+    std::vector<Point2> points;
+    std::vector<Point3> points3;
+    for (int i = 0; i <= n; ++i) {
+      points.push_back({coordinate(), coordinate()});
+      points3.push_back({coordinate(), coordinate(), coordinate()});
+    }
+    const Curve c(points);
+    const Curve3 c3(points3);
+    const Curve piece = portion(c, a, b);
+    const Curve3 piece3 = portion(c3, a, b);
+    ASSERT_EQ(piece.degree(), n);
+    ASSERT_EQ(piece3.degree(), n);
+    for (int i = 0; i <= n; ++i) {
+      std::vector<double> args(static_cast<std::size_t>(n));
+      for (int j = 0; j < n; ++j) args[static_cast<std::size_t>(j)] = j < n - i ? a : b;
+      const Point2 p = n == 0 ? c.front() : blossom(c, args);
+      const Point3 p3 = n == 0 ? c3.front() : blossom(c3, args);
+      EXPECT_TRUE(same_bits(piece[i].x, p.x) && same_bits(piece[i].y, p.y))
+          << "round " << round << " i " << i << " a " << a << " b " << b;
+      EXPECT_TRUE(same_bits(piece3[i].x, p3.x) && same_bits(piece3[i].y, p3.y) &&
+                  same_bits(piece3[i].z, p3.z))
+          << "3-D round " << round << " i " << i << " a " << a << " b " << b;
+    }
+  }
 }
 
 }  // namespace

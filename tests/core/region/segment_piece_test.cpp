@@ -73,27 +73,5 @@ TEST(SegmentPiece, AZeroCoordinateKeepsTheSignPortionGivesIt) {
   EXPECT_TRUE(same_bits(segment_piece(c, 0.0, 1.0), core::portion(c, 0.0, 1.0)));
 }
 
-TEST(SegmentPiece, ExactPortionIsPortionBitForBit) {
-  // Any parameters, as core::portion takes them: inside [0, 1], reversed (a > b), equal,
-  // at the ends and outside [0, 1]; degrees 0 to 12 (past the row's inline entries).
-  test::Mulberry32 rng(4242);
-  const auto coordinate = [&]() {
-    const double u = rng.next();
-    if (u < 0.05) return u < 0.025 ? 0.0 : -0.0;
-    return std::ldexp(rng.next() - 0.5, static_cast<int>(rng.next() * 200) - 100);
-  };
-  const double fixed[] = {0.0, 1.0, -0.0, 0.5, -0.75, 1.25, 0x1p-60, 1.0 - 0x1p-53};
-  for (int round = 0; round < 3000; ++round) {
-    const int degree = round % 13;
-    std::vector<Point2> points;
-    for (int i = 0; i <= degree; ++i) points.push_back({coordinate(), coordinate()});
-    const Curve c(std::move(points));
-    const double a = round % 3 == 0 ? fixed[static_cast<std::size_t>(rng.next() * 8)] : rng.next() * 1.5 - 0.25;
-    const double b = round % 5 == 0 ? a : (round % 3 == 1 ? fixed[static_cast<std::size_t>(rng.next() * 8)] : rng.next());
-    EXPECT_TRUE(same_bits(exact_portion(c, a, b), core::portion(c, a, b)))
-        << "round " << round << " a " << a << " b " << b;
-  }
-}
-
 }  // namespace
 }  // namespace bezier::region
