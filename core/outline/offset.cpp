@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "core/numeric/power_of_two.hpp"
 #include "core/outline/area_moment_fit.hpp"
@@ -35,6 +36,12 @@ std::vector<Point2>& sample_buffer() {
 
 /// The buffer of one thread's denser samples of O for a bound that needs more of them.
 std::vector<Point2>& dense_buffer() {
+  thread_local std::vector<Point2> buffer;
+  return buffer;
+}
+
+/// The buffer of one thread's samples of the other side of a piece (offset_interval_sides).
+std::vector<Point2>& side_buffer() {
   thread_local std::vector<Point2> buffer;
   return buffer;
 }
@@ -217,6 +224,52 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
       continue;
     }
     out[static_cast<std::size_t>(j)] = point_at(q, u) + d * left_normal(v / std::sqrt(speed_squared));
+  }
+  return all;
+}
+
+/// Both sides' samples O = B_p ± d N at once (as sample_parallel at d and at -d, bit for
+/// bit): B_p and B_p' are evaluated once per sample. The ends are the end frames' points
+/// moved by ±d along their normals. Returns whether every sample is a number.
+bool sample_both_sides(const ControlPoints& q, const ControlPoints& h1, double d,
+                       const EndFrame& start, const EndFrame& end, const CubicWeights& weights,
+                       std::vector<Point2>& plus, std::vector<Point2>& minus) {
+  const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
+  if (q.size() != 4) {
+    const bool all = sample_parallel(q, h1, d, start.point + d * n0, end.point + d * n1,
+                                     weights, plus);
+    sample_parallel(q, h1, -d, start.point + (-d) * n0, end.point + (-d) * n1, weights, minus);
+    return all;
+  }
+  const int count = weights.count;
+  plus.resize(static_cast<std::size_t>(count) + 1);
+  minus.resize(static_cast<std::size_t>(count) + 1);
+  plus.front() = start.point + d * n0;
+  plus.back() = end.point + d * n1;
+  minus.front() = start.point + (-d) * n0;
+  minus.back() = end.point + (-d) * n1;
+  bool all = true;
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  const Point2 q0 = q[0], q1 = q[1], q2 = q[2], q3 = q[3];
+  const Point2 g0 = h1[0], g1 = h1[1], g2 = h1[2];
+  Point2* o = plus.data();
+  Point2* r = minus.data();
+  for (int j = 1; j < count; ++j) {
+    const auto i = static_cast<std::size_t>(j);
+    const double u = weights.u[i], w = 1.0 - u;
+    const Point2 v = (w * w) * g0 + (2.0 * u * w) * g1 + (u * u) * g2;
+    const double speed_squared = squared_length(v);
+    if (!(speed_squared > 0.0)) {
+      o[j] = r[j] = {kNaN, kNaN};
+      all = false;
+      continue;
+    }
+    // (-d) / x is -(d / x) exactly: the other side's samples are those of sample_parallel.
+    const double scale = d / std::sqrt(speed_squared), other = -scale;
+    const Point2 b = weights.b0[i] * q0 + weights.b1[i] * q1 + weights.b2[i] * q2 +
+                     weights.b3[i] * q3;
+    o[j] = {b.x - scale * v.y, b.y + scale * v.x};
+    r[j] = {b.x - other * v.y, b.y + other * v.x};
   }
   return all;
 }
@@ -423,6 +476,19 @@ double ball_bound(const ControlPoints& q, const ControlPoints& h1, const std::ar
   return std::sqrt(r_curve) + std::fabs(d) * (hi - lo) + std::sqrt(r_cubic);
 }
 
+/// The K for which the remainder h^2 / 8 second is within `budget`.
+int samples_for(double second, double budget) {
+  return static_cast<int>(
+      std::clamp(std::ceil(std::sqrt(second / (8.0 * budget))), 1.0, double{kMaxSamples}));
+}
+
+/// fit_piece's first K: the remainder within kFirstRemainder of the tolerance with |e''|
+/// estimated at the bound `turning` of |d N''| (the area and moment cubic's C'' follows B_p''
+/// closely), at least kFitSamples. It depends on |d| only: both sides of a piece share it.
+int first_sample_count(double turning, double tolerance) {
+  return std::max(samples_for(turning, kFirstRemainder * tolerance), kFitSamples);
+}
+
 /// A fitted piece: its cubic and its certified bound (infinite when not certified), and how
 /// many times the tolerance its largest sampled error was (to choose the split).
 struct PieceFit {
@@ -439,7 +505,8 @@ struct PieceFit {
 /// the first within the tolerance kept.
 PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints& q,
                    const EndFrame& start, const EndFrame& end, double d, double tolerance,
-                   double direction, std::vector<Point2>& o) {
+                   double direction, std::vector<Point2>& o, const PieceShape* given = nullptr,
+                   bool presampled = false) {
   PieceFit result;
   if (q.size() == 2) {
     // A line's parallel curve is the line through the offset ends: the cubic with its
@@ -453,26 +520,21 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
     return result;
   }
   const auto n = static_cast<std::int64_t>(q.size()) - 1;
-  const PieceShape shape(s, a, b);
+  std::optional<PieceShape> own;
+  const PieceShape& shape = given != nullptr ? *given : own.emplace(s, a, b);
   const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
   const Point2 p0 = start.point + d * n0, p3 = end.point + d * n1;
   const Point2 d0 = direction * start.tangent, d3 = direction * end.tangent;
   result.work = 8 * (n + 1) * (n + 1);
-  // The K for which the remainder h^2 / 8 |e''| is within `budget`.
-  auto samples_for = [&](double second, double budget) {
-    return static_cast<int>(
-        std::clamp(std::ceil(std::sqrt(second / (8.0 * budget))), 1.0, double{kMaxSamples}));
-  };
   if (shape.m > 0.0) {
     const double turning = shape.normal_second(d);
     // Between samples, |B_p'' - its linear interpolant| <= M3 h / 2 (zero when n <= 3).
     const double bend = q.size() > 4 ? 0.5 * shape.M3 : 0.0;
     // K for a remainder within kFirstRemainder of the tolerance with |e''| estimated at the
     // bound of |d N''| (the area and moment cubic's C'' follows B_p'' closely).
-    const int count =
-        std::max(samples_for(turning, kFirstRemainder * tolerance), kFitSamples);
+    const int count = first_sample_count(turning, tolerance);
     const CubicWeights& weights = cubic_weights(count);
-    if (!sample_parallel(q, shape.h1, d, p0, p3, weights, o)) return result;
+    if (!presampled && !sample_parallel(q, shape.h1, d, p0, p3, weights, o)) return result;
     result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
     // The candidates: the area and moment cubic nearest an arc, then the others of
     // area_moment_fit.hpp, then the least squares.
@@ -560,19 +622,23 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
   return result;
 }
 
-/// Fits [a, b] of the scaled curve, splitting where the bound fails; appends the cubics
-/// (scaled back) to `out`.
-bool fit_interval(const ScaledCurve& s, double a, double b, core::WorkBudget& budget,
-                  std::vector<OffsetCubic>& out) {
-  const std::size_t kept = out.size();
-  const auto n = static_cast<std::int64_t>(s.points.size()) - 1;
-  // The direction of O on this interval: the sign of 1 - d κ at its middle.
+/// The direction of O at distance d (scaled) on [a, b]: the sign of 1 - d κ at its middle.
+double travel_direction(const ScaledCurve& s, double d, double a, double b) {
   const double middle = 0.5 * (a + b);
   const Point2 v = s.first.empty() ? Point2{0, 0} : point_at(s.first, middle);
   const Point2 acc = s.second.empty() ? Point2{0, 0} : point_at(s.second, middle);
   const double speed = std::sqrt(squared_length(v));
-  const double direction =
-      speed > 0.0 && s.d * core::cross(v, acc) / (speed * speed * speed) > 1.0 ? -1.0 : 1.0;
+  return speed > 0.0 && d * core::cross(v, acc) / (speed * speed * speed) > 1.0 ? -1.0 : 1.0;
+}
+
+/// Fits [a, b] of the scaled curve at the scaled distance d (s.d or -s.d), splitting where
+/// the bound fails; appends the cubics (scaled back) to `out`. `first`, when given, is the
+/// fit of the whole [a, b] at d (fit_piece's, made by the caller).
+bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::WorkBudget& budget,
+                  std::vector<OffsetCubic>& out, const PieceFit* first = nullptr) {
+  const std::size_t kept = out.size();
+  const auto n = static_cast<std::int64_t>(s.points.size()) - 1;
+  const double direction = travel_direction(s, d, a, b);
 
   struct Pending {
     double a, b;
@@ -588,9 +654,14 @@ bool fit_interval(const ScaledCurve& s, double a, double b, core::WorkBudget& bu
   while (!stack.empty()) {
     const Pending piece = stack.back();
     stack.pop_back();
-    piece_into(s.points, piece.a, piece.b, q);
-    const PieceFit fitted = fit_piece(s, piece.a, piece.b, q, piece.start, piece.end, s.d,
-                                      s.tolerance - s.margin, direction, samples);
+    PieceFit own;
+    if (first == nullptr) {
+      piece_into(s.points, piece.a, piece.b, q);
+      own = fit_piece(s, piece.a, piece.b, q, piece.start, piece.end, d,
+                      s.tolerance - s.margin, direction, samples);
+    }
+    const PieceFit& fitted = first != nullptr ? *first : own;
+    first = nullptr;
     if (!budget.spend(fitted.work + 16 * (n + 1) * (n + 1))) {
       out.resize(kept);
       return false;
@@ -628,7 +699,39 @@ bool fit_interval(const ScaledCurve& s, double a, double b, core::WorkBudget& bu
 bool offset_interval(const core::Curve& curve, double a, double b, double d, double tolerance,
                      core::WorkBudget& budget, std::vector<OffsetCubic>& out) {
   const ScaledCurve scaled(curve, d, tolerance);
-  return fit_interval(scaled, a, b, budget, out);
+  return fit_interval(scaled, scaled.d, a, b, budget, out);
+}
+
+bool offset_interval_sides(const core::Curve& curve, double a, double b, double d,
+                           double tolerance, core::WorkBudget& budget,
+                           std::vector<OffsetCubic>& plus, std::vector<OffsetCubic>& minus) {
+  const ScaledCurve s(curve, d, tolerance);
+  ControlPoints q;
+  piece_into(s.points, a, b, q);
+  std::optional<PieceShape> shape;
+  if (q.size() > 2) shape.emplace(s, a, b);
+  if (!shape || !(shape->m > 0.0)) {
+    // A line, or a piece whose fit needs no samples of its own kind: each side alone.
+    if (!fit_interval(s, s.d, a, b, budget, plus)) return false;
+    return fit_interval(s, -s.d, a, b, budget, minus);
+  }
+  const EndFrame start = s.frame(a, a, b, true), end = s.frame(b, a, b, false);
+  const double tolerance_left = s.tolerance - s.margin;
+  // The sample count of fit_piece depends on |d| only, so both sides share it.
+  const int count = first_sample_count(shape->normal_second(s.d), tolerance_left);
+  const CubicWeights& weights = cubic_weights(count);
+  std::vector<Point2>& plus_samples = sample_buffer();
+  std::vector<Point2>& minus_samples = side_buffer();
+  const bool sampled = sample_both_sides(q, shape->h1, s.d, start, end, weights, plus_samples,
+                                         minus_samples);
+  const PieceFit plus_first =
+      fit_piece(s, a, b, q, start, end, s.d, tolerance_left, travel_direction(s, s.d, a, b),
+                plus_samples, &*shape, sampled);
+  const PieceFit minus_first =
+      fit_piece(s, a, b, q, start, end, -s.d, tolerance_left, travel_direction(s, -s.d, a, b),
+                minus_samples, &*shape, sampled);
+  if (!fit_interval(s, s.d, a, b, budget, plus, &plus_first)) return false;
+  return fit_interval(s, -s.d, a, b, budget, minus, &minus_first);
 }
 
 CurveOffset offset_curve(const core::Curve& curve, double d, double tolerance,
@@ -644,7 +747,7 @@ CurveOffset offset_curve(const core::Curve& curve, double d, double tolerance,
   const ScaledCurve scaled(curve, d, tolerance);
   for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
     if (!(cuts[k + 1] > cuts[k])) continue;
-    if (!fit_interval(scaled, cuts[k], cuts[k + 1], budget, result.cubics)) {
+    if (!fit_interval(scaled, scaled.d, cuts[k], cuts[k + 1], budget, result.cubics)) {
       result.cubics.clear();
       break;
     }
