@@ -77,7 +77,7 @@ class Run {
     Contour contour = std::move(right_);
     if (end_at_zero_of_derivative) pass_through(contour, end_, snap_);
     for (auto it = left_.rbegin(); it != left_.rend(); ++it) {
-      append_to_chain(contour, core::reversed(*it), snap_);
+      append_to_chain(contour, core::reversed(std::move(*it)), snap_);
     }
     if (start_at_zero_) pass_through(contour, start_, snap_);
     close_chain(contour, snap_);
@@ -93,7 +93,9 @@ class Run {
     close_chain(left_, snap_);
     Contour left;
     left.reserve(left_.size());
-    for (auto it = left_.rbegin(); it != left_.rend(); ++it) left.push_back(core::reversed(*it));
+    for (auto it = left_.rbegin(); it != left_.rend(); ++it) {
+      left.push_back(core::reversed(std::move(*it)));
+    }
     clear();
     return {std::move(right), std::move(left)};
   }
