@@ -75,9 +75,9 @@ struct ScaledCurve {
     hodograph_into(points, first);
     hodograph_into(first, second);
     const auto n = static_cast<double>(curve.degree());
-    least_speed = 1e-12 * n * std::sqrt(largest_squared_length(points));
-    margin = 64.0 * n * std::numeric_limits<double>::epsilon() *
-             (std::sqrt(largest_squared_length(points)) + std::fabs(d));
+    const double largest = std::sqrt(largest_squared_length(points));
+    least_speed = 1e-12 * n * largest;
+    margin = 64.0 * n * std::numeric_limits<double>::epsilon() * (largest + std::fabs(d));
   }
 
   /// B(t) and its unit tangent, computed from the whole curve so that two intervals meeting
@@ -631,14 +631,22 @@ double travel_direction(const ScaledCurve& s, double d, double a, double b) {
   return speed > 0.0 && d * core::cross(v, acc) / (speed * speed * speed) > 1.0 ? -1.0 : 1.0;
 }
 
+/// What the caller of fit_interval already has for the whole [a, b] at d: the end frames,
+/// O's direction there, and fit_piece's fit of [a, b].
+struct FirstPiece {
+  EndFrame start, end;
+  double direction = 1.0;
+  PieceFit fit;
+};
+
 /// Fits [a, b] of the scaled curve at the scaled distance d (s.d or -s.d), splitting where
 /// the bound fails; appends the cubics (scaled back) to `out`. `first`, when given, is the
-/// fit of the whole [a, b] at d (fit_piece's, made by the caller).
+/// whole [a, b]'s (FirstPiece).
 bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::WorkBudget& budget,
-                  std::vector<OffsetCubic>& out, const PieceFit* first = nullptr) {
+                  std::vector<OffsetCubic>& out, const FirstPiece* first = nullptr) {
   const std::size_t kept = out.size();
   const auto n = static_cast<std::int64_t>(s.points.size()) - 1;
-  const double direction = travel_direction(s, d, a, b);
+  const double direction = first != nullptr ? first->direction : travel_direction(s, d, a, b);
 
   struct Pending {
     double a, b;
@@ -648,7 +656,11 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
   // Depth-first, leftmost part on top (one buffer per thread, reused).
   thread_local std::vector<Pending> stack;
   stack.clear();
-  stack.push_back({a, b, s.frame(a, a, b, true), s.frame(b, a, b, false), 0});
+  if (first != nullptr) {
+    stack.push_back({a, b, first->start, first->end, 0});
+  } else {
+    stack.push_back({a, b, s.frame(a, a, b, true), s.frame(b, a, b, false), 0});
+  }
   ControlPoints q;
   std::vector<Point2>& samples = sample_buffer();
   while (!stack.empty()) {
@@ -660,7 +672,7 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
       own = fit_piece(s, piece.a, piece.b, q, piece.start, piece.end, d,
                       s.tolerance - s.margin, direction, samples);
     }
-    const PieceFit& fitted = first != nullptr ? *first : own;
+    const PieceFit& fitted = first != nullptr ? first->fit : own;
     first = nullptr;
     if (!budget.spend(fitted.work + 16 * (n + 1) * (n + 1))) {
       out.resize(kept);
@@ -724,12 +736,12 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
   std::vector<Point2>& minus_samples = side_buffer();
   const bool sampled = sample_both_sides(q, shape->h1, s.d, start, end, weights, plus_samples,
                                          minus_samples);
-  const PieceFit plus_first =
-      fit_piece(s, a, b, q, start, end, s.d, tolerance_left, travel_direction(s, s.d, a, b),
-                plus_samples, &*shape, sampled);
-  const PieceFit minus_first =
-      fit_piece(s, a, b, q, start, end, -s.d, tolerance_left, travel_direction(s, -s.d, a, b),
-                minus_samples, &*shape, sampled);
+  FirstPiece plus_first{start, end, travel_direction(s, s.d, a, b), {}};
+  FirstPiece minus_first{start, end, travel_direction(s, -s.d, a, b), {}};
+  plus_first.fit = fit_piece(s, a, b, q, start, end, s.d, tolerance_left, plus_first.direction,
+                             plus_samples, &*shape, sampled);
+  minus_first.fit = fit_piece(s, a, b, q, start, end, -s.d, tolerance_left,
+                              minus_first.direction, minus_samples, &*shape, sampled);
   if (!fit_interval(s, s.d, a, b, budget, plus, &plus_first)) return false;
   return fit_interval(s, -s.d, a, b, budget, minus, &minus_first);
 }
