@@ -284,19 +284,32 @@ struct ChordMoments {
   bool valid = false;
 };
 
-ChordMoments chord_moments(const ControlPoints& q, const ControlPoints& h1,
-                           const ControlPoints& h2, double d, Point2 start, Point2 end) {
+/// The moments of N parallel curves of one piece, at the distances ds with the ends starts,
+/// ends: B_p, B_p' and B_p'' once per node for all of them, each curve's sums as alone.
+template <std::size_t N>
+std::array<ChordMoments, N> chord_moments_of(const ControlPoints& q, const ControlPoints& h1,
+                                             const ControlPoints& h2,
+                                             const std::array<double, N>& ds,
+                                             const std::array<Point2, N>& starts,
+                                             const std::array<Point2, N>& ends) {
   // The 6-point Gauss-Legendre rule on [-1, 1] (Abramowitz and Stegun, table 25.4).
   static constexpr std::array<double, 3> kNodes{0.2386191860831969, 0.6612093864662645,
                                                 0.9324695142031521};
   static constexpr std::array<double, 3> kWeights{0.4679139345726910, 0.3607615730481386,
                                                   0.1713244923791704};
-  ChordMoments result;
-  const Point2 chord = end - start;
-  const double chord_squared = squared_length(chord);
-  if (!(chord_squared > 0.0)) return result;
-  const Point2 axis = chord / chord_squared;
-  double area = 0.0, moment = 0.0;
+  std::array<ChordMoments, N> results{};
+  std::array<Point2, N> axes{};
+  std::array<bool, N> open{};
+  bool any = false;
+  for (std::size_t c = 0; c < N; ++c) {
+    const Point2 chord = ends[c] - starts[c];
+    const double chord_squared = squared_length(chord);
+    open[c] = chord_squared > 0.0;
+    if (open[c]) axes[c] = chord / chord_squared;
+    any = any || open[c];
+  }
+  if (!any) return results;
+  std::array<double, N> area{}, moment{};
   const bool cubic = q.size() == 4;
   for (std::size_t i = 0; i < 2 * kNodes.size(); ++i) {
     const std::size_t k = i % kNodes.size();
@@ -306,26 +319,39 @@ ChordMoments chord_moments(const ControlPoints& q, const ControlPoints& h1,
     const Point2 v = cubic ? (w * w) * h1[0] + (2.0 * u * w) * h1[1] + (u * u) * h1[2]
                            : point_at(h1, u);
     const double speed_squared = squared_length(v);
-    if (!(speed_squared > 0.0)) return result;
+    if (!(speed_squared > 0.0)) return std::array<ChordMoments, N>{};
     const Point2 acc = cubic ? w * h2[0] + u * h2[1]
                              : (h2.empty() ? Point2{0, 0} : point_at(h2, u));
     const Point2 b = cubic ? (w * w * w) * q[0] + (3.0 * u * w * w) * q[1] +
                                  (3.0 * u * u * w) * q[2] + (u * u * u) * q[3]
                            : point_at(q, u);
     const double inverse = 1.0 / std::sqrt(speed_squared);
-    const Point2 at = b + (d * inverse) * left_normal(v);
-    const double rate = 1.0 - d * core::cross(v, acc) * (inverse * inverse * inverse);
-    const Point2 r = at - start;
-    const double x = core::dot(r, axis), y = core::cross(axis, r);
-    const double dx = weight * rate * core::dot(v, axis);
-    area += y * dx;
-    moment += x * y * dx;
+    for (std::size_t c = 0; c < N; ++c) {
+      if (!open[c]) continue;
+      const double d = ds[c];
+      const Point2 axis = axes[c];
+      const Point2 at = b + (d * inverse) * left_normal(v);
+      const double rate = 1.0 - d * core::cross(v, acc) * (inverse * inverse * inverse);
+      const Point2 r = at - starts[c];
+      const double x = core::dot(r, axis), y = core::cross(axis, r);
+      const double dx = weight * rate * core::dot(v, axis);
+      area[c] += y * dx;
+      moment[c] += x * y * dx;
+    }
   }
-  // The rule's weights sum to 2 on [-1, 1]: half of that on [0, 1].
-  result.area = 0.5 * area;
-  result.moment = 0.5 * moment;
-  result.valid = std::isfinite(result.area) && std::isfinite(result.moment);
-  return result;
+  for (std::size_t c = 0; c < N; ++c) {
+    if (!open[c]) continue;
+    // The rule's weights sum to 2 on [-1, 1]: half of that on [0, 1].
+    results[c].area = 0.5 * area[c];
+    results[c].moment = 0.5 * moment[c];
+    results[c].valid = std::isfinite(results[c].area) && std::isfinite(results[c].moment);
+  }
+  return results;
+}
+
+ChordMoments chord_moments(const ControlPoints& q, const ControlPoints& h1,
+                           const ControlPoints& h2, double d, Point2 start, Point2 end) {
+  return chord_moments_of<1>(q, h1, h2, {d}, {start}, {end})[0];
 }
 
 /// The cubic of offset.hpp with ends p0, p3 and unit end directions d0, d3 (the direction of
@@ -506,7 +532,7 @@ struct PieceFit {
 PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints& q,
                    const EndFrame& start, const EndFrame& end, double d, double tolerance,
                    double direction, std::vector<Point2>& o, const PieceShape* given = nullptr,
-                   bool presampled = false) {
+                   bool presampled = false, const ChordMoments* given_moments = nullptr) {
   PieceFit result;
   if (q.size() == 2) {
     // A line's parallel curve is the line through the offset ends: the cubic with its
@@ -540,7 +566,9 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
     // area_moment_fit.hpp, then the least squares.
     std::array<std::array<Point2, 4>, 6> candidates;
     std::size_t candidate_count = 0;
-    const ChordMoments moments = chord_moments(q, shape.h1, shape.h2, d, p0, p3);
+    const ChordMoments moments = given_moments != nullptr
+                                     ? *given_moments
+                                     : chord_moments(q, shape.h1, shape.h2, d, p0, p3);
     result.work += 8 * (n * (n + 1) + 24) + 100;
     Point2 t0{0, 0}, t3{0, 0};
     double chord_length = 0.0;
@@ -738,10 +766,17 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
                                          minus_samples);
   FirstPiece plus_first{start, end, travel_direction(s, s.d, a, b), {}};
   FirstPiece minus_first{start, end, travel_direction(s, -s.d, a, b), {}};
+  // The chord moments of both sides from one evaluation of B_p, B_p', B_p'' per node; the
+  // ends as fit_piece's (the samples' first and last).
+  const std::array<ChordMoments, 2> moments =
+      chord_moments_of<2>(q, shape->h1, shape->h2, {s.d, -s.d},
+                          {plus_samples.front(), minus_samples.front()},
+                          {plus_samples.back(), minus_samples.back()});
   plus_first.fit = fit_piece(s, a, b, q, start, end, s.d, tolerance_left, plus_first.direction,
-                             plus_samples, &*shape, sampled);
+                             plus_samples, &*shape, sampled, &moments[0]);
   minus_first.fit = fit_piece(s, a, b, q, start, end, -s.d, tolerance_left,
-                              minus_first.direction, minus_samples, &*shape, sampled);
+                              minus_first.direction, minus_samples, &*shape, sampled,
+                              &moments[1]);
   if (!fit_interval(s, s.d, a, b, budget, plus, &plus_first)) return false;
   return fit_interval(s, -s.d, a, b, budget, minus, &minus_first);
 }
