@@ -650,13 +650,25 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
   return result;
 }
 
-/// The direction of O at distance d (scaled) on [a, b]: the sign of 1 - d κ at its middle.
-double travel_direction(const ScaledCurve& s, double d, double a, double b) {
+/// The directions of O at the distances ds (scaled) on [a, b]: the sign of 1 - d κ at its
+/// middle, for each d.
+template <std::size_t N>
+std::array<double, N> travel_directions(const ScaledCurve& s, const std::array<double, N>& ds,
+                                        double a, double b) {
   const double middle = 0.5 * (a + b);
   const Point2 v = s.first.empty() ? Point2{0, 0} : point_at(s.first, middle);
   const Point2 acc = s.second.empty() ? Point2{0, 0} : point_at(s.second, middle);
   const double speed = std::sqrt(squared_length(v));
-  return speed > 0.0 && d * core::cross(v, acc) / (speed * speed * speed) > 1.0 ? -1.0 : 1.0;
+  std::array<double, N> out{};
+  for (std::size_t c = 0; c < N; ++c) {
+    out[c] = speed > 0.0 && ds[c] * core::cross(v, acc) / (speed * speed * speed) > 1.0 ? -1.0
+                                                                                        : 1.0;
+  }
+  return out;
+}
+
+double travel_direction(const ScaledCurve& s, double d, double a, double b) {
+  return travel_directions<1>(s, {d}, a, b)[0];
 }
 
 /// What the caller of fit_interval already has for the whole [a, b] at d: the end frames,
@@ -764,8 +776,9 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
   std::vector<Point2>& minus_samples = side_buffer();
   const bool sampled = sample_both_sides(q, shape->h1, s.d, start, end, weights, plus_samples,
                                          minus_samples);
-  FirstPiece plus_first{start, end, travel_direction(s, s.d, a, b), {}};
-  FirstPiece minus_first{start, end, travel_direction(s, -s.d, a, b), {}};
+  const std::array<double, 2> directions = travel_directions<2>(s, {s.d, -s.d}, a, b);
+  FirstPiece plus_first{start, end, directions[0], {}};
+  FirstPiece minus_first{start, end, directions[1], {}};
   // The chord moments of both sides from one evaluation of B_p, B_p', B_p'' per node; the
   // ends as fit_piece's (the samples' first and last).
   const std::array<ChordMoments, 2> moments =
