@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cassert>
 #include <span>
 #include <utility>
@@ -30,6 +31,10 @@ class BasicCurve {
   [[nodiscard]] const P& operator[](int i) const noexcept { return points_[static_cast<std::size_t>(i)]; }
   [[nodiscard]] const P& front() const noexcept { return points_.front(); }
   [[nodiscard]] const P& back() const noexcept { return points_.back(); }
+
+  /// The control points, taken out of a curve that is not used again (a curve edited or
+  /// reversed without copying its points).
+  [[nodiscard]] std::vector<P> take_points() && noexcept { return std::move(points_); }
 
   friend bool operator==(const BasicCurve&, const BasicCurve&) = default;
 
@@ -67,6 +72,14 @@ template <class P>
 [[nodiscard]] BasicCurve<P> reversed(const BasicCurve<P>& curve) {
   const auto pts = curve.points();
   return BasicCurve<P>(std::vector<P>(pts.rbegin(), pts.rend()));
+}
+
+/// The same, reusing the storage of a curve that is not used again.
+template <class P>
+[[nodiscard]] BasicCurve<P> reversed(BasicCurve<P>&& curve) {
+  std::vector<P> points = std::move(curve).take_points();
+  std::reverse(points.begin(), points.end());
+  return BasicCurve<P>(std::move(points));
 }
 
 }  // namespace bezier::core

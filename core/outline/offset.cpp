@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "core/numeric/power_of_two.hpp"
 #include "core/outline/area_moment_fit.hpp"
@@ -39,6 +40,12 @@ std::vector<Point2>& dense_buffer() {
   return buffer;
 }
 
+/// The buffer of one thread's samples of the other side of a piece (offset_interval_sides).
+std::vector<Point2>& side_buffer() {
+  thread_local std::vector<Point2> buffer;
+  return buffer;
+}
+
 Point2 left_normal(Point2 unit) { return {-unit.y, unit.x}; }
 
 /// A point of B and the unit tangent there (the limit from the piece's side where B' = 0).
@@ -68,9 +75,9 @@ struct ScaledCurve {
     hodograph_into(points, first);
     hodograph_into(first, second);
     const auto n = static_cast<double>(curve.degree());
-    least_speed = 1e-12 * n * std::sqrt(largest_squared_length(points));
-    margin = 64.0 * n * std::numeric_limits<double>::epsilon() *
-             (std::sqrt(largest_squared_length(points)) + std::fabs(d));
+    const double largest = std::sqrt(largest_squared_length(points));
+    least_speed = 1e-12 * n * largest;
+    margin = 64.0 * n * std::numeric_limits<double>::epsilon() * (largest + std::fabs(d));
   }
 
   /// B(t) and its unit tangent, computed from the whole curve so that two intervals meeting
@@ -221,6 +228,52 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
   return all;
 }
 
+/// Both sides' samples O = B_p ± d N at once (as sample_parallel at d and at -d, bit for
+/// bit): B_p and B_p' are evaluated once per sample. The ends are the end frames' points
+/// moved by ±d along their normals. Returns whether every sample is a number.
+bool sample_both_sides(const ControlPoints& q, const ControlPoints& h1, double d,
+                       const EndFrame& start, const EndFrame& end, const CubicWeights& weights,
+                       std::vector<Point2>& plus, std::vector<Point2>& minus) {
+  const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
+  if (q.size() != 4) {
+    const bool all = sample_parallel(q, h1, d, start.point + d * n0, end.point + d * n1,
+                                     weights, plus);
+    sample_parallel(q, h1, -d, start.point + (-d) * n0, end.point + (-d) * n1, weights, minus);
+    return all;
+  }
+  const int count = weights.count;
+  plus.resize(static_cast<std::size_t>(count) + 1);
+  minus.resize(static_cast<std::size_t>(count) + 1);
+  plus.front() = start.point + d * n0;
+  plus.back() = end.point + d * n1;
+  minus.front() = start.point + (-d) * n0;
+  minus.back() = end.point + (-d) * n1;
+  bool all = true;
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  const Point2 q0 = q[0], q1 = q[1], q2 = q[2], q3 = q[3];
+  const Point2 g0 = h1[0], g1 = h1[1], g2 = h1[2];
+  Point2* o = plus.data();
+  Point2* r = minus.data();
+  for (int j = 1; j < count; ++j) {
+    const auto i = static_cast<std::size_t>(j);
+    const double u = weights.u[i], w = 1.0 - u;
+    const Point2 v = (w * w) * g0 + (2.0 * u * w) * g1 + (u * u) * g2;
+    const double speed_squared = squared_length(v);
+    if (!(speed_squared > 0.0)) {
+      o[j] = r[j] = {kNaN, kNaN};
+      all = false;
+      continue;
+    }
+    // (-d) / x is -(d / x) exactly: the other side's samples are those of sample_parallel.
+    const double scale = d / std::sqrt(speed_squared), other = -scale;
+    const Point2 b = weights.b0[i] * q0 + weights.b1[i] * q1 + weights.b2[i] * q2 +
+                     weights.b3[i] * q3;
+    o[j] = {b.x - scale * v.y, b.y + scale * v.x};
+    r[j] = {b.x - other * v.y, b.y + other * v.x};
+  }
+  return all;
+}
+
 /// The signed area ∫ y dx and moment ∫ x y dx of O on the piece in the frame of its chord
 /// (area_moment_fit.hpp: O(0) at (0, 0), O(1) at (1, 0)), by Gauss-Legendre quadrature on
 /// six nodes, with O' = B_p' (1 - d κ), κ = cross(B_p', B_p'') / |B_p'|^3. Only
@@ -231,19 +284,32 @@ struct ChordMoments {
   bool valid = false;
 };
 
-ChordMoments chord_moments(const ControlPoints& q, const ControlPoints& h1,
-                           const ControlPoints& h2, double d, Point2 start, Point2 end) {
+/// The moments of N parallel curves of one piece, at the distances ds with the ends starts,
+/// ends: B_p, B_p' and B_p'' once per node for all of them, each curve's sums as alone.
+template <std::size_t N>
+std::array<ChordMoments, N> chord_moments_of(const ControlPoints& q, const ControlPoints& h1,
+                                             const ControlPoints& h2,
+                                             const std::array<double, N>& ds,
+                                             const std::array<Point2, N>& starts,
+                                             const std::array<Point2, N>& ends) {
   // The 6-point Gauss-Legendre rule on [-1, 1] (Abramowitz and Stegun, table 25.4).
   static constexpr std::array<double, 3> kNodes{0.2386191860831969, 0.6612093864662645,
                                                 0.9324695142031521};
   static constexpr std::array<double, 3> kWeights{0.4679139345726910, 0.3607615730481386,
                                                   0.1713244923791704};
-  ChordMoments result;
-  const Point2 chord = end - start;
-  const double chord_squared = squared_length(chord);
-  if (!(chord_squared > 0.0)) return result;
-  const Point2 axis = chord / chord_squared;
-  double area = 0.0, moment = 0.0;
+  std::array<ChordMoments, N> results{};
+  std::array<Point2, N> axes{};
+  std::array<bool, N> open{};
+  bool any = false;
+  for (std::size_t c = 0; c < N; ++c) {
+    const Point2 chord = ends[c] - starts[c];
+    const double chord_squared = squared_length(chord);
+    open[c] = chord_squared > 0.0;
+    if (open[c]) axes[c] = chord / chord_squared;
+    any = any || open[c];
+  }
+  if (!any) return results;
+  std::array<double, N> area{}, moment{};
   const bool cubic = q.size() == 4;
   for (std::size_t i = 0; i < 2 * kNodes.size(); ++i) {
     const std::size_t k = i % kNodes.size();
@@ -253,26 +319,39 @@ ChordMoments chord_moments(const ControlPoints& q, const ControlPoints& h1,
     const Point2 v = cubic ? (w * w) * h1[0] + (2.0 * u * w) * h1[1] + (u * u) * h1[2]
                            : point_at(h1, u);
     const double speed_squared = squared_length(v);
-    if (!(speed_squared > 0.0)) return result;
+    if (!(speed_squared > 0.0)) return std::array<ChordMoments, N>{};
     const Point2 acc = cubic ? w * h2[0] + u * h2[1]
                              : (h2.empty() ? Point2{0, 0} : point_at(h2, u));
     const Point2 b = cubic ? (w * w * w) * q[0] + (3.0 * u * w * w) * q[1] +
                                  (3.0 * u * u * w) * q[2] + (u * u * u) * q[3]
                            : point_at(q, u);
     const double inverse = 1.0 / std::sqrt(speed_squared);
-    const Point2 at = b + (d * inverse) * left_normal(v);
-    const double rate = 1.0 - d * core::cross(v, acc) * (inverse * inverse * inverse);
-    const Point2 r = at - start;
-    const double x = core::dot(r, axis), y = core::cross(axis, r);
-    const double dx = weight * rate * core::dot(v, axis);
-    area += y * dx;
-    moment += x * y * dx;
+    for (std::size_t c = 0; c < N; ++c) {
+      if (!open[c]) continue;
+      const double d = ds[c];
+      const Point2 axis = axes[c];
+      const Point2 at = b + (d * inverse) * left_normal(v);
+      const double rate = 1.0 - d * core::cross(v, acc) * (inverse * inverse * inverse);
+      const Point2 r = at - starts[c];
+      const double x = core::dot(r, axis), y = core::cross(axis, r);
+      const double dx = weight * rate * core::dot(v, axis);
+      area[c] += y * dx;
+      moment[c] += x * y * dx;
+    }
   }
-  // The rule's weights sum to 2 on [-1, 1]: half of that on [0, 1].
-  result.area = 0.5 * area;
-  result.moment = 0.5 * moment;
-  result.valid = std::isfinite(result.area) && std::isfinite(result.moment);
-  return result;
+  for (std::size_t c = 0; c < N; ++c) {
+    if (!open[c]) continue;
+    // The rule's weights sum to 2 on [-1, 1]: half of that on [0, 1].
+    results[c].area = 0.5 * area[c];
+    results[c].moment = 0.5 * moment[c];
+    results[c].valid = std::isfinite(results[c].area) && std::isfinite(results[c].moment);
+  }
+  return results;
+}
+
+ChordMoments chord_moments(const ControlPoints& q, const ControlPoints& h1,
+                           const ControlPoints& h2, double d, Point2 start, Point2 end) {
+  return chord_moments_of<1>(q, h1, h2, {d}, {start}, {end})[0];
 }
 
 /// The cubic of offset.hpp with ends p0, p3 and unit end directions d0, d3 (the direction of
@@ -423,6 +502,19 @@ double ball_bound(const ControlPoints& q, const ControlPoints& h1, const std::ar
   return std::sqrt(r_curve) + std::fabs(d) * (hi - lo) + std::sqrt(r_cubic);
 }
 
+/// The K for which the remainder h^2 / 8 second is within `budget`.
+int samples_for(double second, double budget) {
+  return static_cast<int>(
+      std::clamp(std::ceil(std::sqrt(second / (8.0 * budget))), 1.0, double{kMaxSamples}));
+}
+
+/// fit_piece's first K: the remainder within kFirstRemainder of the tolerance with |e''|
+/// estimated at the bound `turning` of |d N''| (the area and moment cubic's C'' follows B_p''
+/// closely), at least kFitSamples. It depends on |d| only: both sides of a piece share it.
+int first_sample_count(double turning, double tolerance) {
+  return std::max(samples_for(turning, kFirstRemainder * tolerance), kFitSamples);
+}
+
 /// A fitted piece: its cubic and its certified bound (infinite when not certified), and how
 /// many times the tolerance its largest sampled error was (to choose the split).
 struct PieceFit {
@@ -439,7 +531,8 @@ struct PieceFit {
 /// the first within the tolerance kept.
 PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints& q,
                    const EndFrame& start, const EndFrame& end, double d, double tolerance,
-                   double direction, std::vector<Point2>& o) {
+                   double direction, std::vector<Point2>& o, const PieceShape* given = nullptr,
+                   bool presampled = false, const ChordMoments* given_moments = nullptr) {
   PieceFit result;
   if (q.size() == 2) {
     // A line's parallel curve is the line through the offset ends: the cubic with its
@@ -453,32 +546,29 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
     return result;
   }
   const auto n = static_cast<std::int64_t>(q.size()) - 1;
-  const PieceShape shape(s, a, b);
+  std::optional<PieceShape> own;
+  const PieceShape& shape = given != nullptr ? *given : own.emplace(s, a, b);
   const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
   const Point2 p0 = start.point + d * n0, p3 = end.point + d * n1;
   const Point2 d0 = direction * start.tangent, d3 = direction * end.tangent;
   result.work = 8 * (n + 1) * (n + 1);
-  // The K for which the remainder h^2 / 8 |e''| is within `budget`.
-  auto samples_for = [&](double second, double budget) {
-    return static_cast<int>(
-        std::clamp(std::ceil(std::sqrt(second / (8.0 * budget))), 1.0, double{kMaxSamples}));
-  };
   if (shape.m > 0.0) {
     const double turning = shape.normal_second(d);
     // Between samples, |B_p'' - its linear interpolant| <= M3 h / 2 (zero when n <= 3).
     const double bend = q.size() > 4 ? 0.5 * shape.M3 : 0.0;
     // K for a remainder within kFirstRemainder of the tolerance with |e''| estimated at the
     // bound of |d N''| (the area and moment cubic's C'' follows B_p'' closely).
-    const int count =
-        std::max(samples_for(turning, kFirstRemainder * tolerance), kFitSamples);
+    const int count = first_sample_count(turning, tolerance);
     const CubicWeights& weights = cubic_weights(count);
-    if (!sample_parallel(q, shape.h1, d, p0, p3, weights, o)) return result;
+    if (!presampled && !sample_parallel(q, shape.h1, d, p0, p3, weights, o)) return result;
     result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
     // The candidates: the area and moment cubic nearest an arc, then the others of
     // area_moment_fit.hpp, then the least squares.
     std::array<std::array<Point2, 4>, 6> candidates;
     std::size_t candidate_count = 0;
-    const ChordMoments moments = chord_moments(q, shape.h1, shape.h2, d, p0, p3);
+    const ChordMoments moments = given_moments != nullptr
+                                     ? *given_moments
+                                     : chord_moments(q, shape.h1, shape.h2, d, p0, p3);
     result.work += 8 * (n * (n + 1) + 24) + 100;
     Point2 t0{0, 0}, t3{0, 0};
     double chord_length = 0.0;
@@ -560,19 +650,43 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
   return result;
 }
 
-/// Fits [a, b] of the scaled curve, splitting where the bound fails; appends the cubics
-/// (scaled back) to `out`.
-bool fit_interval(const ScaledCurve& s, double a, double b, core::WorkBudget& budget,
-                  std::vector<OffsetCubic>& out) {
-  const std::size_t kept = out.size();
-  const auto n = static_cast<std::int64_t>(s.points.size()) - 1;
-  // The direction of O on this interval: the sign of 1 - d κ at its middle.
+/// The directions of O at the distances ds (scaled) on [a, b]: the sign of 1 - d κ at its
+/// middle, for each d.
+template <std::size_t N>
+std::array<double, N> travel_directions(const ScaledCurve& s, const std::array<double, N>& ds,
+                                        double a, double b) {
   const double middle = 0.5 * (a + b);
   const Point2 v = s.first.empty() ? Point2{0, 0} : point_at(s.first, middle);
   const Point2 acc = s.second.empty() ? Point2{0, 0} : point_at(s.second, middle);
   const double speed = std::sqrt(squared_length(v));
-  const double direction =
-      speed > 0.0 && s.d * core::cross(v, acc) / (speed * speed * speed) > 1.0 ? -1.0 : 1.0;
+  std::array<double, N> out{};
+  for (std::size_t c = 0; c < N; ++c) {
+    out[c] = speed > 0.0 && ds[c] * core::cross(v, acc) / (speed * speed * speed) > 1.0 ? -1.0
+                                                                                        : 1.0;
+  }
+  return out;
+}
+
+double travel_direction(const ScaledCurve& s, double d, double a, double b) {
+  return travel_directions<1>(s, {d}, a, b)[0];
+}
+
+/// What the caller of fit_interval already has for the whole [a, b] at d: the end frames,
+/// O's direction there, and fit_piece's fit of [a, b].
+struct FirstPiece {
+  EndFrame start, end;
+  double direction = 1.0;
+  PieceFit fit;
+};
+
+/// Fits [a, b] of the scaled curve at the scaled distance d (s.d or -s.d), splitting where
+/// the bound fails; appends the cubics (scaled back) to `out`. `first`, when given, is the
+/// whole [a, b]'s (FirstPiece).
+bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::WorkBudget& budget,
+                  std::vector<OffsetCubic>& out, const FirstPiece* first = nullptr) {
+  const std::size_t kept = out.size();
+  const auto n = static_cast<std::int64_t>(s.points.size()) - 1;
+  const double direction = first != nullptr ? first->direction : travel_direction(s, d, a, b);
 
   struct Pending {
     double a, b;
@@ -582,15 +696,24 @@ bool fit_interval(const ScaledCurve& s, double a, double b, core::WorkBudget& bu
   // Depth-first, leftmost part on top (one buffer per thread, reused).
   thread_local std::vector<Pending> stack;
   stack.clear();
-  stack.push_back({a, b, s.frame(a, a, b, true), s.frame(b, a, b, false), 0});
+  if (first != nullptr) {
+    stack.push_back({a, b, first->start, first->end, 0});
+  } else {
+    stack.push_back({a, b, s.frame(a, a, b, true), s.frame(b, a, b, false), 0});
+  }
   ControlPoints q;
   std::vector<Point2>& samples = sample_buffer();
   while (!stack.empty()) {
     const Pending piece = stack.back();
     stack.pop_back();
-    piece_into(s.points, piece.a, piece.b, q);
-    const PieceFit fitted = fit_piece(s, piece.a, piece.b, q, piece.start, piece.end, s.d,
-                                      s.tolerance - s.margin, direction, samples);
+    PieceFit own;
+    if (first == nullptr) {
+      piece_into(s.points, piece.a, piece.b, q);
+      own = fit_piece(s, piece.a, piece.b, q, piece.start, piece.end, d,
+                      s.tolerance - s.margin, direction, samples);
+    }
+    const PieceFit& fitted = first != nullptr ? first->fit : own;
+    first = nullptr;
     if (!budget.spend(fitted.work + 16 * (n + 1) * (n + 1))) {
       out.resize(kept);
       return false;
@@ -628,7 +751,47 @@ bool fit_interval(const ScaledCurve& s, double a, double b, core::WorkBudget& bu
 bool offset_interval(const core::Curve& curve, double a, double b, double d, double tolerance,
                      core::WorkBudget& budget, std::vector<OffsetCubic>& out) {
   const ScaledCurve scaled(curve, d, tolerance);
-  return fit_interval(scaled, a, b, budget, out);
+  return fit_interval(scaled, scaled.d, a, b, budget, out);
+}
+
+bool offset_interval_sides(const core::Curve& curve, double a, double b, double d,
+                           double tolerance, core::WorkBudget& budget,
+                           std::vector<OffsetCubic>& plus, std::vector<OffsetCubic>& minus) {
+  const ScaledCurve s(curve, d, tolerance);
+  ControlPoints q;
+  piece_into(s.points, a, b, q);
+  std::optional<PieceShape> shape;
+  if (q.size() > 2) shape.emplace(s, a, b);
+  if (!shape || !(shape->m > 0.0)) {
+    // A line, or a piece whose fit needs no samples of its own kind: each side alone.
+    if (!fit_interval(s, s.d, a, b, budget, plus)) return false;
+    return fit_interval(s, -s.d, a, b, budget, minus);
+  }
+  const EndFrame start = s.frame(a, a, b, true), end = s.frame(b, a, b, false);
+  const double tolerance_left = s.tolerance - s.margin;
+  // The sample count of fit_piece depends on |d| only, so both sides share it.
+  const int count = first_sample_count(shape->normal_second(s.d), tolerance_left);
+  const CubicWeights& weights = cubic_weights(count);
+  std::vector<Point2>& plus_samples = sample_buffer();
+  std::vector<Point2>& minus_samples = side_buffer();
+  const bool sampled = sample_both_sides(q, shape->h1, s.d, start, end, weights, plus_samples,
+                                         minus_samples);
+  const std::array<double, 2> directions = travel_directions<2>(s, {s.d, -s.d}, a, b);
+  FirstPiece plus_first{start, end, directions[0], {}};
+  FirstPiece minus_first{start, end, directions[1], {}};
+  // The chord moments of both sides from one evaluation of B_p, B_p', B_p'' per node; the
+  // ends as fit_piece's (the samples' first and last).
+  const std::array<ChordMoments, 2> moments =
+      chord_moments_of<2>(q, shape->h1, shape->h2, {s.d, -s.d},
+                          {plus_samples.front(), minus_samples.front()},
+                          {plus_samples.back(), minus_samples.back()});
+  plus_first.fit = fit_piece(s, a, b, q, start, end, s.d, tolerance_left, plus_first.direction,
+                             plus_samples, &*shape, sampled, &moments[0]);
+  minus_first.fit = fit_piece(s, a, b, q, start, end, -s.d, tolerance_left,
+                              minus_first.direction, minus_samples, &*shape, sampled,
+                              &moments[1]);
+  if (!fit_interval(s, s.d, a, b, budget, plus, &plus_first)) return false;
+  return fit_interval(s, -s.d, a, b, budget, minus, &minus_first);
 }
 
 CurveOffset offset_curve(const core::Curve& curve, double d, double tolerance,
@@ -644,7 +807,7 @@ CurveOffset offset_curve(const core::Curve& curve, double d, double tolerance,
   const ScaledCurve scaled(curve, d, tolerance);
   for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
     if (!(cuts[k + 1] > cuts[k])) continue;
-    if (!fit_interval(scaled, cuts[k], cuts[k + 1], budget, result.cubics)) {
+    if (!fit_interval(scaled, scaled.d, cuts[k], cuts[k + 1], budget, result.cubics)) {
       result.cubics.clear();
       break;
     }

@@ -114,4 +114,17 @@ struct CurveOffset {
 bool offset_interval(const core::Curve& curve, double a, double b, double d, double tolerance,
                      core::WorkBudget& budget, std::vector<OffsetCubic>& out);
 
+/// offset_interval at d and at -d on the same [a, b] (the two sides of a stroke's segment
+/// where neither has a cusp inside): the cubics of the side at d are appended to `plus`,
+/// those at -d to `minus`, each exactly (bit for bit) those offset_interval gives for its
+/// side, with the same work charged. The two sides share what does not depend on the sign of
+/// d: the scaled curve, the piece's hodographs and bounds, the end frames, the sample count,
+/// and, for the first fit of [a, b], the evaluations of B, B' and B'' at its samples and
+/// at the chord moments' quadrature nodes; a side whose first fit fails is split on its own.
+/// False when the budget runs out or a piece fails as in offset_interval (nothing appended
+/// to `minus`; `plus` may hold its side's cubics).
+bool offset_interval_sides(const core::Curve& curve, double a, double b, double d,
+                           double tolerance, core::WorkBudget& budget,
+                           std::vector<OffsetCubic>& plus, std::vector<OffsetCubic>& minus);
+
 }  // namespace bezier::outline

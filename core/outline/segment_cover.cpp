@@ -125,6 +125,35 @@ bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
     StretchEdges stretch;
     stretch.start = point_at(segment.points(), a);
     stretch.end = point_at(segment.points(), b);
+    // Where neither side has a cusp in (a, b) and neither is tight, both sides are the
+    // parallel curves at ±R on the whole stretch: fitted together (offset_interval_sides,
+    // the same cubics as one offset_interval per side).
+    auto inside_count = [&](const std::vector<double>& side) {
+      return std::count_if(side.begin(), side.end(), [&](double t) { return t > a && t < b; });
+    };
+    const double reach = factor.times(sizes.reach);
+    const double middle_curvature = curvature_at(h1, h2, 0.5 * (a + b));
+    if (inside_count(cusps[0]) == 0 && inside_count(cusps[1]) == 0 &&
+        !(middle_curvature * reach > 1.0) && !(-middle_curvature * reach > 1.0)) {
+      cubics.clear();
+      thread_local std::vector<OffsetCubic> other_side;
+      other_side.clear();
+      if (!offset_interval_sides(segment, a, b, sizes.reach, sizes.fit_tolerance, sink.budget(),
+                                 cubics, other_side)) {
+        sink.fail_work();
+        return false;
+      }
+      for (int side = 0; side < 2; ++side) {
+        Contour& chain = side == 0 ? stretch.left : stretch.right;
+        for (const OffsetCubic& c : side == 0 ? cubics : other_side) {
+          append_to_chain(chain,
+                          core::Curve({c.points[0], c.points[1], c.points[2], c.points[3]}),
+                          sizes.snap);
+        }
+      }
+      out.stretches.push_back(std::move(stretch));
+      continue;
+    }
     for (int side = 0; side < 2; ++side) {
       const double sign = side == 0 ? 1.0 : -1.0;
       Contour& chain = side == 0 ? stretch.left : stretch.right;

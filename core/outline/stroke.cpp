@@ -50,6 +50,13 @@ class Run {
 
   [[nodiscard]] bool empty() const noexcept { return right_.empty(); }
 
+  /// Room for a run whose stretches have `right` and `left` edge curves in all, and the few
+  /// lines its contours may add, so that they are built without growing.
+  void reserve(std::size_t right, std::size_t left) {
+    right_.reserve(right + left + 4);
+    left_.reserve(left + 2);
+  }
+
   /// `at_zero_of_derivative`: the stretch starts at a zero of B' inside its segment (the run
   /// starts there too).
   void add(StretchEdges& stretch, bool at_zero_of_derivative) {
@@ -70,7 +77,7 @@ class Run {
     Contour contour = std::move(right_);
     if (end_at_zero_of_derivative) pass_through(contour, end_, snap_);
     for (auto it = left_.rbegin(); it != left_.rend(); ++it) {
-      append_to_chain(contour, core::reversed(*it), snap_);
+      append_to_chain(contour, core::reversed(std::move(*it)), snap_);
     }
     if (start_at_zero_) pass_through(contour, start_, snap_);
     close_chain(contour, snap_);
@@ -85,7 +92,10 @@ class Run {
     close_chain(right, snap_);
     close_chain(left_, snap_);
     Contour left;
-    for (auto it = left_.rbegin(); it != left_.rend(); ++it) left.push_back(core::reversed(*it));
+    left.reserve(left_.size());
+    for (auto it = left_.rbegin(); it != left_.rend(); ++it) {
+      left.push_back(core::reversed(std::move(*it)));
+    }
     clear();
     return {std::move(right), std::move(left)};
   }
@@ -191,6 +201,8 @@ StrokeOutline stroke(const path::Path& path, const StrokeStyle& style, double to
       StretchEdges* stretch;
       bool break_before;  // a run starts here
       bool at_zero;       // ... at a zero of B' inside the segment
+      // The edge curves of the stretches from this one to the end of its run.
+      std::size_t right_to_end = 0, left_to_end = 0;
     };
     std::vector<Step> steps;
     for (std::size_t j = 0; j < m; ++j) {
@@ -204,9 +216,15 @@ StrokeOutline stroke(const path::Path& path, const StrokeStyle& style, double to
         std::find_if(steps.begin(), steps.end(), [](const Step& st) { return st.break_before; });
     const bool any_break = first_break != steps.end();
     std::rotate(steps.begin(), any_break ? first_break : steps.begin(), steps.end());
+    for (std::size_t i = steps.size(); i-- > 0;) {
+      const bool last = i + 1 == steps.size() || steps[i + 1].break_before;
+      steps[i].right_to_end = steps[i].stretch->right.size() + (last ? 0 : steps[i + 1].right_to_end);
+      steps[i].left_to_end = steps[i].stretch->left.size() + (last ? 0 : steps[i + 1].left_to_end);
+    }
     Run run(sizes.snap);
     for (const Step& st : steps) {
       if (st.break_before && !run.empty() && !sink.add(run.open_contour(st.at_zero))) break;
+      if (run.empty()) run.reserve(st.right_to_end, st.left_to_end);
       run.add(*st.stretch, st.at_zero);
     }
     if (!sink.ok()) break;

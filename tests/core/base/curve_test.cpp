@@ -1,5 +1,6 @@
 // is_point (curve.hpp): a curve is a point exactly when all its control points are equal,
-// compared as the points' == compares them.
+// compared as the points' == compares them. reversed: the control points in reverse order,
+// from a curve kept or from one given up (take_points: its points, in order).
 
 #include "core/base/curve.hpp"
 
@@ -7,6 +8,8 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace bezier::core {
 namespace {
@@ -39,6 +42,25 @@ TEST(IsPoint, NaNIsNeverEqual) {
 TEST(IsPoint, SpaceCurves) {
   EXPECT_TRUE(is_point(Curve3({{1, 2, 3}, {1, 2, 3}, {1, 2, 3}})));
   EXPECT_FALSE(is_point(Curve3({{1, 2, 3}, {1, 2, 3}, {1, 2, 4}})));
+}
+
+TEST(Reversed, ControlPointsInReverseOrderFromACopyOrAGivenUpCurve) {
+  const Curve curve({{1, 2}, {3, -4}, {-5, 6}, {7, 8.5}});
+  const Curve expected({{7, 8.5}, {-5, 6}, {3, -4}, {1, 2}});
+  EXPECT_EQ(reversed(curve), expected);
+  Curve given_up = curve;
+  EXPECT_EQ(reversed(std::move(given_up)), expected);
+  const Curve3 space({{1, 2, 3}, {4, 5, 6}});
+  EXPECT_EQ(reversed(Curve3(space)), Curve3({{4, 5, 6}, {1, 2, 3}}));
+}
+
+TEST(TakePoints, TheControlPointsInOrder) {
+  Curve curve({{1, 2}, {3, -4}, {-5, 6}});
+  const std::vector<Point2> points = std::move(curve).take_points();
+  ASSERT_EQ(points.size(), 3u);
+  EXPECT_EQ(points[0], (Point2{1, 2}));
+  EXPECT_EQ(points[1], (Point2{3, -4}));
+  EXPECT_EQ(points[2], (Point2{-5, 6}));
 }
 
 }  // namespace

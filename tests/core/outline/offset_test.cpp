@@ -10,7 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <utility>
 #include <limits>
 #include <vector>
 
@@ -18,6 +21,7 @@
 #include "core/curve/evaluate.hpp"
 #include "core/measure/nearest.hpp"
 #include "core/outline/offset_cusps.hpp"
+#include "core/outline/tangent_limits.hpp"
 #include "tests/support/mulberry32.hpp"
 
 namespace bezier::outline {
@@ -175,6 +179,58 @@ TEST(Offset, TheChecksTellAnotherDistanceApart) {
   for (int j = 0; j <= 20; ++j)
     worst = std::max(worst, distance_to_answer(o, exact_offset(parabola, 0.31, j / 20.0, 1.0)));
   EXPECT_GT(worst, 5e-3);
+}
+
+TEST(Offset, BothSidesTogetherAreEachSideAlone) {
+  // offset_interval_sides at ±d gives, bit for bit, the cubics and the work of
+  // offset_interval at d and at -d, on intervals with no cusp of either side and no zero of
+  // B' inside (lines, conics, cubics and quintics, loose and nearly tight sides, tight
+  // tolerances where the first fit of a side fails and it is split on its own).
+  test::Mulberry32 rng(3132);
+  std::vector<Curve> curves{Curve({{0, 0}, {3, 1}}), Curve({{-1, 1}, {0, -1}, {1, 1}})};
+  for (int trial = 0; trial < 24; ++trial) {
+    const int n = trial % 3 == 2 ? 5 : 3;
+    std::vector<Point2> p;
+    for (int k = 0; k <= n; ++k) p.push_back({rng.uniform(-1, 1), rng.uniform(-1, 1)});
+    curves.emplace_back(p);
+  }
+  int compared = 0;
+  for (const Curve& curve : curves) {
+    for (const double d : {0.02, 0.3}) {
+      for (const double tolerance : {1e-3, 1e-7}) {
+        std::vector<double> cuts{0.0, 1.0};
+        for (const double t : offset_cusps(curve, d)) cuts.push_back(t);
+        for (const double t : offset_cusps(curve, -d)) cuts.push_back(t);
+        for (const double t : stationary_points(curve)) cuts.push_back(t);
+        std::sort(cuts.begin(), cuts.end());
+        for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+          const double a = cuts[k], b = cuts[k + 1];
+          if (!(b > a)) continue;
+          core::WorkBudget alone_budget(std::numeric_limits<std::int64_t>::max() / 4);
+          core::WorkBudget together_budget(std::numeric_limits<std::int64_t>::max() / 4);
+          std::vector<OffsetCubic> plus, minus, plus_alone, minus_alone;
+          ASSERT_TRUE(offset_interval(curve, a, b, d, tolerance, alone_budget, plus_alone));
+          ASSERT_TRUE(offset_interval(curve, a, b, -d, tolerance, alone_budget, minus_alone));
+          ASSERT_TRUE(
+              offset_interval_sides(curve, a, b, d, tolerance, together_budget, plus, minus));
+          EXPECT_EQ(alone_budget.spent(), together_budget.spent());
+          for (const auto& [together, alone] : {std::pair{&plus, &plus_alone},
+                                                std::pair{&minus, &minus_alone}}) {
+            ASSERT_EQ(together->size(), alone->size());
+            for (std::size_t i = 0; i < alone->size(); ++i) {
+              EXPECT_EQ((*together)[i].t0, (*alone)[i].t0);
+              EXPECT_EQ((*together)[i].t1, (*alone)[i].t1);
+              EXPECT_EQ((*together)[i].error_bound, (*alone)[i].error_bound);
+              for (std::size_t j = 0; j < 4; ++j)
+                EXPECT_EQ((*together)[i].points[j], (*alone)[i].points[j]);
+            }
+          }
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 100);
 }
 
 TEST(Offset, WorkCapIsReported) {
