@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -84,13 +85,17 @@ TEST(CertainlyMonotone, LoopsCuspsAndPointsAreNeverShown) {
   EXPECT_FALSE(certainly_monotone(std::vector<Point2>{{2, 3}}));
 }
 
-TEST(CertainlyMonotone, RandomCubicsAgreeWithTheExactCriterion) {
-  test::Mulberry32 rng(7);
+/// On 4000 random cubics, `shown` (one of certainly_monotone's overloads) is never true for a
+/// loop or when 0 is in the hull of the differences (exact rationals), and both kinds are
+/// met often.
+template <class Shown>
+void expect_agreement_with_the_exact_criterion(std::uint32_t seed, const Shown& shown_of) {
+  test::Mulberry32 rng(seed);
   int shown = 0, loops = 0;
   for (int k = 0; k < 4000; ++k) {
     std::vector<Point2> p;
     for (int i = 0; i < 4; ++i) p.push_back({rng.next(), rng.next()});
-    const bool monotone = certainly_monotone(p);
+    const bool monotone = shown_of(p);
     const auto dp = cubic_double_point(Curve(p));
     if (dp && dp->on_segment) {
       ++loops;
@@ -101,33 +106,22 @@ TEST(CertainlyMonotone, RandomCubicsAgreeWithTheExactCriterion) {
       EXPECT_FALSE(origin_in_hull(differences(p))) << k;
     }
   }
-  // Both kinds were met often.
   EXPECT_GT(shown, 500);
   EXPECT_GT(loops, 100);
+}
+
+TEST(CertainlyMonotone, RandomCubicsAgreeWithTheExactCriterion) {
+  expect_agreement_with_the_exact_criterion(
+      7, [](const std::vector<Point2>& p) { return certainly_monotone(p); });
 }
 
 TEST(CertainlyMonotone, FourPointOverloadAgreesWithTheExactCriterion) {
   // The overload for a cubic's four points (fixed extent), on random cubics and the cases
   // above: never true for a loop or when 0 is in the differences' hull, and true for the
   // curves shown above.
-  test::Mulberry32 rng(11);
-  int shown = 0, loops = 0;
-  for (int k = 0; k < 4000; ++k) {
-    std::vector<Point2> p;
-    for (int i = 0; i < 4; ++i) p.push_back({rng.next(), rng.next()});
-    const bool monotone = certainly_monotone(std::span<const Point2, 4>(p.data(), 4));
-    const auto dp = cubic_double_point(Curve(p));
-    if (dp && dp->on_segment) {
-      ++loops;
-      EXPECT_FALSE(monotone) << k;
-    }
-    if (monotone) {
-      ++shown;
-      EXPECT_FALSE(origin_in_hull(differences(p))) << k;
-    }
-  }
-  EXPECT_GT(shown, 500);
-  EXPECT_GT(loops, 100);
+  expect_agreement_with_the_exact_criterion(11, [](const std::vector<Point2>& p) {
+    return certainly_monotone(std::span<const Point2, 4>(p.data(), 4));
+  });
   const std::vector<Point2> hook{{0, 0}, {1, 0}, {1, 1}, {0, 1.1}};
   EXPECT_TRUE(certainly_monotone(std::span<const Point2, 4>(hook.data(), 4)));
   const std::vector<Point2> cusp{{0, 0}, {1, 1}, {0, 1}, {1, 0}};
