@@ -74,6 +74,17 @@ bool loose_everywhere(const ControlPoints& h1, const ControlPoints& h2, double r
 
 }  // namespace
 
+CoverSizes cover_sizes(double half_width, double tolerance) {
+  CoverSizes sizes;
+  sizes.radius = half_width;
+  sizes.reach = half_width + tolerance / 2.0;
+  sizes.fit_tolerance = 0.49 * tolerance;
+  sizes.snap = 0.01 * tolerance;
+  sizes.disk_radius = sizes.reach + 0.005 * tolerance;
+  sizes.circle_pieces = circle_pieces(sizes.disk_radius, 0.485 * tolerance);
+  return sizes;
+}
+
 bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineSink& sink,
                    SegmentCover& out) {
   const auto n = static_cast<std::int64_t>(segment.degree());

@@ -23,6 +23,11 @@ struct CoverSizes {
   double snap = 0.0;
 };
 
+/// The sizes of a stroke of half width r at tolerance ε (stroke.hpp's budget of ε): R = r +
+/// ε/2, each offset fit within 0.49 ε, the disks of radius R + 0.005 ε in circles within
+/// 0.485 ε, and chain ends closer than 0.01 ε taken as one point.
+[[nodiscard]] CoverSizes cover_sizes(double half_width, double tolerance);
+
 /// One stretch of a segment between its zeros of B' (or its ends): the two edges of its
 /// cover, each an open chain in order of t (stroke.cpp joins the stretches of consecutive
 /// segments into contours). `left` is the side s = +R, `right` the side s = -R.

@@ -118,13 +118,7 @@ StrokeOutline stroke(const path::Path& path, const StrokeStyle& style, double to
                      core::WorkBudget& budget, std::size_t max_segments) {
   OutlineSink sink(budget, max_segments);
   const double r = style.width / 2.0;
-  CoverSizes sizes;
-  sizes.radius = r;
-  sizes.reach = r + tolerance / 2.0;
-  sizes.fit_tolerance = 0.49 * tolerance;
-  sizes.snap = 0.01 * tolerance;
-  sizes.disk_radius = sizes.reach + 0.005 * tolerance;
-  sizes.circle_pieces = circle_pieces(sizes.disk_radius, 0.485 * tolerance);
+  const CoverSizes sizes = cover_sizes(r, tolerance);
   const bool round_join = style.join == LineJoin::round;
 
   // The covers of the drawn segments, each segment's once (a closed subpath's first segment

@@ -28,17 +28,6 @@ using core::Point2;
 
 constexpr double kUnit = std::numeric_limits<double>::epsilon() / 2.0;
 
-CoverSizes sizes_for(double r, double tolerance) {
-  CoverSizes sizes;
-  sizes.radius = r;
-  sizes.reach = r + tolerance / 2.0;
-  sizes.fit_tolerance = 0.49 * tolerance;
-  sizes.snap = 0.01 * tolerance;
-  sizes.disk_radius = sizes.reach + 0.005 * tolerance;
-  sizes.circle_pieces = circle_pieces(sizes.disk_radius, 0.485 * tolerance);
-  return sizes;
-}
-
 /// Over the sampled points B(t) + s N(t) (t in [t0, t1] of `curve`, 0 <= s <= min(ρ(t), r),
 /// N towards `side`): the largest distance to the nearest of `centres`, and the samples where
 /// the curve does not turn to the side.
@@ -97,7 +86,7 @@ TEST(TightSideCover, TangentDiskTestAcceptsOnlyPartsTheDiskHolds) {
       r = 1.0 / std::fabs(f->curvature) - tolerance / 2.0;
       if (!(r > 0.0)) continue;
     }
-    const CoverSizes sizes = sizes_for(r, tolerance);
+    const CoverSizes sizes = cover_sizes(r, tolerance);
     const core::Curve piece = core::portion(curve, a, b);
     const Point2 centre = core::evaluate(piece, 0.5);
     const double scale = core::scale(curve);
@@ -126,7 +115,7 @@ TEST(TightSideCover, RefusesAPartTurningAQuarterTurn) {
     const double k = 4.0 / 3.0 * std::tan(sweep / 4);
     const core::Curve arc({{1, 0}, {1, k}, {std::cos(sweep) + k * std::sin(sweep), std::sin(sweep) - k * std::cos(sweep)},
                            {std::cos(sweep), std::sin(sweep)}});
-    const CoverSizes sizes = sizes_for(10.0, 1e-3);
+    const CoverSizes sizes = cover_sizes(10.0, 1e-3);
     const bool holds = tangent_disk_holds(arc.points(), core::evaluate(arc, 0.5), 1e-15, 1e-15,
                                           0.0, 1.0, sizes);
     EXPECT_EQ(holds, sweep < M_PI / 2) << sweep;
@@ -141,7 +130,7 @@ TEST(TightSideCover, RefusesAPartWhoseTightSideLeavesTheDisk) {
   // the points at distance r along the normals at its ends are farther than R from its middle
   // (checked here from the frames), so the disk must not be accepted; a part a hundred times
   // shorter is held.
-  const CoverSizes sizes = sizes_for(1.0, 1e-3);
+  const CoverSizes sizes = cover_sizes(1.0, 1e-3);
   for (const double length : {0.5, 0.005}) {
     const core::Curve part({{0, 0}, {length / 2, length * length / 200}, {length, 0}});
     const Point2 centre = core::evaluate(part, 0.5);
@@ -170,7 +159,7 @@ void check_tight_sides(const char* name, const core::Curve& curve, double width,
                        double tolerance) {
   SCOPED_TRACE(testing::Message() << name << " width " << width << " tolerance " << tolerance);
   const double r = width / 2;
-  const CoverSizes sizes = sizes_for(r, tolerance);
+  const CoverSizes sizes = cover_sizes(r, tolerance);
   int pieces = 0;
   for (const double side : {1.0, -1.0}) {
     std::vector<double> cuts{0.0};
@@ -221,7 +210,7 @@ std::vector<Point2> tight_side_centres(const core::Curve& curve, double width, d
   std::vector<Point2> points;
   for (const Point2 p : curve.points()) points.push_back(factor.times(p));
   const core::Curve scaled(points);
-  const CoverSizes unit = sizes_for(width / 2, tolerance);
+  const CoverSizes unit = cover_sizes(width / 2, tolerance);
   CoverSizes sizes = unit;
   sizes.radius = factor.times(unit.radius);
   sizes.reach = factor.times(unit.reach);
