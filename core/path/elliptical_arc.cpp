@@ -17,9 +17,9 @@ Point2 unit(Point2 v) {
   return w / std::hypot(w.x, w.y);
 }
 
-/// The affine map from the unit circle to the ellipse: C + R(φ) diag(rx, ry) p.
+/// The linear part of the affine map from the unit circle to the ellipse, R(φ) diag(rx, ry):
+/// it carries differences of unit-circle points to differences of ellipse points.
 struct EllipseFrame {
-  Point2 centre;
   double cos_phi = 1.0;
   double sin_phi = 0.0;
   double rx = 1.0;
@@ -28,7 +28,7 @@ struct EllipseFrame {
   [[nodiscard]] Point2 map(Point2 p) const {
     const double x = rx * p.x;
     const double y = ry * p.y;
-    return {centre.x + (cos_phi * x - sin_phi * y), centre.y + (sin_phi * x + cos_phi * y)};
+    return {cos_phi * x - sin_phi * y, sin_phi * x + cos_phi * y};
   }
 };
 
@@ -42,22 +42,35 @@ Point2 rotated_back(Point2 v, double cos_phi, double sin_phi) {
 /// keep the cubics' control polygons close to their curves.
 constexpr double kMaxPieceAngle = std::numbers::pi / 2.0 + 1e-9;
 
-Point2 on_circle(double angle) { return {std::cos(angle), std::sin(angle)}; }
-
-/// The arc in centre form (see the header): the ellipse's frame, the angle θ1 of the start
-/// point on its unit circle and the angle from u1 to u2 in (-π, π] (before the sweep flag
-/// picks its turn; 0 when u1 and u2 are equal in doubles).
+/// The arc in centre form (see the header), as the images of the unit circle's frame at the
+/// start point: u1 = m ê + s q ê⊥ is the start on the unit circle and u1⊥ its tangent, so a
+/// point of the circle γ radians further is e(γ) = cos γ u1 + sin γ u1⊥, carried to the
+/// ellipse by the frame with A(ê) = `along` and A(ê⊥) = `across`. The sweep is the angle
+/// from u1 to u2 in [-π, π] (before the sweep flag picks its turn).
 struct CentreForm {
   EllipseFrame frame;
-  double theta1 = 0.0;
+  Point2 along;   ///< A(ê): the image of the unit vector along the chord (ê).
+  Point2 across;  ///< A(ê⊥)
+  double m = 0.0;
+  double sq = 0.0;  ///< s q
   double sweep_angle = 0.0;
+
+  /// A(u1) and A(u1⊥), the start's radius and tangent on the ellipse, rotated by γ:
+  /// A(e(γ)) and A(e'(γ)), each as a combination of `along` and `across` (no angle of the
+  /// circle is formed, so nothing rounds against the ellipse's absolute direction).
+  [[nodiscard]] Point2 tangent(double gamma) const {
+    const double c = std::cos(gamma), s = std::sin(gamma);
+    return (m * c - sq * s) * across - (sq * c + m * s) * along;
+  }
+  /// A(e(γ) - e(0)) = A((cos γ - 1) u1 + sin γ u1⊥), with cos γ - 1 = -2 sin²(γ/2) (no
+  /// cancellation for small γ).
+  [[nodiscard]] Point2 chord(double gamma) const {
+    const double h = std::sin(gamma / 2.0), s = std::sin(gamma);
+    const double back = -2.0 * h * h;
+    return (back * m - sq * s) * along + (back * sq + m * s) * across;
+  }
 };
 
-/// The endpoint to centre parametrisation (B.2.4, written in the ellipse's unit
-/// coordinates) of an arc whose end points differ, with radii rx, ry > 0 (absolute values)
-/// and rotation φ given by its cosine and sine; radii too small to reach are scaled up
-/// (B.2.5, Λ = m² > 1), so the frame's radii may exceed rx and ry, or be infinite for an
-/// ellipse beyond the double range.
 CentreForm centre_form(const EllipticalArc& arc, double rx, double ry, double cos_phi,
                        double sin_phi) {
   // The half chord in the ellipse's axes, (x', y') = R(-φ) (from - to) / 2, halved first so
@@ -84,14 +97,18 @@ CentreForm centre_form(const EllipticalArc& arc, double rx, double ry, double co
   }
   const double q = std::sqrt(std::max(0.0, (1.0 - m) * (1.0 + m)));
   const double s = arc.large_arc != arc.sweep ? 1.0 : -1.0;
-  const Point2 mid{arc.from.x / 2.0 + arc.to.x / 2.0, arc.from.y / 2.0 + arc.to.y / 2.0};
   CentreForm out;
-  out.frame = EllipseFrame{mid, cos_phi, sin_phi, rx, ry};
-  out.frame.centre = out.frame.map(-s * q * e_perp);
-  const Point2 u1 = m * e + s * q * e_perp;
-  const Point2 u2 = -m * e + s * q * e_perp;
-  out.theta1 = std::atan2(u1.y, u1.x);
-  out.sweep_angle = std::atan2(cross(u1, u2), dot(u1, u2));
+  out.frame = EllipseFrame{cos_phi, sin_phi, rx, ry};
+  out.along = out.frame.map(e);
+  out.across = out.frame.map(e_perp);
+  out.m = m;
+  out.sq = s * q;
+  // The angle from u1 to u2 = -m ê + s q ê⊥: cross(u1, u2) = 2 s m q and
+  // dot(u1, u2) = q² - m², so it is s times twice the angle of (q, m). Taken from m and q
+  // directly, it keeps its relative precision when the chord is tiny against the radii (m
+  // near 0), where u1 and u2 agree in nearly every bit and their cross product would be
+  // rounding noise.
+  out.sweep_angle = s * 2.0 * std::atan2(m, q);
   return out;
 }
 
@@ -116,27 +133,28 @@ std::optional<std::size_t> piece_count(double sweep, double relative, std::size_
   return n;
 }
 
-/// The n cubics of the arc from θ1 through `sweep_angle` on the frame's unit circle, each
-/// the circular-arc cubic (k = 4/3 tan(δ/4)) mapped by the frame, appended to out.segments:
-/// the first starts at arc.from and the last ends at arc.to bit for bit. False, with
-/// nothing appended, when a control point is not finite.
-bool append_cubics(const EllipticalArc& arc, const EllipseFrame& frame, double theta1,
-                   double sweep_angle, std::size_t n, std::vector<core::Curve>& segments) {
+/// The n cubics of the arc from the start through `sweep_angle` on the frame's unit circle,
+/// each the circular-arc cubic (k = 4/3 tan(δ/4)) mapped by the frame, appended to
+/// `segments`: the first starts at arc.from and the last ends at arc.to bit for bit. Every
+/// point is built from the start point, as arc.from + A(e(γ) - e(0)), and the handles as
+/// A(k e'(γ)) (CentreForm): no point goes through the centre, which for radii far larger
+/// than the chord is far from the arc (its coordinates would round away the arc's). False,
+/// with nothing appended, when a control point is not finite.
+bool append_cubics(const EllipticalArc& arc, const CentreForm& centred, double sweep_angle,
+                   std::size_t n, std::vector<core::Curve>& segments) {
   const double delta = sweep_angle / static_cast<double>(n);
   const double k = 4.0 / 3.0 * std::tan(delta / 4.0);
-  // The angle of joint j, one formula for the cubic that ends there and the one that
-  // starts there, so that they share the joint bit for bit.
-  const auto angle = [&](std::size_t j) {
-    return theta1 + sweep_angle * (static_cast<double>(j) / static_cast<double>(n));
+  // γ of joint j, one formula for the cubic that ends there and the one that starts there,
+  // so that they share the joint bit for bit.
+  const auto gamma = [&](std::size_t j) {
+    return sweep_angle * (static_cast<double>(j) / static_cast<double>(n));
   };
   segments.reserve(n);
   Point2 start = arc.from;
   for (std::size_t j = 0; j < n; ++j) {
-    const Point2 a = on_circle(angle(j));
-    const Point2 b = on_circle(angle(j + 1));
-    const Point2 p1 = frame.map(a + k * Point2{-a.y, a.x});
-    const Point2 p2 = frame.map(b - k * Point2{-b.y, b.x});
-    const Point2 end = j + 1 == n ? arc.to : frame.map(b);
+    const Point2 end = j + 1 == n ? arc.to : arc.from + centred.chord(gamma(j + 1));
+    const Point2 p1 = start + k * centred.tangent(gamma(j));
+    const Point2 p2 = end - k * centred.tangent(gamma(j + 1));
     if (!core::is_finite(p1) || !core::is_finite(p2) || !core::is_finite(end)) {
       segments.clear();
       return false;
@@ -184,18 +202,29 @@ ArcSegments arc_to_cubics(const EllipticalArc& arc, std::optional<double> tolera
   const EllipseFrame& frame = centred.frame;
   double sweep_angle = centred.sweep_angle;
   const double radius = std::max(frame.rx, frame.ry);
-  const double magnitude = std::max(std::abs(frame.centre.x), std::abs(frame.centre.y)) + radius;
-  const double asked = tolerance.value_or(kDefaultArcRelativeTolerance * radius);
-  const double used = std::max(asked, kArcToleranceFloor * magnitude);
-  if (!std::isfinite(magnitude) || !std::isfinite(frame.rx) || !std::isfinite(frame.ry)) {
+  if (!std::isfinite(frame.rx) || !std::isfinite(frame.ry)) {
     out.status = ArcStatus::out_of_range;  // an ellipse reaching beyond the double range
     return out;
   }
-  // u1 and u2 equal in doubles: the chord subtends less than an ulp of angle (m below about
-  // 1e-16), and the small arc is the chord to within its sagitta, about radius · m² / 2.
-  if (sweep_angle == 0.0 && !arc.large_arc) return line(used);
-  if (arc.sweep && sweep_angle <= 0.0) sweep_angle += 2.0 * std::numbers::pi;
-  if (!arc.sweep && sweep_angle >= 0.0) sweep_angle -= 2.0 * std::numbers::pi;
+  const double asked = tolerance.value_or(kDefaultArcRelativeTolerance * radius);
+  // m zero in doubles (the half chord below the least subnormal of the radii) leaves Δθ = 0
+  // for the small arc, which is then the chord to within its sagitta, radius · m² / 2.
+  const bool chord_only = sweep_angle == 0.0 && !arc.large_arc;
+  if (arc.sweep && sweep_angle <= 0.0 && !chord_only) sweep_angle += 2.0 * std::numbers::pi;
+  if (!arc.sweep && sweep_angle >= 0.0 && !chord_only) sweep_angle -= 2.0 * std::numbers::pi;
+  // The coordinates the cubics' points are computed in: the start point plus chords and
+  // handles of the ellipse, none longer than radius · min(|Δθ|, 2) (a chord of the unit
+  // circle is at most 2 and at most the angle it spans), or, where that is less, the
+  // ellipse's own extent |C|∞ + radius (the start is within it, and every chord and handle
+  // within a few radii).
+  const Point2 centre = Point2{arc.from.x / 2.0 + arc.to.x / 2.0, arc.from.y / 2.0 + arc.to.y / 2.0} -
+                        centred.sq * centred.across;
+  const double magnitude =
+      std::min(core::max_abs_coordinate(centre) + radius,
+               std::max(core::max_abs_coordinate(arc.from), core::max_abs_coordinate(arc.to)) +
+                   radius * std::min(std::abs(sweep_angle), 2.0));
+  const double used = std::max(asked, kArcToleranceFloor * magnitude);
+  if (chord_only) return line(used);
   out.tolerance = used;
   // The approximation's share of the tolerance, relative to the larger radius.
   const double relative = out.tolerance / 2.0 / radius;
@@ -205,7 +234,7 @@ ArcSegments arc_to_cubics(const EllipticalArc& arc, std::optional<double> tolera
     out.tolerance = 0.0;
     return out;
   }
-  if (!append_cubics(arc, frame, centred.theta1, sweep_angle, *n, out.segments)) {
+  if (!append_cubics(arc, centred, sweep_angle, *n, out.segments)) {
     out.status = ArcStatus::out_of_range;
     out.tolerance = 0.0;
   }

@@ -62,11 +62,18 @@ namespace bezier::path {
 // angles as computed in double precision (when the radii barely reach the end points the
 // centre is ill-conditioned: q is the square root of a cancellation, so no double
 // computation can pin the exact SVG centre closer than about √u times the radius). The
-// control points are computed from that centre with a few dozen roundings, each at most
-// u = 2^-53 times the magnitude of the coordinates L = |C|∞ + max(rx, ry). The other half
-// of the tolerance covers them: the tolerance used is never below kArcToleranceFloor · L
-// (2^-40 L, thousands of such roundings). End points are the command's end points bit for
-// bit, and consecutive cubics share their joint bit for bit.
+// sweep Δθ is taken from m and q directly, so it keeps its relative precision however small
+// the chord is against the radii, and every control point is built from the start point
+// (the start plus the image of a chord or a tangent of the unit circle), never through the
+// centre, which for radii far larger than the chord lies far from the arc. So each control
+// point takes a few dozen roundings, each at most u = 2^-53 times a few times the magnitude
+// L = min(|C|∞ + max(rx, ry), max(|from|∞, |to|∞) + max(rx, ry) min(|Δθ|, 2)) (the
+// ellipse's extent, or the end points' and the largest chord's or handle's, whichever is
+// less). The other half of the tolerance covers them: the tolerance used is never below
+// kArcToleranceFloor · L (2^-40 L, thousands of such roundings). An
+// arc of a huge circle between near end points thus stays near its chord, as it should,
+// while the tolerance the answer states is the one asked for. End points are the command's
+// end points bit for bit, and consecutive cubics share their joint bit for bit.
 
 /// One elliptical arc command, already made absolute.
 struct EllipticalArc {
@@ -98,8 +105,8 @@ struct ArcSegments {
   /// The distance within which the segments follow the arc: 0 when nothing is drawn and for
   /// the line of a zero radius (exact), else max(asked, kArcToleranceFloor L), asked being
   /// `tolerance` or, when that is nullopt, kDefaultArcRelativeTolerance · max(rx, ry) (also
-  /// for the one other line: a small arc whose chord subtends less than an ulp of angle,
-  /// the chord then being within radius · 1e-32 of it).
+  /// for the one other line: a small arc whose half chord is below the least subnormal of
+  /// the radii, the chord then being within radius · m² / 2 of it, far below any tolerance).
   double tolerance = 0.0;
 };
 

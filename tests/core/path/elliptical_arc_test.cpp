@@ -383,3 +383,76 @@ TEST(EllipticalArc, ExtremeRadiiAreScaledOrRefusedNeverGarbage) {
 
 }  // namespace
 }  // namespace bezier::path
+
+namespace bezier::path {
+namespace {
+
+/// The distance from p to the segment [a, b], in long double.
+Long distance_to_segment(Long px, Long py, Point2 a, Point2 b) {
+  const Long dx = static_cast<Long>(b.x) - a.x, dy = static_cast<Long>(b.y) - a.y;
+  const Long wx = px - a.x, wy = py - a.y;
+  const Long t = std::clamp((wx * dx + wy * dy) / (dx * dx + dy * dy), Long{0}, Long{1});
+  return std::hypot(wx - t * dx, wy - t * dy);
+}
+
+TEST(EllipticalArc, HugeRadiiBetweenNearEndPointsStayAtTheChord) {
+  // The small arc of an ellipse between end points a chord c apart bulges from the chord by
+  // at most c² / (8 ρ) (1 + O(c² / ρ²)), ρ = min(rx, ry)² / max(rx, ry) the least radius of
+  // curvature of the ellipse. Radii far beyond the chord make the arc its chord to within
+  // that: every point of every cubic is there, up to rounding at the end points' scale,
+  // however far the centre is. Large arcs of such ellipses go round the far side instead.
+  struct Case {
+    Point2 from, to;
+    double rx, ry, rotation;
+  };
+  const Case cases[] = {
+      {{0, 0}, {10, 0}, 1e6, 1e6, 0},          {{0, 0}, {10, 0}, 1e10, 1e10, 0},
+      {{0, 0}, {10, 0}, 1e20, 1e20, 0},        {{0, 0}, {10, 0}, 1e300, 1e300, 0},
+      {{1, 2}, {11, 7}, 1e20, 3e19, 30},       {{-3e3, 5}, {-2e3, -7}, 4e15, 1e17, -71},
+      {{0.25, 0.5}, {0.5, 0.25}, 1e200, 1e180, 45},
+  };
+  for (const Case& c : cases) {
+    for (const bool sweep : {false, true}) {
+      const EllipticalArc arc{c.from, c.to, c.rx, c.ry, c.rotation, false, sweep};
+      const ArcSegments out = arc_to_cubics(arc, std::nullopt, kNoLimit);
+      ASSERT_EQ(out.status, ArcStatus::ok);
+      ASSERT_FALSE(out.segments.empty());
+      EXPECT_EQ(out.segments.front().front(), arc.from);
+      EXPECT_EQ(out.segments.back().back(), arc.to);
+      const Long chord = std::hypot(static_cast<Long>(c.to.x) - c.from.x, static_cast<Long>(c.to.y) - c.from.y);
+      const Long rmin = std::min<Long>(c.rx, c.ry), rmax = std::max<Long>(c.rx, c.ry);
+      const Long bulge = chord * chord / (8 * (rmin * rmin / rmax)) * 1.01L;
+      const Long scale = std::max({std::abs(c.from.x), std::abs(c.from.y), std::abs(c.to.x), std::abs(c.to.y)});
+      const Long rounding = 1e-12L * (scale + chord);
+      for (const Curve& cubic : out.segments) {
+        for (int i = 0; i <= 64; ++i) {
+          const Long t = i / 64.0L;
+          const Long d = distance_to_segment(eval_coordinate(cubic, t, false), eval_coordinate(cubic, t, true),
+                                             c.from, c.to);
+          EXPECT_LE(d, bulge + rounding) << c.rx << " " << c.ry << " sweep " << sweep << " t " << static_cast<double>(t);
+        }
+      }
+    }
+  }
+}
+
+TEST(EllipticalArc, HugeCircleArcBulgesByItsSagittaOnTheFlagsSide) {
+  // From (0, 0) to (10, 0) on a circle of radius r: the sagitta is r - √(r² - 25), the
+  // middle of the small arc that far from the chord's midpoint, below the chord (y-up) for
+  // the sweep flag 1 (angles increasing, centre above) and above it for 0. One cubic at the
+  // default tolerance, symmetric, so its middle is the arc's: B(1/2) = (5, ∓sagitta).
+  for (const double r : {1e3, 1e5, 1e6}) {
+    const Long sagitta = 25.0L / (r + std::sqrt(static_cast<Long>(r) * r - 25.0L));
+    for (const bool sweep : {false, true}) {
+      const ArcSegments out = arc_to_cubics({{0, 0}, {10, 0}, r, r, 0, false, sweep}, std::nullopt, kNoLimit);
+      ASSERT_EQ(out.segments.size(), 1u);
+      const Long y = eval_coordinate(out.segments[0], 0.5L, true);
+      const Long x = eval_coordinate(out.segments[0], 0.5L, false);
+      EXPECT_NEAR(static_cast<double>(x), 5.0, 1e-12);
+      EXPECT_NEAR(static_cast<double>(y), static_cast<double>(sweep ? -sagitta : sagitta), 1e-9 * static_cast<double>(sagitta));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace bezier::path
