@@ -11,6 +11,7 @@
 #include "core/outline/area_moment_fit.hpp"
 #include "core/outline/control_points.hpp"
 #include "core/outline/offset_cusps.hpp"
+#include "core/outline/straight_curve.hpp"
 #include "core/outline/tangent_limits.hpp"
 
 namespace bezier::outline {
@@ -62,6 +63,8 @@ struct ScaledCurve {
   double least_speed = 0.0;  // |B'| below this counts as zero (end_tangent's threshold)
   core::PowerOfTwo back{0};
   double margin = 0.0;  // offset.hpp's rounding allowance, scaled
+  bool straight = false;  // the control points are collinear (straight_curve.hpp)
+  bool point = false;     // the control points are all equal (core::is_point)
 
   ScaledCurve(const core::Curve& curve, double distance, double tol) {
     const double size = std::max(core::scale(curve), std::fabs(distance));
@@ -78,6 +81,14 @@ struct ScaledCurve {
     const double largest = std::sqrt(largest_squared_length(points));
     least_speed = 1e-12 * n * largest;
     margin = 64.0 * n * std::numeric_limits<double>::epsilon() * (largest + std::fabs(d));
+    straight = control_points_collinear(points);
+    point = core::is_point(curve);
+  }
+
+  /// Whether |B'(t)| is below the threshold, so that frame() takes the limit tangent at t.
+  [[nodiscard]] bool stationary(double t) const {
+    const Point2 v = first.empty() ? Point2{0, 0} : point_at(first, t);
+    return !(squared_length(v) > least_speed * least_speed);
   }
 
   /// B(t) and its unit tangent, computed from the whole curve so that two intervals meeting
@@ -95,11 +106,48 @@ struct ScaledCurve {
   }
 };
 
+/// The least projection of the control points g on the direction of their curve at 1/2 (0
+/// when not positive, or when that point is zero).
+double least_projection(const ControlPoints& g) {
+  const Point2 mid = g.empty() ? Point2{0, 0} : point_at(g, 0.5);
+  const double mid_squared = squared_length(mid);
+  if (!(mid_squared > 0.0)) return 0.0;
+  const Point2 direction = mid / std::sqrt(mid_squared);
+  double least = std::numeric_limits<double>::infinity();
+  for (const Point2 p : g) least = std::min(least, core::dot(p, direction));
+  return std::max(least, 0.0);
+}
+
+/// The control points of Q with g = (1 - t) Q (g's last control point taken as zero; g of
+/// degree k >= 1): q_i = g_i k / (k - i), since C(k, i) / C(k - 1, i) = k / (k - i).
+void divide_at_end(ControlPoints& g) {
+  const std::size_t k = g.size() - 1;
+  for (std::size_t i = 0; i < k; ++i)
+    g[i] = (static_cast<double>(k) / static_cast<double>(k - i)) * g[i];
+  g.resize(k, ControlPoints::Uninitialized{});
+}
+
+/// The control points of Q with g = t Q (g's first control point taken as zero): q_i =
+/// g_{i+1} k / (i + 1), since C(k, i + 1) / C(k - 1, i) = k / (i + 1).
+void divide_at_start(ControlPoints& g) {
+  const std::size_t k = g.size() - 1;
+  for (std::size_t i = 0; i < k; ++i)
+    g[i] = (static_cast<double>(k) / static_cast<double>(i + 1)) * g[i + 1];
+  g.resize(k, ControlPoints::Uninitialized{});
+}
+
 /// The piece's derivatives' control points and the bounds offset.hpp takes from them.
 struct PieceShape {
   ControlPoints h1, h2, h3;
   double M1 = 0.0, M2 = 0.0, M3 = 0.0;
   double m = 0.0;  // least projection of h1 on the direction of B'(1/2); 0 when not positive
+  // The bounds of the normal's turning (offset.hpp): those of B_p' itself (W = M, w = m), or
+  // where B' vanishes at an end of the piece, those of the reduced hodograph Q with B_p' =
+  // t^i (1 - t)^j Q, whose direction is B_p''s inside the piece.
+  double W1 = 0.0, W2 = 0.0, W3 = 0.0;
+  double w = 0.0;  // least projection of Q on the direction of Q(1/2); 0 when not positive
+  bool reduced_start = false, reduced_end = false;
+  Point2 start_direction{0, 0}, end_direction{0, 0};  // Q(0), Q(1) as unit vectors, if reduced
 
   /// The piece [a, b] of the scaled curve s: its first and second hodographs are (b - a)
   /// and (b - a)^2 times the pieces of B' and B'' on [a, b], taken from B' and B'' rather
@@ -107,7 +155,9 @@ struct PieceShape {
   /// times the curve's size, which is not small against the differences of a short piece
   /// (next to a cusp of O the parts grow very short): from B' the direction of B_p' at each
   /// sample keeps the relative accuracy of B' itself, however short the piece.
-  PieceShape(const ScaledCurve& s, double a, double b) {
+  /// zero_start, zero_end: the piece's end is an end of the interval being fitted (a cut of
+  /// offset_curve, or of the caller of offset_interval) where B' is below the threshold.
+  PieceShape(const ScaledCurve& s, double a, double b, bool zero_start, bool zero_end) {
     const double length = b - a;
     piece_into(s.first, a, b, h1);
     for (Point2& p : h1) p = length * p;
@@ -119,21 +169,59 @@ struct PieceShape {
     M1 = std::sqrt(largest_squared_length(h1));
     M2 = std::sqrt(largest_squared_length(h2));
     M3 = std::sqrt(largest_squared_length(h3));
-    const Point2 mid = h1.empty() ? Point2{0, 0} : point_at(h1, 0.5);
-    const double mid_squared = squared_length(mid);
-    if (mid_squared > 0.0) {
-      const Point2 direction = mid / std::sqrt(mid_squared);
-      double least = std::numeric_limits<double>::infinity();
-      for (const Point2 p : h1) least = std::min(least, core::dot(p, direction));
-      m = std::max(least, 0.0);
+    m = least_projection(h1);
+    W1 = M1;
+    W2 = M2;
+    W3 = M3;
+    w = m;
+    // Where an end of the interval is a zero of B' (B' below the threshold there, so that
+    // the frame takes the limit tangent), B' is taken to vanish there exactly and the factor
+    // t (or 1 - t) is divided out, again while the reduced hodograph's end point stays below
+    // 1e-9 of its largest (a zero of higher order, stationary_points' relative threshold).
+    reduced_start = h1.size() >= 2 && zero_start;
+    reduced_end = h1.size() >= 2 && zero_end;
+    if (!reduced_start && !reduced_end) return;
+    ControlPoints q = h1, q1, q2;
+    auto negligible = [](const ControlPoints& g, Point2 p) {
+      return !(squared_length(p) > 1e-18 * largest_squared_length(g));
+    };
+    if (reduced_start) {
+      do divide_at_start(q);
+      while (q.size() >= 2 && negligible(q, q[0]));
+    }
+    if (reduced_end && q.size() >= 2) {
+      do divide_at_end(q);
+      while (q.size() >= 2 && negligible(q, q[q.size() - 1]));
+    }
+    hodograph_into(q, q1);
+    hodograph_into(q1, q2);
+    W1 = std::sqrt(largest_squared_length(q));
+    W2 = std::sqrt(largest_squared_length(q1));
+    W3 = std::sqrt(largest_squared_length(q2));
+    w = least_projection(q);
+    if (w > 0.0) {
+      start_direction = q[0] / std::sqrt(squared_length(q[0]));
+      end_direction = q[q.size() - 1] / std::sqrt(squared_length(q[q.size() - 1]));
     }
   }
 
-  /// offset.hpp's bound of |d N''| (needs m > 0): |d| (|ω'| + ω^2).
+  /// offset.hpp's bound of |d N''| (needs w > 0): |d| (|ω'| + ω^2).
   [[nodiscard]] double normal_second(double d) const {
-    const double w = M1 * M2 / (m * m);
-    const double w1 = M1 * M3 / (m * m) + 2.0 * w * w;
-    return std::fabs(d) * (w1 + w * w);
+    const double v = W1 * W2 / (w * w);
+    const double v1 = W1 * W3 / (w * w) + 2.0 * v * v;
+    return std::fabs(d) * (v1 + v * v);
+  }
+
+  /// The distance |d| |T - Q/|Q|| at the reduced ends between the end frames' tangents
+  /// (end_tangent's, from the first derivative that is not zero) and the limit direction Q
+  /// gives (offset.hpp): added to the bound, 0 where no end is reduced.
+  [[nodiscard]] double end_slack(const EndFrame& start, const EndFrame& end, double d) const {
+    double slack = 0.0;
+    if (reduced_start)
+      slack = std::max(slack, std::sqrt(squared_length(start.tangent - start_direction)));
+    if (reduced_end)
+      slack = std::max(slack, std::sqrt(squared_length(end.tangent - end_direction)));
+    return std::fabs(d) * slack;
   }
 };
 
@@ -531,12 +619,15 @@ struct PieceFit {
 /// the first within the tolerance kept.
 PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints& q,
                    const EndFrame& start, const EndFrame& end, double d, double tolerance,
-                   double direction, std::vector<Point2>& o, const PieceShape* given = nullptr,
+                   double direction, std::vector<Point2>& o, bool zero_start, bool zero_end,
+                   const PieceShape* given = nullptr,
                    bool presampled = false, const ChordMoments* given_moments = nullptr) {
   PieceFit result;
-  if (q.size() == 2) {
+  if (q.size() == 2 || s.point) {
     // A line's parallel curve is the line through the offset ends: the cubic with its
-    // handles a third of the chord along the line from each end, exact.
+    // handles a third of the chord along the line from each end, exact. (A curve that is
+    // one point, of any degree, is taken as the line of zero length it is, its normal
+    // end_tangent's convention: one point.)
     const Point2 n0 = left_normal(start.tangent);
     const Point2 p0 = start.point + d * n0, p3 = end.point + d * n0;
     const double third = std::sqrt(squared_length(p3 - p0)) / 3.0;
@@ -547,12 +638,14 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
   }
   const auto n = static_cast<std::int64_t>(q.size()) - 1;
   std::optional<PieceShape> own;
-  const PieceShape& shape = given != nullptr ? *given : own.emplace(s, a, b);
+  const PieceShape& shape = given != nullptr ? *given : own.emplace(s, a, b, zero_start, zero_end);
   const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
   const Point2 p0 = start.point + d * n0, p3 = end.point + d * n1;
   const Point2 d0 = direction * start.tangent, d3 = direction * end.tangent;
   result.work = 8 * (n + 1) * (n + 1);
-  if (shape.m > 0.0) {
+  // Where B' vanishes at an end, the end frame's normal against the limit Q gives.
+  const double slack = shape.end_slack(start, end, d);
+  if (shape.w > 0.0) {
     const double turning = shape.normal_second(d);
     // Between samples, |B_p'' - its linear interpolant| <= M3 h / 2 (zero when n <= 3).
     const double bend = q.size() > 4 ? 0.5 * shape.M3 : 0.0;
@@ -594,7 +687,7 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
       result.work += 24 * static_cast<std::int64_t>(taken);
       largest = sampled.largest;
       const double second = sampled.second + bend / k + turning;
-      const double remainder = second / (8.0 * k * k);
+      const double remainder = second / (8.0 * k * k) + slack;
       if (sampled.within) result.excess = std::min(result.excess, largest / std::max(tolerance - remainder, 0.25 * tolerance));
       else result.excess = std::min(result.excess, largest / tolerance);
       return std::pair{sampled.within ? largest + remainder : std::numeric_limits<double>::infinity(), second};
@@ -646,7 +739,7 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
     result.work += kFitSamples * (n * (n + 1) + 12);
     result.cubic = fit(o, weights, all_numbers, d0, d3);
   }
-  result.bound = std::min(result.bound, ball_bound(q, shape.h1, result.cubic, d, n0));
+  result.bound = std::min(result.bound, ball_bound(q, shape.h1, result.cubic, d, n0) + slack);
   return result;
 }
 
@@ -671,6 +764,44 @@ double travel_direction(const ScaledCurve& s, double d, double a, double b) {
   return travel_directions<1>(s, {d}, a, b)[0];
 }
 
+/// The parallel curve of [a, b] of a straight curve (offset.hpp): B([a, b]) is the segment
+/// from B(a) to B(b) on the line (B' keeps its direction inside, no zero of B' being inside),
+/// moved by d N with N the left normal of the direction of travel T, constant on [a, b]; the
+/// cubic is that segment with its handles a third of the way along it. T is the chord's
+/// direction where the chord is longer than 1e-12 of the curve's size (beyond the rounding
+/// of B(a) and B(b)), else the start frame's tangent (the limit one where B' vanishes there).
+/// The bound is the largest distance of the piece's control points from the segment
+/// [B(a), B(b)]: O([a, b]) lies within it of C (B([a, b]) is in the control points' hull, and
+/// the distance to a segment is convex), and C lies on O([a, b]) up to it (B takes every
+/// value between B(a) and B(b)). nullopt where that bound exceeds the tolerance (a cut at a
+/// zero of B' rounded so far that B turns back inside [a, b]): the general fit then decides.
+std::optional<OffsetCubic> straight_interval(const ScaledCurve& s, double d, double a, double b,
+                                             double tolerance) {
+  ControlPoints q;
+  piece_into(s.points, a, b, q);
+  const Point2 start = point_at(s.points, a), end = point_at(s.points, b);
+  const Point2 chord = end - start;
+  const double chord_squared = squared_length(chord);
+  const double size = std::sqrt(largest_squared_length(s.points));
+  Point2 tangent = s.frame(a, a, b, true).tangent;
+  if (chord_squared > 1e-24 * size * size) tangent = chord / std::sqrt(chord_squared);
+  double farthest = 0.0;
+  for (const Point2 p : q) {
+    const Point2 r = p - start;
+    const double along = chord_squared > 0.0 ? std::clamp(core::dot(r, chord) / chord_squared, 0.0, 1.0) : 0.0;
+    farthest = std::max(farthest, squared_length(r - along * chord));
+  }
+  const double bound = std::sqrt(farthest);
+  if (!(bound <= tolerance)) return std::nullopt;
+  const Point2 shift = d * left_normal(tangent);
+  const Point2 p0 = start + shift, p3 = end + shift;
+  OffsetCubic cubic{a, b, {}, 0.0};
+  const std::array<Point2, 4> points{p0, p0 + (1.0 / 3.0) * (p3 - p0), p3 - (1.0 / 3.0) * (p3 - p0), p3};
+  for (std::size_t i = 0; i < 4; ++i) cubic.points[i] = s.back.times(points[i]);
+  cubic.error_bound = s.back.times(bound + s.margin);
+  return cubic;
+}
+
 /// What the caller of fit_interval already has for the whole [a, b] at d: the end frames,
 /// O's direction there, and fit_piece's fit of [a, b].
 struct FirstPiece {
@@ -686,6 +817,13 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
                   std::vector<OffsetCubic>& out, const FirstPiece* first = nullptr) {
   const std::size_t kept = out.size();
   const auto n = static_cast<std::int64_t>(s.points.size()) - 1;
+  if (first == nullptr && s.straight && !s.point && n > 1) {
+    if (!budget.spend(16 * (n + 1) * (n + 1))) return false;
+    if (const std::optional<OffsetCubic> line = straight_interval(s, d, a, b, s.tolerance - s.margin)) {
+      out.push_back(*line);
+      return true;
+    }
+  }
   const double direction = first != nullptr ? first->direction : travel_direction(s, d, a, b);
 
   struct Pending {
@@ -703,6 +841,7 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
   }
   ControlPoints q;
   std::vector<Point2>& samples = sample_buffer();
+  const bool zero_start = s.stationary(a), zero_end = s.stationary(b);
   while (!stack.empty()) {
     const Pending piece = stack.back();
     stack.pop_back();
@@ -710,7 +849,8 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
     if (first == nullptr) {
       piece_into(s.points, piece.a, piece.b, q);
       own = fit_piece(s, piece.a, piece.b, q, piece.start, piece.end, d,
-                      s.tolerance - s.margin, direction, samples);
+                      s.tolerance - s.margin, direction, samples,
+                      zero_start && piece.a == a, zero_end && piece.b == b);
     }
     const PieceFit& fitted = first != nullptr ? first->fit : own;
     first = nullptr;
@@ -761,8 +901,9 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
   ControlPoints q;
   piece_into(s.points, a, b, q);
   std::optional<PieceShape> shape;
-  if (q.size() > 2) shape.emplace(s, a, b);
-  if (!shape || !(shape->m > 0.0)) {
+  const bool zero_start = s.stationary(a), zero_end = s.stationary(b);
+  if (q.size() > 2 && !s.point) shape.emplace(s, a, b, zero_start, zero_end);
+  if (!shape || !(shape->w > 0.0) || s.straight) {
     // A line, or a piece whose fit needs no samples of its own kind: each side alone.
     if (!fit_interval(s, s.d, a, b, budget, plus)) return false;
     return fit_interval(s, -s.d, a, b, budget, minus);
@@ -786,9 +927,10 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
                           {plus_samples.front(), minus_samples.front()},
                           {plus_samples.back(), minus_samples.back()});
   plus_first.fit = fit_piece(s, a, b, q, start, end, s.d, tolerance_left, plus_first.direction,
-                             plus_samples, &*shape, sampled, &moments[0]);
+                             plus_samples, zero_start, zero_end, &*shape, sampled, &moments[0]);
   minus_first.fit = fit_piece(s, a, b, q, start, end, -s.d, tolerance_left,
-                              minus_first.direction, minus_samples, &*shape, sampled,
+                              minus_first.direction, minus_samples, zero_start, zero_end,
+                              &*shape, sampled,
                               &moments[1]);
   if (!fit_interval(s, s.d, a, b, budget, plus, &plus_first)) return false;
   return fit_interval(s, -s.d, a, b, budget, minus, &minus_first);
