@@ -233,6 +233,114 @@ TEST(Offset, BothSidesTogetherAreEachSideAlone) {
   EXPECT_GT(compared, 100);
 }
 
+/// The offset within the service's default work cap per request (api/limits.hpp's max_work):
+/// these inputs must be answered, not refused.
+CurveOffset capped_offset(const Curve& curve, double d, double tolerance) {
+  core::WorkBudget budget(22000000);
+  CurveOffset o = offset_curve(curve, d, tolerance, budget);
+  EXPECT_FALSE(budget.exhausted()) << "work cap reached";
+  return o;
+}
+
+/// The expected answer for a curve on the x-axis, in closed form: between consecutive zeros
+/// of x' (given, with 0 and 1) the curve runs one way along the axis, so its parallel curve
+/// is the segment [x(t_k), x(t_{k+1})] moved by d to the left of that way, y = ±d. Each
+/// cubic must lie on that line, its ends at x(t_k) and x(t_{k+1}), straight (handles on it).
+void expect_moved_segments(const Curve& curve, double d, double tolerance,
+                           const std::vector<double>& zeros, const CurveOffset& o) {
+  std::vector<double> cuts{0.0};
+  cuts.insert(cuts.end(), zeros.begin(), zeros.end());
+  cuts.push_back(1.0);
+  ASSERT_EQ(o.cubics.size(), cuts.size() - 1);
+  const double rounding = 1e-12 * (core::scale(curve) + std::fabs(d));
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const OffsetCubic& c = o.cubics[k];
+    EXPECT_NEAR(c.t0, cuts[k], 1e-12);
+    EXPECT_NEAR(c.t1, cuts[k + 1], 1e-12);
+    const double x0 = core::evaluate(curve, cuts[k]).x, x1 = core::evaluate(curve, cuts[k + 1]).x;
+    const double side = x1 > x0 ? d : -d;  // left of +x is +y, left of -x is -y
+    EXPECT_NEAR(c.points[0].x, x0, rounding);
+    EXPECT_NEAR(c.points[3].x, x1, rounding);
+    for (const Point2 p : c.points) {
+      EXPECT_NEAR(p.y, side, rounding);
+      EXPECT_GE(p.x, std::min(x0, x1) - rounding);
+      EXPECT_LE(p.x, std::max(x0, x1) + rounding);
+    }
+    EXPECT_LE(c.error_bound, tolerance);
+  }
+}
+
+TEST(Offset, CollinearCurvesThatTurnBackAreTheirRunsMovedAlongTheNormal) {
+  // B' = 0 where the curve reverses along its line: the quadratic's x' = 200 (1 - t) - 100 t
+  // vanishes at 2/3; the cubics' x' / 3 = 100 (1 - t)^2 + 2 c1 t (1 - t) + c2 t^2 with
+  // (c1, c2) = (-200, 100): 600 t^2 - 600 t + 100 = 0, t = 1/2 ± sqrt(3)/6; (0, -50):
+  // 100 (1 - t)^2 = 50 t^2, t = sqrt(2) / (1 + sqrt(2)); (-200, 150): 650 t^2 - 600 t + 100,
+  // t = (6 ± sqrt(10)) / 13.
+  const double r3 = std::sqrt(3.0), r2 = std::sqrt(2.0), r10 = std::sqrt(10.0);
+  const std::vector<std::pair<Curve, std::vector<double>>> cases{
+      {Curve({{0, 0}, {100, 0}, {50, 0}}), {2.0 / 3.0}},
+      {Curve({{0, 0}, {100, 0}, {-100, 0}, {0, 0}}), {0.5 - r3 / 6, 0.5 + r3 / 6}},
+      {Curve({{0, 0}, {100, 0}, {100, 0}, {50, 0}}), {r2 / (1 + r2)}},
+      {Curve({{0, 0}, {100, 0}, {-100, 0}, {50, 0}}), {(6 - r10) / 13, (6 + r10) / 13}},
+  };
+  for (const auto& [curve, zeros] : cases) {
+    for (const double d : {2.0, -2.0, 0.5}) {
+      for (const double tolerance : {1e-3, 1.5e-7}) {
+        SCOPED_TRACE(testing::Message() << "degree " << curve.degree() << " d " << d
+                                        << " tolerance " << tolerance);
+        const CurveOffset o = capped_offset(curve, d, tolerance);
+        expect_moved_segments(curve, d, tolerance, zeros, o);
+        expect_within(curve, d, tolerance, o);
+      }
+    }
+  }
+}
+
+TEST(Offset, CollinearCurvesOffTheAxesAndOfHighDegree) {
+  // On the line through (0, 0) along (3, 4), turning back at t = 1/2 (x' ∝ (1 - 2t)): each
+  // run's parallel curve is one straight cubic; and a curve of degree 20 whose last 20
+  // control points coincide (B' = 20 (1 - t)^19 (P1 - P0): a zero of order 19 at t = 1).
+  const Curve slanted({{0, 0}, {30, 40}, {0, 0}});
+  for (const double d : {1.0, -3.0}) {
+    const CurveOffset o = capped_offset(slanted, d, 1e-7);
+    ASSERT_EQ(o.cubics.size(), 2u);
+    expect_within(slanted, d, 1e-7, o);
+  }
+  std::vector<Point2> p{{0, 0}};
+  for (int k = 0; k < 20; ++k) p.push_back({4, 0});
+  const Curve flat(p);
+  // (expect_within's exact_offset takes B' below 1e-9 for zero, as it is here from t = 0.7
+  // on: the closed form alone judges.)
+  expect_moved_segments(flat, 1.0, 1e-3, {}, capped_offset(flat, 1.0, 1e-3));
+  expect_moved_segments(flat, -1.0, 1e-9 * 4, {}, capped_offset(flat, -1.0, 1e-9 * 4));
+}
+
+TEST(Offset, TrueCuspOfTheCurveAtTheSmallestAcceptedTolerances) {
+  // B'(1/2) = 0 exactly; tolerances down to 1e-9 of the scale (10) are accepted (offset.hpp).
+  const Curve cusped({{0, 0}, {10, 10}, {0, 10}, {10, 0}});
+  for (const double tolerance : {1e-7, 1e-8}) {
+    for (const double d : {1.0, -1.0}) {
+      SCOPED_TRACE(testing::Message() << "d " << d << " tolerance " << tolerance);
+      expect_within(cusped, d, tolerance, capped_offset(cusped, d, tolerance));
+    }
+  }
+  // Degree 5 with repeated control points: B' vanishes at both ends to the third order.
+  const Curve repeated({{0, 0}, {0, 0}, {0, 0}, {5, 5}, {5, 5}, {10, 0}});
+  expect_within(repeated, 1.0, 1e-6, capped_offset(repeated, 1.0, 1e-6));
+}
+
+TEST(Offset, CurveThatIsOnePointIsOnePointAsALineOfZeroLength) {
+  // No direction: end_tangent's convention (1, 0), as the line from a point to itself.
+  const CurveOffset line = capped_offset(Curve({{2, 3}, {2, 3}}), 1.5, 1e-6);
+  const CurveOffset cubic = capped_offset(Curve({{2, 3}, {2, 3}, {2, 3}, {2, 3}}), 1.5, 1e-6);
+  ASSERT_EQ(line.cubics.size(), 1u);
+  ASSERT_EQ(cubic.cubics.size(), 1u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(line.cubics[0].points[i], (Point2{2, 4.5}));
+    EXPECT_EQ(cubic.cubics[0].points[i], (Point2{2, 4.5}));
+  }
+}
+
 TEST(Offset, WorkCapIsReported) {
   const Curve curve({{0, 0}, {1, 2}, {2, -2}, {3, 0}});
   core::WorkBudget budget(1000);
