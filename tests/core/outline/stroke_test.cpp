@@ -191,6 +191,34 @@ TEST(Stroke, SimplifiedWideStrokesAtATightTolerance) {
   check_simplified_round_stroke("M0 0 C10 10 -10 10 0 0 Z", loop, 2.0, tolerance);
 }
 
+TEST(Stroke, RoundIsTheDistanceSetForCollinearCurvesThatTurnBack) {
+  // B' = 0 where each turns back along its line: the stroke is the set of points within
+  // width / 2 of the segments the curve sweeps (a stadium for one back-and-forth run).
+  for (const char* data : {"M0 0 Q100 0 50 0", "M0 0 C100 0 -100 0 0 0", "M0 0 C100 0 100 0 50 0",
+                           "M0 0 C100 0 -100 0 50 0", "M0 0 C30 30 0 0 10 10"}) {
+    check_round_stroke(data, 4.0, 1e-3);
+    check_round_stroke(data, 4.0, 2e-7);
+  }
+  check_round_stroke("M0 0 C3 0 6 0 10 0", 1000.0, 1e-3);
+}
+
+TEST(Stroke, SimplifiedRoundStrokesOfCollinearCurvesThatTurnBack) {
+  check_simplified_round_stroke("M0 0 Q100 0 50 0", core::Curve({{0, 0}, {100, 0}, {50, 0}}), 4.0,
+                                1e-3);
+  const core::Curve there_and_back({{0, 0}, {100, 0}, {-100, 0}, {0, 0}});
+  check_simplified_round_stroke("M0 0 C100 0 -100 0 0 0", there_and_back, 4.0, 1e-2);
+  check_simplified_round_stroke("M0 0 C100 0 -100 0 0 0", there_and_back, 4.0, 1e-3);
+  check_simplified_round_stroke("M0 0 C100 0 -100 0 50 0",
+                                core::Curve({{0, 0}, {100, 0}, {-100, 0}, {50, 0}}), 4.0, 1e-3);
+}
+
+TEST(Stroke, RoundStrokeOfATrueCuspAtATightTolerance) {
+  // B'(1/2) = 0; 1e-7 is 1e-8 of the scale, an accepted tolerance.
+  const core::Curve cusp({{0, 0}, {10, 10}, {0, 10}, {10, 0}});
+  check_round_stroke("M0 0 C10 10 0 10 10 0", 2.0, 1e-7);
+  check_simplified_round_stroke("M0 0 C10 10 0 10 10 0", cusp, 2.0, 1e-7);
+}
+
 TEST(Stroke, RoundIsTheDistanceSetWhereTheRadiusOfCurvatureIsBelowHalfTheWidth) {
   check_round_stroke("M0 0 C12 0 12 4 0 4", 6.0, 1e-3);
   check_round_stroke("M0 0 Q10 10 20 0", 30.0, 1e-2);
