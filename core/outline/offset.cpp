@@ -22,7 +22,10 @@ using core::Point2;
 
 constexpr int kFitSamples = 8;
 constexpr int kMaxSamples = 4096;
-constexpr int kMaxDepth = 40;
+// The deepest split: next to a zero of B' that is one only to within a few units of
+// rounding (a hairpin whose turn spans 1e-12 of the parameter), the halving towards it takes
+// about 40 levels before the turn itself is reached.
+constexpr int kMaxDepth = 60;
 constexpr int kMostParts = 8;
 // The share of the tolerance the first K leaves to the remainder, and the share below
 // which a cubic's samples must stay for a denser K to be tried.
@@ -65,6 +68,11 @@ struct ScaledCurve {
   double margin = 0.0;  // offset.hpp's rounding allowance, scaled
   bool straight = false;  // the control points are collinear (straight_curve.hpp)
   bool point = false;     // the control points are all equal (core::is_point)
+  // For a straight curve, the unit direction of its line: from P_0 to the control point
+  // farthest from it (one direction for every interval, so that the normals of two runs that
+  // go opposite ways are exact negatives of each other, and the stroke's edges along the
+  // line coincide bit for bit).
+  Point2 line{1.0, 0.0};
 
   ScaledCurve(const core::Curve& curve, double distance, double tol) {
     const double size = std::max(core::scale(curve), std::fabs(distance));
@@ -83,6 +91,12 @@ struct ScaledCurve {
     margin = 64.0 * n * std::numeric_limits<double>::epsilon() * (largest + std::fabs(d));
     straight = control_points_collinear(points);
     point = core::is_point(curve);
+    if (straight && !point) {
+      Point2 farthest = points[0];
+      for (const Point2 p : points)
+        if (squared_length(p - points[0]) > squared_length(farthest - points[0])) farthest = p;
+      line = (farthest - points[0]) / std::sqrt(squared_length(farthest - points[0]));
+    }
   }
 
   /// Whether |B'(t)| is below the threshold, so that frame() takes the limit tangent at t.
@@ -767,9 +781,10 @@ double travel_direction(const ScaledCurve& s, double d, double a, double b) {
 /// The parallel curve of [a, b] of a straight curve (offset.hpp): B([a, b]) is the segment
 /// from B(a) to B(b) on the line (B' keeps its direction inside, no zero of B' being inside),
 /// moved by d N with N the left normal of the direction of travel T, constant on [a, b]; the
-/// cubic is that segment with its handles a third of the way along it. T is the chord's
-/// direction where the chord is longer than 1e-12 of the curve's size (beyond the rounding
-/// of B(a) and B(b)), else the start frame's tangent (the limit one where B' vanishes there).
+/// cubic is that segment with its handles a third of the way along it. T is ± the line's
+/// direction (ScaledCurve::line), the sign of the chord's projection on it where the chord
+/// is longer than 1e-12 of the curve's size (beyond the rounding of B(a) and B(b)), else that
+/// of the start frame's tangent (the limit one where B' vanishes there).
 /// The bound is the largest distance of the piece's control points from the segment
 /// [B(a), B(b)]: O([a, b]) lies within it of C (B([a, b]) is in the control points' hull, and
 /// the distance to a segment is convex), and C lies on O([a, b]) up to it (B takes every
@@ -783,8 +798,9 @@ std::optional<OffsetCubic> straight_interval(const ScaledCurve& s, double d, dou
   const Point2 chord = end - start;
   const double chord_squared = squared_length(chord);
   const double size = std::sqrt(largest_squared_length(s.points));
-  Point2 tangent = s.frame(a, a, b, true).tangent;
-  if (chord_squared > 1e-24 * size * size) tangent = chord / std::sqrt(chord_squared);
+  const Point2 travel =
+      chord_squared > 1e-24 * size * size ? chord : s.frame(a, a, b, true).tangent;
+  const Point2 tangent = core::dot(travel, s.line) < 0.0 ? -s.line : s.line;
   double farthest = 0.0;
   for (const Point2 p : q) {
     const Point2 r = p - start;

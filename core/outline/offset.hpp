@@ -140,7 +140,7 @@ struct CurveOffset {
 /// appended to `out`. The ends O(a), O(b) are computed from the whole curve (B and B' there),
 /// so the cubics of two intervals meeting at a t where B' is not zero share their end point
 /// bit for bit. Work is charged to `budget`; false (nothing appended) when it runs out or a
-/// piece still fails the tolerance after 40 halvings (the budget is then exhausted).
+/// piece still fails the tolerance after 60 levels of splitting (the budget is then exhausted).
 bool offset_interval(const core::Curve& curve, double a, double b, double d, double tolerance,
                      core::WorkBudget& budget, std::vector<OffsetCubic>& out);
 

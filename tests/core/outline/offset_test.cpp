@@ -30,12 +30,13 @@ namespace {
 using core::Curve;
 using core::Point2;
 
-/// O(t) with the one-sided limit of the normal where B' = 0 (side +1 from the right).
-Point2 exact_offset(const Curve& curve, double d, double t, double side) {
+/// O(t) with the one-sided limit of the normal where B' = 0 (side +1 from the right): the
+/// first derivative longer than `least` gives the direction.
+Point2 exact_offset(const Curve& curve, double d, double t, double side, double least = 1e-9) {
   const auto k = core::derivatives_at(curve, t, curve.degree());
   for (std::size_t i = 0; i < k.size(); ++i) {
     const double len = core::length(k[i]);
-    if (len > 1e-9) {
+    if (len > least) {
       const double sign = (i % 2 == 1 && side < 0) ? -1.0 : 1.0;  // ε^i / i! B^(i+1)
       const Point2 tangent = (sign / len) * k[i];
       return core::evaluate(curve, t) + d * Point2{-tangent.y, tangent.x};
@@ -55,13 +56,15 @@ double distance_to_answer(const CurveOffset& offset, Point2 p) {
 
 /// min over t in [t0, t1] of |O(t) - p|: dense samples, then golden-section search around the
 /// best sample.
-double distance_to_exact(const Curve& curve, double d, double t0, double t1, Point2 p) {
+double distance_to_exact(const Curve& curve, double d, double t0, double t1, Point2 p,
+                         double least = 1e-9) {
   const int samples = 400;
   double best = std::numeric_limits<double>::infinity();
   int best_j = 0;
   for (int j = 0; j <= samples; ++j) {
     const double t = t0 + (t1 - t0) * j / samples;
-    const double dist = core::length(exact_offset(curve, d, t, j == samples ? -1.0 : 1.0) - p);
+    const double dist =
+        core::length(exact_offset(curve, d, t, j == samples ? -1.0 : 1.0, least) - p);
     if (dist < best) best = dist, best_j = j;
   }
   double lo = t0 + (t1 - t0) * std::max(0, best_j - 1) / samples;
@@ -69,8 +72,8 @@ double distance_to_exact(const Curve& curve, double d, double t0, double t1, Poi
   const double phi = (std::sqrt(5.0) - 1) / 2;
   for (int i = 0; i < 80; ++i) {
     const double m1 = hi - phi * (hi - lo), m2 = lo + phi * (hi - lo);
-    const double f1 = core::length(exact_offset(curve, d, m1, 1.0) - p);
-    const double f2 = core::length(exact_offset(curve, d, m2, 1.0) - p);
+    const double f1 = core::length(exact_offset(curve, d, m1, 1.0, least) - p);
+    const double f2 = core::length(exact_offset(curve, d, m2, 1.0, least) - p);
     best = std::min({best, f1, f2});
     (f1 < f2 ? hi : lo) = f1 < f2 ? m2 : m1;
   }
@@ -82,7 +85,8 @@ CurveOffset unbounded_offset(const Curve& curve, double d, double tolerance) {
   return offset_curve(curve, d, tolerance, budget);
 }
 
-void expect_within(const Curve& curve, double d, double tolerance, const CurveOffset& offset) {
+void expect_within(const Curve& curve, double d, double tolerance, const CurveOffset& offset,
+                   double least = 1e-9) {
   ASSERT_FALSE(offset.cubics.empty());
   const double allowed = tolerance * (1 + 1e-6);
   // Exact offset points near the answer, from both sides of every cut.
@@ -90,14 +94,14 @@ void expect_within(const Curve& curve, double d, double tolerance, const CurveOf
     EXPECT_LE(c.error_bound, tolerance);
     for (int j = 0; j <= 20; ++j) {
       const double t = c.t0 + (c.t1 - c.t0) * j / 20;
-      const Point2 o = exact_offset(curve, d, t, j == 20 ? -1.0 : 1.0);
+      const Point2 o = exact_offset(curve, d, t, j == 20 ? -1.0 : 1.0, least);
       EXPECT_LE(distance_to_answer(offset, o), allowed) << "t " << t << " d " << d;
     }
     // Answer points near the exact offset of their piece.
     const Curve cubic(std::vector<Point2>(c.points.begin(), c.points.end()));
     for (int j = 0; j <= 8; ++j) {
       const Point2 p = core::evaluate(cubic, j / 8.0);
-      EXPECT_LE(distance_to_exact(curve, d, c.t0, c.t1, p), allowed)
+      EXPECT_LE(distance_to_exact(curve, d, c.t0, c.t1, p, least), allowed)
           << "piece " << c.t0 << " d " << d;
     }
   }
@@ -327,6 +331,18 @@ TEST(Offset, TrueCuspOfTheCurveAtTheSmallestAcceptedTolerances) {
   // Degree 5 with repeated control points: B' vanishes at both ends to the third order.
   const Curve repeated({{0, 0}, {0, 0}, {0, 0}, {5, 5}, {5, 5}, {10, 0}});
   expect_within(repeated, 1.0, 1e-6, capped_offset(repeated, 1.0, 1e-6));
+}
+
+TEST(Offset, HairpinWhoseTurnSpansATrillionthOfTheParameter) {
+  // x' = 200 (1 - t) - 100 t vanishes at 2/3, where y' = 2e-9 (1 - 3t) is -6.7e-10: B turns
+  // back by a half turn within about 1e-11 of t, and O goes round a half circle of radius |d|
+  // there; the parts shrink towards it for about 40 levels before they reach the turn. B'
+  // is nowhere zero (|B'| >= 6.7e-10), so the check takes the normal from B' itself.
+  const Curve hairpin({{0, 0}, {100, 1e-9}, {50, 0}});
+  for (const double d : {2.0, -0.5}) {
+    SCOPED_TRACE(testing::Message() << "d " << d);
+    expect_within(hairpin, d, 1e-3, capped_offset(hairpin, d, 1e-3), 0.0);
+  }
 }
 
 TEST(Offset, CurveThatIsOnePointIsOnePointAsALineOfZeroLength) {
