@@ -345,6 +345,22 @@ TEST(Offset, HairpinWhoseTurnSpansATrillionthOfTheParameter) {
   }
 }
 
+TEST(Offset, CuspRoundedOffItsZeroIsTheCuspsOffset) {
+  // P2 moved by 1e-12 off the cusp of {0,0},{10,10},{0,10},{10,0}: x' has no real root left,
+  // |B'(1/2)| = 7.5e-13, below end_tangent's threshold; stationary_points reports the
+  // minimum of |B'| there and the answer is the cusped curve's parallel curve (the curves
+  // differ by 1e-12 in position), judged against the exact cusp's.
+  const Curve rounded({{0, 0}, {10, 10}, {1e-12, 10}, {10, 0}});
+  const std::vector<double> zeros = stationary_points(rounded);
+  ASSERT_EQ(zeros.size(), 1u);
+  EXPECT_NEAR(zeros[0], 0.5, 1e-6);
+  const Curve cusped({{0, 0}, {10, 10}, {0, 10}, {10, 0}});
+  for (const double d : {1.0, -1.0}) {
+    SCOPED_TRACE(testing::Message() << "d " << d);
+    expect_within(cusped, d, 1e-6 + 1e-9, capped_offset(rounded, d, 1e-6));
+  }
+}
+
 TEST(Offset, CurveThatIsOnePointIsOnePointAsALineOfZeroLength) {
   // No direction: end_tangent's convention (1, 0), as the line from a point to itself.
   const CurveOffset line = capped_offset(Curve({{2, 3}, {2, 3}}), 1.5, 1e-6);

@@ -217,6 +217,10 @@ TEST(Stroke, RoundStrokeOfATrueCuspAtATightTolerance) {
   const core::Curve cusp({{0, 0}, {10, 10}, {0, 10}, {10, 0}});
   check_round_stroke("M0 0 C10 10 0 10 10 0", 2.0, 1e-7);
   check_simplified_round_stroke("M0 0 C10 10 0 10 10 0", cusp, 2.0, 1e-7);
+  // The cusp rounded off its zero by 1e-12 (x' without a real root): the same stroke.
+  check_round_stroke("M0 0 C10 10 1e-12 10 10 0", 2.0, 1e-3);
+  check_simplified_round_stroke("M0 0 C10 10 1e-12 10 10 0",
+                                core::Curve({{0, 0}, {10, 10}, {1e-12, 10}, {10, 0}}), 2.0, 1e-3);
 }
 
 TEST(Stroke, RoundIsTheDistanceSetWhereTheRadiusOfCurvatureIsBelowHalfTheWidth) {
