@@ -283,6 +283,24 @@ const CubicWeights& cubic_weights(int count) {
   return w;
 }
 
+/// The piece's point B_p(u_j) and derivative B_p'(u_j) at the interior samples u_j = j / K
+/// (j = 1..K-1) of a cubic piece q with hodograph h1, from the Bernstein weights inline, each
+/// handed to at(j, B_p, B_p'): the loop sample_parallel and sample_both_sides share.
+template <class At>
+void cubic_interior_samples(const ControlPoints& q, const ControlPoints& h1,
+                            const CubicWeights& weights, At at) {
+  const Point2 q0 = q[0], q1 = q[1], q2 = q[2], q3 = q[3];
+  const Point2 g0 = h1[0], g1 = h1[1], g2 = h1[2];
+  for (int j = 1; j < weights.count; ++j) {
+    const auto i = static_cast<std::size_t>(j);
+    const double u = weights.u[i], w = 1.0 - u;
+    const Point2 v = (w * w) * g0 + (2.0 * u * w) * g1 + (u * u) * g2;
+    const Point2 b = weights.b0[i] * q0 + weights.b1[i] * q1 + weights.b2[i] * q2 +
+                     weights.b3[i] * q3;
+    at(j, b, v);
+  }
+}
+
 /// O on the piece at u_j = j / K, j = 0..K: the ends given (from the end frames), the others
 /// from the piece's point and hodograph; a sample where B' evaluates to zero is NaN (the fit
 /// leaves it out). Returns whether every sample is a number.
@@ -295,25 +313,18 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
   bool all = true;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   if (q.size() == 4) {
-    // A cubic (the common case), its point and hodograph from the Bernstein weights inline.
-    const Point2 q0 = q[0], q1 = q[1], q2 = q[2], q3 = q[3];
-    const Point2 g0 = h1[0], g1 = h1[1], g2 = h1[2];
+    // A cubic (the common case).
     Point2* o = out.data();
-    for (int j = 1; j < count; ++j) {
-      const auto i = static_cast<std::size_t>(j);
-      const double u = weights.u[i], w = 1.0 - u;
-      const Point2 v = (w * w) * g0 + (2.0 * u * w) * g1 + (u * u) * g2;
+    cubic_interior_samples(q, h1, weights, [&](int j, Point2 b, Point2 v) {
       const double speed_squared = squared_length(v);
       if (!(speed_squared > 0.0)) {
         o[j] = {kNaN, kNaN};
         all = false;
-        continue;
+        return;
       }
       const double scale = d / std::sqrt(speed_squared);
-      const Point2 b = weights.b0[i] * q0 + weights.b1[i] * q1 + weights.b2[i] * q2 +
-                       weights.b3[i] * q3;
       o[j] = {b.x - scale * v.y, b.y + scale * v.x};
-    }
+    });
     return all;
   }
   for (int j = 1; j < count; ++j) {
@@ -352,27 +363,20 @@ bool sample_both_sides(const ControlPoints& q, const ControlPoints& h1, double d
   minus.back() = end.point + (-d) * n1;
   bool all = true;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  const Point2 q0 = q[0], q1 = q[1], q2 = q[2], q3 = q[3];
-  const Point2 g0 = h1[0], g1 = h1[1], g2 = h1[2];
   Point2* o = plus.data();
   Point2* r = minus.data();
-  for (int j = 1; j < count; ++j) {
-    const auto i = static_cast<std::size_t>(j);
-    const double u = weights.u[i], w = 1.0 - u;
-    const Point2 v = (w * w) * g0 + (2.0 * u * w) * g1 + (u * u) * g2;
+  cubic_interior_samples(q, h1, weights, [&](int j, Point2 b, Point2 v) {
     const double speed_squared = squared_length(v);
     if (!(speed_squared > 0.0)) {
       o[j] = r[j] = {kNaN, kNaN};
       all = false;
-      continue;
+      return;
     }
     // (-d) / x is -(d / x) exactly: the other side's samples are those of sample_parallel.
     const double scale = d / std::sqrt(speed_squared), other = -scale;
-    const Point2 b = weights.b0[i] * q0 + weights.b1[i] * q1 + weights.b2[i] * q2 +
-                     weights.b3[i] * q3;
     o[j] = {b.x - scale * v.y, b.y + scale * v.x};
     r[j] = {b.x - other * v.y, b.y + other * v.x};
-  }
+  });
   return all;
 }
 
