@@ -73,6 +73,11 @@ struct ScaledCurve {
   // go opposite ways are exact negatives of each other, and the stroke's edges along the
   // line coincide bit for bit).
   Point2 line{1.0, 0.0};
+  // For a straight curve of degree 2 or more, B at its ends and at its zeros of B' (where it
+  // turns back), computed as the intervals' ends are: straight_interval splits each run's
+  // segment where it passes one of them, so that the runs' segments along one side overlap
+  // in whole pieces with the same ends.
+  std::vector<Point2> turns;
 
   ScaledCurve(const core::Curve& curve, double distance, double tol) {
     const double size = std::max(core::scale(curve), std::fabs(distance));
@@ -96,6 +101,11 @@ struct ScaledCurve {
       for (const Point2 p : points)
         if (squared_length(p - points[0]) > squared_length(farthest - points[0])) farthest = p;
       line = (farthest - points[0]) / std::sqrt(squared_length(farthest - points[0]));
+      if (points.size() > 2) {
+        turns.push_back(point_at(points, 0.0));
+        for (const double t : stationary_points(curve)) turns.push_back(point_at(points, t));
+        turns.push_back(point_at(points, 1.0));
+      }
     }
   }
 
@@ -785,19 +795,20 @@ double travel_direction(const ScaledCurve& s, double d, double a, double b) {
 /// The parallel curve of [a, b] of a straight curve (offset.hpp): B([a, b]) is the segment
 /// from B(a) to B(b) on the line (B' keeps its direction inside, no zero of B' being inside),
 /// moved by d N with N the left normal of the direction of travel T, constant on [a, b]; the
-/// cubic is that segment with its handles a third of the way along it. T is ± the line's
-/// direction (ScaledCurve::line), the sign of the chord's projection on it where the chord
-/// is longer than 1e-12 of the curve's size (beyond the rounding of B(a) and B(b)), else that
-/// of the start frame's tangent (the limit one where B' vanishes there).
-/// The bound is the largest distance of the piece's control points from the segment
-/// [B(a), B(b)]: O([a, b]) lies within it of C (B([a, b]) is in the control points' hull, and
-/// the distance to a segment is convex), and C lies on O([a, b]) up to it (B takes every
-/// value between B(a) and B(b)). nullopt where that bound exceeds the tolerance (a cut at a
-/// zero of B' rounded so far that B turns back inside [a, b]): the general fit then decides.
-std::optional<OffsetCubic> straight_interval(const ScaledCurve& s, double d, double a, double b,
-                                             double tolerance) {
-  ControlPoints q;
-  piece_into(s.points, a, b, q);
+/// cubics are that segment cut where it passes B at another turn of the curve (s.turns; t
+/// there by bisection, B being monotone along the line on [a, b]), each with its handles a
+/// third of the way along it. T is ± the line's direction (ScaledCurve::line), the sign of
+/// the chord's projection on it where the chord is longer than 1e-12 of the curve's size
+/// (beyond the rounding of B(a) and B(b)), else that of the start frame's tangent (the limit
+/// one where B' vanishes there). Each cubic's bound is the largest distance of its part's
+/// control points from its segment [W_i, W_{i+1}] and of B at the part's ends from W_i and
+/// W_{i+1}: O on the part lies within it of the cubic (B's values lie in the control points'
+/// hull, and the distance to a segment is convex), and the cubic within it of O (B takes
+/// every value between its ends). False (nothing appended) where a bound exceeds the
+/// tolerance (a cut at a zero of B' rounded so far that B turns back inside [a, b]): the
+/// general fit then decides. Work: the bisections' evaluations, charged to `budget`.
+bool straight_interval(const ScaledCurve& s, double d, double a, double b, double tolerance,
+                       core::WorkBudget& budget, std::vector<OffsetCubic>& out) {
   const Point2 start = point_at(s.points, a), end = point_at(s.points, b);
   const Point2 chord = end - start;
   const double chord_squared = squared_length(chord);
@@ -805,21 +816,69 @@ std::optional<OffsetCubic> straight_interval(const ScaledCurve& s, double d, dou
   const Point2 travel =
       chord_squared > 1e-24 * size * size ? chord : s.frame(a, a, b, true).tangent;
   const Point2 tangent = core::dot(travel, s.line) < 0.0 ? -s.line : s.line;
-  double farthest = 0.0;
-  for (const Point2 p : q) {
-    const Point2 r = p - start;
-    const double along = chord_squared > 0.0 ? std::clamp(core::dot(r, chord) / chord_squared, 0.0, 1.0) : 0.0;
-    farthest = std::max(farthest, squared_length(r - along * chord));
+  // The parts' ends W_i and their parameters: the turns strictly between B(a) and B(b) along
+  // the direction of travel, in that order.
+  auto along = [&](Point2 p) { return core::dot(p - s.points[0], tangent); };
+  const double from = along(start), to = along(end);
+  struct Cut {
+    double position;
+    Point2 point;
+    double t;
+  };
+  std::vector<Cut> cuts{{from, start, a}};
+  for (const Point2 v : s.turns) {
+    const double x = along(v);
+    if (x > from && x < to) cuts.push_back({x, v, 0.0});
   }
-  const double bound = std::sqrt(farthest);
-  if (!(bound <= tolerance)) return std::nullopt;
+  std::sort(cuts.begin() + 1, cuts.end(), [](const Cut& l, const Cut& r) { return l.position < r.position; });
+  cuts.erase(std::unique(cuts.begin() + 1, cuts.end(),
+                         [](const Cut& l, const Cut& r) { return l.point == r.point; }),
+             cuts.end());
+  cuts.push_back({to, end, b});
+  const auto n = static_cast<std::int64_t>(s.points.size()) - 1;
+  for (std::size_t i = 1; i + 1 < cuts.size(); ++i) {
+    double lo = a, hi = b;
+    for (int k = 0; k < 64 && lo < hi; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      if (mid <= lo || mid >= hi) break;
+      (along(point_at(s.points, mid)) < cuts[i].position ? lo : hi) = mid;
+    }
+    cuts[i].t = std::max(hi, cuts[i - 1].t);
+    if (!budget.spend(64 * (n + 1) * (n + 1))) return false;
+  }
   const Point2 shift = d * left_normal(tangent);
-  const Point2 p0 = start + shift, p3 = end + shift;
-  OffsetCubic cubic{a, b, {}, 0.0};
-  const std::array<Point2, 4> points{p0, p0 + (1.0 / 3.0) * (p3 - p0), p3 - (1.0 / 3.0) * (p3 - p0), p3};
-  for (std::size_t i = 0; i < 4; ++i) cubic.points[i] = s.back.times(points[i]);
-  cubic.error_bound = s.back.times(bound + s.margin);
-  return cubic;
+  const std::size_t kept = out.size();
+  ControlPoints q;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    const Cut& c0 = cuts[i];
+    const Cut& c1 = cuts[i + 1];
+    const Point2 w = c1.point - c0.point;
+    const double w_squared = squared_length(w);
+    double farthest = std::max(squared_length(point_at(s.points, c0.t) - c0.point),
+                               squared_length(point_at(s.points, c1.t) - c1.point));
+    if (c1.t > c0.t) {
+      piece_into(s.points, c0.t, c1.t, q);
+      for (const Point2 p : q) {
+        const Point2 r = p - c0.point;
+        const double share =
+            w_squared > 0.0 ? std::clamp(core::dot(r, w) / w_squared, 0.0, 1.0) : 0.0;
+        farthest = std::max(farthest, squared_length(r - share * w));
+      }
+    }
+    const double bound = std::sqrt(farthest);
+    if (!(bound <= tolerance)) {
+      out.resize(kept);
+      return false;
+    }
+    const Point2 p0 = c0.point + shift, p3 = c1.point + shift;
+    OffsetCubic cubic{c0.t, c1.t, {}, 0.0};
+    const std::array<Point2, 4> points{p0, p0 + (1.0 / 3.0) * (p3 - p0),
+                                       p3 - (1.0 / 3.0) * (p3 - p0), p3};
+    for (std::size_t k = 0; k < 4; ++k) cubic.points[k] = s.back.times(points[k]);
+    cubic.error_bound = s.back.times(bound + s.margin);
+    out.push_back(cubic);
+  }
+  return true;
 }
 
 /// What the caller of fit_interval already has for the whole [a, b] at d: the end frames,
@@ -839,10 +898,8 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
   const auto n = static_cast<std::int64_t>(s.points.size()) - 1;
   if (first == nullptr && s.straight && !s.point && n > 1) {
     if (!budget.spend(16 * (n + 1) * (n + 1))) return false;
-    if (const std::optional<OffsetCubic> line = straight_interval(s, d, a, b, s.tolerance - s.margin)) {
-      out.push_back(*line);
-      return true;
-    }
+    if (straight_interval(s, d, a, b, s.tolerance - s.margin, budget, out)) return true;
+    if (budget.exhausted()) return false;
   }
   const double direction = first != nullptr ? first->direction : travel_direction(s, d, a, b);
 

@@ -210,6 +210,13 @@ TEST(Stroke, SimplifiedRoundStrokesOfCollinearCurvesThatTurnBack) {
   check_simplified_round_stroke("M0 0 C100 0 -100 0 0 0", there_and_back, 4.0, 1e-3);
   check_simplified_round_stroke("M0 0 C100 0 -100 0 50 0",
                                 core::Curve({{0, 0}, {100, 0}, {-100, 0}, {50, 0}}), 4.0, 1e-3);
+  // Off the axes the runs' edges along each side overlap where the curve goes back over
+  // itself: they must coincide in whole pieces for simplify, also at a tight tolerance and
+  // with a stroke far wider than the curve.
+  const core::Curve slanted({{0, 0}, {30, 30}, {0, 0}, {10, 10}});
+  check_simplified_round_stroke("M0 0 C30 30 0 0 10 10", slanted, 4.0, 6e-8);
+  check_simplified_round_stroke("M0 0 C30 30 0 0 10 10", slanted, 4.0, 1e-3);
+  check_simplified_round_stroke("M0 0 C30 30 0 0 10 10", slanted, 1000.0, 1e-3);
 }
 
 TEST(Stroke, RoundStrokeOfATrueCuspAtATightTolerance) {
