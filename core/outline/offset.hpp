@@ -102,14 +102,20 @@ struct CurveOffset {
 /// Straight curves. Where the control points are collinear (decided exactly,
 /// straight_curve.hpp), B' is parallel to their line and N is constant between zeros of B':
 /// the parallel curve of an interval [a, b] without a zero inside is the segment from B(a) to
-/// B(b) moved by d N (N the left normal of the direction of travel, that of the chord B(b) -
-/// B(a) where it is longer than 1e-12 of the curve's size, else the start frame's limit
-/// tangent): one cubic, that segment with handles at its thirds, its bound the largest
-/// distance of the interval's control points from the segment [B(a), B(b)] (B's values lie in
-/// their hull, and the distance to a segment is convex; the segment lies on B's values by
-/// continuity), rounding only. At a reversal (a zero of B' where B turns back) O jumps by
-/// 2 |d| to the other side: the next interval's cubic starts there. Where that bound exceeds
-/// the tolerance (a cut rounded so far that B turns back inside), the fit above decides. A
+/// B(b) moved by d N (N the left normal of the direction of travel: ± one unit direction of
+/// the line for the whole curve, the sign that of the chord B(b) - B(a) where it is longer
+/// than 1e-12 of the curve's size, else of the start frame's limit tangent). The answer is
+/// that segment as straight cubics (handles at their thirds), cut where it passes B at
+/// another zero of B' or end of the curve, the parameter there by bisection: the runs'
+/// segments along one side, which overlap where the curve goes back over itself, then
+/// coincide in whole pieces with the same ends (/stroke's simplify needs them equal, not
+/// 1e-16 apart). Each cubic's bound is the largest distance of its part's control points
+/// from its segment and of B at the part's ends from the segment's ends (B's values lie in
+/// the control points' hull, and the distance to a segment is convex; the segment lies on
+/// B's values by continuity): rounding only. At a reversal (a zero of B' where B turns
+/// back) O jumps by 2 |d| to the other side: the next interval's cubic starts there. Where a
+/// bound exceeds the tolerance (a cut rounded so far that B turns back inside), the fit above
+/// decides. A
 /// curve that is one point (all control points equal) is one point of the answer, moved by
 /// d along end_tangent's convention (1, 0), as a line of zero length is.
 ///
