@@ -329,6 +329,37 @@ TEST(Offset, CollinearCurvesOffTheAxesAndOfHighDegree) {
   expect_moved_segments(flat, -1.0, 1e-9 * 4, {}, capped_offset(flat, -1.0, 1e-9 * 4));
 }
 
+TEST(Offset, ZigzagOfDegreeNineteenAlongALine) {
+  // Control points alternating between (0, 0) and (10, 0): B runs back and forth along the
+  // axis, turning where x' vanishes. Every cubic lies on y = ±d inside [0, 10] (the closed
+  // form of each run's parallel curve), and every point of O (from B' where it is not near
+  // a zero, the normal then being unambiguous) is within the tolerance of the answer.
+  std::vector<Point2> p;
+  for (int k = 0; k < 10; ++k) {
+    p.push_back({0, 0});
+    p.push_back({10, 0});
+  }
+  const Curve zigzag(p);
+  const double d = 1.5, tolerance = 1e-6;
+  const CurveOffset o = capped_offset(zigzag, d, tolerance);
+  ASSERT_FALSE(o.cubics.empty());
+  for (const OffsetCubic& c : o.cubics) {
+    EXPECT_LE(c.error_bound, tolerance);
+    for (const Point2 q : c.points) {
+      EXPECT_NEAR(std::fabs(q.y), d, 1e-12);
+      EXPECT_GE(q.x, -1e-12);
+      EXPECT_LE(q.x, 10 + 1e-12);
+    }
+  }
+  for (int j = 0; j <= 2000; ++j) {
+    const double t = j / 2000.0;
+    const Point2 v = core::derivatives_at(zigzag, t, 1)[0];
+    if (std::fabs(v.x) < 1e-3) continue;
+    const Point2 exact = core::evaluate(zigzag, t) + Point2{0, v.x > 0 ? d : -d};
+    EXPECT_LE(distance_to_answer(o, exact), tolerance) << "t " << t;
+  }
+}
+
 TEST(Offset, TrueCuspOfTheCurveAtTheSmallestAcceptedTolerances) {
   // B'(1/2) = 0 exactly; tolerances down to 1e-9 of the scale (10) are accepted (offset.hpp).
   const Curve cusped({{0, 0}, {10, 10}, {0, 10}, {10, 0}});
