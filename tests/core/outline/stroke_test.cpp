@@ -306,6 +306,34 @@ TEST(Stroke, RoundIsTheDistanceSetForACurveOfDegreeFive) {
   EXPECT_GT(counts.outside, 100);
 }
 
+TEST(Stroke, RoundIsTheDistanceSetForCurvesOfHighDegreeWithRepeatedControlPoints) {
+  // A zigzag of degree 19 along the line through (0, 0) and (3, 4), turning where B'
+  // vanishes; a line of degree 20 whose last 20 control points coincide (B' vanishes to the
+  // 19th order at its end); a cubic whose middle control points coincide; both simplified
+  // and not: the round stroke is the set of points within width / 2 of the curve.
+  std::vector<Point2> zigzag, flat{{0, 0}};
+  for (int k = 0; k < 10; ++k) {
+    zigzag.push_back({0, 0});
+    zigzag.push_back({3, 4});
+  }
+  for (int k = 0; k < 20; ++k) flat.push_back({4, 0});
+  for (const std::vector<Point2>& points :
+       {zigzag, flat, std::vector<Point2>{{0, 0}, {5, 5}, {5, 5}, {10, 0}}}) {
+    path::Path path;
+    path.segments.push_back(core::Curve(points));
+    path.subpaths.push_back({0, 1, false});
+    for (const double tolerance : {1e-3, 1e-7}) {
+      SCOPED_TRACE(testing::Message() << "degree " << points.size() - 1 << " tolerance " << tolerance);
+      const StrokeOutline outline = stroke(path, round_style(3.0), tolerance, 22000000, kSegments);
+      ASSERT_EQ(outline.status, StrokeStatus::ok);
+      const test::MembershipCounts counts = test::check_round_membership(
+          path, outline, 1.5, tolerance, probe_points(path, 1.5, tolerance, 9, 1000));
+      EXPECT_GT(counts.inside, 100);
+      EXPECT_GT(counts.outside, 100);
+    }
+  }
+}
+
 TEST(Stroke, ZeroLengthSubpathIsADotWithRoundCapsASquareWithSquareCapsNothingWithButt) {
   const path::Path path = test::parsed_path("M3 3 L3 3");
   StrokeStyle style = round_style(2.0);
