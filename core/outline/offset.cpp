@@ -897,7 +897,9 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
   const std::size_t kept = out.size();
   const auto n = static_cast<std::int64_t>(s.points.size()) - 1;
   if (first == nullptr && s.straight && !s.point && n > 1) {
-    if (!budget.spend(16 * (n + 1) * (n + 1))) return false;
+    // The interval's piece and frames, and the curve's turns (stationary_points' root search,
+    // as offset_curve charges it).
+    if (!budget.spend(16 * (n + 1) * (n + 1) + 64 * n * n * n)) return false;
     if (straight_interval(s, d, a, b, s.tolerance - s.margin, budget, out)) return true;
     if (budget.exhausted()) return false;
   }
