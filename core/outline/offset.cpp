@@ -11,6 +11,7 @@
 #include "core/outline/area_moment_fit.hpp"
 #include "core/outline/control_points.hpp"
 #include "core/outline/offset_cusps.hpp"
+#include "core/outline/straight_curve.hpp"
 #include "core/outline/tangent_limits.hpp"
 
 namespace bezier::outline {
@@ -21,7 +22,10 @@ using core::Point2;
 
 constexpr int kFitSamples = 8;
 constexpr int kMaxSamples = 4096;
-constexpr int kMaxDepth = 40;
+// The deepest split: next to a zero of B' that is one only to within a few units of
+// rounding (a hairpin whose turn spans 1e-12 of the parameter), the halving towards it takes
+// about 40 levels before the turn itself is reached.
+constexpr int kMaxDepth = 60;
 constexpr int kMostParts = 8;
 // The share of the tolerance the first K leaves to the remainder, and the share below
 // which a cubic's samples must stay for a denser K to be tried.
@@ -62,6 +66,18 @@ struct ScaledCurve {
   double least_speed = 0.0;  // |B'| below this counts as zero (end_tangent's threshold)
   core::PowerOfTwo back{0};
   double margin = 0.0;  // offset.hpp's rounding allowance, scaled
+  bool straight = false;  // the control points are collinear (straight_curve.hpp)
+  bool point = false;     // the control points are all equal (core::is_point)
+  // For a straight curve, the unit direction of its line: from P_0 to the control point
+  // farthest from it (one direction for every interval, so that the normals of two runs that
+  // go opposite ways are exact negatives of each other, and the stroke's edges along the
+  // line coincide bit for bit).
+  Point2 line{1.0, 0.0};
+  // For a straight curve of degree 2 or more, B at its ends and at its zeros of B' (where it
+  // turns back), computed as the intervals' ends are: straight_interval splits each run's
+  // segment where it passes one of them, so that the runs' segments along one side overlap
+  // in whole pieces with the same ends.
+  std::vector<Point2> turns;
 
   ScaledCurve(const core::Curve& curve, double distance, double tol) {
     const double size = std::max(core::scale(curve), std::fabs(distance));
@@ -78,6 +94,25 @@ struct ScaledCurve {
     const double largest = std::sqrt(largest_squared_length(points));
     least_speed = 1e-12 * n * largest;
     margin = 64.0 * n * std::numeric_limits<double>::epsilon() * (largest + std::fabs(d));
+    straight = control_points_collinear(points);
+    point = core::is_point(curve);
+    if (straight && !point) {
+      Point2 farthest = points[0];
+      for (const Point2 p : points)
+        if (squared_length(p - points[0]) > squared_length(farthest - points[0])) farthest = p;
+      line = (farthest - points[0]) / std::sqrt(squared_length(farthest - points[0]));
+      if (points.size() > 2) {
+        turns.push_back(point_at(points, 0.0));
+        for (const double t : stationary_points(curve)) turns.push_back(point_at(points, t));
+        turns.push_back(point_at(points, 1.0));
+      }
+    }
+  }
+
+  /// Whether |B'(t)| is below the threshold, so that frame() takes the limit tangent at t.
+  [[nodiscard]] bool stationary(double t) const {
+    const Point2 v = first.empty() ? Point2{0, 0} : point_at(first, t);
+    return !(squared_length(v) > least_speed * least_speed);
   }
 
   /// B(t) and its unit tangent, computed from the whole curve so that two intervals meeting
@@ -95,11 +130,48 @@ struct ScaledCurve {
   }
 };
 
+/// The least projection of the control points g on the direction of their curve at 1/2 (0
+/// when not positive, or when that point is zero).
+double least_projection(const ControlPoints& g) {
+  const Point2 mid = g.empty() ? Point2{0, 0} : point_at(g, 0.5);
+  const double mid_squared = squared_length(mid);
+  if (!(mid_squared > 0.0)) return 0.0;
+  const Point2 direction = mid / std::sqrt(mid_squared);
+  double least = std::numeric_limits<double>::infinity();
+  for (const Point2 p : g) least = std::min(least, core::dot(p, direction));
+  return std::max(least, 0.0);
+}
+
+/// The control points of Q with g = (1 - t) Q (g's last control point taken as zero; g of
+/// degree k >= 1): q_i = g_i k / (k - i), since C(k, i) / C(k - 1, i) = k / (k - i).
+void divide_at_end(ControlPoints& g) {
+  const std::size_t k = g.size() - 1;
+  for (std::size_t i = 0; i < k; ++i)
+    g[i] = (static_cast<double>(k) / static_cast<double>(k - i)) * g[i];
+  g.resize(k, ControlPoints::Uninitialized{});
+}
+
+/// The control points of Q with g = t Q (g's first control point taken as zero): q_i =
+/// g_{i+1} k / (i + 1), since C(k, i + 1) / C(k - 1, i) = k / (i + 1).
+void divide_at_start(ControlPoints& g) {
+  const std::size_t k = g.size() - 1;
+  for (std::size_t i = 0; i < k; ++i)
+    g[i] = (static_cast<double>(k) / static_cast<double>(i + 1)) * g[i + 1];
+  g.resize(k, ControlPoints::Uninitialized{});
+}
+
 /// The piece's derivatives' control points and the bounds offset.hpp takes from them.
 struct PieceShape {
   ControlPoints h1, h2, h3;
   double M1 = 0.0, M2 = 0.0, M3 = 0.0;
   double m = 0.0;  // least projection of h1 on the direction of B'(1/2); 0 when not positive
+  // The bounds of the normal's turning (offset.hpp): those of B_p' itself (W = M, w = m), or
+  // where B' vanishes at an end of the piece, those of the reduced hodograph Q with B_p' =
+  // t^i (1 - t)^j Q, whose direction is B_p''s inside the piece.
+  double W1 = 0.0, W2 = 0.0, W3 = 0.0;
+  double w = 0.0;  // least projection of Q on the direction of Q(1/2); 0 when not positive
+  bool reduced_start = false, reduced_end = false;
+  Point2 start_direction{0, 0}, end_direction{0, 0};  // Q(0), Q(1) as unit vectors, if reduced
 
   /// The piece [a, b] of the scaled curve s: its first and second hodographs are (b - a)
   /// and (b - a)^2 times the pieces of B' and B'' on [a, b], taken from B' and B'' rather
@@ -107,7 +179,9 @@ struct PieceShape {
   /// times the curve's size, which is not small against the differences of a short piece
   /// (next to a cusp of O the parts grow very short): from B' the direction of B_p' at each
   /// sample keeps the relative accuracy of B' itself, however short the piece.
-  PieceShape(const ScaledCurve& s, double a, double b) {
+  /// zero_start, zero_end: the piece's end is an end of the interval being fitted (a cut of
+  /// offset_curve, or of the caller of offset_interval) where B' is below the threshold.
+  PieceShape(const ScaledCurve& s, double a, double b, bool zero_start, bool zero_end) {
     const double length = b - a;
     piece_into(s.first, a, b, h1);
     for (Point2& p : h1) p = length * p;
@@ -119,21 +193,59 @@ struct PieceShape {
     M1 = std::sqrt(largest_squared_length(h1));
     M2 = std::sqrt(largest_squared_length(h2));
     M3 = std::sqrt(largest_squared_length(h3));
-    const Point2 mid = h1.empty() ? Point2{0, 0} : point_at(h1, 0.5);
-    const double mid_squared = squared_length(mid);
-    if (mid_squared > 0.0) {
-      const Point2 direction = mid / std::sqrt(mid_squared);
-      double least = std::numeric_limits<double>::infinity();
-      for (const Point2 p : h1) least = std::min(least, core::dot(p, direction));
-      m = std::max(least, 0.0);
+    m = least_projection(h1);
+    W1 = M1;
+    W2 = M2;
+    W3 = M3;
+    w = m;
+    // Where an end of the interval is a zero of B' (B' below the threshold there, so that
+    // the frame takes the limit tangent), B' is taken to vanish there exactly and the factor
+    // t (or 1 - t) is divided out, again while the reduced hodograph's end point stays below
+    // 1e-9 of its largest (a zero of higher order, stationary_points' relative threshold).
+    reduced_start = h1.size() >= 2 && zero_start;
+    reduced_end = h1.size() >= 2 && zero_end;
+    if (!reduced_start && !reduced_end) return;
+    ControlPoints q = h1, q1, q2;
+    auto negligible = [](const ControlPoints& g, Point2 p) {
+      return !(squared_length(p) > 1e-18 * largest_squared_length(g));
+    };
+    if (reduced_start) {
+      do divide_at_start(q);
+      while (q.size() >= 2 && negligible(q, q[0]));
+    }
+    if (reduced_end && q.size() >= 2) {
+      do divide_at_end(q);
+      while (q.size() >= 2 && negligible(q, q[q.size() - 1]));
+    }
+    hodograph_into(q, q1);
+    hodograph_into(q1, q2);
+    W1 = std::sqrt(largest_squared_length(q));
+    W2 = std::sqrt(largest_squared_length(q1));
+    W3 = std::sqrt(largest_squared_length(q2));
+    w = least_projection(q);
+    if (w > 0.0) {
+      start_direction = q[0] / std::sqrt(squared_length(q[0]));
+      end_direction = q[q.size() - 1] / std::sqrt(squared_length(q[q.size() - 1]));
     }
   }
 
-  /// offset.hpp's bound of |d N''| (needs m > 0): |d| (|ω'| + ω^2).
+  /// offset.hpp's bound of |d N''| (needs w > 0): |d| (|ω'| + ω^2).
   [[nodiscard]] double normal_second(double d) const {
-    const double w = M1 * M2 / (m * m);
-    const double w1 = M1 * M3 / (m * m) + 2.0 * w * w;
-    return std::fabs(d) * (w1 + w * w);
+    const double v = W1 * W2 / (w * w);
+    const double v1 = W1 * W3 / (w * w) + 2.0 * v * v;
+    return std::fabs(d) * (v1 + v * v);
+  }
+
+  /// The distance |d| |T - Q/|Q|| at the reduced ends between the end frames' tangents
+  /// (end_tangent's, from the first derivative that is not zero) and the limit direction Q
+  /// gives (offset.hpp): added to the bound, 0 where no end is reduced.
+  [[nodiscard]] double end_slack(const EndFrame& start, const EndFrame& end, double d) const {
+    double slack = 0.0;
+    if (reduced_start)
+      slack = std::max(slack, std::sqrt(squared_length(start.tangent - start_direction)));
+    if (reduced_end)
+      slack = std::max(slack, std::sqrt(squared_length(end.tangent - end_direction)));
+    return std::fabs(d) * slack;
   }
 };
 
@@ -181,6 +293,24 @@ const CubicWeights& cubic_weights(int count) {
   return w;
 }
 
+/// The piece's point B_p(u_j) and derivative B_p'(u_j) at the interior samples u_j = j / K
+/// (j = 1..K-1) of a cubic piece q with hodograph h1, from the Bernstein weights inline, each
+/// handed to at(j, B_p, B_p'): the loop sample_parallel and sample_both_sides share.
+template <class At>
+void cubic_interior_samples(const ControlPoints& q, const ControlPoints& h1,
+                            const CubicWeights& weights, At at) {
+  const Point2 q0 = q[0], q1 = q[1], q2 = q[2], q3 = q[3];
+  const Point2 g0 = h1[0], g1 = h1[1], g2 = h1[2];
+  for (int j = 1; j < weights.count; ++j) {
+    const auto i = static_cast<std::size_t>(j);
+    const double u = weights.u[i], w = 1.0 - u;
+    const Point2 v = (w * w) * g0 + (2.0 * u * w) * g1 + (u * u) * g2;
+    const Point2 b = weights.b0[i] * q0 + weights.b1[i] * q1 + weights.b2[i] * q2 +
+                     weights.b3[i] * q3;
+    at(j, b, v);
+  }
+}
+
 /// O on the piece at u_j = j / K, j = 0..K: the ends given (from the end frames), the others
 /// from the piece's point and hodograph; a sample where B' evaluates to zero is NaN (the fit
 /// leaves it out). Returns whether every sample is a number.
@@ -193,25 +323,18 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
   bool all = true;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   if (q.size() == 4) {
-    // A cubic (the common case), its point and hodograph from the Bernstein weights inline.
-    const Point2 q0 = q[0], q1 = q[1], q2 = q[2], q3 = q[3];
-    const Point2 g0 = h1[0], g1 = h1[1], g2 = h1[2];
+    // A cubic (the common case).
     Point2* o = out.data();
-    for (int j = 1; j < count; ++j) {
-      const auto i = static_cast<std::size_t>(j);
-      const double u = weights.u[i], w = 1.0 - u;
-      const Point2 v = (w * w) * g0 + (2.0 * u * w) * g1 + (u * u) * g2;
+    cubic_interior_samples(q, h1, weights, [&](int j, Point2 b, Point2 v) {
       const double speed_squared = squared_length(v);
       if (!(speed_squared > 0.0)) {
         o[j] = {kNaN, kNaN};
         all = false;
-        continue;
+        return;
       }
       const double scale = d / std::sqrt(speed_squared);
-      const Point2 b = weights.b0[i] * q0 + weights.b1[i] * q1 + weights.b2[i] * q2 +
-                       weights.b3[i] * q3;
       o[j] = {b.x - scale * v.y, b.y + scale * v.x};
-    }
+    });
     return all;
   }
   for (int j = 1; j < count; ++j) {
@@ -250,27 +373,20 @@ bool sample_both_sides(const ControlPoints& q, const ControlPoints& h1, double d
   minus.back() = end.point + (-d) * n1;
   bool all = true;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  const Point2 q0 = q[0], q1 = q[1], q2 = q[2], q3 = q[3];
-  const Point2 g0 = h1[0], g1 = h1[1], g2 = h1[2];
   Point2* o = plus.data();
   Point2* r = minus.data();
-  for (int j = 1; j < count; ++j) {
-    const auto i = static_cast<std::size_t>(j);
-    const double u = weights.u[i], w = 1.0 - u;
-    const Point2 v = (w * w) * g0 + (2.0 * u * w) * g1 + (u * u) * g2;
+  cubic_interior_samples(q, h1, weights, [&](int j, Point2 b, Point2 v) {
     const double speed_squared = squared_length(v);
     if (!(speed_squared > 0.0)) {
       o[j] = r[j] = {kNaN, kNaN};
       all = false;
-      continue;
+      return;
     }
     // (-d) / x is -(d / x) exactly: the other side's samples are those of sample_parallel.
     const double scale = d / std::sqrt(speed_squared), other = -scale;
-    const Point2 b = weights.b0[i] * q0 + weights.b1[i] * q1 + weights.b2[i] * q2 +
-                     weights.b3[i] * q3;
     o[j] = {b.x - scale * v.y, b.y + scale * v.x};
     r[j] = {b.x - other * v.y, b.y + other * v.x};
-  }
+  });
   return all;
 }
 
@@ -531,12 +647,15 @@ struct PieceFit {
 /// the first within the tolerance kept.
 PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints& q,
                    const EndFrame& start, const EndFrame& end, double d, double tolerance,
-                   double direction, std::vector<Point2>& o, const PieceShape* given = nullptr,
+                   double direction, std::vector<Point2>& o, bool zero_start, bool zero_end,
+                   const PieceShape* given = nullptr,
                    bool presampled = false, const ChordMoments* given_moments = nullptr) {
   PieceFit result;
-  if (q.size() == 2) {
+  if (q.size() == 2 || s.point) {
     // A line's parallel curve is the line through the offset ends: the cubic with its
-    // handles a third of the chord along the line from each end, exact.
+    // handles a third of the chord along the line from each end, exact. (A curve that is
+    // one point, of any degree, is taken as the line of zero length it is, its normal
+    // end_tangent's convention: one point.)
     const Point2 n0 = left_normal(start.tangent);
     const Point2 p0 = start.point + d * n0, p3 = end.point + d * n0;
     const double third = std::sqrt(squared_length(p3 - p0)) / 3.0;
@@ -547,12 +666,14 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
   }
   const auto n = static_cast<std::int64_t>(q.size()) - 1;
   std::optional<PieceShape> own;
-  const PieceShape& shape = given != nullptr ? *given : own.emplace(s, a, b);
+  const PieceShape& shape = given != nullptr ? *given : own.emplace(s, a, b, zero_start, zero_end);
   const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
   const Point2 p0 = start.point + d * n0, p3 = end.point + d * n1;
   const Point2 d0 = direction * start.tangent, d3 = direction * end.tangent;
   result.work = 8 * (n + 1) * (n + 1);
-  if (shape.m > 0.0) {
+  // Where B' vanishes at an end, the end frame's normal against the limit Q gives.
+  const double slack = shape.end_slack(start, end, d);
+  if (shape.w > 0.0) {
     const double turning = shape.normal_second(d);
     // Between samples, |B_p'' - its linear interpolant| <= M3 h / 2 (zero when n <= 3).
     const double bend = q.size() > 4 ? 0.5 * shape.M3 : 0.0;
@@ -594,7 +715,7 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
       result.work += 24 * static_cast<std::int64_t>(taken);
       largest = sampled.largest;
       const double second = sampled.second + bend / k + turning;
-      const double remainder = second / (8.0 * k * k);
+      const double remainder = second / (8.0 * k * k) + slack;
       if (sampled.within) result.excess = std::min(result.excess, largest / std::max(tolerance - remainder, 0.25 * tolerance));
       else result.excess = std::min(result.excess, largest / tolerance);
       return std::pair{sampled.within ? largest + remainder : std::numeric_limits<double>::infinity(), second};
@@ -646,7 +767,7 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
     result.work += kFitSamples * (n * (n + 1) + 12);
     result.cubic = fit(o, weights, all_numbers, d0, d3);
   }
-  result.bound = std::min(result.bound, ball_bound(q, shape.h1, result.cubic, d, n0));
+  result.bound = std::min(result.bound, ball_bound(q, shape.h1, result.cubic, d, n0) + slack);
   return result;
 }
 
@@ -671,6 +792,95 @@ double travel_direction(const ScaledCurve& s, double d, double a, double b) {
   return travel_directions<1>(s, {d}, a, b)[0];
 }
 
+/// The parallel curve of [a, b] of a straight curve (offset.hpp): B([a, b]) is the segment
+/// from B(a) to B(b) on the line (B' keeps its direction inside, no zero of B' being inside),
+/// moved by d N with N the left normal of the direction of travel T, constant on [a, b]; the
+/// cubics are that segment cut where it passes B at another turn of the curve (s.turns; t
+/// there by bisection, B being monotone along the line on [a, b]), each with its handles a
+/// third of the way along it. T is ± the line's direction (ScaledCurve::line), the sign of
+/// the chord's projection on it where the chord is longer than 1e-12 of the curve's size
+/// (beyond the rounding of B(a) and B(b)), else that of the start frame's tangent (the limit
+/// one where B' vanishes there). Each cubic's bound is the largest distance of its part's
+/// control points from its segment [W_i, W_{i+1}] and of B at the part's ends from W_i and
+/// W_{i+1}: O on the part lies within it of the cubic (B's values lie in the control points'
+/// hull, and the distance to a segment is convex), and the cubic within it of O (B takes
+/// every value between its ends). False (nothing appended) where a bound exceeds the
+/// tolerance (a cut at a zero of B' rounded so far that B turns back inside [a, b]): the
+/// general fit then decides. Work: the bisections' evaluations, charged to `budget`.
+bool straight_interval(const ScaledCurve& s, double d, double a, double b, double tolerance,
+                       core::WorkBudget& budget, std::vector<OffsetCubic>& out) {
+  const Point2 start = point_at(s.points, a), end = point_at(s.points, b);
+  const Point2 chord = end - start;
+  const double chord_squared = squared_length(chord);
+  const double size = std::sqrt(largest_squared_length(s.points));
+  const Point2 travel =
+      chord_squared > 1e-24 * size * size ? chord : s.frame(a, a, b, true).tangent;
+  const Point2 tangent = core::dot(travel, s.line) < 0.0 ? -s.line : s.line;
+  // The parts' ends W_i and their parameters: the turns strictly between B(a) and B(b) along
+  // the direction of travel, in that order.
+  auto along = [&](Point2 p) { return core::dot(p - s.points[0], tangent); };
+  const double from = along(start), to = along(end);
+  struct Cut {
+    double position;
+    Point2 point;
+    double t;
+  };
+  std::vector<Cut> cuts{{from, start, a}};
+  for (const Point2 v : s.turns) {
+    const double x = along(v);
+    if (x > from && x < to) cuts.push_back({x, v, 0.0});
+  }
+  std::sort(cuts.begin() + 1, cuts.end(), [](const Cut& l, const Cut& r) { return l.position < r.position; });
+  cuts.erase(std::unique(cuts.begin() + 1, cuts.end(),
+                         [](const Cut& l, const Cut& r) { return l.point == r.point; }),
+             cuts.end());
+  cuts.push_back({to, end, b});
+  const auto n = static_cast<std::int64_t>(s.points.size()) - 1;
+  for (std::size_t i = 1; i + 1 < cuts.size(); ++i) {
+    double lo = a, hi = b;
+    for (int k = 0; k < 64 && lo < hi; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      if (mid <= lo || mid >= hi) break;
+      (along(point_at(s.points, mid)) < cuts[i].position ? lo : hi) = mid;
+    }
+    cuts[i].t = std::max(hi, cuts[i - 1].t);
+    if (!budget.spend(64 * (n + 1) * (n + 1))) return false;
+  }
+  const Point2 shift = d * left_normal(tangent);
+  const std::size_t kept = out.size();
+  ControlPoints q;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    const Cut& c0 = cuts[i];
+    const Cut& c1 = cuts[i + 1];
+    const Point2 w = c1.point - c0.point;
+    const double w_squared = squared_length(w);
+    double farthest = std::max(squared_length(point_at(s.points, c0.t) - c0.point),
+                               squared_length(point_at(s.points, c1.t) - c1.point));
+    if (c1.t > c0.t) {
+      piece_into(s.points, c0.t, c1.t, q);
+      for (const Point2 p : q) {
+        const Point2 r = p - c0.point;
+        const double share =
+            w_squared > 0.0 ? std::clamp(core::dot(r, w) / w_squared, 0.0, 1.0) : 0.0;
+        farthest = std::max(farthest, squared_length(r - share * w));
+      }
+    }
+    const double bound = std::sqrt(farthest);
+    if (!(bound <= tolerance)) {
+      out.resize(kept);
+      return false;
+    }
+    const Point2 p0 = c0.point + shift, p3 = c1.point + shift;
+    OffsetCubic cubic{c0.t, c1.t, {}, 0.0};
+    const std::array<Point2, 4> points{p0, p0 + (1.0 / 3.0) * (p3 - p0),
+                                       p3 - (1.0 / 3.0) * (p3 - p0), p3};
+    for (std::size_t k = 0; k < 4; ++k) cubic.points[k] = s.back.times(points[k]);
+    cubic.error_bound = s.back.times(bound + s.margin);
+    out.push_back(cubic);
+  }
+  return true;
+}
+
 /// What the caller of fit_interval already has for the whole [a, b] at d: the end frames,
 /// O's direction there, and fit_piece's fit of [a, b].
 struct FirstPiece {
@@ -686,6 +896,13 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
                   std::vector<OffsetCubic>& out, const FirstPiece* first = nullptr) {
   const std::size_t kept = out.size();
   const auto n = static_cast<std::int64_t>(s.points.size()) - 1;
+  if (first == nullptr && s.straight && !s.point && n > 1) {
+    // The interval's piece and frames, and the curve's turns (stationary_points' root search,
+    // as offset_curve charges it).
+    if (!budget.spend(16 * (n + 1) * (n + 1) + 64 * n * n * n)) return false;
+    if (straight_interval(s, d, a, b, s.tolerance - s.margin, budget, out)) return true;
+    if (budget.exhausted()) return false;
+  }
   const double direction = first != nullptr ? first->direction : travel_direction(s, d, a, b);
 
   struct Pending {
@@ -703,6 +920,7 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
   }
   ControlPoints q;
   std::vector<Point2>& samples = sample_buffer();
+  const bool zero_start = s.stationary(a), zero_end = s.stationary(b);
   while (!stack.empty()) {
     const Pending piece = stack.back();
     stack.pop_back();
@@ -710,7 +928,8 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
     if (first == nullptr) {
       piece_into(s.points, piece.a, piece.b, q);
       own = fit_piece(s, piece.a, piece.b, q, piece.start, piece.end, d,
-                      s.tolerance - s.margin, direction, samples);
+                      s.tolerance - s.margin, direction, samples,
+                      zero_start && piece.a == a, zero_end && piece.b == b);
     }
     const PieceFit& fitted = first != nullptr ? first->fit : own;
     first = nullptr;
@@ -761,8 +980,9 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
   ControlPoints q;
   piece_into(s.points, a, b, q);
   std::optional<PieceShape> shape;
-  if (q.size() > 2) shape.emplace(s, a, b);
-  if (!shape || !(shape->m > 0.0)) {
+  const bool zero_start = s.stationary(a), zero_end = s.stationary(b);
+  if (q.size() > 2 && !s.point) shape.emplace(s, a, b, zero_start, zero_end);
+  if (!shape || !(shape->w > 0.0) || s.straight) {
     // A line, or a piece whose fit needs no samples of its own kind: each side alone.
     if (!fit_interval(s, s.d, a, b, budget, plus)) return false;
     return fit_interval(s, -s.d, a, b, budget, minus);
@@ -786,9 +1006,10 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
                           {plus_samples.front(), minus_samples.front()},
                           {plus_samples.back(), minus_samples.back()});
   plus_first.fit = fit_piece(s, a, b, q, start, end, s.d, tolerance_left, plus_first.direction,
-                             plus_samples, &*shape, sampled, &moments[0]);
+                             plus_samples, zero_start, zero_end, &*shape, sampled, &moments[0]);
   minus_first.fit = fit_piece(s, a, b, q, start, end, -s.d, tolerance_left,
-                              minus_first.direction, minus_samples, &*shape, sampled,
+                              minus_first.direction, minus_samples, zero_start, zero_end,
+                              &*shape, sampled,
                               &moments[1]);
   if (!fit_interval(s, s.d, a, b, budget, plus, &plus_first)) return false;
   return fit_interval(s, -s.d, a, b, budget, minus, &minus_first);

@@ -83,6 +83,42 @@ struct CurveOffset {
 /// estimated at the bound of |d N''| (at least 8); where the samples are inside the
 /// tolerance and the remainder alone fails, O is sampled again at the K the remainder needs
 /// beside them.
+/// Zeros of B' at the ends. Where an end of the interval being fitted (a cut above, or an
+/// end of offset_interval's [a, b]) has |B'| below end_tangent's threshold (1e-12 n of the
+/// control points' scale, tangent_limits.hpp: the frame there takes the limit tangent), B' is
+/// taken to vanish there exactly: the zeros stationary_points finds are within rounding of
+/// B''s zeros, and what B' is next to them is rounding, not direction. On a piece with that
+/// end, B_p' = t^i (1 - t)^j Q (i, j >= 1 at such ends; the piece's first or last hodograph
+/// control point set to zero and the factor divided out, q_i = g_i k / (k - i) for (1 - t),
+/// q_i = g_{i+1} k / (i + 1) for t, again while Q's end point is below 1e-9 of its largest:
+/// a zero of higher order), so that inside the piece N is Q's normal, and at the end its
+/// limit. The turning bounds above are then Q's: M_1, M_2, M_3 the largest control points of
+/// Q and its first two hodographs, m the least projection of Q's on the direction of Q(1/2)
+/// (with m -> 0 from B_p' itself, the bound would grow without limit next to the zero and
+/// the piece be split forever). The end frames' tangents come from end_tangent (the first
+/// derivative above the threshold); the bound adds |d| |T - Q/|Q|| at each such end, the
+/// distance between the end sample and Q's limit.
+///
+/// Straight curves. Where the control points are collinear (decided exactly,
+/// straight_curve.hpp), B' is parallel to their line and N is constant between zeros of B':
+/// the parallel curve of an interval [a, b] without a zero inside is the segment from B(a) to
+/// B(b) moved by d N (N the left normal of the direction of travel: ± one unit direction of
+/// the line for the whole curve, the sign that of the chord B(b) - B(a) where it is longer
+/// than 1e-12 of the curve's size, else of the start frame's limit tangent). The answer is
+/// that segment as straight cubics (handles at their thirds), cut where it passes B at
+/// another zero of B' or end of the curve, the parameter there by bisection: the runs'
+/// segments along one side, which overlap where the curve goes back over itself, then
+/// coincide in whole pieces with the same ends (/stroke's simplify needs them equal, not
+/// 1e-16 apart). Each cubic's bound is the largest distance of its part's control points
+/// from its segment and of B at the part's ends from the segment's ends (B's values lie in
+/// the control points' hull, and the distance to a segment is convex; the segment lies on
+/// B's values by continuity): rounding only. At a reversal (a zero of B' where B turns
+/// back) O jumps by 2 |d| to the other side: the next interval's cubic starts there. Where a
+/// bound exceeds the tolerance (a cut rounded so far that B turns back inside), the fit above
+/// decides. A
+/// curve that is one point (all control points equal) is one point of the answer, moved by
+/// d along end_tangent's convention (1, 0), as a line of zero length is.
+///
 /// Where m is not positive (B' vanishes on or near the piece), the cubic is the least
 /// squares one and the bound is the sum of the radii of two balls about O(t0): the cubic is
 /// within its control points' largest distance from O(t0), and O within max |B_p(u) -
@@ -110,7 +146,7 @@ struct CurveOffset {
 /// appended to `out`. The ends O(a), O(b) are computed from the whole curve (B and B' there),
 /// so the cubics of two intervals meeting at a t where B' is not zero share their end point
 /// bit for bit. Work is charged to `budget`; false (nothing appended) when it runs out or a
-/// piece still fails the tolerance after 40 halvings (the budget is then exhausted).
+/// piece still fails the tolerance after 60 levels of splitting (the budget is then exhausted).
 bool offset_interval(const core::Curve& curve, double a, double b, double d, double tolerance,
                      core::WorkBudget& budget, std::vector<OffsetCubic>& out);
 

@@ -5,6 +5,8 @@
 #include <limits>
 
 #include "core/bernstein/roots.hpp"
+#include "core/numeric/binomial.hpp"
+#include "core/numeric/power_of_two.hpp"
 #include "core/outline/control_points.hpp"
 
 namespace bezier::outline {
@@ -64,6 +66,37 @@ std::vector<double> stationary_points(const core::Curve& curve) {
     if (!(t > 0.0 && t < 1.0)) continue;
     if (core::length(point_at(h, t)) <= 1e-9 * scale) out.push_back(t);
   }
+  if (h.size() < 3) return out;
+  // The minima of |B'| inside (0, 1): roots of B' · B'' (degree 2n - 3), on the curve scaled
+  // by a power of two (exact) so that the products neither overflow nor underflow.
+  const int e = -core::exponent_of(control_scale(curve.points()));
+  const core::PowerOfTwo factor(e);
+  ControlPoints first(h.size(), ControlPoints::Uninitialized{}), second;
+  for (std::size_t i = 0; i < h.size(); ++i) first[i] = factor.times(h[i]);
+  hodograph_into(first, second);
+  const int m = static_cast<int>(first.size()) - 1, k = static_cast<int>(second.size()) - 1;
+  core::Coeffs dots(static_cast<std::size_t>(m + k + 1), core::Coeffs::Uninitialized{});
+  std::fill(dots.begin(), dots.end(), 0.0);
+  for (int i = 0; i <= m; ++i) {
+    for (int j = 0; j <= k; ++j) {
+      dots[static_cast<std::size_t>(i + j)] +=
+          core::binomial(m, i) * core::binomial(k, j) / core::binomial(m + k, i + j) *
+          core::dot(first[static_cast<std::size_t>(i)], second[static_cast<std::size_t>(j)]);
+    }
+  }
+  // Half end_tangent's threshold for |B'| (1e-12 n of the largest control point), so that
+  // offset.hpp's frames take the limit tangent at every such minimum.
+  double largest = 0.0;
+  for (const Point2 p : curve.points()) largest = std::max(largest, core::length(factor.times(p)));
+  const double least = 0.5e-12 * static_cast<double>(curve.degree()) * largest;
+  const std::size_t found = out.size();
+  for (const double t : core::bernstein_roots(std::span<const double>(dots)).roots) {
+    if (!(t > 0.0 && t < 1.0) || !(core::length(point_at(first, t)) <= least)) continue;
+    const bool known = std::any_of(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(found),
+                                   [t](double z) { return std::fabs(z - t) < 1e-6; });
+    if (!known) out.push_back(t);
+  }
+  std::sort(out.begin(), out.end());
   return out;
 }
 

@@ -17,8 +17,14 @@ namespace bezier::outline {
 /// that is one point has no direction; (1, 0) is returned for it.
 [[nodiscard]] core::Point2 end_tangent(std::span<const core::Point2> p, bool at_start);
 
-/// The zeros of B' inside (0, 1): roots of x' (or of y' when x' is identically zero) where the
-/// other coordinate of B' vanishes too, to 1e-9 of the hodograph's scale; ascending.
+/// The zeros of B' inside (0, 1), ascending: roots of x' (or of y' when x' is identically
+/// zero) where the other coordinate of B' vanishes too, to 1e-9 of the hodograph's scale; and
+/// the minima of |B'| (roots of B' · B'') where |B'| is below half end_tangent's threshold
+/// (1e-12 n of the largest control point) and no root of the first kind is within 1e-6:
+/// there B' is zero to within the rounding of its own evaluation, although x' may have no
+/// real root (a cusp whose control points are rounded off it), and offset.hpp takes it as a
+/// zero (the curve whose derivative vanishes there differs from B by less than 1e-12 of the
+/// scale in position).
 [[nodiscard]] std::vector<double> stationary_points(const core::Curve& curve);
 
 }  // namespace bezier::outline

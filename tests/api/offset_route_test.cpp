@@ -64,6 +64,31 @@ TEST(OffsetRoute, PathSegmentsAreOffsetEachWithoutJoins) {
   EXPECT_EQ(std::count(data.begin(), data.end(), 'M'), 2);
 }
 
+TEST(OffsetRoute, CurvesThatTurnBackAlongTheirLineAnswer) {
+  // Issue 31: where a collinear curve turns back (B' = 0) its parallel curve jumps to the
+  // other side of the line: each run is its segment moved by d to its left, so every answer
+  // point is on y = ±d within the curve's x range (within its control points'); and a cusp at a tolerance of
+  // 1e-9 of its scale answers at the default limits.
+  for (const char* path : {"M0 0 Q100 0 50 0", "M0 0 C100 0 -100 0 0 0", "M0 0 C100 0 100 0 50 0",
+                           "M0 0 C100 0 -100 0 50 0"}) {
+    SCOPED_TRACE(path);
+    const json r = call(std::string(R"({"path":")") + path + R"(","distance":2,"tolerance":0.001})", 200);
+    ASSERT_GE(r["segments"].size(), 2u);
+    bool above = false, below = false;
+    for (const json& s : r["segments"]) {
+      for (const json& q : s["points"]) {
+        EXPECT_NEAR(std::fabs(q[1].get<double>()), 2.0, 1e-12);
+        EXPECT_GE(q[0].get<double>(), -100 - 1e-12);
+        EXPECT_LE(q[0].get<double>(), 100 + 1e-12);
+        (q[1].get<double>() > 0 ? above : below) = true;
+      }
+    }
+    EXPECT_TRUE(above && below);
+  }
+  const json r = call(R"({"path":"M0 0 C10 10 0 10 10 0","distance":1,"tolerance":1e-8})", 200);
+  EXPECT_LE(r["error_bound"].get<double>(), 1e-8);
+}
+
 TEST(OffsetRoute, ValidationPointers) {
   EXPECT_EQ(
       test::error_pointers(call(R"({"points":[[0,0],[1,1]],"distance":1,"tolerance":0})", 422)),

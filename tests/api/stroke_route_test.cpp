@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <span>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -234,6 +235,60 @@ TEST(StrokeRoute, SimplifiedStrokesOfTightBendsAnswerWithinTheWorkCap) {
       EXPECT_GT(judged_against_distance(r, c.cubic, half, 1e-4, c.grid, c.corners,
                                         round ? 0.0 : half * std::sqrt(2.0) + 1e-4),
                 10000);
+    }
+  }
+}
+
+TEST(StrokeRoute, CurvesThatTurnBackAlongTheirLineAnswer) {
+  // Issue 31: collinear curves whose derivative vanishes where they turn back, and a cusp at
+  // a tolerance of 1e-8 of its scale, answer at the default limits with every join and cap,
+  // simplified or not; the simplified round stroke is the distance set (winding 1 closer than
+  // width / 2 to the curve, 0 farther than width / 2 + tolerance, on a grid).
+  struct Case {
+    const char* path;
+    core::Curve curve;
+    double width, tolerance;
+  };
+  const Case cases[] = {
+      {"M0 0 Q100 0 50 0", core::Curve({{0, 0}, {100, 0}, {50, 0}}), 4, 1e-3},
+      {"M0 0 C100 0 -100 0 0 0", core::Curve({{0, 0}, {100, 0}, {-100, 0}, {0, 0}}), 4, 1e-3},
+      {"M0 0 C100 0 -100 0 0 0", core::Curve({{0, 0}, {100, 0}, {-100, 0}, {0, 0}}), 4, 1e-2},
+      {"M0 0 C100 0 100 0 50 0", core::Curve({{0, 0}, {100, 0}, {100, 0}, {50, 0}}), 4, 1e-3},
+      {"M0 0 C100 0 -100 0 50 0", core::Curve({{0, 0}, {100, 0}, {-100, 0}, {50, 0}}), 4, 1e-3},
+      {"M0 0 C10 10 0 10 10 0", core::Curve({{0, 0}, {10, 10}, {0, 10}, {10, 0}}), 2, 1e-7},
+  };
+  const char* styles[][2] = {{"round", "round"}, {"miter", "butt"}, {"bevel", "square"}};
+  for (const Case& c : cases) {
+    for (const bool simplify : {false, true}) {
+      for (const auto& [join, cap] : styles) {
+        SCOPED_TRACE(testing::Message() << c.path << " " << join << " " << cap << " simplify "
+                                        << simplify << " tolerance " << c.tolerance);
+        std::ostringstream body;
+        body.precision(17);
+        body << R"({"path":")" << c.path << R"(","width":)" << c.width << R"(,"tolerance":)"
+             << c.tolerance << R"(,"join":")" << join << R"(","cap":")" << cap
+             << R"(","simplify":)" << (simplify ? "true" : "false") << "}";
+        const json r = call(body.str(), 200);
+        if (!simplify || std::string(join) != "round") continue;
+        const double half = c.width / 2;
+        double x0 = 0, x1 = 0, y0 = 0, y1 = 0;  // the control points' box, widened by r + 1
+        for (const core::Point2 q : c.curve.points()) {
+          x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
+        }
+        x0 -= half + 1, x1 += half + 1, y0 -= half + 1, y1 += half + 1;
+        int inside = 0, outside = 0;
+        for (int i = 0; i <= 40; ++i) {
+          for (int j = 0; j <= 12; ++j) {
+            const core::Point2 p{x0 + (x1 - x0) * (i + 0.37) / 41, y0 + (y1 - y0) * (j + 0.61) / 13};
+            const double d = core::nearest(c.curve, p, 0, 1).distance;
+            if (d > half - 1e-3 && d < half + 2e-3) continue;
+            EXPECT_EQ(winding_at(r, p), d < half ? 1 : 0) << p.x << " " << p.y;
+            ++(d < half ? inside : outside);
+          }
+        }
+        EXPECT_GT(inside, 20);
+        EXPECT_GT(outside, 20);
+      }
     }
   }
 }

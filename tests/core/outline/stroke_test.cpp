@@ -191,6 +191,45 @@ TEST(Stroke, SimplifiedWideStrokesAtATightTolerance) {
   check_simplified_round_stroke("M0 0 C10 10 -10 10 0 0 Z", loop, 2.0, tolerance);
 }
 
+TEST(Stroke, RoundIsTheDistanceSetForCollinearCurvesThatTurnBack) {
+  // B' = 0 where each turns back along its line: the stroke is the set of points within
+  // width / 2 of the segments the curve sweeps (a stadium for one back-and-forth run).
+  for (const char* data : {"M0 0 Q100 0 50 0", "M0 0 C100 0 -100 0 0 0", "M0 0 C100 0 100 0 50 0",
+                           "M0 0 C100 0 -100 0 50 0", "M0 0 C30 30 0 0 10 10"}) {
+    check_round_stroke(data, 4.0, 1e-3);
+    check_round_stroke(data, 4.0, 2e-7);
+  }
+  check_round_stroke("M0 0 C3 0 6 0 10 0", 1000.0, 1e-3);
+}
+
+TEST(Stroke, SimplifiedRoundStrokesOfCollinearCurvesThatTurnBack) {
+  check_simplified_round_stroke("M0 0 Q100 0 50 0", core::Curve({{0, 0}, {100, 0}, {50, 0}}), 4.0,
+                                1e-3);
+  const core::Curve there_and_back({{0, 0}, {100, 0}, {-100, 0}, {0, 0}});
+  check_simplified_round_stroke("M0 0 C100 0 -100 0 0 0", there_and_back, 4.0, 1e-2);
+  check_simplified_round_stroke("M0 0 C100 0 -100 0 0 0", there_and_back, 4.0, 1e-3);
+  check_simplified_round_stroke("M0 0 C100 0 -100 0 50 0",
+                                core::Curve({{0, 0}, {100, 0}, {-100, 0}, {50, 0}}), 4.0, 1e-3);
+  // Off the axes the runs' edges along each side overlap where the curve goes back over
+  // itself: they must coincide in whole pieces for simplify, also at a tight tolerance and
+  // with a stroke far wider than the curve.
+  const core::Curve slanted({{0, 0}, {30, 30}, {0, 0}, {10, 10}});
+  check_simplified_round_stroke("M0 0 C30 30 0 0 10 10", slanted, 4.0, 6e-8);
+  check_simplified_round_stroke("M0 0 C30 30 0 0 10 10", slanted, 4.0, 1e-3);
+  check_simplified_round_stroke("M0 0 C30 30 0 0 10 10", slanted, 1000.0, 1e-3);
+}
+
+TEST(Stroke, RoundStrokeOfATrueCuspAtATightTolerance) {
+  // B'(1/2) = 0; 1e-7 is 1e-8 of the scale, an accepted tolerance.
+  const core::Curve cusp({{0, 0}, {10, 10}, {0, 10}, {10, 0}});
+  check_round_stroke("M0 0 C10 10 0 10 10 0", 2.0, 1e-7);
+  check_simplified_round_stroke("M0 0 C10 10 0 10 10 0", cusp, 2.0, 1e-7);
+  // The cusp rounded off its zero by 1e-12 (x' without a real root): the same stroke.
+  check_round_stroke("M0 0 C10 10 1e-12 10 10 0", 2.0, 1e-3);
+  check_simplified_round_stroke("M0 0 C10 10 1e-12 10 10 0",
+                                core::Curve({{0, 0}, {10, 10}, {1e-12, 10}, {10, 0}}), 2.0, 1e-3);
+}
+
 TEST(Stroke, RoundIsTheDistanceSetWhereTheRadiusOfCurvatureIsBelowHalfTheWidth) {
   check_round_stroke("M0 0 C12 0 12 4 0 4", 6.0, 1e-3);
   check_round_stroke("M0 0 Q10 10 20 0", 30.0, 1e-2);
@@ -265,6 +304,34 @@ TEST(Stroke, RoundIsTheDistanceSetForACurveOfDegreeFive) {
       path, outline, 1.25, 1e-3, probe_points(path, 1.25, 1e-3, 5, 1500));
   EXPECT_GT(counts.inside, 100);
   EXPECT_GT(counts.outside, 100);
+}
+
+TEST(Stroke, RoundIsTheDistanceSetForCurvesOfHighDegreeWithRepeatedControlPoints) {
+  // A zigzag of degree 19 along the line through (0, 0) and (3, 4), turning where B'
+  // vanishes; a line of degree 20 whose last 20 control points coincide (B' vanishes to the
+  // 19th order at its end); a cubic whose middle control points coincide; both simplified
+  // and not: the round stroke is the set of points within width / 2 of the curve.
+  std::vector<Point2> zigzag, flat{{0, 0}};
+  for (int k = 0; k < 10; ++k) {
+    zigzag.push_back({0, 0});
+    zigzag.push_back({3, 4});
+  }
+  for (int k = 0; k < 20; ++k) flat.push_back({4, 0});
+  for (const std::vector<Point2>& points :
+       {zigzag, flat, std::vector<Point2>{{0, 0}, {5, 5}, {5, 5}, {10, 0}}}) {
+    path::Path path;
+    path.segments.push_back(core::Curve(points));
+    path.subpaths.push_back({0, 1, false});
+    for (const double tolerance : {1e-3, 1e-7}) {
+      SCOPED_TRACE(testing::Message() << "degree " << points.size() - 1 << " tolerance " << tolerance);
+      const StrokeOutline outline = stroke(path, round_style(3.0), tolerance, 22000000, kSegments);
+      ASSERT_EQ(outline.status, StrokeStatus::ok);
+      const test::MembershipCounts counts = test::check_round_membership(
+          path, outline, 1.5, tolerance, probe_points(path, 1.5, tolerance, 9, 1000));
+      EXPECT_GT(counts.inside, 100);
+      EXPECT_GT(counts.outside, 100);
+    }
+  }
 }
 
 TEST(Stroke, ZeroLengthSubpathIsADotWithRoundCapsASquareWithSquareCapsNothingWithButt) {
