@@ -293,8 +293,8 @@ def check_case(svc, case, rng, nrandom, report):
                 flatten(ctrl, tol, loop)
                 area += green_area(ctrl)
             loops.append(loop[:-1] if len(loop) > 1 and loop[-1] == loop[0] else loop)
-            if abs(area) <= 1e-14 * scale * scale:
-                fails.append(f"{op}: contour {ci} has zero area")
+            if abs(area) <= 2.0 ** -80 * scale * scale or c["area"] == 0:
+                fails.append(f"{op}: contour {ci} has zero area ({area!r})")
             if (area > 0) != (c["orientation"] == "ccw"):
                 fails.append(f"{op}: contour {ci} orientation {c['orientation']} with area {area:.6g}")
             total += area

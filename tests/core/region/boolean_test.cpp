@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -10,6 +11,7 @@
 #include "core/curve/evaluate.hpp"
 #include "tests/support/exact.hpp"
 #include "tests/support/exact_polynomial.hpp"
+#include "tests/support/mulberry32.hpp"
 #include "tests/support/parsed_path.hpp"
 #include "tests/support/region_checks.hpp"
 
@@ -527,6 +529,54 @@ TEST(Boolean, OperandWithLoopSegmentsCombinedWithItsCopy) {
     EXPECT_NEAR(run(BooleanOperation::union_, l, l).area, area, 1e-12 * area);
     EXPECT_TRUE(run(BooleanOperation::difference, l, l).contours.empty());
   }
+}
+
+TEST(Boolean, NearTangentCrossingsBesideSegmentEnds) {
+  // B (Paper.js issue 878's second shape) has a horizontal bottom edge at y = 480 whose ends
+  // continue into cubics with horizontal tangents there. A's top edge runs one ulp below it
+  // (y = 480 - 2^-44 * 1.0), so each cubic crosses it at an angle of about 4e-7 radians,
+  // 3e-7 from B's segment end: a sliver one ulp thick between the two edges, ending in two
+  // short cubic pieces whose directions at the crossings decide on which side of A's edge
+  // they leave. Every operation is decided, clean, and right at points away from both
+  // boundaries; the sliver's area (below 260 * 6e-14) is within the area checks' margin.
+  const double below = std::nextafter(480.0, 0.0);
+  char buffer[256];
+  std::snprintf(buffer, sizeof buffer, "M0 0 L500 0 L500 %.17g L0 %.17g Z", below, below);
+  const path::Path rectangle = parsed_path(buffer);
+  std::snprintf(buffer, sizeof buffer, "M431.90000000000003 %.17g L128.00000000000003 370 L80.00000000000003 %.17g Z",
+                below, below);
+  const path::Path triangle = parsed_path(buffer);
+  const path::Path b = parsed_path("M400 480 L140 480 C130 480 300 300 300 300 C300 300 410 480 400 480 Z");
+  const double area_b = std::fabs(exact_area(b).to_double());
+  const BooleanOperation ops[] = {BooleanOperation::union_, BooleanOperation::intersection,
+                                  BooleanOperation::difference, BooleanOperation::xor_};
+  for (const path::Path* a : {&rectangle, &triangle}) {
+    const double area_a = std::fabs(exact_area(*a).to_double());
+    const auto lines_a = test::polylines(*a, 1000), lines_b = test::polylines(b, 1000);
+    double areas[4];
+    for (std::size_t k = 0; k < 4; ++k) {
+      SCOPED_TRACE(static_cast<int>(ops[k]));
+      const BooleanResult r = run(ops[k], *a, b);
+      ASSERT_EQ(r.status, BooleanStatus::ok);
+      areas[k] = r.area;
+      const auto lines_r = test::polylines(test::result_path(r), 1000);
+      test::Mulberry32 random(878);
+      for (int i = 0; i < 1000; ++i) {
+        const Point2 p{random.uniform(-10, 510), random.uniform(-10, 490)};
+        const test::PolylineWinding wa = test::polyline_winding(lines_a, p);
+        const test::PolylineWinding wb = test::polyline_winding(lines_b, p);
+        if (std::min(wa.distance, wb.distance) < 0.5) continue;  // beyond the chords' sagitta
+        const bool expected = keeps(ops[k], fills(FillRule::nonzero, wa.winding), fills(FillRule::nonzero, wb.winding));
+        EXPECT_EQ(test::polyline_winding(lines_r, p).winding, expected ? 1 : 0) << p.x << ", " << p.y;
+      }
+    }
+    EXPECT_NEAR(areas[0] + areas[1], area_a + area_b, 1e-9);
+    EXPECT_NEAR(areas[3], areas[0] - areas[1], 1e-9);
+    EXPECT_NEAR(areas[2], areas[0] - area_b, 1e-9);
+    EXPECT_NEAR(run_simplify(b, FillRule::nonzero).area, area_b, 1e-9);
+  }
+  // The rectangle holds all of B but the sliver.
+  EXPECT_NEAR(run(BooleanOperation::intersection, rectangle, b).area, area_b, 1e-9);
 }
 
 TEST(Boolean, WorkCapIsReported) {
