@@ -579,6 +579,43 @@ TEST(Boolean, NearTangentCrossingsBesideSegmentEnds) {
   EXPECT_NEAR(run(BooleanOperation::intersection, rectangle, b).area, area_b, 1e-9);
 }
 
+TEST(Boolean, SegmentWithACuspAtItsMiddle) {
+  // Cubics whose derivative vanishes at t = 1/2 (3/4 (P1 - P0) + 3/2 (P2 - P1) + 3/4 (P3 - P2)
+  // = 0), each closed by a line: a region with one boundary curve that has a cusp halfway.
+  // Its simplify is itself (one counter-clockwise contour of its exact area, or the
+  // reversed region's), and every operation with a square beside it or over it is right at
+  // points away from both boundaries.
+  for (const char* data : {"M4 0 C6 1 5 0 5 1 Z", "M0 0 C2 2 0 2 2 0 Z", "M2 0 C0 2 2 2 0 0 Z"}) {
+    SCOPED_TRACE(data);
+    const path::Path a = parsed_path(data);
+    const double area = std::fabs(exact_area(a).to_double());
+    const BooleanResult s = run_simplify(a, FillRule::nonzero);
+    ASSERT_EQ(s.contours.size(), 1u);
+    EXPECT_GT(s.contours[0].area, 0.0);
+    EXPECT_NEAR(s.area, area, 1e-14);
+    const auto lines_a = test::polylines(a, 2000);
+    for (const char* other : {"M10 10 H11 V11 H10 Z", "M-1 -1 H7 V3 H-1 Z", "M1 0.5 H5.5 V2 H1 Z"}) {
+      const path::Path b = parsed_path(other);
+      const auto lines_b = test::polylines(b, 1);
+      for (const BooleanOperation op : {BooleanOperation::union_, BooleanOperation::intersection,
+                                        BooleanOperation::difference, BooleanOperation::xor_}) {
+        const BooleanResult r = run(op, a, b);
+        ASSERT_EQ(r.status, BooleanStatus::ok);
+        const auto lines_r = test::polylines(test::result_path(r), 2000);
+        test::Mulberry32 random(5);
+        for (int i = 0; i < 400; ++i) {
+          const Point2 p{random.uniform(-1, 7), random.uniform(-1, 3)};
+          const test::PolylineWinding wa = test::polyline_winding(lines_a, p);
+          const test::PolylineWinding wb = test::polyline_winding(lines_b, p);
+          if (std::min(wa.distance, wb.distance) < 1e-3) continue;  // beyond the chords' sagitta
+          const bool expected = keeps(op, fills(FillRule::nonzero, wa.winding), fills(FillRule::nonzero, wb.winding));
+          EXPECT_EQ(test::polyline_winding(lines_r, p).winding, expected ? 1 : 0) << other << " at " << p.x << ", " << p.y;
+        }
+      }
+    }
+  }
+}
+
 TEST(Boolean, WorkCapIsReported) {
   const path::Path a = parsed_path(circle(0, 0, 1));
   const path::Path b = parsed_path(circle(0.5, 0.25, 1));
