@@ -26,6 +26,7 @@ The operands' segments are read with /segments (the path-data parser is not unde
 
   python3 tests/bench/peers/region_sweep.py --port 18200 tests/bench/peers/region_cases/*.jsonl
   python3 tests/bench/peers/region_sweep.py --port 18200 --generate 2000
+  python3 tests/bench/peers/region_sweep.py --port 18200 --family cubics --generate 2000
 """
 
 import argparse
@@ -378,12 +379,61 @@ def generated_cases(count, seed):
     return out
 
 
+def family_cases(family, count, seed):
+    """Random members of the small-integer families Skia's threaded PathOps tests enumerate
+    (PathOpsOpCubicThreadedTest, PathOpsOpLoopThreadedTest, PathOpsSimplifyQuadThreadedTest):
+    the same construction of the operands from integer indices, sampled instead of
+    enumerated, each with its fill rules."""
+    rng = random.Random(seed)
+    rules = ["nonzero", "evenodd"]
+    out = []
+
+    def pair():
+        a = rng.randrange(0, 6)
+        return a, rng.randrange(a + 1, 7)
+
+    def num(v):
+        return repr(float(v))
+
+    for i in range(count):
+        name = f"{family}{seed}-{i}"
+        if family == "cubics":
+            (A, B), (C, D), (a, b), (c, d) = pair(), pair(), pair(), pair()
+            pa = f"M{A} {B} C{C} {D} {b} {a} {d} {c} Z"
+            pb = f"M{a} {b} C{c} {d} {B} {A} {D} {C} Z"
+            out.append({"name": name, "a": {"path": pa, "fill_rule": rng.choice(rules)},
+                        "b": {"path": pb, "fill_rule": rng.choice(rules)}})
+        elif family == "loops":
+            (A, B), (C, D), (a, b), (c, d) = pair(), pair(), pair(), pair()
+            vx, vy = a - c, b - d
+            mid_a = ((a * A + c * (6 - A)) / 6, (b * A + d * (6 - A)) / 6)
+            mid_b = ((a * B + c * (6 - B)) / 6, (b * B + d * (6 - B)) / 6)
+            end_c = (mid_a[0] + vy * C / 3, mid_a[1] + vx * C / 3)
+            end_d = (mid_b[0] - vy * D / 3, mid_b[1] + vx * D / 3)
+            pa = f"M{a} {b} C{c} {d} {num(end_c[0])} {num(end_c[1])} {num(end_d[0])} {num(end_d[1])} Z"
+            pb = f"M{c} {d} C{num(end_c[0])} {num(end_c[1])} {num(end_d[0])} {num(end_d[1])} {a} {b} Z"
+            out.append({"name": name, "a": {"path": pa, "fill_rule": "nonzero"},
+                        "b": {"path": pb, "fill_rule": "nonzero"}})
+        elif family == "quads":
+            idx = sorted(rng.randrange(16) for _ in range(4))
+            idx2 = sorted(rng.randrange(16) for _ in range(4))
+            xy = [(v & 3, v >> 2) for v in idx + idx2]
+            (ax, ay), (bx, by), (cx, cy), (dx, dy), (ex, ey), (fx, fy), (gx, gy), (hx, hy) = xy
+            pa = (f"M{ax} {ay} Q{bx} {by} {cx} {cy} L{dx} {dy} Z "
+                  f"M{ex} {ey} L{fx} {fy} Q{gx} {gy} {hx} {hy} Z")
+            out.append({"name": name, "a": {"path": pa, "fill_rule": rng.choice(rules)}})
+        else:
+            raise SystemExit(f"unknown family {family}")
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("files", nargs="*")
     ap.add_argument("--port", type=int, default=18200)
     ap.add_argument("--generate", type=int, default=0)
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--family", default=None, help="cubics, loops or quads: --generate samples it")
     ap.add_argument("--points", type=int, default=300, help="random points per case")
     ap.add_argument("--only", default=None, help="substring of case names to run")
     args = ap.parse_args()
@@ -394,7 +444,10 @@ def main():
                 line = line.strip()
                 if line and not line.startswith("//"):
                     cases.append(json.loads(line))
-    cases += generated_cases(args.generate, args.seed)
+    if args.family:
+        cases += family_cases(args.family, args.generate, args.seed)
+    else:
+        cases += generated_cases(args.generate, args.seed)
     if args.only:
         cases = [c for c in cases if args.only in c["name"]]
     svc = Service(args.port)
