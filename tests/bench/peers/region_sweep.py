@@ -422,6 +422,56 @@ def family_cases(family, count, seed):
             pa = (f"M{ax} {ay} Q{bx} {by} {cx} {cy} L{dx} {dy} Z "
                   f"M{ex} {ey} L{fx} {fy} Q{gx} {gy} {hx} {hy} Z")
             out.append({"name": name, "a": {"path": pa, "fill_rule": rng.choice(rules)}})
+        elif family == "coincident":
+            # A random closed shape of lines, quadratics and cubics on a small grid, and b a
+            # copy of it moved by a grid step, mirrored, turned a quarter or reversed, so that
+            # pieces of boundary coincide (in the same or opposite direction), touch at
+            # vertices and cross at grid points.
+            n = rng.randint(2, 5)
+            pts = [(rng.randint(0, 4), rng.randint(0, 4)) for _ in range(n)]
+            d = f"M{pts[0][0]} {pts[0][1]}"
+            segs = []
+            for k in range(n):
+                q = pts[(k + 1) % n]
+                kind = rng.choice("LLQC")
+                ctrl = [(rng.randint(0, 4), rng.randint(0, 4)) for _ in range({"L": 0, "Q": 1, "C": 2}[kind])]
+                segs.append((kind, ctrl + [q]))
+            for kind, cps in segs:
+                d += " " + kind + " ".join(f"{x} {y}" for x, y in cps)
+            d += " Z"
+            t = rng.choice(["move", "mirror", "turn", "reverse", "same"])
+            dx, dy = rng.randint(-2, 2), rng.randint(-2, 2)
+
+            def tf(p):
+                x, y = p
+                if t == "move":
+                    return x + dx, y + dy
+                if t == "mirror":
+                    return 4 - x, y
+                if t == "turn":
+                    return 4 - y, x
+                return x, y
+
+            if t == "reverse":
+                rev = [pts[0]]
+                chain = []
+                start = pts[0]
+                cur = start
+                for kind, cps in segs:
+                    chain.append((kind, [cur] + cps))
+                    cur = cps[-1]
+                e = f"M{start[0]} {start[1]}"
+                for kind, full in reversed(chain):
+                    back = list(reversed(full))
+                    e += " " + kind + " ".join(f"{x} {y}" for x, y in back[1:])
+                e += " Z"
+            else:
+                e = f"M{tf(pts[0])[0]} {tf(pts[0])[1]}"
+                for kind, cps in segs:
+                    e += " " + kind + " ".join(f"{tf(c)[0]} {tf(c)[1]}" for c in cps)
+                e += " Z"
+            out.append({"name": name + "-" + t, "a": {"path": d, "fill_rule": rng.choice(rules)},
+                        "b": {"path": e, "fill_rule": rng.choice(rules)}})
         else:
             raise SystemExit(f"unknown family {family}")
     return out
@@ -433,7 +483,7 @@ def main():
     ap.add_argument("--port", type=int, default=18200)
     ap.add_argument("--generate", type=int, default=0)
     ap.add_argument("--seed", type=int, default=1)
-    ap.add_argument("--family", default=None, help="cubics, loops or quads: --generate samples it")
+    ap.add_argument("--family", default=None, help="cubics, loops, quads or coincident: --generate samples it")
     ap.add_argument("--points", type=int, default=300, help="random points per case")
     ap.add_argument("--only", default=None, help="substring of case names to run")
     args = ap.parse_args()
