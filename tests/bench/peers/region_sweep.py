@@ -165,6 +165,8 @@ class Polygon:
         """True when p is within d of an edge."""
         r, c = self._row(p[1]), self._col(p[0])
         kr, kc = 1 + int(d / self.ch), 1 + int(d / self.cw)
+        if kr * kc > 16:
+            return any(seg_dist(p, a, b) <= d for a, b in self.edges)
         for dr in range(-kr, kr + 1):
             for dc in range(-kc, kc + 1):
                 for a, b in self.grid.get((r + dr, c + dc), ()):
@@ -222,8 +224,10 @@ def check_case(svc, case, rng, nrandom, report):
     size = max(max(xs) - min(xs), max(ys) - min(ys), 1e-12 * scale)
     pad = 0.05 * size
     box = (min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad)
-    tol = FLAT * scale
-    margin = MARGIN * scale
+    # Distances relative to the operands' size (the flattening's cost follows it), and never
+    # below the contract's margin, 1e-9 of the largest coordinate.
+    tol = FLAT * size
+    margin = max(MARGIN * size, 4e-9 * scale)
     poly, ctrls, rule = {}, {}, {}
     for k in names:
         loops, ctrls[k] = operand_loops(seg[k], tol)
@@ -299,7 +303,7 @@ def check_case(svc, case, rng, nrandom, report):
             if (area > 0) != (c["orientation"] == "ccw"):
                 fails.append(f"{op}: contour {ci} orientation {c['orientation']} with area {area:.6g}")
             total += area
-        if abs(total - ans["area"]) > 1e-9 * max(1.0, abs(total)) + 1e-12 * scale * scale:
+        if abs(total - ans["area"]) > 1e-9 * abs(total) + 1e-12 * scale * scale:
             fails.append(f"{op}: area {ans['area']} but contours enclose {total}")
         rpoly = Polygon(loops, box)
         bad = 0
