@@ -205,7 +205,7 @@ def operand_loops(segments_answer, tol):
     return loops, ctrls
 
 
-def check_case(svc, case, rng, nrandom, report):
+def check_case(svc, case, rng, nrandom, report, transform=None):
     """Returns the list of failure strings of one case."""
     fails = []
     ops_checked = 0
@@ -216,6 +216,23 @@ def check_case(svc, case, rng, nrandom, report):
         if st != 200:
             return [f"/segments {k} status {st} {ans}"], 0
         seg[k] = ans
+    if transform is not None:
+        # The operands moved: x -> s x + t (each coordinate), sent as curves operands (the
+        # chains of the subpaths, an open one closed by its line).
+        sc, tx, ty = transform
+        case = dict(case)
+        for k in names:
+            curves, subpaths = [], []
+            for sp in seg[k]["subpaths"]:
+                first = sp["first_segment"]
+                chain = [[[sc * x + tx, sc * y + ty] for x, y in seg[k]["segments"][j]["points"]]
+                         for j in range(first, first + sp["segment_count"])]
+                if chain and chain[-1][-1] != chain[0][0]:
+                    chain.append([chain[-1][-1], chain[0][0]])
+                subpaths.append({"first_segment": len(curves), "segment_count": len(chain)})
+                curves += chain
+            seg[k] = {"segments": [{"points": c} for c in curves], "subpaths": subpaths}
+            case[k] = {"curves": curves, "fill_rule": case[k].get("fill_rule", "nonzero")}
     pts_all = [tuple(p) for k in names for s in seg[k]["segments"] for p in s["points"]]
     if not pts_all:
         return [], 0
@@ -344,8 +361,9 @@ def check_case(svc, case, rng, nrandom, report):
         targets = [p for p in samples[:nrandom] + samples[nrandom::7] if clear(p)][:400]
         if not targets:
             continue
-        st, ans = svc.post("/contains", {"path": case[k]["path"],
-                                         "fill_rule": rule[k], "targets": [list(p) for p in targets]})
+        body = {kk: v for kk, v in case[k].items() if kk != "fill_rule"}
+        body.update({"fill_rule": rule[k], "targets": [list(p) for p in targets]})
+        st, ans = svc.post("/contains", body)
         if st != 200:
             fails.append(f"/contains {k}: status {st}")
             continue
@@ -490,6 +508,8 @@ def main():
     ap.add_argument("--family", default=None, help="cubics, loops, quads or coincident: --generate samples it")
     ap.add_argument("--points", type=int, default=300, help="random points per case")
     ap.add_argument("--only", default=None, help="substring of case names to run")
+    ap.add_argument("--transform", default=None,
+                    help="s,tx,ty: send the operands as curves moved by x -> s x + t")
     args = ap.parse_args()
     cases = []
     for f in args.files:
@@ -504,12 +524,13 @@ def main():
         cases += generated_cases(args.generate, args.seed)
     if args.only:
         cases = [c for c in cases if args.only in c["name"]]
+    transform = tuple(float(v) for v in args.transform.split(",")) if args.transform else None
     svc = Service(args.port)
     rng = random.Random(args.seed)
     failed = 0
     ops = 0
     for case in cases:
-        fails, n = check_case(svc, case, rng, args.points, None)
+        fails, n = check_case(svc, case, rng, args.points, None, transform)
         ops += n
         if fails:
             failed += 1
