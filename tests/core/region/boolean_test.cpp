@@ -616,6 +616,36 @@ TEST(Boolean, SegmentWithACuspAtItsMiddle) {
   }
 }
 
+TEST(Boolean, RetracedNeedleWithinRoundingOfAnEdge) {
+  // Paper.js's resolveCrossings test 5: a rounded square and a cubic that runs 2.2e-7 out and
+  // back (its control points 1e-13 apart across it), 2e-13 inside the square's bottom
+  // corner arc. The needle's two halves are one group each whose edges cancel, and no ray
+  // from them clears the arc; they separate nothing, so every operation is decided and the
+  // needle adds no area: simplify gives the rounded square, under both fill rules.
+  const std::string square =
+      "M228.26666666666668,222.72h55.46666666666667c3.05499999999995,0 5.546666666666624,2.4916666666666742 "
+      "5.546666666666624,5.546666666666681v55.46666666666667c0,3.05499999999995 -2.4916666666666742,5.546666666666624 "
+      "-5.546666666666624,5.546666666666624h-55.46666666666667c-3.055000000000007,0 -5.546666666666681,-2.4916666666666742 "
+      "-5.546666666666681,-5.546666666666624v-55.46666666666667c0,-3.055000000000007 2.4916666666666742,-5.546666666666681 "
+      "5.546666666666681,-5.546666666666681z";
+  const std::string needle =
+      "M283.73333399705655,289.2799999999998c-2.212411231994338e-7,1.1368683772161603e-13 2.212409526691772e-7,0 0,0z";
+  const path::Path a = parsed_path(square + needle);
+  const double area = std::fabs(exact_area(parsed_path(square)).to_double());
+  for (const FillRule rule : {FillRule::evenodd, FillRule::nonzero}) {
+    const BooleanResult s = run_simplify(a, rule);
+    ASSERT_EQ(s.status, BooleanStatus::ok);
+    ASSERT_EQ(s.contours.size(), 1u);
+    EXPECT_NEAR(s.area, area, 1e-9);
+    const path::Path other = parsed_path("M250 250 H300 V300 H250 Z");
+    const BooleanResult u = run(BooleanOperation::union_, a, other, rule, rule);
+    ASSERT_EQ(u.status, BooleanStatus::ok);
+    const BooleanResult i = run(BooleanOperation::intersection, a, other, rule, rule);
+    ASSERT_EQ(i.status, BooleanStatus::ok);
+    EXPECT_NEAR(u.area + i.area, area + 2500.0, 1e-9);
+  }
+}
+
 TEST(Boolean, WorkCapIsReported) {
   const path::Path a = parsed_path(circle(0, 0, 1));
   const path::Path b = parsed_path(circle(0.5, 0.25, 1));
