@@ -4,15 +4,20 @@
 Cases: JSON lines files (tests/bench/peers/region_cases/*.jsonl), one case a line:
   {"name": ..., "a": {"path": SVG path data, "fill_rule": "nonzero"|"evenodd"}, "b": {...}}
 ("b" may be absent: only simplify of a is checked). The geometry comes from other libraries'
-public test suites (Paper.js, Skia PathOps, lib2geom), transcribed as data, plus generated
-families of small-integer cases (--generate N, as in Skia's threaded op tests).
+public test suites (Paper.js, Skia PathOps, lib2geom, flo_curves), transcribed as data by the
+make_*.py scripts beside them, and hand-made adversarial cases; plus generated cases
+(--generate N: random small-integer shapes, or --family cubics | loops | quads, the families
+Skia's threaded PathOps tests enumerate, sampled, or --family coincident, shapes with moved,
+mirrored, turned or reversed copies of themselves). --transform s,tx,ty sends every operand as
+a `curves` operand moved by x -> s x + t (scale and translation invariance).
 
 For every case and op (union, intersection, difference a-b and b-a, xor, simplify of each
 operand) it checks, without using the service's winding code:
   membership  at random points and points placed around every vertex and segment of the
               operands and of the result (only those farther than MARGIN x scale from both
-              operands' boundaries), the result's winding, by ray casting on a flattening of
-              the result's segments within FLAT x scale (control polygon within the chord's
+              operands' boundaries; scale here is the operands' size, and the margin is never
+              below 4e-9 of the largest coordinate), the result's winding, by ray casting on a
+              flattening of the result's segments within FLAT x scale (control polygon within the chord's
               tolerance), is 1 where op(in a, in b) holds and 0 elsewhere; in a / in b from
               the same ray casting on the operands with their fill rules;
   clean       contours closed with exact joins, no zero-length segment, each contour's
@@ -27,6 +32,9 @@ The operands' segments are read with /segments (the path-data parser is not unde
   python3 tests/bench/peers/region_sweep.py --port 18200 tests/bench/peers/region_cases/*.jsonl
   python3 tests/bench/peers/region_sweep.py --port 18200 --generate 2000
   python3 tests/bench/peers/region_sweep.py --port 18200 --family cubics --generate 2000
+  python3 tests/bench/peers/region_sweep.py --port 18200 --transform 9.5367431640625e-07,3,-5 FILES...
+A case that fails prints its operands and the first failures of each op; the last line counts
+cases, operations and failed cases (exit status 1 when any failed).
 """
 
 import argparse
