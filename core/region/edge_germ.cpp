@@ -42,7 +42,8 @@ double ccw_angle(const EdgeGerm& from, const EdgeGerm& to) {
     if (from.turn_is_curvature && to.turn_is_curvature) {
       // The offset of `to` from `from` seen from the vertex at half the shorter reach.
       const double r = 0.5 * std::min(from.reach, to.reach);
-      const double offset = (a < kTangentTieAngle ? a : a - two_pi) + 0.5 * r * (to.turn - from.turn);
+      const double offset =
+          (a < kTangentTieAngle ? a : a - two_pi) + 0.5 * r * (to.turn - from.turn);
       if (offset > 0.0) return kTangentTieAngle * offset / (1.0 + offset) * 0.5;
       if (offset < 0.0) return two_pi + kTangentTieAngle * offset / (1.0 - offset) * 0.5;
       return 0.0;

@@ -192,7 +192,8 @@ double ray_origin_parameter(const core::Curve& curve) {
   const auto pts = curve.points();
   double leg = 0.0;
   for (int i = 0; i < n; ++i) {
-    leg = std::max(leg, core::length(pts[static_cast<std::size_t>(i) + 1] - pts[static_cast<std::size_t>(i)]));
+    leg = std::max(
+        leg, core::length(pts[static_cast<std::size_t>(i) + 1] - pts[static_cast<std::size_t>(i)]));
   }
   const double slow = 0x1p-20 * n * leg;
   for (const double t : {0.5, 0.3183, 0.6817, 0.1887, 0.8113}) {

@@ -543,10 +543,12 @@ TEST(Boolean, NearTangentCrossingsBesideSegmentEnds) {
   char buffer[256];
   std::snprintf(buffer, sizeof buffer, "M0 0 L500 0 L500 %.17g L0 %.17g Z", below, below);
   const path::Path rectangle = parsed_path(buffer);
-  std::snprintf(buffer, sizeof buffer, "M431.90000000000003 %.17g L128.00000000000003 370 L80.00000000000003 %.17g Z",
+  std::snprintf(buffer, sizeof buffer,
+                "M431.90000000000003 %.17g L128.00000000000003 370 L80.00000000000003 %.17g Z",
                 below, below);
   const path::Path triangle = parsed_path(buffer);
-  const path::Path b = parsed_path("M400 480 L140 480 C130 480 300 300 300 300 C300 300 410 480 400 480 Z");
+  const path::Path b =
+      parsed_path("M400 480 L140 480 C130 480 300 300 300 300 C300 300 410 480 400 480 Z");
   const double area_b = std::fabs(exact_area(b).to_double());
   const BooleanOperation ops[] = {BooleanOperation::union_, BooleanOperation::intersection,
                                   BooleanOperation::difference, BooleanOperation::xor_};
@@ -566,8 +568,10 @@ TEST(Boolean, NearTangentCrossingsBesideSegmentEnds) {
         const test::PolylineWinding wa = test::polyline_winding(lines_a, p);
         const test::PolylineWinding wb = test::polyline_winding(lines_b, p);
         if (std::min(wa.distance, wb.distance) < 0.5) continue;  // beyond the chords' sagitta
-        const bool expected = keeps(ops[k], fills(FillRule::nonzero, wa.winding), fills(FillRule::nonzero, wb.winding));
-        EXPECT_EQ(test::polyline_winding(lines_r, p).winding, expected ? 1 : 0) << p.x << ", " << p.y;
+        const bool expected = keeps(ops[k], fills(FillRule::nonzero, wa.winding),
+                                    fills(FillRule::nonzero, wb.winding));
+        EXPECT_EQ(test::polyline_winding(lines_r, p).winding, expected ? 1 : 0)
+            << p.x << ", " << p.y;
       }
     }
     EXPECT_NEAR(areas[0] + areas[1], area_a + area_b, 1e-9);
@@ -594,7 +598,8 @@ TEST(Boolean, SegmentWithACuspAtItsMiddle) {
     EXPECT_GT(s.contours[0].area, 0.0);
     EXPECT_NEAR(s.area, area, 1e-14);
     const auto lines_a = test::polylines(a, 2000);
-    for (const char* other : {"M10 10 H11 V11 H10 Z", "M-1 -1 H7 V3 H-1 Z", "M1 0.5 H5.5 V2 H1 Z"}) {
+    for (const char* other :
+         {"M10 10 H11 V11 H10 Z", "M-1 -1 H7 V3 H-1 Z", "M1 0.5 H5.5 V2 H1 Z"}) {
       const path::Path b = parsed_path(other);
       const auto lines_b = test::polylines(b, 1);
       for (const BooleanOperation op : {BooleanOperation::union_, BooleanOperation::intersection,
@@ -608,8 +613,10 @@ TEST(Boolean, SegmentWithACuspAtItsMiddle) {
           const test::PolylineWinding wa = test::polyline_winding(lines_a, p);
           const test::PolylineWinding wb = test::polyline_winding(lines_b, p);
           if (std::min(wa.distance, wb.distance) < 1e-3) continue;  // beyond the chords' sagitta
-          const bool expected = keeps(op, fills(FillRule::nonzero, wa.winding), fills(FillRule::nonzero, wb.winding));
-          EXPECT_EQ(test::polyline_winding(lines_r, p).winding, expected ? 1 : 0) << other << " at " << p.x << ", " << p.y;
+          const bool expected =
+              keeps(op, fills(FillRule::nonzero, wa.winding), fills(FillRule::nonzero, wb.winding));
+          EXPECT_EQ(test::polyline_winding(lines_r, p).winding, expected ? 1 : 0)
+              << other << " at " << p.x << ", " << p.y;
         }
       }
     }
@@ -623,13 +630,18 @@ TEST(Boolean, RetracedNeedleWithinRoundingOfAnEdge) {
   // from them clears the arc; they separate nothing, so every operation is decided and the
   // needle adds no area: simplify gives the rounded square, under both fill rules.
   const std::string square =
-      "M228.26666666666668,222.72h55.46666666666667c3.05499999999995,0 5.546666666666624,2.4916666666666742 "
-      "5.546666666666624,5.546666666666681v55.46666666666667c0,3.05499999999995 -2.4916666666666742,5.546666666666624 "
-      "-5.546666666666624,5.546666666666624h-55.46666666666667c-3.055000000000007,0 -5.546666666666681,-2.4916666666666742 "
-      "-5.546666666666681,-5.546666666666624v-55.46666666666667c0,-3.055000000000007 2.4916666666666742,-5.546666666666681 "
+      "M228.26666666666668,222.72h55.46666666666667c3.05499999999995,0 "
+      "5.546666666666624,2.4916666666666742 "
+      "5.546666666666624,5.546666666666681v55.46666666666667c0,3.05499999999995 "
+      "-2.4916666666666742,5.546666666666624 "
+      "-5.546666666666624,5.546666666666624h-55.46666666666667c-3.055000000000007,0 "
+      "-5.546666666666681,-2.4916666666666742 "
+      "-5.546666666666681,-5.546666666666624v-55.46666666666667c0,-3.055000000000007 "
+      "2.4916666666666742,-5.546666666666681 "
       "5.546666666666681,-5.546666666666681z";
   const std::string needle =
-      "M283.73333399705655,289.2799999999998c-2.212411231994338e-7,1.1368683772161603e-13 2.212409526691772e-7,0 0,0z";
+      "M283.73333399705655,289.2799999999998c-2.212411231994338e-7,1.1368683772161603e-13 "
+      "2.212409526691772e-7,0 0,0z";
   const path::Path a = parsed_path(square + needle);
   const double area = std::fabs(exact_area(parsed_path(square)).to_double());
   for (const FillRule rule : {FillRule::evenodd, FillRule::nonzero}) {

@@ -43,8 +43,8 @@ TEST(EdgeGerm, CurvesThatTouchAreOrderedByCurvature) {
   // the tiny angle says.
   const double tilt = 1e-8;
   // Quadratics with B'(0) = 2 P1 and curvature cross(B', B'') / |B'|^3, B'' = 2 (P2 - 2 P1).
-  const core::Curve flatter({{0, 0}, {0.5, 0.5 * tilt}, {1, 0.5}});   // curvature about 1
-  const core::Curve rounder({{0, 0}, {0.5, 0}, {1, 1}});              // curvature about 2
+  const core::Curve flatter({{0, 0}, {0.5, 0.5 * tilt}, {1, 0.5}});  // curvature about 1
+  const core::Curve rounder({{0, 0}, {0.5, 0}, {1, 1}});             // curvature about 2
   const EdgeGerm g_flat = germ_at_start(flatter), g_round = germ_at_start(rounder);
   ASSERT_GT(g_flat.angle, g_round.angle);
   ASSERT_GT(g_round.turn, g_flat.turn);
