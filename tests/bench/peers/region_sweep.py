@@ -42,6 +42,7 @@ import http.client
 import json
 import math
 import random
+import signal
 import sys
 
 FLAT = 2e-7     # flattening tolerance, fraction of scale
@@ -516,6 +517,8 @@ def main():
     ap.add_argument("--family", default=None, help="cubics, loops, quads or coincident: --generate samples it")
     ap.add_argument("--points", type=int, default=300, help="random points per case")
     ap.add_argument("--only", default=None, help="substring of case names to run")
+    ap.add_argument("--case-seconds", type=int, default=300,
+                    help="a case whose checks take longer is reported as failed")
     ap.add_argument("--transform", default=None,
                     help="s,tx,ty: send the operands as curves moved by x -> s x + t")
     args = ap.parse_args()
@@ -537,8 +540,17 @@ def main():
     rng = random.Random(args.seed)
     failed = 0
     ops = 0
+    def too_long(signum, frame):
+        raise TimeoutError
+
+    signal.signal(signal.SIGALRM, too_long)
     for case in cases:
-        fails, n = check_case(svc, case, rng, args.points, None, transform)
+        signal.alarm(args.case_seconds)
+        try:
+            fails, n = check_case(svc, case, rng, args.points, None, transform)
+        except TimeoutError:
+            fails, n = [f"the check took more than {args.case_seconds} s (checker or service)"], 0
+        signal.alarm(0)
         ops += n
         if fails:
             failed += 1
