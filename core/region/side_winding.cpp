@@ -179,6 +179,29 @@ Point2 tangent_at(const core::Curve& curve, double t) {
   return curve.back() - curve.front();
 }
 
+/// The parameter of `curve` the rays start from: its middle, or else the first of a few
+/// other parameters where the curve moves at a speed that is not small against its control
+/// polygon (|B'(t)| > 2^-20 n max |P_{i+1} - P_i|). At a cusp (B' = 0) the curve has no two
+/// sides: both of its branches leave the point the same way, so every ray from it starts in
+/// the one face around the cusp's tip, and the left and right windings read there would be
+/// that face's twice over. Near one, the tangent's direction is lost to rounding. A
+/// polynomial curve's speed is small near at most a few parameters, so one of these is
+/// clear of them unless the curve is a point.
+double ray_origin_parameter(const core::Curve& curve) {
+  const int n = curve.degree();
+  const auto pts = curve.points();
+  double leg = 0.0;
+  for (int i = 0; i < n; ++i) {
+    leg = std::max(
+        leg, core::length(pts[static_cast<std::size_t>(i) + 1] - pts[static_cast<std::size_t>(i)]));
+  }
+  const double slow = 0x1p-20 * n * leg;
+  for (const double t : {0.5, 0.3183, 0.6817, 0.1887, 0.8113}) {
+    if (core::length(core::derivatives_at(curve, t, 1)[0]) > slow) return t;
+  }
+  return 0.5;
+}
+
 }  // namespace
 
 SideWindingIndex::SideWindingIndex(const Arrangement& arrangement)
@@ -210,9 +233,10 @@ SideWindingResult side_windings(const Arrangement& arrangement, const SideWindin
   std::vector<std::size_t> candidates;
   const CoincidentGroup& g = arrangement.groups[group];
   const ArrangementEdge& rep = arrangement.edges[g.representative];
-  const core::Split<Point2> halves = core::subdivide(rep.exact(), 0.5);
+  const double origin_t = ray_origin_parameter(rep.exact());
+  const core::Split<Point2> halves = core::subdivide(rep.exact(), origin_t);
   const Point2 middle = halves.left.back();
-  const Point2 tangent = tangent_at(rep.exact(), 0.5);
+  const Point2 tangent = tangent_at(rep.exact(), origin_t);
   const double norm = core::length(tangent);
   if (!(norm > 0.0)) {
     result.status = SideWindingStatus::unclear;

@@ -90,7 +90,9 @@ void SideWindingIndex::collect(const MayMeet& may_meet, std::vector<std::size_t>
 }
 
 /// Each operand's winding number on both sides of group g, by a ray from the middle m of the
-/// representative edge (its exact piece at t = 1/2) into its left side.
+/// representative edge (its exact piece at t = 1/2; at a cusp there, or where the piece moves
+/// too slowly for its tangent to be known, at the first of a few other parameters where it
+/// does not, since a cusp's two branches leave it on one side) into its left side.
 ///
 /// The winding number of a closed path about a point p is the signed count of the path's
 /// crossings of any half-line from p: +1 where the path crosses it from right to left

@@ -114,8 +114,14 @@ VertexSectorStatus decide_around_vertices(const Arrangement& arrangement,
       }
     }
   }
-  for (const char k : known) {
-    if (!k) return VertexSectorStatus::undecided;
+  for (std::size_t g = 0; g < known.size(); ++g) {
+    if (known[g]) continue;
+    // A group whose edges cancel (multiplicity 0 for both operands: a piece and its retrace)
+    // changes no winding number: its two sides are one face, so no operation keeps it and no
+    // other group needs its windings any more. Equal sides say so.
+    const std::array<int, 2>& m = arrangement.groups[g].multiplicity;
+    if (m[0] != 0 || m[1] != 0) return VertexSectorStatus::undecided;
+    windings[g] = SideWindings{};
   }
   return VertexSectorStatus::ok;
 }

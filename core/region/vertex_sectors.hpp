@@ -35,7 +35,10 @@ enum class VertexSectorStatus { ok, undecided, work_cap_reached };
 /// there).
 ///
 /// Passes over all vertices until nothing changes; each pass charges one unit per group end
-/// (budget.spend). undecided when some group stays unknown.
+/// (budget.spend). A group left unknown whose multiplicity is 0 for both operands (edges that
+/// cancel, such as a piece and its retrace squeezed into one group) separates nothing: its
+/// two sides are one face, so it is given equal sides (all zero), which no operation keeps.
+/// undecided when some other group stays unknown.
 [[nodiscard]] VertexSectorStatus decide_around_vertices(const Arrangement& arrangement,
                                                         std::vector<SideWindings>& windings,
                                                         std::vector<char>& known,

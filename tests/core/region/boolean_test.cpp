@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -10,6 +11,7 @@
 #include "core/curve/evaluate.hpp"
 #include "tests/support/exact.hpp"
 #include "tests/support/exact_polynomial.hpp"
+#include "tests/support/mulberry32.hpp"
 #include "tests/support/parsed_path.hpp"
 #include "tests/support/region_checks.hpp"
 
@@ -526,6 +528,133 @@ TEST(Boolean, OperandWithLoopSegmentsCombinedWithItsCopy) {
     EXPECT_NEAR(run(BooleanOperation::intersection, l, l).area, area, 1e-12 * area);
     EXPECT_NEAR(run(BooleanOperation::union_, l, l).area, area, 1e-12 * area);
     EXPECT_TRUE(run(BooleanOperation::difference, l, l).contours.empty());
+  }
+}
+
+TEST(Boolean, NearTangentCrossingsBesideSegmentEnds) {
+  // B (Paper.js issue 878's second shape) has a horizontal bottom edge at y = 480 whose ends
+  // continue into cubics with horizontal tangents there. A's top edge runs one ulp below it
+  // (y = 480 - 2^-44 * 1.0), so each cubic crosses it at an angle of about 4e-7 radians,
+  // 3e-7 from B's segment end: a sliver one ulp thick between the two edges, ending in two
+  // short cubic pieces whose directions at the crossings decide on which side of A's edge
+  // they leave. Every operation is decided, clean, and right at points away from both
+  // boundaries; the sliver's area (below 260 * 6e-14) is within the area checks' margin.
+  const double below = std::nextafter(480.0, 0.0);
+  char buffer[256];
+  std::snprintf(buffer, sizeof buffer, "M0 0 L500 0 L500 %.17g L0 %.17g Z", below, below);
+  const path::Path rectangle = parsed_path(buffer);
+  std::snprintf(buffer, sizeof buffer,
+                "M431.90000000000003 %.17g L128.00000000000003 370 L80.00000000000003 %.17g Z",
+                below, below);
+  const path::Path triangle = parsed_path(buffer);
+  const path::Path b =
+      parsed_path("M400 480 L140 480 C130 480 300 300 300 300 C300 300 410 480 400 480 Z");
+  const double area_b = std::fabs(exact_area(b).to_double());
+  const BooleanOperation ops[] = {BooleanOperation::union_, BooleanOperation::intersection,
+                                  BooleanOperation::difference, BooleanOperation::xor_};
+  for (const path::Path* a : {&rectangle, &triangle}) {
+    const double area_a = std::fabs(exact_area(*a).to_double());
+    const auto lines_a = test::polylines(*a, 1000), lines_b = test::polylines(b, 1000);
+    double areas[4];
+    for (std::size_t k = 0; k < 4; ++k) {
+      SCOPED_TRACE(static_cast<int>(ops[k]));
+      const BooleanResult r = run(ops[k], *a, b);
+      ASSERT_EQ(r.status, BooleanStatus::ok);
+      areas[k] = r.area;
+      const auto lines_r = test::polylines(test::result_path(r), 1000);
+      test::Mulberry32 random(878);
+      for (int i = 0; i < 1000; ++i) {
+        const Point2 p{random.uniform(-10, 510), random.uniform(-10, 490)};
+        const test::PolylineWinding wa = test::polyline_winding(lines_a, p);
+        const test::PolylineWinding wb = test::polyline_winding(lines_b, p);
+        if (std::min(wa.distance, wb.distance) < 0.5) continue;  // beyond the chords' sagitta
+        const bool expected = keeps(ops[k], fills(FillRule::nonzero, wa.winding),
+                                    fills(FillRule::nonzero, wb.winding));
+        EXPECT_EQ(test::polyline_winding(lines_r, p).winding, expected ? 1 : 0)
+            << p.x << ", " << p.y;
+      }
+    }
+    EXPECT_NEAR(areas[0] + areas[1], area_a + area_b, 1e-9);
+    EXPECT_NEAR(areas[3], areas[0] - areas[1], 1e-9);
+    EXPECT_NEAR(areas[2], areas[0] - area_b, 1e-9);
+    EXPECT_NEAR(run_simplify(b, FillRule::nonzero).area, area_b, 1e-9);
+  }
+  // The rectangle holds all of B but the sliver.
+  EXPECT_NEAR(run(BooleanOperation::intersection, rectangle, b).area, area_b, 1e-9);
+}
+
+TEST(Boolean, SegmentWithACuspAtItsMiddle) {
+  // Cubics whose derivative vanishes at t = 1/2 (3/4 (P1 - P0) + 3/2 (P2 - P1) + 3/4 (P3 - P2)
+  // = 0), each closed by a line: a region with one boundary curve that has a cusp halfway.
+  // Its simplify is itself (one counter-clockwise contour of its exact area, or the
+  // reversed region's), and every operation with a square beside it or over it is right at
+  // points away from both boundaries.
+  for (const char* data : {"M4 0 C6 1 5 0 5 1 Z", "M0 0 C2 2 0 2 2 0 Z", "M2 0 C0 2 2 2 0 0 Z"}) {
+    SCOPED_TRACE(data);
+    const path::Path a = parsed_path(data);
+    const double area = std::fabs(exact_area(a).to_double());
+    const BooleanResult s = run_simplify(a, FillRule::nonzero);
+    ASSERT_EQ(s.contours.size(), 1u);
+    EXPECT_GT(s.contours[0].area, 0.0);
+    EXPECT_NEAR(s.area, area, 1e-14);
+    const auto lines_a = test::polylines(a, 2000);
+    for (const char* other :
+         {"M10 10 H11 V11 H10 Z", "M-1 -1 H7 V3 H-1 Z", "M1 0.5 H5.5 V2 H1 Z"}) {
+      const path::Path b = parsed_path(other);
+      const auto lines_b = test::polylines(b, 1);
+      for (const BooleanOperation op : {BooleanOperation::union_, BooleanOperation::intersection,
+                                        BooleanOperation::difference, BooleanOperation::xor_}) {
+        const BooleanResult r = run(op, a, b);
+        ASSERT_EQ(r.status, BooleanStatus::ok);
+        const auto lines_r = test::polylines(test::result_path(r), 2000);
+        test::Mulberry32 random(5);
+        for (int i = 0; i < 400; ++i) {
+          const Point2 p{random.uniform(-1, 7), random.uniform(-1, 3)};
+          const test::PolylineWinding wa = test::polyline_winding(lines_a, p);
+          const test::PolylineWinding wb = test::polyline_winding(lines_b, p);
+          if (std::min(wa.distance, wb.distance) < 1e-3) continue;  // beyond the chords' sagitta
+          const bool expected =
+              keeps(op, fills(FillRule::nonzero, wa.winding), fills(FillRule::nonzero, wb.winding));
+          EXPECT_EQ(test::polyline_winding(lines_r, p).winding, expected ? 1 : 0)
+              << other << " at " << p.x << ", " << p.y;
+        }
+      }
+    }
+  }
+}
+
+TEST(Boolean, RetracedNeedleWithinRoundingOfAnEdge) {
+  // Paper.js's resolveCrossings test 5: a rounded square and a cubic that runs 2.2e-7 out and
+  // back (its control points 1e-13 apart across it), 2e-13 inside the square's bottom
+  // corner arc. The needle's two halves are one group each whose edges cancel, and no ray
+  // from them clears the arc; they separate nothing, so every operation is decided and the
+  // needle adds no area: simplify gives the rounded square, under both fill rules.
+  const std::string square =
+      "M228.26666666666668,222.72h55.46666666666667c3.05499999999995,0 "
+      "5.546666666666624,2.4916666666666742 "
+      "5.546666666666624,5.546666666666681v55.46666666666667c0,3.05499999999995 "
+      "-2.4916666666666742,5.546666666666624 "
+      "-5.546666666666624,5.546666666666624h-55.46666666666667c-3.055000000000007,0 "
+      "-5.546666666666681,-2.4916666666666742 "
+      "-5.546666666666681,-5.546666666666624v-55.46666666666667c0,-3.055000000000007 "
+      "2.4916666666666742,-5.546666666666681 "
+      "5.546666666666681,-5.546666666666681z";
+  const std::string needle =
+      "M283.73333399705655,289.2799999999998c-2.212411231994338e-7,1.1368683772161603e-13 "
+      "2.212409526691772e-7,0 0,0z";
+  const path::Path a = parsed_path(square + needle);
+  const double area = std::fabs(exact_area(parsed_path(square)).to_double());
+  for (const FillRule rule : {FillRule::evenodd, FillRule::nonzero}) {
+    const BooleanResult s = run_simplify(a, rule);
+    ASSERT_EQ(s.status, BooleanStatus::ok);
+    ASSERT_EQ(s.contours.size(), 1u);
+    EXPECT_NEAR(s.area, area, 1e-9);
+    const path::Path other = parsed_path("M250 250 H300 V300 H250 Z");
+    const BooleanResult u = run(BooleanOperation::union_, a, other, rule, rule);
+    ASSERT_EQ(u.status, BooleanStatus::ok);
+    const BooleanResult i = run(BooleanOperation::intersection, a, other, rule, rule);
+    ASSERT_EQ(i.status, BooleanStatus::ok);
+    EXPECT_NEAR(u.area + i.area, area + 2500.0, 1e-9);
   }
 }
 
