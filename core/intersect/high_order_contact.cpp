@@ -173,9 +173,11 @@ struct ContactMaps {
 /// power of two that centres c on 1, its least significant bit as far below as its leading
 /// bit is above: E's coefficient of z^j carries c^(2j), whose bits (2j times c's) must fit
 /// inside the exponent window up to j = m k. nullopt when the curves are one point, c is
-/// zero, the arithmetic fails, or P(0) != Q(0) (the curves do not meet there).
+/// zero (then `g_stationary` is set: g' vanishes at s), the arithmetic fails, or P(0) != Q(0)
+/// (the curves do not meet there).
 std::optional<ContactMaps> contact_maps(const Curve& f, const Curve& g, RationalParameter t,
-                                        RationalParameter s, ExactArithmetic& ar) {
+                                        RationalParameter s, ExactArithmetic& ar,
+                                        bool& g_stationary) {
   const int n = f.degree(), m = g.degree();
   const Point2 origin = f.front();
   double extent = 0.0;
@@ -194,7 +196,10 @@ std::optional<ContactMaps> contact_maps(const Curve& f, const Curve& g, Rational
   if (!ar.ok()) return std::nullopt;
   std::array<Poly, 2>& Q = maps.Q;
   maps.e = std::fabs(Q[0][1].estimate()) >= std::fabs(Q[1][1].estimate()) ? 0 : 1;
-  if (Q[maps.e][1].sign() == 0) return std::nullopt;
+  if (Q[maps.e][1].sign() == 0) {
+    g_stationary = true;
+    return std::nullopt;
+  }
   const ExponentRange c_bits = exponent_range(Q[maps.e][1]);
   const double c_scale = power_of_two(-(c_bits.lsb + c_bits.top) / 2);
   for (std::array<Poly, 2>* side : {&maps.P, &maps.Q})
@@ -398,33 +403,54 @@ std::optional<RationalParameter> simplest_rational(ParamInterval iv, int max_den
   return std::nullopt;
 }
 
+namespace {
+
+/// The certificate with f's map as P and g's as Q (the header's steps), on `ar`; sets
+/// `g_stationary` when it fails because g' vanishes at s (c = 0).
+std::optional<HighOrderContact> certify_in_order(const Curve& f, const Curve& g,
+                                                 RationalParameter t, RationalParameter s,
+                                                 ExactArithmetic& ar, bool& g_stationary) {
+  const int n = f.degree(), m = g.degree();
+  if (n < 1 || m < 1) return std::nullopt;
+  // 1. The maps, meeting at 0.
+  const std::optional<ContactMaps> maps = contact_maps(f, g, t, s, ar, g_stationary);
+  if (!maps) return std::nullopt;
+  // 2. The reparametrisation, along the larger component e of Q'(0), and E.
+  PowersOf c_power(maps->Q[maps->e][1], ar);
+  const int max_order = std::min(n * m, kMaxContactOrder);
+  const Reparametrisation psi = reparametrisation(*maps, m, max_order, c_power, ar);
+  if (psi.order < kLeastCertifiedOrder) return std::nullopt;  // no order found is 0: a common component
+  const std::optional<std::array<Poly, 2>> E = contact_residual(*maps, psi, n, m, c_power, ar);
+  if (!E) return std::nullopt;
+  // 3. Isolation: |c E_k,o| = |w(0) x Q'(0)| against the tails, all rounded outward.
+  const IsolationBounds bounds = isolation_bounds(*maps, psi, *E, m, ar);
+  if (!ar.ok()) return std::nullopt;
+  return isolating_box(bounds, t, s, psi.order);
+}
+
+}  // namespace
+
 std::optional<HighOrderContact> certify_high_order_contact(const Curve& f, const Curve& g,
                                                            RationalParameter t, RationalParameter s,
                                                            std::int64_t max_products,
                                                            std::int64_t& products) {
   ExactArithmetic ar(max_products);
-  const auto done = [&]() -> std::optional<HighOrderContact> {
-    products = ar.used();
-    return std::nullopt;
-  };
-  products = 0;
-  const int n = f.degree(), m = g.degree();
-  if (n < 1 || m < 1) return done();
-  // 1. The maps, meeting at 0.
-  const std::optional<ContactMaps> maps = contact_maps(f, g, t, s, ar);
-  if (!maps) return done();
-  // 2. The reparametrisation, along the larger component e of Q'(0), and E.
-  PowersOf c_power(maps->Q[maps->e][1], ar);
-  const int max_order = std::min(n * m, kMaxContactOrder);
-  const Reparametrisation psi = reparametrisation(*maps, m, max_order, c_power, ar);
-  if (psi.order < kLeastCertifiedOrder) return done();  // no order found is 0: a common component
-  const std::optional<std::array<Poly, 2>> E = contact_residual(*maps, psi, n, m, c_power, ar);
-  if (!E) return done();
-  // 3. Isolation: |c E_k,o| = |w(0) x Q'(0)| against the tails, all rounded outward.
-  const IsolationBounds bounds = isolation_bounds(*maps, psi, *E, m, ar);
-  if (!ar.ok()) return done();
+  bool g_stationary = false;
+  std::optional<HighOrderContact> contact = certify_in_order(f, g, t, s, ar, g_stationary);
+  // The certificate is symmetric in the two curves but needs Q'(0) != 0: where g stops at s
+  // (a zero end derivative, a cusp) and f moves, it is taken with the roles exchanged, and
+  // the box read back with t and s exchanged.
+  if (!contact && g_stationary && ar.ok()) {
+    bool f_stationary = false;
+    contact = certify_in_order(g, f, s, t, ar, f_stationary);
+    if (contact) {
+      std::swap(contact->t_exact, contact->s_exact);
+      std::swap(contact->t, contact->s);
+      std::swap(contact->t_isolated, contact->s_isolated);
+    }
+  }
   products = ar.used();
-  return isolating_box(bounds, t, s, psi.order);
+  return contact;
 }
 
 std::int64_t HighOrderContactFinder::try_box(ParamInterval t, ParamInterval s,

@@ -72,8 +72,9 @@ struct HighOrderContact {
 inline constexpr std::int64_t kExpansionProductCost = 100;
 
 /// The certificate above for the contact of f and g (degrees n, m >= 1) at (t, s), or nothing
-/// when it does not hold: f(t) != g(s), a contact of order below 3, a zero derivative of g,
-/// a common component, an exact product outside the expansions' exponent window, no rho
+/// when it does not hold: f(t) != g(s), a contact of order below 3, zero derivatives of both
+/// curves there (where only g's vanishes, the certificate, symmetric in the two curves, is
+/// taken with their roles exchanged: Q the map of f), a common component, an exact product outside the expansions' exponent window, no rho
 /// down to 2^-52, or more than `max_products` exact products needed. `products` receives
 /// the number of exact products taken (the caller charges them).
 /// Preconditions: finite control points; 0 <= num <= den.

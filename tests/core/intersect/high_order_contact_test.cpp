@@ -79,6 +79,53 @@ TEST(HighOrderContact, IssuePairAnswersOneExactTangencyByEveryMethod) {
   }
 }
 
+// A curve that stops where it touches another: g(s) = (4 s^2, -2 s^2) (control points (0, 0),
+// (0, 0), (4, -2)) runs along the line x + 2y = 0 with g'(0) = 0, and f(t) = (4t - 4t^2,
+// -2t + 6t^2) leaves (0, 0) along that line: x + 2y = 8 t^2 on f, so f meets the line only at
+// t = 0, and the one intersection is f(0) = g(0). There f's distance from the line grows like
+// t^2 while g reaches f's neighbourhood only at s ~ sqrt(t): in g's parameter the contact is
+// of order 4. The certificate needs the moving curve's derivative, so it is taken with the
+// curves' roles exchanged whichever comes first.
+Curve moving() { return Curve({{0, 0}, {2, -1}, {0, 4}}); }
+Curve stopping() { return Curve({{0, 0}, {0, 0}, {4, -2}}); }
+
+TEST(HighOrderContact, CurveStoppingAtTheContactIsCertifiedInEitherOrder) {
+  for (const bool swapped : {false, true}) {
+    std::int64_t products = 0;
+    const auto c = swapped ? certify_high_order_contact(stopping(), moving(), {0, 1}, {0, 1}, 1000000, products)
+                           : certify_high_order_contact(moving(), stopping(), {0, 1}, {0, 1}, 1000000, products);
+    ASSERT_TRUE(c.has_value()) << swapped;
+    EXPECT_EQ(c->order, 4);
+    EXPECT_EQ(c->t, (ParamInterval{0.0, 0.0}));
+    EXPECT_EQ(c->s, (ParamInterval{0.0, 0.0}));
+    EXPECT_EQ(c->t_isolated.lo, 0.0);
+    EXPECT_GT(c->t_isolated.hi, 0.0);
+    EXPECT_EQ(c->s_isolated.lo, 0.0);
+    EXPECT_GT(c->s_isolated.hi, 0.0);
+  }
+  // Both curves stopping there: no certificate (neither map has a derivative to follow).
+  std::int64_t products = 0;
+  EXPECT_FALSE(certify_high_order_contact(stopping(), stopping(), {0, 1}, {0, 1}, 1000000, products));
+}
+
+TEST(HighOrderContact, CurveStoppingAtTheContactAnswersOneExactRootByEveryMethod) {
+  for (const IntersectMethod method : kMethods) {
+    SCOPED_TRACE(std::string(to_string(method)));
+    for (const bool swapped : {false, true}) {
+      const IntersectionResult r =
+          swapped ? run(stopping(), moving(), method) : run(moving(), stopping(), method);
+      EXPECT_EQ(r.status, IntersectStatus::ok) << swapped;
+      EXPECT_LT(r.stats.work, kDefaultCap / 10);
+      ASSERT_EQ(r.intersections.size(), 1u);
+      const Intersection& x = r.intersections[0];
+      EXPECT_EQ(x.t_interval, (ParamInterval{0.0, 0.0}));
+      EXPECT_EQ(x.s_interval, (ParamInterval{0.0, 0.0}));
+      EXPECT_EQ(x.point, (Point2{0.0, 0.0}));
+      EXPECT_TRUE(x.resolved);
+    }
+  }
+}
+
 TEST(HighOrderContact, SimplestRationalHasTheLeastDenominator) {
   EXPECT_EQ(simplest_rational({0.3, 0.35}, 256), (RationalParameter{1, 3}));
   EXPECT_EQ(simplest_rational({0.5, 0.5}, 256), (RationalParameter{1, 2}));
