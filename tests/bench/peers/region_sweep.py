@@ -135,9 +135,8 @@ class Polygon:
         self.edges = []
         for loop in loops:
             for i in range(len(loop)):
-                a, b = loop[i], loop[(i + 1) % len(loop)]
-                if a != b:
-                    self.edges.append((a, b))
+                # Zero-length edges too: a boundary that is a single point still has a distance.
+                self.edges.append((loop[i], loop[(i + 1) % len(loop)]))
         self.x0, self.y0, x1, y1 = box
         self.n = cells
         self.cw = max(x1 - self.x0, 1e-300) / cells
