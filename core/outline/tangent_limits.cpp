@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "core/bernstein/roots.hpp"
-#include "core/numeric/binomial.hpp"
+#include "core/measure/bernstein_product.hpp"
 #include "core/numeric/power_of_two.hpp"
 #include "core/outline/control_points.hpp"
 
@@ -74,16 +74,7 @@ std::vector<double> stationary_points(const core::Curve& curve) {
   ControlPoints first(h.size(), ControlPoints::Uninitialized{}), second;
   for (std::size_t i = 0; i < h.size(); ++i) first[i] = factor.times(h[i]);
   hodograph_into(first, second);
-  const int m = static_cast<int>(first.size()) - 1, k = static_cast<int>(second.size()) - 1;
-  core::Coeffs dots(static_cast<std::size_t>(m + k + 1), core::Coeffs::Uninitialized{});
-  std::fill(dots.begin(), dots.end(), 0.0);
-  for (int i = 0; i <= m; ++i) {
-    for (int j = 0; j <= k; ++j) {
-      dots[static_cast<std::size_t>(i + j)] +=
-          core::binomial(m, i) * core::binomial(k, j) / core::binomial(m + k, i + j) *
-          core::dot(first[static_cast<std::size_t>(i)], second[static_cast<std::size_t>(j)]);
-    }
-  }
+  const core::Coeffs dots = core::dot_product_polynomial<Point2>(first, second);
   // Half end_tangent's threshold for |B'| (1e-12 n of the largest control point), so that
   // offset.hpp's frames take the limit tangent at every such minimum.
   double largest = 0.0;
