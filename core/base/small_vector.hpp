@@ -49,8 +49,20 @@ class SmallVector {
     }
   }
 
-  SmallVector(const SmallVector&) = default;  // heap_ is empty when the entries are inline
-  SmallVector& operator=(const SmallVector&) = default;
+  SmallVector(const SmallVector& other) : inline_(other.inline_), size_(other.size_) {
+    if (size_ > N) heap_ = other.heap_;
+  }
+  SmallVector& operator=(const SmallVector& other) {
+    if (this == &other) return *this;
+    if (other.size_ > N) {
+      heap_ = other.heap_;
+    } else {
+      heap_.clear();
+      inline_ = other.inline_;
+    }
+    size_ = other.size_;
+    return *this;
+  }
   SmallVector(SmallVector&& other) noexcept
       : inline_(other.inline_), heap_(std::move(other.heap_)), size_(other.size_) {
     other.heap_.clear();
