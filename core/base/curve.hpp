@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cstddef>
+#include <initializer_list>
 #include <span>
 #include <utility>
 #include <vector>
 
 #include "core/base/point.hpp"
+#include "core/base/small_vector.hpp"
 
 namespace bezier::core {
 
@@ -20,26 +23,36 @@ template <class P>
 class BasicCurve {
  public:
   using Point = P;
+  /// The control points of a curve of degree below kInlinePoints (lines, quadratics,
+  /// cubics) are stored in the curve itself, without a heap allocation.
+  static constexpr std::size_t kInlinePoints = 4;
+  using Points = SmallVector<P, kInlinePoints>;
 
-  explicit BasicCurve(std::vector<P> points) : points_(std::move(points)) {
+  /// From a std::vector, whose storage is kept when the points do not fit inline.
+  explicit BasicCurve(std::vector<P> points) noexcept : points_(std::move(points)) {
     assert(!points_.empty());
   }
+  explicit BasicCurve(Points points) noexcept : points_(std::move(points)) { assert(!points_.empty()); }
+  explicit BasicCurve(std::span<const P> points) : points_(points) { assert(!points_.empty()); }
+  explicit BasicCurve(std::initializer_list<P> points) : points_(points) { assert(!points_.empty()); }
 
   /// n, the degree: one less than the number of control points.
   [[nodiscard]] int degree() const noexcept { return static_cast<int>(points_.size()) - 1; }
-  [[nodiscard]] std::span<const P> points() const noexcept { return points_; }
+  [[nodiscard]] std::span<const P> points() const noexcept { return points_.span(); }
   [[nodiscard]] const P& operator[](int i) const noexcept { return points_[static_cast<std::size_t>(i)]; }
   [[nodiscard]] const P& front() const noexcept { return points_.front(); }
   [[nodiscard]] const P& back() const noexcept { return points_.back(); }
 
   /// The control points, taken out of a curve that is not used again (a curve edited or
-  /// reversed without copying its points).
-  [[nodiscard]] std::vector<P> take_points() && noexcept { return std::move(points_); }
+  /// reversed without copying its points when they are on the heap).
+  [[nodiscard]] std::vector<P> take_points() && { return std::move(points_).take_vector(); }
+  /// The same, as a Points sequence: no allocation for any degree.
+  [[nodiscard]] Points take_point_sequence() && noexcept { return std::move(points_); }
 
   friend bool operator==(const BasicCurve&, const BasicCurve&) = default;
 
  private:
-  std::vector<P> points_;
+  Points points_;
 };
 
 /// A planar curve: what every capability of the kernel takes.
@@ -70,14 +83,15 @@ template <class P>
 /// The same curve traversed backwards: R(t) = B(1 - t), control points reversed.
 template <class P>
 [[nodiscard]] BasicCurve<P> reversed(const BasicCurve<P>& curve) {
-  const auto pts = curve.points();
-  return BasicCurve<P>(std::vector<P>(pts.rbegin(), pts.rend()));
+  typename BasicCurve<P>::Points points(curve.points());
+  std::reverse(points.begin(), points.end());
+  return BasicCurve<P>(std::move(points));
 }
 
 /// The same, reusing the storage of a curve that is not used again.
 template <class P>
 [[nodiscard]] BasicCurve<P> reversed(BasicCurve<P>&& curve) {
-  std::vector<P> points = std::move(curve).take_points();
+  typename BasicCurve<P>::Points points = std::move(curve).take_point_sequence();
   std::reverse(points.begin(), points.end());
   return BasicCurve<P>(std::move(points));
 }

@@ -14,9 +14,8 @@ BasicCurve<P> hodograph_k(const BasicCurve<P>& curve, int k) {
   assert(k >= 0);
   CasteljauRow<P> row(curve.points());
   for (int i = 0; i < k; ++i) row.hodograph_step();
-  std::vector<P> points;
-  points.reserve(row.size());
-  for (std::size_t i = 0; i < row.size(); ++i) points.push_back(row.point(i));
+  typename BasicCurve<P>::Points points(row.size());
+  for (std::size_t i = 0; i < row.size(); ++i) points[i] = row.point(i);
   return BasicCurve<P>(std::move(points));
 }
 

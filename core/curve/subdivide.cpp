@@ -1,6 +1,6 @@
 #include "core/curve/subdivide.hpp"
 
-#include <vector>
+#include <utility>
 
 #include "core/bernstein/casteljau_row.hpp"
 #include "core/base/multiversion.hpp"
@@ -13,8 +13,8 @@ template <class P>
 Split<P> split_triangle(const BasicCurve<P>& curve, double t) {
   CasteljauRow<P> row(curve.points());
   const std::size_t n = row.size() - 1;
-  std::vector<P> left(n + 1);
-  std::vector<P> right(n + 1);
+  typename BasicCurve<P>::Points left(n + 1);
+  typename BasicCurve<P>::Points right(n + 1);
   left[0] = row.point(0);
   right[n] = row.point(n);
   for (std::size_t k = 1; k <= n; ++k) {

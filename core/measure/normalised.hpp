@@ -60,9 +60,8 @@ template <class P>
   const int exponent = normalising_exponent(curve, extra);
   if (exponent == 0) return {curve, 0};
   Normalised<P> out{curve, exponent};
-  std::vector<P> points;
-  points.reserve(curve.points().size());
-  for (const P& p : curve.points()) points.push_back(out.to_unit(p));
+  typename BasicCurve<P>::Points points(curve.points().size());
+  for (std::size_t i = 0; i < points.size(); ++i) points[i] = out.to_unit(curve.points()[i]);
   out.curve = BasicCurve<P>(std::move(points));
   return out;
 }

@@ -290,7 +290,7 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
                                      to, std::move(exact), std::nullopt, arrangement.edges.size());
       return;
     }
-    std::vector<Point2> pts(exact.points().begin(), exact.points().end());
+    core::Curve::Points pts(exact.points());
     pts.front() = front;
     pts.back() = back;
     arrangement.edges.emplace_back(both.origin[i].first, both.origin[i].second, t0, t1, from, to,
