@@ -82,7 +82,7 @@ inline void append_to_chain(Contour& chain, core::Curve curve, double snap) {
     const core::Point2 end = chain.back().back();
     const core::Point2 gap = curve.front() - end;
     if (gap.x * gap.x + gap.y * gap.y <= snap * snap) {
-      std::vector<core::Point2> points = std::move(curve).take_points();
+      core::Curve::Points points = std::move(curve).take_point_sequence();
       points.front() = end;
       curve = core::Curve(std::move(points));
     } else {
@@ -100,7 +100,7 @@ inline void close_chain(Contour& chain, double snap) {
   if (chain.back().back() == start) return;
   const core::Point2 gap = chain.back().back() - start;
   if (gap.x * gap.x + gap.y * gap.y <= snap * snap && chain.back().degree() > 1) {
-    std::vector<core::Point2> points = std::move(chain.back()).take_points();
+    core::Curve::Points points = std::move(chain.back()).take_point_sequence();
     points.back() = start;
     chain.back() = core::Curve(std::move(points));
   } else {
