@@ -38,6 +38,9 @@ class BasicCurve {
 
   /// n, the degree: one less than the number of control points.
   [[nodiscard]] int degree() const noexcept { return static_cast<int>(points_.size()) - 1; }
+  /// A view of the curve's own control points: valid while the curve is neither destroyed
+  /// nor moved (a curve of degree at most 3 carries its points with it when it moves, so a
+  /// view taken before a vector<Curve> grows does not see them after).
   [[nodiscard]] std::span<const P> points() const noexcept { return points_.span(); }
   [[nodiscard]] const P& operator[](int i) const noexcept { return points_[static_cast<std::size_t>(i)]; }
   [[nodiscard]] const P& front() const noexcept { return points_.front(); }
