@@ -13,6 +13,7 @@
 #include "core/intersect/high_order_contact.hpp"
 #include "core/intersect/clip/hybrid.hpp"
 #include "core/intersect/clip/implicit_clip.hpp"
+#include "core/intersect/clip/implicit_cubic_clip.hpp"
 #include "core/intersect/kind.hpp"
 #include "core/intersect/krawczyk.hpp"
 #include "core/intersect/overlap.hpp"
@@ -399,6 +400,14 @@ class Searcher {
       if (!clip.kept) return Next::finished;
       // The finer test decides whether rounding is what keeps the pieces together.
       if (fine.informative) clip.noisy = fine.noisy;
+      // Cubics that run closer than the parabola's cubic term: the cubic's own equation.
+      if (other.degree() == 3 && clip.kept->width() > threshold) {
+        const Clip exact = implicit_cubic_clip(x, other);
+        ++out_.stats.clipping_steps;
+        budget_.charge(implicit_cubic_clip_cost(x.degree()));
+        clip.kept = intersect_kept(clip.kept, exact.kept);
+        if (!clip.kept) return Next::finished;
+      }
     }
     if (clip.noisy && retry_compensated(box)) return Next::again;
     const ParamInterval domain = clip_s ? box.s : box.t;

@@ -65,6 +65,13 @@ inline constexpr std::int64_t kNewtonFactor = 4;
   return 24 * a * a;
 }
 
+/// One implicit_cubic_clip of a piece of degree n: the Bezout matrix's six entries at its
+/// control points, six products of degree-n and three of degree-2n polynomials.
+[[nodiscard]] constexpr std::int64_t implicit_cubic_clip_cost(int n) noexcept {
+  const std::int64_t a = n + 1;
+  return 60 * a * a + 64;
+}
+
 /// One Newton iteration of the final refinement on curves of degrees m and n.
 [[nodiscard]] constexpr std::int64_t newton_cost(int m, int n) noexcept {
   const std::int64_t a = m + 1, b = n + 1;

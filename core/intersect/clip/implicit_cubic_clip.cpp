@@ -1,0 +1,221 @@
+#include "core/intersect/clip/implicit_cubic_clip.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "core/bernstein/bernstein1d.hpp"
+#include "core/numeric/binomial.hpp"
+#include "core/numeric/double_double.hpp"
+#include "core/numeric/error_free.hpp"
+#include "core/numeric/min_max.hpp"
+#include "core/numeric/unit_roundoff.hpp"
+
+namespace bezier::core {
+
+namespace {
+
+constexpr double u = kUnitRoundoff;
+
+/// Bernstein coefficients c of a polynomial, with mag >= max |c_k| and err bounding the
+/// distance of each c_k to the exact coefficient (so |exact(t) - c(t)| <= err on [0, 1]).
+struct Bounded {
+  Coeffs c;
+  double mag = 0.0;
+  double err = 0.0;
+};
+
+double largest_magnitude(const Coeffs& c) {
+  double m = 0.0;
+  for (const double v : c) m = max2(m, std::fabs(v));
+  return m;
+}
+
+/// a + sign b, coefficient by coefficient (equal degrees).
+Bounded combined(const Bounded& a, const Bounded& b, double sign) {
+  assert(a.c.size() == b.c.size());
+  Bounded out;
+  out.c = Coeffs(a.c.size(), Coeffs::Uninitialized{});
+  for (std::size_t k = 0; k < a.c.size(); ++k) out.c[k] = a.c[k] + sign * b.c[k];
+  out.mag = largest_magnitude(out.c);
+  out.err = (a.err + b.err + u * (a.mag + b.mag)) * (1 + 4 * u);
+  return out;
+}
+
+/// The product, of degree p + q: c_k = sum_{i+j=k} C(p,i) C(q,j) a_i b_j / C(p+q,k). The
+/// weights sum to 1 (Vandermonde), so |c_k| <= A B; inputs off by ea, eb move it by at
+/// most A eb + B ea + ea eb, and the rounding (two products and a division per term, at
+/// most min(p, q) + 1 terms summed) by at most (p + q + 4) u A B.
+Bounded product(const Bounded& a, const Bounded& b) {
+  const int p = static_cast<int>(a.c.size()) - 1, q = static_cast<int>(b.c.size()) - 1;
+  Bounded out;
+  out.c = Coeffs(static_cast<std::size_t>(p + q + 1), 0.0);
+  for (int i = 0; i <= p; ++i) {
+    for (int j = 0; j <= q; ++j) {
+      out.c[static_cast<std::size_t>(i + j)] +=
+          binomial(p, i) * binomial(q, j) * a.c[static_cast<std::size_t>(i)] * b.c[static_cast<std::size_t>(j)];
+    }
+  }
+  for (int k = 0; k <= p + q; ++k) out.c[static_cast<std::size_t>(k)] /= binomial(p + q, k);
+  out.mag = largest_magnitude(out.c);
+  const double rounding = (p + q + 4) * u * 1.01 * a.mag * b.mag;
+  out.err = (a.mag * b.err + b.mag * a.err + a.err * b.err + rounding) * (1 + 8 * u);
+  return out;
+}
+
+double norm(Point2 v) { return std::sqrt(dot(v, v)) * (1 + 4 * u); }
+
+/// s a, s a constant.
+Bounded scaled(const Bounded& a, double s) {
+  Bounded out;
+  out.c = Coeffs(a.c.size(), Coeffs::Uninitialized{});
+  for (std::size_t k = 0; k < a.c.size(); ++k) out.c[k] = s * a.c[k];
+  out.mag = largest_magnitude(out.c);
+  out.err = std::fabs(s) * (a.err + u * a.mag) * (1 + 2 * u);
+  return out;
+}
+
+/// The index pairs (i, j) of the Bezout matrix's distinct entries L_ij, i > j.
+struct Pair {
+  int i, j;
+};
+constexpr Pair kL32{3, 2}, kL31{3, 1}, kL30{3, 0}, kL21{2, 1}, kL20{2, 0}, kL10{1, 0};
+
+double weight(Pair e) { return binomial(3, e.i) * binomial(3, e.j); }
+
+/// L_ij(c(t)) in Bernstein form for a curve c with control points `at`: L_ij is affine, so
+/// its values at the control points are the coefficients. Each is w cross(P_i - c_k,
+/// P_j - c_k) with the differences exact (double-doubles) and the cross product in
+/// double-double arithmetic (two products within 6 u^2 and a difference within 3 u^2 of
+/// their values, Joldes et al.), then rounded and weighted: within 2 u |L| + 10 u^2 w |P_i
+/// - c_k| |P_j - c_k|. A short piece of a cubic is nearly straight, so L is far below
+/// |P_i - c_k| |P_j - c_k| there; rounded differences alone would bury it.
+Bounded entry(const Point2 (&p)[4], std::span<const Point2> at, Pair e) {
+  const double w = weight(e);
+  Bounded out;
+  out.c = Coeffs(at.size(), Coeffs::Uninitialized{});
+  for (std::size_t k = 0; k < at.size(); ++k) {
+    const TwoTerm<double> ax = two_sum(p[e.i].x, -at[k].x), ay = two_sum(p[e.i].y, -at[k].y);
+    const TwoTerm<double> bx = two_sum(p[e.j].x, -at[k].x), by = two_sum(p[e.j].y, -at[k].y);
+    const dd::Real c = dd::sub(dd::mul(dd::Real{ax.hi, ax.lo}, dd::Real{by.hi, by.lo}),
+                               dd::mul(dd::Real{ay.hi, ay.lo}, dd::Real{bx.hi, bx.lo}));
+    out.c[k] = w * dd::to_double(c);
+    const double lengths = norm(Point2{ax.hi, ay.hi}) * norm(Point2{bx.hi, by.hi}) * (1 + 4 * u);
+    out.err = max2(out.err, (2 * u * std::fabs(out.c[k]) + 10 * u * u * w * lengths) * (1 + 4 * u));
+  }
+  out.mag = largest_magnitude(out.c);
+  return out;
+}
+
+/// The Bezout matrix M = [[a, b, c], [b, d, e], [c, e, f]] along a curve (its entries as
+/// polynomials), its cofactors and its determinant.
+struct BezoutAlong {
+  Bounded a, b, c, d, e, f;
+  Bounded c11, c12, c13, c22, c23, c33;
+  Bounded det;
+};
+
+BezoutAlong bezout_along(const Point2 (&p)[4], std::span<const Point2> at) {
+  BezoutAlong m;
+  m.a = entry(p, at, kL32);
+  m.b = entry(p, at, kL31);
+  m.c = entry(p, at, kL30);
+  m.d = combined(m.c, entry(p, at, kL21), 1.0);
+  m.e = entry(p, at, kL20);
+  m.f = entry(p, at, kL10);
+  m.c11 = combined(product(m.d, m.f), product(m.e, m.e), -1.0);
+  m.c12 = combined(product(m.c, m.e), product(m.b, m.f), -1.0);
+  m.c13 = combined(product(m.b, m.e), product(m.d, m.c), -1.0);
+  m.c22 = combined(product(m.a, m.f), product(m.c, m.c), -1.0);
+  m.c23 = combined(product(m.b, m.c), product(m.a, m.e), -1.0);
+  m.c33 = combined(product(m.a, m.d), product(m.b, m.b), -1.0);
+  m.det = combined(combined(product(m.a, m.c11), product(m.b, m.c12), 1.0), product(m.c, m.c13), 1.0);
+  return m;
+}
+
+/// The derivative of the entries along `direction` (a unit axis): L_ij(q + s v) =
+/// L_ij(q) + s w cross(P_j - P_i, v).
+double entry_slope(const Point2 (&p)[4], Pair e, Point2 v) { return weight(e) * cross(p[e.j] - p[e.i], v); }
+
+/// An upper bound of |grad det M| at the points of the curve: grad det M . v =
+/// sum_ab C_ab dM_ab/dv (Jacobi's formula), a polynomial along the curve.
+double gradient_bound(const Point2 (&p)[4], const BezoutAlong& m) {
+  double squares = 0.0;
+  for (const Point2 v : {Point2{1.0, 0.0}, Point2{0.0, 1.0}}) {
+    const double sa = entry_slope(p, kL32, v), sb = entry_slope(p, kL31, v),
+                 sc = entry_slope(p, kL30, v), sd = sc + entry_slope(p, kL21, v),
+                 se = entry_slope(p, kL20, v), sf = entry_slope(p, kL10, v);
+    Bounded g = combined(scaled(m.c11, sa), scaled(m.c22, sd), 1.0);
+    g = combined(g, scaled(m.c33, sf), 1.0);
+    g = combined(g, scaled(m.c12, 2 * sb), 1.0);
+    g = combined(g, scaled(m.c13, 2 * sc), 1.0);
+    g = combined(g, scaled(m.c23, 2 * se), 1.0);
+    const double bound = (g.mag + g.err) * (1 + 2 * u);
+    squares += bound * bound;
+  }
+  return std::sqrt(squares) * (1 + 4 * u);
+}
+
+/// An upper bound of |det M(q + e) - det M(q)| for q on the curve (in the hull of `at`) and
+/// |e| <= d: the first-order term grad det M(q) . e within `gradient` d; the terms with two
+/// or three columns of the change E (multilinearity in the columns) by Hadamard's
+/// inequality, with M_k bounding column k's l1 norm (>= its Euclidean norm) over the hull
+/// and E_k the l1 norm of its change per unit of d.
+double perturbation_band(const Point2 (&p)[4], std::span<const Point2> at, double gradient, double d) {
+  double reach[4];
+  for (int i = 0; i < 4; ++i) {
+    reach[i] = 0.0;
+    for (const Point2 h : at) reach[i] = max2(reach[i], norm(p[i] - h));
+  }
+  const auto bound = [&](Pair e) { return weight(e) * reach[e.i] * reach[e.j] * (1 + 4 * u); };
+  const auto change = [&](Pair e) { return weight(e) * norm(p[e.i] - p[e.j]) * (1 + 2 * u); };
+  const double m1 = bound(kL32) + bound(kL31) + bound(kL30);
+  const double m2 = bound(kL31) + bound(kL30) + bound(kL21) + bound(kL20);
+  const double m3 = bound(kL30) + bound(kL20) + bound(kL10);
+  const double e1 = change(kL32) + change(kL31) + change(kL30);
+  const double e2 = change(kL31) + change(kL30) + change(kL21) + change(kL20);
+  const double e3 = change(kL30) + change(kL20) + change(kL10);
+  const double second = e1 * e2 * m3 + e1 * m2 * e3 + m1 * e2 * e3;
+  const double third = e1 * e2 * e3;
+  return (d * gradient + d * d * second + d * d * d * third) * (1 + 16 * u);
+}
+
+}  // namespace
+
+Clip implicit_cubic_clip(const Piece& x, const Piece& other) {
+  assert(other.degree() == 3);
+  Point2 p[4];
+  for (std::size_t i = 0; i < 4; ++i) p[i] = {other.x[i], other.y[i]};
+  Point2 inline_points[16];
+  std::vector<Point2> heap_points;
+  std::span<const Point2> xs;
+  if (x.x.size() <= 16) {
+    for (std::size_t k = 0; k < x.x.size(); ++k) inline_points[k] = {x.x[k], x.y[k]};
+    xs = std::span<const Point2>(inline_points, x.x.size());
+  } else {
+    for (std::size_t k = 0; k < x.x.size(); ++k) heap_points.push_back({x.x[k], x.y[k]});
+    xs = heap_points;
+  }
+  const std::span<const Point2> cubic(p, 4);
+
+  // J(t) = det M(x(t)); the band: the true `other` within e_o of the stored cubic (where
+  // det M = 0), the true x within e_x of the stored piece, and J's own rounding.
+  const BezoutAlong along_x = bezout_along(p, xs);
+  const BezoutAlong along_other = bezout_along(p, cubic);
+  const double root2 = std::sqrt(2.0) * (1 + u);
+  const double band_other =
+      perturbation_band(p, cubic, gradient_bound(p, along_other), root2 * other.error);
+  const double band_x = perturbation_band(p, xs, gradient_bound(p, along_x), root2 * x.error);
+  const Bounded& j = along_x.det;
+  const double band = (band_other + band_x + j.err) * (1 + 8 * u);
+  const auto [lo, hi] = std::minmax_element(j.c.begin(), j.c.end());
+  Clip out;
+  out.kept = bernstein::hull_clip(j.c, -band, band);
+  out.noisy = 4 * band > (*hi - *lo);
+  return out;
+}
+
+}  // namespace bezier::core
