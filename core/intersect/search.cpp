@@ -401,7 +401,8 @@ class Searcher {
       // The finer test decides whether rounding is what keeps the pieces together.
       if (fine.informative) clip.noisy = fine.noisy;
       // Cubics that run closer than the parabola's cubic term: the cubic's own equation.
-      if (other.degree() == 3 && clip.kept->width() > threshold) {
+      if (other.degree() == 3 && fine.kept && fine.kept->width() >= kCubicClipAfterParabolaKept &&
+          std::max(box.t.width(), box.s.width()) <= kImplicitClipWidth) {
         const Clip exact = implicit_cubic_clip(x, other);
         ++out_.stats.clipping_steps;
         budget_.charge(implicit_cubic_clip_cost(x.degree()));

@@ -33,6 +33,12 @@ inline constexpr double kParallelSine = 1.0 / 16;
 /// needs it on wide boxes to resolve a tangency.)
 inline constexpr double kImplicitClipWidth = 0.25;
 
+/// The cubic's own implicit equation (implicit_cubic_clip.hpp) is tried on a box when the
+/// fat parabola kept at least this fraction of the piece: pieces that run so close together
+/// that the parabola's cubic term hides the gap. Where the parabola narrows the piece the
+/// box is near a crossing or a contact, and halving does better than the costlier clip.
+inline constexpr double kCubicClipAfterParabolaKept = 0.9;
+
 /// A clip that keeps more than this fraction of its interval has not done enough: the box
 /// is split instead of clipped again. The hybrid method halves both intervals once a clip
 /// keeps more than half (halving then gains more than the clip); Bézier clipping halves the
