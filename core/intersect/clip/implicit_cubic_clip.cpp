@@ -12,6 +12,7 @@
 #include "core/numeric/double_double.hpp"
 #include "core/numeric/error_free.hpp"
 #include "core/numeric/min_max.hpp"
+#include "core/numeric/small_array.hpp"
 #include "core/numeric/unit_roundoff.hpp"
 
 namespace bezier::core {
@@ -20,61 +21,68 @@ namespace {
 
 constexpr double u = kUnitRoundoff;
 
-/// Bernstein coefficients c of a polynomial, with mag >= max |c_k| and err bounding the
-/// distance of each c_k to the exact coefficient (so |exact(t) - c(t)| <= err on [0, 1]).
+/// A polynomial in the scaled Bernstein basis C(n,k) (1-t)^(n-k) t^k, coefficients as
+/// double-doubles: products are then plain convolutions with no weights to round. mag
+/// bounds the Bernstein coefficients' magnitudes (|c_k| / C(n,k)) and err the distance of
+/// each Bernstein coefficient to the exact one (so |exact(t) - value(t)| <= err on [0, 1]).
 struct Bounded {
-  Coeffs c;
+  SmallArray<dd::Real> c;
   double mag = 0.0;
   double err = 0.0;
+  [[nodiscard]] int degree() const noexcept { return static_cast<int>(c.size()) - 1; }
 };
 
-double largest_magnitude(const Coeffs& c) {
+/// The Bernstein magnitude of the coefficients, from their high parts (|lo| <= u |hi|).
+double bernstein_magnitude(const SmallArray<dd::Real>& c) {
+  const int n = static_cast<int>(c.size()) - 1;
   double m = 0.0;
-  for (const double v : c) m = max2(m, std::fabs(v));
-  return m;
+  for (int k = 0; k <= n; ++k) m = max2(m, std::fabs(c[static_cast<std::size_t>(k)].hi) / binomial(n, k));
+  return m * (1 + 4 * u);
 }
 
-/// a + sign b, coefficient by coefficient (equal degrees).
+/// a + sign b, coefficient by coefficient (equal degrees). A double-double sum is within
+/// 3 u^2 of its value (Joldes et al., Algorithm 6), |a + b| <= (A + B) C(n,k).
 Bounded combined(const Bounded& a, const Bounded& b, double sign) {
   assert(a.c.size() == b.c.size());
   Bounded out;
-  out.c = Coeffs(a.c.size(), Coeffs::Uninitialized{});
-  for (std::size_t k = 0; k < a.c.size(); ++k) out.c[k] = a.c[k] + sign * b.c[k];
-  out.mag = largest_magnitude(out.c);
-  out.err = (a.err + b.err + u * (a.mag + b.mag)) * (1 + 4 * u);
+  out.c = SmallArray<dd::Real>(a.c.size(), SmallArray<dd::Real>::Uninitialized{});
+  for (std::size_t k = 0; k < a.c.size(); ++k)
+    out.c[k] = dd::add(a.c[k], sign > 0 ? b.c[k] : dd::neg(b.c[k]));
+  out.mag = bernstein_magnitude(out.c);
+  out.err = (a.err + b.err + 3.01 * u * u * (a.mag + b.mag)) * (1 + 4 * u);
   return out;
 }
 
-/// The product, of degree p + q: c_k = sum_{i+j=k} C(p,i) C(q,j) a_i b_j / C(p+q,k). The
-/// weights sum to 1 (Vandermonde), so |c_k| <= A B; inputs off by ea, eb move it by at
-/// most A eb + B ea + ea eb, and the rounding (two products and a division per term, at
-/// most min(p, q) + 1 terms summed) by at most (p + q + 4) u A B.
+/// The product, of degree p + q: c_k = sum_{i+j=k} a_i b_j in the scaled basis. In
+/// Bernstein terms (c_k / C(p+q,k)) the weights C(p,i) C(q,j) / C(p+q,k) sum to 1
+/// (Vandermonde), so inputs off by ea, eb move a coefficient by at most A eb + B ea +
+/// ea eb, and the rounding (each product within 6 u^2, each of at most min(p, q) sums
+/// within 3 u^2 of its partial sum, Joldes et al.) by at most (3 min(p, q) + 10) u^2 A B.
 Bounded product(const Bounded& a, const Bounded& b) {
-  const int p = static_cast<int>(a.c.size()) - 1, q = static_cast<int>(b.c.size()) - 1;
+  const int p = a.degree(), q = b.degree();
   Bounded out;
-  out.c = Coeffs(static_cast<std::size_t>(p + q + 1), 0.0);
+  out.c = SmallArray<dd::Real>(static_cast<std::size_t>(p + q + 1), dd::Real{});
   for (int i = 0; i <= p; ++i) {
     for (int j = 0; j <= q; ++j) {
-      out.c[static_cast<std::size_t>(i + j)] +=
-          binomial(p, i) * binomial(q, j) * a.c[static_cast<std::size_t>(i)] * b.c[static_cast<std::size_t>(j)];
+      dd::Real& c = out.c[static_cast<std::size_t>(i + j)];
+      c = dd::add(c, dd::mul(a.c[static_cast<std::size_t>(i)], b.c[static_cast<std::size_t>(j)]));
     }
   }
-  for (int k = 0; k <= p + q; ++k) out.c[static_cast<std::size_t>(k)] /= binomial(p + q, k);
-  out.mag = largest_magnitude(out.c);
-  const double rounding = (p + q + 4) * u * 1.01 * a.mag * b.mag;
+  out.mag = bernstein_magnitude(out.c);
+  const double rounding = (3 * std::min(p, q) + 10) * u * u * 1.01 * a.mag * b.mag;
   out.err = (a.mag * b.err + b.mag * a.err + a.err * b.err + rounding) * (1 + 8 * u);
   return out;
 }
 
 double norm(Point2 v) { return std::sqrt(dot(v, v)) * (1 + 4 * u); }
 
-/// s a, s a constant.
+/// s a for a double s: each product within 2 u^2 (Joldes et al., Algorithm 9).
 Bounded scaled(const Bounded& a, double s) {
   Bounded out;
-  out.c = Coeffs(a.c.size(), Coeffs::Uninitialized{});
-  for (std::size_t k = 0; k < a.c.size(); ++k) out.c[k] = s * a.c[k];
-  out.mag = largest_magnitude(out.c);
-  out.err = std::fabs(s) * (a.err + u * a.mag) * (1 + 2 * u);
+  out.c = SmallArray<dd::Real>(a.c.size(), SmallArray<dd::Real>::Uninitialized{});
+  for (std::size_t k = 0; k < a.c.size(); ++k) out.c[k] = dd::mul(a.c[k], s);
+  out.mag = bernstein_magnitude(out.c);
+  out.err = std::fabs(s) * (a.err + 2.01 * u * u * a.mag) * (1 + 2 * u);
   return out;
 }
 
@@ -86,27 +94,29 @@ constexpr Pair kL32{3, 2}, kL31{3, 1}, kL30{3, 0}, kL21{2, 1}, kL20{2, 0}, kL10{
 
 double weight(Pair e) { return binomial(3, e.i) * binomial(3, e.j); }
 
-/// L_ij(c(t)) in Bernstein form for a curve c with control points `at`: L_ij is affine, so
-/// its values at the control points are the coefficients. Each is w cross(P_i - c_k,
-/// P_j - c_k) with the differences exact (double-doubles) and the cross product in
-/// double-double arithmetic (two products within 6 u^2 and a difference within 3 u^2 of
-/// their values, Joldes et al.), then rounded and weighted: within 2 u |L| + 10 u^2 w |P_i
-/// - c_k| |P_j - c_k|. A short piece of a cubic is nearly straight, so L is far below
-/// |P_i - c_k| |P_j - c_k| there; rounded differences alone would bury it.
+/// L_ij(c(t)) for a curve c with control points `at`: L_ij is affine, so its values at the
+/// control points are the Bernstein coefficients (here times C(n,k), exact integers). Each
+/// is w cross(P_i - c_k, P_j - c_k) with the differences exact (double-doubles), the cross
+/// product in double-double arithmetic (two products within 6 u^2 and a difference within
+/// 3 u^2 of their values, Joldes et al.) and the two exact weights applied in double-double
+/// (2 u^2 each): within 16 u^2 w |P_i - c_k| |P_j - c_k| in Bernstein terms. A short piece
+/// of a cubic is nearly straight, so L is far below |P_i - c_k| |P_j - c_k| there, and J
+/// cancels to far below the products that form it: doubles would bury both.
 Bounded entry(const Point2 (&p)[4], std::span<const Point2> at, Pair e) {
   const double w = weight(e);
+  const int n = static_cast<int>(at.size()) - 1;
   Bounded out;
-  out.c = Coeffs(at.size(), Coeffs::Uninitialized{});
+  out.c = SmallArray<dd::Real>(at.size(), SmallArray<dd::Real>::Uninitialized{});
   for (std::size_t k = 0; k < at.size(); ++k) {
     const TwoTerm<double> ax = two_sum(p[e.i].x, -at[k].x), ay = two_sum(p[e.i].y, -at[k].y);
     const TwoTerm<double> bx = two_sum(p[e.j].x, -at[k].x), by = two_sum(p[e.j].y, -at[k].y);
     const dd::Real c = dd::sub(dd::mul(dd::Real{ax.hi, ax.lo}, dd::Real{by.hi, by.lo}),
                                dd::mul(dd::Real{ay.hi, ay.lo}, dd::Real{bx.hi, bx.lo}));
-    out.c[k] = w * dd::to_double(c);
+    out.c[k] = dd::mul(dd::mul(c, w), binomial(n, static_cast<int>(k)));
     const double lengths = norm(Point2{ax.hi, ay.hi}) * norm(Point2{bx.hi, by.hi}) * (1 + 4 * u);
-    out.err = max2(out.err, (2 * u * std::fabs(out.c[k]) + 10 * u * u * w * lengths) * (1 + 4 * u));
+    out.err = max2(out.err, 16 * u * u * w * lengths * (1 + 4 * u));
   }
-  out.mag = largest_magnitude(out.c);
+  out.mag = bernstein_magnitude(out.c);
   return out;
 }
 
@@ -209,11 +219,22 @@ Clip implicit_cubic_clip(const Piece& x, const Piece& other) {
   const double band_other =
       perturbation_band(p, cubic, gradient_bound(p, along_other), root2 * other.error);
   const double band_x = perturbation_band(p, xs, gradient_bound(p, along_x), root2 * x.error);
-  const Bounded& j = along_x.det;
-  const double band = (band_other + band_x + j.err) * (1 + 8 * u);
-  const auto [lo, hi] = std::minmax_element(j.c.begin(), j.c.end());
+  // J's Bernstein coefficients: the scaled ones rounded and divided by C(3n, k), each step
+  // within u of the coefficient.
+  const Bounded& det = along_x.det;
+  const int degree = det.degree();
+  Coeffs j(det.c.size(), Coeffs::Uninitialized{});
+  double largest = 0.0;
+  for (int k = 0; k <= degree; ++k) {
+    const std::size_t i = static_cast<std::size_t>(k);
+    j[i] = dd::to_double(det.c[i]) / binomial(degree, k);
+    largest = max2(largest, std::fabs(j[i]));
+  }
+  const double band =
+      (band_other + band_x + det.err + 2.01 * u * largest) * (1 + 8 * u);
+  const auto [lo, hi] = std::minmax_element(j.begin(), j.end());
   Clip out;
-  out.kept = bernstein::hull_clip(j.c, -band, band);
+  out.kept = bernstein::hull_clip(j, -band, band);
   out.noisy = 4 * band > (*hi - *lo);
   return out;
 }
