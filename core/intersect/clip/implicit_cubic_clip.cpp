@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/bernstein/bernstein1d.hpp"
+#include "core/base/multiversion.hpp"
 #include "core/numeric/binomial.hpp"
 #include "core/numeric/double_double.hpp"
 #include "core/numeric/error_free.hpp"
@@ -32,12 +33,22 @@ struct Bounded {
   [[nodiscard]] int degree() const noexcept { return static_cast<int>(c.size()) - 1; }
 };
 
-/// The Bernstein magnitude of the coefficients, from their high parts (|lo| <= u |hi|).
+/// The Bernstein magnitude of the coefficients, max_k |c_k| / C(n, k), from their high
+/// parts (|lo| <= u |hi|). The largest quotient is chosen by cross products (no division
+/// per coefficient; the binomials grow by the exact step C(n,k+1) = C(n,k) (n-k) / (k+1)),
+/// a choice within rounding of the largest, which the factor covers.
 double bernstein_magnitude(const SmallArray<dd::Real>& c) {
   const int n = static_cast<int>(c.size()) - 1;
-  double m = 0.0;
-  for (int k = 0; k <= n; ++k) m = max2(m, std::fabs(c[static_cast<std::size_t>(k)].hi) / binomial(n, k));
-  return m * (1 + 4 * u);
+  double best = 0.0, best_binomial = 1.0, binomial_k = 1.0;
+  for (int k = 0; k <= n; ++k) {
+    const double v = std::fabs(c[static_cast<std::size_t>(k)].hi);
+    if (v * best_binomial > best * binomial_k) {
+      best = v;
+      best_binomial = binomial_k;
+    }
+    binomial_k = binomial_k * (n - k) / (k + 1);
+  }
+  return best / best_binomial * (1 + 8 * u);
 }
 
 /// a + sign b, coefficient by coefficient (equal degrees). A double-double sum is within
@@ -107,12 +118,14 @@ Bounded entry(const Point2 (&p)[4], std::span<const Point2> at, Pair e) {
   const int n = static_cast<int>(at.size()) - 1;
   Bounded out;
   out.c = SmallArray<dd::Real>(at.size(), SmallArray<dd::Real>::Uninitialized{});
+  double binomial_k = 1.0;  // C(n, k), exact (integers below 2^53 for the degrees here)
   for (std::size_t k = 0; k < at.size(); ++k) {
     const TwoTerm<double> ax = two_sum(p[e.i].x, -at[k].x), ay = two_sum(p[e.i].y, -at[k].y);
     const TwoTerm<double> bx = two_sum(p[e.j].x, -at[k].x), by = two_sum(p[e.j].y, -at[k].y);
     const dd::Real c = dd::sub(dd::mul(dd::Real{ax.hi, ax.lo}, dd::Real{by.hi, by.lo}),
                                dd::mul(dd::Real{ay.hi, ay.lo}, dd::Real{bx.hi, bx.lo}));
-    out.c[k] = dd::mul(dd::mul(c, w), binomial(n, static_cast<int>(k)));
+    out.c[k] = dd::mul(dd::mul(c, w), binomial_k);
+    binomial_k = binomial_k * (n - static_cast<int>(k)) / (static_cast<int>(k) + 1);
     const double lengths = norm(Point2{ax.hi, ay.hi}) * norm(Point2{bx.hi, by.hi}) * (1 + 4 * u);
     out.err = max2(out.err, 16 * u * u * w * lengths * (1 + 4 * u));
   }
@@ -128,7 +141,7 @@ struct BezoutAlong {
   Bounded det;
 };
 
-BezoutAlong bezout_along(const Point2 (&p)[4], std::span<const Point2> at) {
+BezoutAlong bezout_along(const Point2 (&p)[4], std::span<const Point2> at, bool with_determinant) {
   BezoutAlong m;
   m.a = entry(p, at, kL32);
   m.b = entry(p, at, kL31);
@@ -142,7 +155,8 @@ BezoutAlong bezout_along(const Point2 (&p)[4], std::span<const Point2> at) {
   m.c22 = combined(product(m.a, m.f), product(m.c, m.c), -1.0);
   m.c23 = combined(product(m.b, m.c), product(m.a, m.e), -1.0);
   m.c33 = combined(product(m.a, m.d), product(m.b, m.b), -1.0);
-  m.det = combined(combined(product(m.a, m.c11), product(m.b, m.c12), 1.0), product(m.c, m.c13), 1.0);
+  if (with_determinant)
+    m.det = combined(combined(product(m.a, m.c11), product(m.b, m.c12), 1.0), product(m.c, m.c13), 1.0);
   return m;
 }
 
@@ -195,7 +209,9 @@ double perturbation_band(const Point2 (&p)[4], std::span<const Point2> at, doubl
 
 }  // namespace
 
-Clip implicit_cubic_clip(const Piece& x, const Piece& other) {
+// Double-double arithmetic rests on fused multiply-adds: where the processor has them the
+// clone that uses them runs (the helpers above inlined into it).
+BEZIER_FMA_CLONES Clip implicit_cubic_clip(const Piece& x, const Piece& other) {
   assert(other.degree() == 3);
   Point2 p[4];
   for (std::size_t i = 0; i < 4; ++i) p[i] = {other.x[i], other.y[i]};
@@ -213,8 +229,8 @@ Clip implicit_cubic_clip(const Piece& x, const Piece& other) {
 
   // J(t) = det M(x(t)); the band: the true `other` within e_o of the stored cubic (where
   // det M = 0), the true x within e_x of the stored piece, and J's own rounding.
-  const BezoutAlong along_x = bezout_along(p, xs);
-  const BezoutAlong along_other = bezout_along(p, cubic);
+  const BezoutAlong along_x = bezout_along(p, xs, true);
+  const BezoutAlong along_other = bezout_along(p, cubic, false);
   const double root2 = std::sqrt(2.0) * (1 + u);
   const double band_other =
       perturbation_band(p, cubic, gradient_bound(p, along_other), root2 * other.error);
@@ -225,10 +241,12 @@ Clip implicit_cubic_clip(const Piece& x, const Piece& other) {
   const int degree = det.degree();
   Coeffs j(det.c.size(), Coeffs::Uninitialized{});
   double largest = 0.0;
+  double binomial_k = 1.0;
   for (int k = 0; k <= degree; ++k) {
     const std::size_t i = static_cast<std::size_t>(k);
-    j[i] = dd::to_double(det.c[i]) / binomial(degree, k);
+    j[i] = dd::to_double(det.c[i]) / binomial_k;
     largest = max2(largest, std::fabs(j[i]));
+    binomial_k = binomial_k * (degree - k) / (k + 1);
   }
   const double band =
       (band_other + band_x + det.err + 2.01 * u * largest) * (1 + 8 * u);
