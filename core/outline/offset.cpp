@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <optional>
 
 #include "core/numeric/power_of_two.hpp"
 #include "core/outline/area_moment_fit.hpp"
@@ -529,67 +528,87 @@ struct SampledBound {
   bool within = true;    // no sample beyond `reach`
 };
 
-SampledBound foot_bound(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
-                        const ControlPoints& h2, double reach, int& taken) {
+/// foot_bound's loop, with B_p'' linear in t (Linear: degree <= 3, from the first and last
+/// control points k0, k1 of its hodograph h2) or not (point_at(h2, t)). The arithmetic is
+/// foot_bound's as stated there, operation for operation: the loop over the interior samples
+/// and the last node (u = 1 at t = 1) are written apart only so that no test of the last
+/// index is made per sample.
+template <bool Linear>
+SampledBound foot_bound_of(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
+                           const ControlPoints& h2, double reach, int& taken) {
   const auto count = static_cast<int>(o.size()) - 1;
   const double h = 1.0 / count;
   // C'(u) = a1 + u (2 a2 + 3 u a3) (the power form C(u) = c[0] + u (a1 + u (a2 + u a3))).
   const Point2 a1 = 3.0 * (c[1] - c[0]), a2 = 3.0 * (c[2] - 2.0 * c[1] + c[0]),
                a3 = c[3] - c[0] + 3.0 * (c[1] - c[2]);
   const Point2 c0 = 2.0 * a2, c1 = 2.0 * a2 + 6.0 * a3;  // C''(0), C''(1)
-  const bool linear_second = h2.size() <= 2;
+  const Point2 twice_a2 = 2.0 * a2, thrice_a3 = 3.0 * a3;
+  const Point2 p0 = c[0], p1 = c[1], p2 = c[2], p3 = c[3];
   const Point2 k0 = h2.empty() ? Point2{0, 0} : h2[0];
   const Point2 k1 = h2.empty() ? Point2{0, 0} : h2[h2.size() - 1];
   auto second_of_b = [&](double t) {
-    return linear_second ? (1.0 - t) * k0 + t * k1 : point_at(h2, t);
+    if constexpr (Linear) {
+      return (1.0 - t) * k0 + t * k1;
+    } else {
+      return point_at(h2, t);
+    }
   };
   const double reach_squared = reach > 0.0 ? reach * reach : 0.0;
+  const Point2* const samples = o.data();
   SampledBound result;
   double largest = 0.0, second = 0.0, steps = 0.0;
   double u_prev = 0.0, u_before = -h;
   Point2 c2_prev = c0, b2_prev = second_of_b(0.0);
-  taken = 0;
-  for (int j = 1; j <= count; ++j) {
-    ++taken;
-    const double t = j == count ? 1.0 : j * h;
-    double u = 1.0;
-    if (j < count) {
-      const Point2 target = o[static_cast<std::size_t>(j)];
-      // From the linear extrapolation u of the previous two, the Gauss-Newton step δ =
-      // -r · C'(u) / |C'(u)|^2 (r = C(u) - o_j) towards the foot, u_j = u + δ: by Taylor's
-      // formula |C(u_j) - o_j| <= |r + δ C'(u)| + δ^2 / 2 max |C''|, with C(u) in Bernstein
-      // form (positive weights: within a few units of rounding of the coordinates, as
-      // offset.hpp's margin assumes).
-      const double guess = std::clamp(u_prev + (u_prev - u_before), 0.0, 1.0), w = 1.0 - guess;
-      const Point2 r = (w * w * w) * c[0] + (3.0 * guess * w * w) * c[1] +
-                       (3.0 * guess * guess * w) * c[2] + (guess * guess * guess) * c[3] - target;
-      const Point2 v = a1 + guess * (2.0 * a2 + guess * (3.0 * a3));
-      const double speed_squared = squared_length(v);
-      u = speed_squared > 0.0 ? std::clamp(guess - core::dot(r, v) / speed_squared, 0.0, 1.0)
-                              : guess;
-      const double step = u - guess;
-      largest = std::max(largest, squared_length(r + step * v));
-      steps = std::max(steps, step * step);
-      if (largest > reach_squared) {
-        result.within = false;
-        break;
-      }
-    }
-    // Between t_prev and t: ψ' = s, (C o ψ)'' = s^2 C''(ψ), linear in t as C'' is (and
-    // B_p'' too for n <= 3): its largest distance from B_p'' is at an end.
+  // Between t_prev and t: ψ' = s, (C o ψ)'' = s^2 C''(ψ), linear in t as C'' is (and B_p''
+  // too for n <= 3): its largest distance from B_p'' is at an end.
+  auto bend_to = [&](double u, double t) {
     const double s = (u - u_prev) / h, s2 = s * s;
     const Point2 c2 = (1.0 - u) * c0 + u * c1, b2 = second_of_b(t);
-    second = std::max({second, squared_length(s2 * c2_prev - b2_prev),
-                       squared_length(s2 * c2 - b2)});
+    second = std::max(std::max(second, squared_length(s2 * c2_prev - b2_prev)),
+                      squared_length(s2 * c2 - b2));
     u_before = u_prev;
     u_prev = u;
     c2_prev = c2;
     b2_prev = b2;
+  };
+  int j = 1;
+  for (; j < count; ++j) {
+    const double t = j * h;
+    const Point2 target = samples[j];
+    // From the linear extrapolation u of the previous two, the Gauss-Newton step δ =
+    // -r · C'(u) / |C'(u)|^2 (r = C(u) - o_j) towards the foot, u_j = u + δ: by Taylor's
+    // formula |C(u_j) - o_j| <= |r + δ C'(u)| + δ^2 / 2 max |C''|, with C(u) in Bernstein
+    // form (positive weights: within a few units of rounding of the coordinates, as
+    // offset.hpp's margin assumes).
+    const double guess = std::clamp(u_prev + (u_prev - u_before), 0.0, 1.0), w = 1.0 - guess;
+    const Point2 r = (w * w * w) * p0 + (3.0 * guess * w * w) * p1 +
+                     (3.0 * guess * guess * w) * p2 + (guess * guess * guess) * p3 - target;
+    const Point2 v = a1 + guess * (twice_a2 + guess * thrice_a3);
+    const double speed_squared = squared_length(v);
+    const double u = speed_squared > 0.0
+                         ? std::clamp(guess - core::dot(r, v) / speed_squared, 0.0, 1.0)
+                         : guess;
+    const double step = u - guess;
+    largest = std::max(largest, squared_length(r + step * v));
+    steps = std::max(steps, step * step);
+    if (largest > reach_squared) {
+      result.within = false;
+      break;
+    }
+    bend_to(u, t);
   }
+  taken = j;
+  if (result.within) bend_to(1.0, 1.0);
   const double curving = std::sqrt(std::max(squared_length(c0), squared_length(c1)));
   result.largest = std::sqrt(largest) + 0.5 * steps * curving;
   result.second = std::sqrt(second);
   return result;
+}
+
+SampledBound foot_bound(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
+                        const ControlPoints& h2, double reach, int& taken) {
+  return h2.size() <= 2 ? foot_bound_of<true>(c, o, h2, reach, taken)
+                        : foot_bound_of<false>(c, o, h2, reach, taken);
 }
 
 /// The bound of offset.hpp where m is not positive: two balls about O(0), the cubic within
@@ -664,9 +683,15 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
     result.work = 16;
     return result;
   }
+  if (given == nullptr) {
+    // The piece's shape on the stack (not in a std::optional, whose payload would be
+    // zero-filled at every call).
+    const PieceShape own(s, a, b, zero_start, zero_end);
+    return fit_piece(s, a, b, q, start, end, d, tolerance, direction, o, zero_start, zero_end,
+                     &own, presampled, given_moments);
+  }
   const auto n = static_cast<std::int64_t>(q.size()) - 1;
-  std::optional<PieceShape> own;
-  const PieceShape& shape = given != nullptr ? *given : own.emplace(s, a, b, zero_start, zero_end);
+  const PieceShape& shape = *given;
   const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
   const Point2 p0 = start.point + d * n0, p3 = end.point + d * n1;
   const Point2 d0 = direction * start.tangent, d3 = direction * end.tangent;
@@ -979,22 +1004,23 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
   const ScaledCurve s(curve, d, tolerance);
   ControlPoints q;
   piece_into(s.points, a, b, q);
-  std::optional<PieceShape> shape;
   const bool zero_start = s.stationary(a), zero_end = s.stationary(b);
-  if (q.size() > 2 && !s.point) shape.emplace(s, a, b, zero_start, zero_end);
-  if (!shape || !(shape->w > 0.0) || s.straight) {
-    // A line, or a piece whose fit needs no samples of its own kind: each side alone.
+  // A line, or a piece whose fit needs no samples of its own kind: each side alone.
+  auto each_side_alone = [&] {
     if (!fit_interval(s, s.d, a, b, budget, plus)) return false;
     return fit_interval(s, -s.d, a, b, budget, minus);
-  }
+  };
+  if (q.size() <= 2 || s.point) return each_side_alone();
+  const PieceShape shape(s, a, b, zero_start, zero_end);
+  if (!(shape.w > 0.0) || s.straight) return each_side_alone();
   const EndFrame start = s.frame(a, a, b, true), end = s.frame(b, a, b, false);
   const double tolerance_left = s.tolerance - s.margin;
   // The sample count of fit_piece depends on |d| only, so both sides share it.
-  const int count = first_sample_count(shape->normal_second(s.d), tolerance_left);
+  const int count = first_sample_count(shape.normal_second(s.d), tolerance_left);
   const CubicWeights& weights = cubic_weights(count);
   std::vector<Point2>& plus_samples = sample_buffer();
   std::vector<Point2>& minus_samples = side_buffer();
-  const bool sampled = sample_both_sides(q, shape->h1, s.d, start, end, weights, plus_samples,
+  const bool sampled = sample_both_sides(q, shape.h1, s.d, start, end, weights, plus_samples,
                                          minus_samples);
   const std::array<double, 2> directions = travel_directions<2>(s, {s.d, -s.d}, a, b);
   FirstPiece plus_first{start, end, directions[0], {}};
@@ -1002,14 +1028,14 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
   // The chord moments of both sides from one evaluation of B_p, B_p', B_p'' per node; the
   // ends as fit_piece's (the samples' first and last).
   const std::array<ChordMoments, 2> moments =
-      chord_moments_of<2>(q, shape->h1, shape->h2, {s.d, -s.d},
+      chord_moments_of<2>(q, shape.h1, shape.h2, {s.d, -s.d},
                           {plus_samples.front(), minus_samples.front()},
                           {plus_samples.back(), minus_samples.back()});
   plus_first.fit = fit_piece(s, a, b, q, start, end, s.d, tolerance_left, plus_first.direction,
-                             plus_samples, zero_start, zero_end, &*shape, sampled, &moments[0]);
+                             plus_samples, zero_start, zero_end, &shape, sampled, &moments[0]);
   minus_first.fit = fit_piece(s, a, b, q, start, end, -s.d, tolerance_left,
                               minus_first.direction, minus_samples, zero_start, zero_end,
-                              &*shape, sampled,
+                              &shape, sampled,
                               &moments[1]);
   if (!fit_interval(s, s.d, a, b, budget, plus, &plus_first)) return false;
   return fit_interval(s, -s.d, a, b, budget, minus, &minus_first);
