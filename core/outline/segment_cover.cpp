@@ -10,6 +10,7 @@
 #include "core/outline/offset.hpp"
 #include "core/numeric/power_of_two.hpp"
 #include "core/outline/control_points.hpp"
+#include "core/outline/loose_curve.hpp"
 #include "core/outline/offset_cusps.hpp"
 #include "core/outline/stroke_shapes.hpp"
 #include "core/outline/tangent_limits.hpp"
@@ -54,22 +55,6 @@ double curvature_at(const ControlPoints& h1, const ControlPoints& h2, double t) 
   const double speed_squared = squared_length(v);
   if (!(speed_squared > 0.0)) return 0.0;
   return core::cross(v, a) / (speed_squared * std::sqrt(speed_squared));
-}
-
-/// Whether R |κ| < 1 on the whole curve and B' has no zero, by segment_cover.hpp's bound.
-bool loose_everywhere(const ControlPoints& h1, const ControlPoints& h2, double reach) {
-  if (h1.empty()) return false;
-  const Point2 mid = point_at(h1, 0.5);
-  const double mid_squared = squared_length(mid);
-  if (!(mid_squared > 0.0)) return false;
-  const Point2 direction = mid / std::sqrt(mid_squared);
-  double m = std::numeric_limits<double>::infinity();
-  for (const Point2 p : h1) m = std::min(m, core::dot(p, direction));
-  if (!(m > 0.0)) return false;
-  const double M1 = std::sqrt(largest_squared_length(h1));
-  const double M2 = std::sqrt(largest_squared_length(h2));
-  // The factor covers the rounding of the few operations above.
-  return reach * M1 * M2 < (1.0 - 1e-9) * m * m * m;
 }
 
 }  // namespace
