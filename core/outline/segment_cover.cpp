@@ -73,7 +73,6 @@ CoverSizes cover_sizes(double half_width, double tolerance) {
 bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineSink& sink,
                    SegmentCover& out) {
   const auto n = static_cast<std::int64_t>(segment.degree());
-  out.stretches.clear();
   out.cusp_at_start = out.cusp_at_end = false;
   if (!sink.charge(16 * (n + 1) * (n + 1))) return false;
   // The hodographs of the segment scaled by a power of two (exact): the bound's cube stays
@@ -113,12 +112,18 @@ bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
   auto stretch_end = [&](std::size_t k) {
     return k == 0 ? 0.0 : k == stretch_count ? 1.0 : stationary[k - 1];
   };
+  std::size_t used = 0;  // the entries of out.stretches filled
   thread_local std::vector<OffsetCubic> cubics;
   core::Coeffs cuts;
   for (std::size_t k = 0; k < stretch_count; ++k) {
     const double a = stretch_end(k), b = stretch_end(k + 1);
     if (!(b > a)) continue;
-    StretchEdges stretch;
+    // out's entries are reused with the room of their chains (stroke.cpp keeps its covers
+    // from one stroke to the next).
+    if (used == out.stretches.size()) out.stretches.emplace_back();
+    StretchEdges& stretch = out.stretches[used++];
+    stretch.left.clear();
+    stretch.right.clear();
     stretch.start = point_at(segment.points(), a);
     stretch.end = point_at(segment.points(), b);
     // Where neither side has a cusp in (a, b) and neither is tight, both sides are the
@@ -147,7 +152,6 @@ bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
                           sizes.snap);
         }
       }
-      out.stretches.push_back(std::move(stretch));
       continue;
     }
     for (int side = 0; side < 2; ++side) {
@@ -187,8 +191,8 @@ bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
         if (!sink.ok()) return false;
       }
     }
-    out.stretches.push_back(std::move(stretch));
   }
+  out.stretches.resize(used);
   return sink.ok();
 }
 

@@ -87,6 +87,10 @@ struct SegmentCover {
 /// tangent-disk test applies) the parts shrink geometrically to a spread of ε/2, a few disks
 /// per halving.
 ///
+/// `out` is replaced: its stretches' entries are reused, with the room of their chains, for
+/// the segment's stretches in order (a caller that keeps its covers from one stroke to the
+/// next allocates no chain twice), and cut to their count.
+///
 /// Work is charged to `sink` (de Casteljau coordinate updates), and so are the disks'
 /// segments; false when the sink stopped (a part still failing the test after 64 halvings
 /// stops with work_cap_reached).
