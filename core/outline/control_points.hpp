@@ -67,6 +67,15 @@ inline void piece_into(std::span<const core::Point2> p, double a, double b, Cont
 
 inline double squared_length(core::Point2 v) noexcept { return v.x * v.x + v.y * v.y; }
 
+/// The largest absolute coordinate of the points (`floor` when larger): for finite
+/// coordinates the value core::scale and core::max_abs_coordinate give, with comparisons in
+/// place of std::fmax's library calls.
+inline double largest_abs_coordinate(std::span<const core::Point2> p, double floor = 0.0) noexcept {
+  double s = floor;
+  for (const core::Point2 q : p) s = std::max(s, std::max(std::fabs(q.x), std::fabs(q.y)));
+  return s;
+}
+
 /// The largest squared length of the points (0 for none).
 inline double largest_squared_length(std::span<const core::Point2> p) noexcept {
   double m = 0.0;

@@ -79,7 +79,7 @@ struct ScaledCurve {
   std::vector<Point2> turns;
 
   ScaledCurve(const core::Curve& curve, double distance, double tol) {
-    const double size = std::max(core::scale(curve), std::fabs(distance));
+    const double size = std::max(largest_abs_coordinate(curve.points()), std::fabs(distance));
     const int e = size > 0.0 ? -core::exponent_of(size) : 0;
     const core::PowerOfTwo factor(e);
     points.resize(curve.points().size(), ControlPoints::Uninitialized{});
@@ -407,11 +407,15 @@ std::array<ChordMoments, N> chord_moments_of(const ControlPoints& q, const Contr
                                              const std::array<double, N>& ds,
                                              const std::array<Point2, N>& starts,
                                              const std::array<Point2, N>& ends) {
-  // The 6-point Gauss-Legendre rule on [-1, 1] (Abramowitz and Stegun, table 25.4).
-  static constexpr std::array<double, 3> kNodes{0.2386191860831969, 0.6612093864662645,
-                                                0.9324695142031521};
-  static constexpr std::array<double, 3> kWeights{0.4679139345726910, 0.3607615730481386,
-                                                  0.1713244923791704};
+  // The 6-point Gauss-Legendre rule on [-1, 1] (Abramowitz and Stegun, table 25.4): the
+  // three positive nodes, then their negatives, in the order the sums are taken.
+  static constexpr double kNode0 = 0.2386191860831969, kNode1 = 0.6612093864662645,
+                          kNode2 = 0.9324695142031521;
+  static constexpr double kWeight0 = 0.4679139345726910, kWeight1 = 0.3607615730481386,
+                          kWeight2 = 0.1713244923791704;
+  static constexpr std::array<double, 6> kNodes{kNode0, kNode1, kNode2, -kNode0, -kNode1, -kNode2};
+  static constexpr std::array<double, 6> kWeights{kWeight0, kWeight1, kWeight2,
+                                                  kWeight0, kWeight1, kWeight2};
   std::array<ChordMoments, N> results{};
   std::array<Point2, N> axes{};
   std::array<bool, N> open{};
@@ -426,10 +430,8 @@ std::array<ChordMoments, N> chord_moments_of(const ControlPoints& q, const Contr
   if (!any) return results;
   std::array<double, N> area{}, moment{};
   const bool cubic = q.size() == 4;
-  for (std::size_t i = 0; i < 2 * kNodes.size(); ++i) {
-    const std::size_t k = i % kNodes.size();
-    const double node = i < kNodes.size() ? kNodes[k] : -kNodes[k];
-    const double u = 0.5 + 0.5 * node, w = 1.0 - u, weight = kWeights[k];
+  for (std::size_t i = 0; i < kNodes.size(); ++i) {
+    const double u = 0.5 + 0.5 * kNodes[i], w = 1.0 - u, weight = kWeights[i];
     // A cubic's point and derivatives from its control points and hodographs inline.
     const Point2 v = cubic ? (w * w) * h1[0] + (2.0 * u * w) * h1[1] + (u * u) * h1[2]
                            : point_at(h1, u);

@@ -77,7 +77,7 @@ bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
   if (!sink.charge(16 * (n + 1) * (n + 1))) return false;
   // The hodographs of the segment scaled by a power of two (exact): the bound's cube stays
   // a normal double.
-  const double size = std::max(core::scale(segment), sizes.reach);
+  const double size = std::max(largest_abs_coordinate(segment.points()), sizes.reach);
   const int e = -core::exponent_of(size);
   const core::PowerOfTwo factor(e);
   ControlPoints scaled(segment.points()), h1, h2;

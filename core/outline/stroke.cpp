@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/base/curve.hpp"
+#include "core/outline/control_points.hpp"
 #include "core/outline/segment_cover.hpp"
 #include "core/outline/stroke_shapes.hpp"
 #include "core/outline/tangent_limits.hpp"
@@ -31,11 +32,13 @@ void drawn_segments(const path::Path& path, const path::Subpath& sub,
 bool stationary_end(const core::Curve& curve, bool at_start) {
   const auto p = curve.points();
   const std::size_t n = p.size() - 1;
-  const Point2 v = at_start ? p[1] - p[0] : p[n] - p[n - 1];
-  double scale = std::numeric_limits<double>::min();
-  for (const Point2 q : p) scale = std::max(scale, core::max_abs_coordinate(q));
-  return !(core::length(static_cast<double>(n) * v) >
-           1e-12 * scale * static_cast<double>(p.size()));
+  const Point2 v = static_cast<double>(n) * (at_start ? p[1] - p[0] : p[n] - p[n - 1]);
+  const double scale = largest_abs_coordinate(p, std::numeric_limits<double>::min());
+  const double threshold = 1e-12 * scale * static_cast<double>(p.size());
+  // |v| >= its largest coordinate (and so does its computed length, rounded from above it):
+  // where that coordinate passes the threshold, so does the length, without computing it.
+  if (std::max(std::fabs(v.x), std::fabs(v.y)) > threshold) return false;
+  return !(core::length(v) > threshold);
 }
 
 /// Extends an open chain by a line to `point` when its end is farther than `snap` from it.
