@@ -50,9 +50,11 @@ inline core::Point2 point_at(std::span<const core::Point2> p, double u) {
 }
 
 /// The control points of B restricted to [a, b] (0 <= a < b <= 1), reparametrised to [0, 1]:
-/// the left part at b, then its right part at a / b (de Casteljau, O(n^2)).
+/// the left part at b, then its right part at a / b (de Casteljau, O(n^2)). `out` must not
+/// hold p's points.
 inline void piece_into(std::span<const core::Point2> p, double a, double b, ControlPoints& out) {
-  out = ControlPoints(p);
+  out.resize(p.size(), ControlPoints::Uninitialized{});
+  std::copy(p.begin(), p.end(), out.begin());
   const std::size_t n = p.size() - 1;
   if (b < 1.0) {
     for (std::size_t k = 1; k <= n; ++k)

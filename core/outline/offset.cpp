@@ -108,17 +108,27 @@ struct ScaledCurve {
     }
   }
 
-  /// Whether |B'(t)| is below the threshold, so that frame() takes the limit tangent at t.
-  [[nodiscard]] bool stationary(double t) const {
-    const Point2 v = first.empty() ? Point2{0, 0} : point_at(first, t);
+  /// B'(t) (zero for a curve of one point).
+  [[nodiscard]] Point2 velocity(double t) const {
+    return first.empty() ? Point2{0, 0} : point_at(first, t);
+  }
+
+  /// Whether |B'(t)| is below the threshold, so that frame() takes the limit tangent at t
+  /// (v = velocity(t)).
+  [[nodiscard]] bool stationary_at(Point2 v) const {
     return !(squared_length(v) > least_speed * least_speed);
   }
+  [[nodiscard]] bool stationary(double t) const { return stationary_at(velocity(t)); }
 
   /// B(t) and its unit tangent, computed from the whole curve so that two intervals meeting
   /// at t share them; where |B'(t)| is below the threshold, the limit from the piece
   /// [a, b] at its start (at_start) or end.
   [[nodiscard]] EndFrame frame(double t, double a, double b, bool at_start) const {
-    const Point2 v = first.empty() ? Point2{0, 0} : point_at(first, t);
+    return frame_at(t, velocity(t), a, b, at_start);
+  }
+
+  /// frame() with v = velocity(t) given.
+  [[nodiscard]] EndFrame frame_at(double t, Point2 v, double a, double b, bool at_start) const {
     const double speed_squared = squared_length(v);
     if (speed_squared > least_speed * least_speed) {
       return {point_at(points, t), v / std::sqrt(speed_squared)};
@@ -182,11 +192,14 @@ struct PieceShape {
   /// offset_curve, or of the caller of offset_interval) where B' is below the threshold.
   PieceShape(const ScaledCurve& s, double a, double b, bool zero_start, bool zero_end) {
     const double length = b - a;
+    // (Times a length of 1, the whole curve's: the points as they are.)
     piece_into(s.first, a, b, h1);
-    for (Point2& p : h1) p = length * p;
+    if (length != 1.0)
+      for (Point2& p : h1) p = length * p;
     if (!s.second.empty()) {
       piece_into(s.second, a, b, h2);
-      for (Point2& p : h2) p = (length * length) * p;
+      if (length != 1.0)
+        for (Point2& p : h2) p = (length * length) * p;
     }
     hodograph_into(h2, h3);
     M1 = std::sqrt(largest_squared_length(h1));
@@ -914,6 +927,7 @@ struct FirstPiece {
   EndFrame start, end;
   double direction = 1.0;
   PieceFit fit;
+  bool zero_start = false, zero_end = false;  // |B'| below the threshold at a, at b
 };
 
 /// Fits [a, b] of the scaled curve at the scaled distance d (s.d or -s.d), splitting where
@@ -947,7 +961,8 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
   }
   ControlPoints q;
   std::vector<Point2>& samples = sample_buffer();
-  const bool zero_start = s.stationary(a), zero_end = s.stationary(b);
+  const bool zero_start = first != nullptr ? first->zero_start : s.stationary(a);
+  const bool zero_end = first != nullptr ? first->zero_end : s.stationary(b);
   while (!stack.empty()) {
     const Pending piece = stack.back();
     stack.pop_back();
@@ -1006,7 +1021,8 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
   const ScaledCurve s(curve, d, tolerance);
   ControlPoints q;
   piece_into(s.points, a, b, q);
-  const bool zero_start = s.stationary(a), zero_end = s.stationary(b);
+  const Point2 start_velocity = s.velocity(a), end_velocity = s.velocity(b);
+  const bool zero_start = s.stationary_at(start_velocity), zero_end = s.stationary_at(end_velocity);
   // A line, or a piece whose fit needs no samples of its own kind: each side alone.
   auto each_side_alone = [&] {
     if (!fit_interval(s, s.d, a, b, budget, plus)) return false;
@@ -1015,7 +1031,8 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
   if (q.size() <= 2 || s.point) return each_side_alone();
   const PieceShape shape(s, a, b, zero_start, zero_end);
   if (!(shape.w > 0.0) || s.straight) return each_side_alone();
-  const EndFrame start = s.frame(a, a, b, true), end = s.frame(b, a, b, false);
+  const EndFrame start = s.frame_at(a, start_velocity, a, b, true);
+  const EndFrame end = s.frame_at(b, end_velocity, a, b, false);
   const double tolerance_left = s.tolerance - s.margin;
   // The sample count of fit_piece depends on |d| only, so both sides share it.
   const int count = first_sample_count(shape.normal_second(s.d), tolerance_left);
@@ -1025,8 +1042,8 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
   const bool sampled = sample_both_sides(q, shape.h1, s.d, start, end, weights, plus_samples,
                                          minus_samples);
   const std::array<double, 2> directions = travel_directions<2>(s, {s.d, -s.d}, a, b);
-  FirstPiece plus_first{start, end, directions[0], {}};
-  FirstPiece minus_first{start, end, directions[1], {}};
+  FirstPiece plus_first{start, end, directions[0], {}, zero_start, zero_end};
+  FirstPiece minus_first{start, end, directions[1], {}, zero_start, zero_end};
   // The chord moments of both sides from one evaluation of B_p, B_p', B_p'' per node; the
   // ends as fit_piece's (the samples' first and last).
   const std::array<ChordMoments, 2> moments =
