@@ -9,6 +9,7 @@
 #include "core/numeric/power_of_two.hpp"
 #include "core/outline/area_moment_fit.hpp"
 #include "core/outline/control_points.hpp"
+#include "core/outline/normal_turning.hpp"
 #include "core/outline/offset_cusps.hpp"
 #include "core/outline/straight_curve.hpp"
 #include "core/outline/tangent_limits.hpp"
@@ -241,8 +242,14 @@ struct PieceShape {
     }
   }
 
-  /// offset.hpp's bound of |d N''| (needs w > 0): |d| (|ω'| + ω^2).
-  [[nodiscard]] double normal_second(double d) const {
+  /// offset.hpp's bound of |d N''| on the piece (needs w > 0; normal_turning.hpp).
+  [[nodiscard]] double normal_second(double d) const { return normal_second_bound(W2, W3, w, d); }
+
+  /// The estimate of |d N''| the first sample count is chosen for (offset.hpp): the bound
+  /// above with the factors W1 / w and (W1 / w)^2 on its terms (|d| (W1 W3 / w^2 +
+  /// 3 W1^2 W2^2 / w^4), no smaller than it), which makes the samples denser where the speed
+  /// varies along the piece.
+  [[nodiscard]] double sample_estimate(double d) const {
     const double v = W1 * W2 / (w * w);
     const double v1 = W1 * W3 / (w * w) + 2.0 * v * v;
     return std::fabs(d) * (v1 + v * v);
@@ -659,10 +666,11 @@ int samples_for(double second, double budget) {
 }
 
 /// fit_piece's first K: the remainder within kFirstRemainder of the tolerance with |e''|
-/// estimated at the bound `turning` of |d N''| (the area and moment cubic's C'' follows B_p''
-/// closely), at least kFitSamples. It depends on |d| only: both sides of a piece share it.
-int first_sample_count(double turning, double tolerance) {
-  return std::max(samples_for(turning, kFirstRemainder * tolerance), kFitSamples);
+/// estimated at `estimate` (PieceShape::sample_estimate, at least the bound of |d N''|; the
+/// area and moment cubic's C'' follows B_p'' closely), at least kFitSamples. It depends on
+/// |d| only: both sides of a piece share it.
+int first_sample_count(double estimate, double tolerance) {
+  return std::max(samples_for(estimate, kFirstRemainder * tolerance), kFitSamples);
 }
 
 /// A fitted piece: its cubic and its certified bound (infinite when not certified), and how
@@ -717,9 +725,9 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
     const double turning = shape.normal_second(d);
     // Between samples, |B_p'' - its linear interpolant| <= M3 h / 2 (zero when n <= 3).
     const double bend = q.size() > 4 ? 0.5 * shape.M3 : 0.0;
-    // K for a remainder within kFirstRemainder of the tolerance with |e''| estimated at the
-    // bound of |d N''| (the area and moment cubic's C'' follows B_p'' closely).
-    const int count = first_sample_count(turning, tolerance);
+    // K for a remainder within kFirstRemainder of the tolerance with |e''| estimated from
+    // the hodographs (first_sample_count).
+    const int count = first_sample_count(shape.sample_estimate(d), tolerance);
     const CubicWeights& weights = cubic_weights(count);
     if (!presampled && !sample_parallel(q, shape.h1, d, p0, p3, weights, o)) return result;
     result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
@@ -1035,7 +1043,7 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
   const EndFrame end = s.frame_at(b, end_velocity, a, b, false);
   const double tolerance_left = s.tolerance - s.margin;
   // The sample count of fit_piece depends on |d| only, so both sides share it.
-  const int count = first_sample_count(shape.normal_second(s.d), tolerance_left);
+  const int count = first_sample_count(shape.sample_estimate(s.d), tolerance_left);
   const CubicWeights& weights = cubic_weights(count);
   std::vector<Point2>& plus_samples = sample_buffer();
   std::vector<Point2>& minus_samples = side_buffer();
