@@ -733,7 +733,10 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
     result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
     // The candidates: the area and moment cubic nearest an arc, then the others of
     // area_moment_fit.hpp, then the least squares.
-    std::array<std::array<Point2, 4>, 6> candidates;
+    // Each candidate's handle lengths (its cubic built when it is judged), the least squares
+    // cubic, always last, apart: no array of cubics to fill at every call.
+    std::array<HandleLengths, 5> candidates;
+    std::array<Point2, 4> least_squares_cubic;
     std::size_t candidate_count = 0;
     const ChordMoments moments = given_moments != nullptr
                                      ? *given_moments
@@ -752,7 +755,7 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
       t0 = {core::dot(d0, axis), core::cross(axis, d0)};
       t3 = {core::dot(d3, axis), core::cross(axis, d3)};
       if (arc_started_handles(t0, t3, moments.area, moments.moment, arc))
-        candidates[candidate_count++] = cubic_of(arc);
+        candidates[candidate_count++] = arc;
     }
     bool searched = !moments.valid, least_squares = false;
     // The bound of offset.hpp for the cubic c on K samples of O.
@@ -778,15 +781,18 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
         for (std::size_t i = 0; i < handles.count; ++i) {
           const HandleLengths h = handles.pairs[i];
           if (std::fabs(h.start - arc.start) + std::fabs(h.end - arc.end) > 1e-9)
-            candidates[candidate_count++] = cubic_of(h);
+            candidates[candidate_count++] = h;
         }
       }
       if (tried == candidate_count) {
         if (least_squares) break;
-        candidates[candidate_count++] = fit(o, weights, true, d0, d3);
+        least_squares_cubic = fit(o, weights, true, d0, d3);
         least_squares = true;
+        ++candidate_count;
       }
-      const std::array<Point2, 4>& c = candidates[tried];
+      const std::array<Point2, 4> c = least_squares && tried + 1 == candidate_count
+                                          ? least_squares_cubic
+                                          : cubic_of(candidates[tried]);
       double largest = 0.0;
       auto [bound, second] = judge(c, o, count, largest);
       // The samples are within the tolerance and the remainder alone fails: K for the
@@ -951,6 +957,16 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
     if (!budget.spend(16 * (n + 1) * (n + 1) + 64 * n * n * n)) return false;
     if (straight_interval(s, d, a, b, s.tolerance - s.margin, budget, out)) return true;
     if (budget.exhausted()) return false;
+  }
+  if (first != nullptr && first->fit.bound + s.margin <= s.tolerance) {
+    // The whole [a, b] kept at its first fit (the common case), as the loop below keeps it,
+    // without stacking it.
+    if (!budget.spend(first->fit.work + 16 * (n + 1) * (n + 1))) return false;
+    OffsetCubic cubic{a, b, {}, 0.0};
+    for (std::size_t i = 0; i < 4; ++i) cubic.points[i] = s.back.times(first->fit.cubic[i]);
+    cubic.error_bound = s.back.times(first->fit.bound + s.margin);
+    out.push_back(cubic);
+    return true;
   }
   const double direction = first != nullptr ? first->direction : travel_direction(s, d, a, b);
 
