@@ -24,6 +24,10 @@ inline void hodograph_into(std::span<const core::Point2> p, ControlPoints& out) 
   for (std::size_t i = 0; i < n; ++i) out[i] = degree * (p[i + 1] - p[i]);
 }
 
+/// B(u) by de Casteljau's algorithm (p not empty): point_at's way above degree 3, out of line
+/// (control_points.cpp) so that point_at's few lines for the low degrees inline.
+[[nodiscard]] core::Point2 point_at_by_casteljau(std::span<const core::Point2> p, double u);
+
 /// B(u) (p not empty): up to degree 3 from the Bernstein weights directly (positive weights
 /// summing to 1: within a few units of rounding of the largest coordinate, as de Casteljau's
 /// algorithm is), above by de Casteljau's algorithm.
@@ -40,13 +44,8 @@ inline core::Point2 point_at(std::span<const core::Point2> p, double u) {
       return (v * v * v) * p[0] + (3.0 * u * v * v) * p[1] + (3.0 * u * u * v) * p[2] +
              (u * u * u) * p[3];
     default:
-      break;
+      return point_at_by_casteljau(p, u);
   }
-  ControlPoints q(p.size(), ControlPoints::Uninitialized{});
-  std::copy(p.begin(), p.end(), q.begin());
-  for (std::size_t k = p.size() - 1; k > 0; --k)
-    for (std::size_t i = 0; i < k; ++i) q[i] = core::lerp(q[i], q[i + 1], u);
-  return q[0];
 }
 
 /// The control points of B restricted to [a, b] (0 <= a < b <= 1), reparametrised to [0, 1]:
