@@ -28,7 +28,8 @@ bool loose_part(const ControlPoints& g1, const ControlPoints& g2, double reach,
 
 }  // namespace
 
-bool loose_everywhere(const ControlPoints& h1, const ControlPoints& h2, double reach) {
+bool loose_everywhere(const ControlPoints& h1, const ControlPoints& h2, double reach,
+                      std::int64_t* work) {
   if (h1.empty()) return false;
   if (h2.empty()) {
     // A line: κ = 0 wherever B' is not zero; B' is constant.
@@ -45,6 +46,10 @@ bool loose_everywhere(const ControlPoints& h1, const ControlPoints& h2, double r
       const double a = static_cast<double>(k) / parts, b = static_cast<double>(k + 1) / parts;
       piece_into(h1, a, b, g1);
       piece_into(h2, a, b, g2);
+      if (work != nullptr) {
+        const auto k1 = static_cast<std::int64_t>(h1.size()), k2 = static_cast<std::int64_t>(h2.size());
+        *work += 2 * (k1 * k1 + k2 * k2);
+      }
       all = loose_part(g1, g2, reach, speed_slack, bend_slack);
     }
     if (all) return true;

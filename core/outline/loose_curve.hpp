@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstdint>
+
 #include "core/outline/control_points.hpp"
 
 namespace bezier::outline {
@@ -21,11 +23,17 @@ namespace bezier::outline {
 /// nothing (the caller searches the roots).
 ///
 /// Rounding: the restricted control points (de Casteljau steps with weights in [0, 1]) are
-/// within a few units of rounding of the exact ones times the largest control point of the
-/// whole hodograph (n u M1 and n u M2, n <= 24), so m is lowered by 64 u M1 and M2 raised by
-/// 64 u M2 of the whole before the comparison, whose own few roundings the factor 1 - 1e-9
-/// covers.
+/// within a few units of rounding, times the degree, of the exact ones times the largest
+/// control point of the whole hodograph (a few n u M1 and n u M2; n at most the service's
+/// degree limit, 20 by default), so m is lowered by 64 u M1 and M2 raised by 64 u M2 of the
+/// whole before the comparison, whose own few roundings the factor 1 - 1e-9 covers. The
+/// parts' ends are binary fractions, exact; the second split, at a / b rounded, moves a
+/// part's start by a few units of rounding in t, a gap between parts over which R |κ|
+/// changes by far less than the factor's margin (|B'| >= m > 0 on both sides of it).
+///
+/// Work: at most 15 tests; `work` (when given) is increased by the de Casteljau coordinate
+/// updates of the parts' control points, 2 (k + 1)^2 per part and hodograph of k + 1 points.
 [[nodiscard]] bool loose_everywhere(const ControlPoints& h1, const ControlPoints& h2,
-                                    double reach);
+                                    double reach, std::int64_t* work = nullptr);
 
 }  // namespace bezier::outline

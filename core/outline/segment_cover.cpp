@@ -75,8 +75,8 @@ bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
   const auto n = static_cast<std::int64_t>(segment.degree());
   out.cusp_at_start = out.cusp_at_end = false;
   if (!sink.charge(16 * (n + 1) * (n + 1))) return false;
-  // The hodographs of the segment scaled by a power of two (exact): the bound's cube stays
-  // a normal double.
+  // The hodographs of the segment scaled by a power of two (exact): the loose bound's
+  // squares stay normal doubles.
   const double size = std::max(largest_abs_coordinate(segment.points()), sizes.reach);
   const int e = -core::exponent_of(size);
   const core::PowerOfTwo factor(e);
@@ -87,7 +87,10 @@ bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
 
   std::vector<double> cusps[2];  // left (+R), right (-R)
   std::vector<double> stationary;
-  if (!loose_everywhere(h1, h2, factor.times(sizes.reach))) {
+  std::int64_t loose_work = 0;
+  const bool loose = loose_everywhere(h1, h2, factor.times(sizes.reach), &loose_work);
+  if (!sink.charge(loose_work)) return false;
+  if (!loose) {
     if (!sink.charge(3 * 64 * n * n * n)) return false;
     cusps[0] = offset_cusps(segment, sizes.reach);
     cusps[1] = offset_cusps(segment, -sizes.reach);
