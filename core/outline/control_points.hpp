@@ -24,6 +24,10 @@ inline void hodograph_into(std::span<const core::Point2> p, ControlPoints& out) 
   for (std::size_t i = 0; i < n; ++i) out[i] = degree * (p[i + 1] - p[i]);
 }
 
+/// B(u) by de Casteljau's algorithm (p not empty): point_at's way above degree 3, out of line
+/// (control_points.cpp) so that point_at's few lines for the low degrees inline.
+[[nodiscard]] core::Point2 point_at_by_casteljau(std::span<const core::Point2> p, double u);
+
 /// B(u) (p not empty): up to degree 3 from the Bernstein weights directly (positive weights
 /// summing to 1: within a few units of rounding of the largest coordinate, as de Casteljau's
 /// algorithm is), above by de Casteljau's algorithm.
@@ -40,19 +44,16 @@ inline core::Point2 point_at(std::span<const core::Point2> p, double u) {
       return (v * v * v) * p[0] + (3.0 * u * v * v) * p[1] + (3.0 * u * u * v) * p[2] +
              (u * u * u) * p[3];
     default:
-      break;
+      return point_at_by_casteljau(p, u);
   }
-  ControlPoints q(p.size(), ControlPoints::Uninitialized{});
-  std::copy(p.begin(), p.end(), q.begin());
-  for (std::size_t k = p.size() - 1; k > 0; --k)
-    for (std::size_t i = 0; i < k; ++i) q[i] = core::lerp(q[i], q[i + 1], u);
-  return q[0];
 }
 
 /// The control points of B restricted to [a, b] (0 <= a < b <= 1), reparametrised to [0, 1]:
-/// the left part at b, then its right part at a / b (de Casteljau, O(n^2)).
+/// the left part at b, then its right part at a / b (de Casteljau, O(n^2)). `out` must not
+/// hold p's points.
 inline void piece_into(std::span<const core::Point2> p, double a, double b, ControlPoints& out) {
-  out = ControlPoints(p);
+  out.resize(p.size(), ControlPoints::Uninitialized{});
+  std::copy(p.begin(), p.end(), out.begin());
   const std::size_t n = p.size() - 1;
   if (b < 1.0) {
     for (std::size_t k = 1; k <= n; ++k)
@@ -66,6 +67,15 @@ inline void piece_into(std::span<const core::Point2> p, double a, double b, Cont
 }
 
 inline double squared_length(core::Point2 v) noexcept { return v.x * v.x + v.y * v.y; }
+
+/// The largest absolute coordinate of the points (`floor` when larger): for finite
+/// coordinates the value core::scale and core::max_abs_coordinate give, with comparisons in
+/// place of std::fmax's library calls.
+inline double largest_abs_coordinate(std::span<const core::Point2> p, double floor = 0.0) noexcept {
+  double s = floor;
+  for (const core::Point2 q : p) s = std::max(s, std::max(std::fabs(q.x), std::fabs(q.y)));
+  return s;
+}
 
 /// The largest squared length of the points (0 for none).
 inline double largest_squared_length(std::span<const core::Point2> p) noexcept {

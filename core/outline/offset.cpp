@@ -5,11 +5,11 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <optional>
 
 #include "core/numeric/power_of_two.hpp"
 #include "core/outline/area_moment_fit.hpp"
 #include "core/outline/control_points.hpp"
+#include "core/outline/normal_turning.hpp"
 #include "core/outline/offset_cusps.hpp"
 #include "core/outline/straight_curve.hpp"
 #include "core/outline/tangent_limits.hpp"
@@ -80,7 +80,7 @@ struct ScaledCurve {
   std::vector<Point2> turns;
 
   ScaledCurve(const core::Curve& curve, double distance, double tol) {
-    const double size = std::max(core::scale(curve), std::fabs(distance));
+    const double size = std::max(largest_abs_coordinate(curve.points()), std::fabs(distance));
     const int e = size > 0.0 ? -core::exponent_of(size) : 0;
     const core::PowerOfTwo factor(e);
     points.resize(curve.points().size(), ControlPoints::Uninitialized{});
@@ -109,17 +109,27 @@ struct ScaledCurve {
     }
   }
 
-  /// Whether |B'(t)| is below the threshold, so that frame() takes the limit tangent at t.
-  [[nodiscard]] bool stationary(double t) const {
-    const Point2 v = first.empty() ? Point2{0, 0} : point_at(first, t);
+  /// B'(t) (zero for a curve of one point).
+  [[nodiscard]] Point2 velocity(double t) const {
+    return first.empty() ? Point2{0, 0} : point_at(first, t);
+  }
+
+  /// Whether |B'(t)| is below the threshold, so that frame() takes the limit tangent at t
+  /// (v = velocity(t)).
+  [[nodiscard]] bool stationary_at(Point2 v) const {
     return !(squared_length(v) > least_speed * least_speed);
   }
+  [[nodiscard]] bool stationary(double t) const { return stationary_at(velocity(t)); }
 
   /// B(t) and its unit tangent, computed from the whole curve so that two intervals meeting
   /// at t share them; where |B'(t)| is below the threshold, the limit from the piece
   /// [a, b] at its start (at_start) or end.
   [[nodiscard]] EndFrame frame(double t, double a, double b, bool at_start) const {
-    const Point2 v = first.empty() ? Point2{0, 0} : point_at(first, t);
+    return frame_at(t, velocity(t), a, b, at_start);
+  }
+
+  /// frame() with v = velocity(t) given.
+  [[nodiscard]] EndFrame frame_at(double t, Point2 v, double a, double b, bool at_start) const {
     const double speed_squared = squared_length(v);
     if (speed_squared > least_speed * least_speed) {
       return {point_at(points, t), v / std::sqrt(speed_squared)};
@@ -183,11 +193,14 @@ struct PieceShape {
   /// offset_curve, or of the caller of offset_interval) where B' is below the threshold.
   PieceShape(const ScaledCurve& s, double a, double b, bool zero_start, bool zero_end) {
     const double length = b - a;
+    // (Times a length of 1, the whole curve's: the points as they are.)
     piece_into(s.first, a, b, h1);
-    for (Point2& p : h1) p = length * p;
+    if (length != 1.0)
+      for (Point2& p : h1) p = length * p;
     if (!s.second.empty()) {
       piece_into(s.second, a, b, h2);
-      for (Point2& p : h2) p = (length * length) * p;
+      if (length != 1.0)
+        for (Point2& p : h2) p = (length * length) * p;
     }
     hodograph_into(h2, h3);
     M1 = std::sqrt(largest_squared_length(h1));
@@ -229,8 +242,14 @@ struct PieceShape {
     }
   }
 
-  /// offset.hpp's bound of |d N''| (needs w > 0): |d| (|ω'| + ω^2).
-  [[nodiscard]] double normal_second(double d) const {
+  /// offset.hpp's bound of |d N''| on the piece (needs w > 0; normal_turning.hpp).
+  [[nodiscard]] double normal_second(double d) const { return normal_second_bound(W2, W3, w, d); }
+
+  /// The estimate of |d N''| the first sample count is chosen for (offset.hpp): the bound
+  /// above with the factors W1 / w and (W1 / w)^2 on its terms (|d| (W1 W3 / w^2 +
+  /// 3 W1^2 W2^2 / w^4), no smaller than it), which makes the samples denser where the speed
+  /// varies along the piece.
+  [[nodiscard]] double sample_estimate(double d) const {
     const double v = W1 * W2 / (w * w);
     const double v1 = W1 * W3 / (w * w) + 2.0 * v * v;
     return std::fabs(d) * (v1 + v * v);
@@ -408,11 +427,15 @@ std::array<ChordMoments, N> chord_moments_of(const ControlPoints& q, const Contr
                                              const std::array<double, N>& ds,
                                              const std::array<Point2, N>& starts,
                                              const std::array<Point2, N>& ends) {
-  // The 6-point Gauss-Legendre rule on [-1, 1] (Abramowitz and Stegun, table 25.4).
-  static constexpr std::array<double, 3> kNodes{0.2386191860831969, 0.6612093864662645,
-                                                0.9324695142031521};
-  static constexpr std::array<double, 3> kWeights{0.4679139345726910, 0.3607615730481386,
-                                                  0.1713244923791704};
+  // The 6-point Gauss-Legendre rule on [-1, 1] (Abramowitz and Stegun, table 25.4): the
+  // three positive nodes, then their negatives, in the order the sums are taken.
+  static constexpr double kNode0 = 0.2386191860831969, kNode1 = 0.6612093864662645,
+                          kNode2 = 0.9324695142031521;
+  static constexpr double kWeight0 = 0.4679139345726910, kWeight1 = 0.3607615730481386,
+                          kWeight2 = 0.1713244923791704;
+  static constexpr std::array<double, 6> kNodes{kNode0, kNode1, kNode2, -kNode0, -kNode1, -kNode2};
+  static constexpr std::array<double, 6> kWeights{kWeight0, kWeight1, kWeight2,
+                                                  kWeight0, kWeight1, kWeight2};
   std::array<ChordMoments, N> results{};
   std::array<Point2, N> axes{};
   std::array<bool, N> open{};
@@ -427,10 +450,8 @@ std::array<ChordMoments, N> chord_moments_of(const ControlPoints& q, const Contr
   if (!any) return results;
   std::array<double, N> area{}, moment{};
   const bool cubic = q.size() == 4;
-  for (std::size_t i = 0; i < 2 * kNodes.size(); ++i) {
-    const std::size_t k = i % kNodes.size();
-    const double node = i < kNodes.size() ? kNodes[k] : -kNodes[k];
-    const double u = 0.5 + 0.5 * node, w = 1.0 - u, weight = kWeights[k];
+  for (std::size_t i = 0; i < kNodes.size(); ++i) {
+    const double u = 0.5 + 0.5 * kNodes[i], w = 1.0 - u, weight = kWeights[i];
     // A cubic's point and derivatives from its control points and hodographs inline.
     const Point2 v = cubic ? (w * w) * h1[0] + (2.0 * u * w) * h1[1] + (u * u) * h1[2]
                            : point_at(h1, u);
@@ -529,67 +550,87 @@ struct SampledBound {
   bool within = true;    // no sample beyond `reach`
 };
 
-SampledBound foot_bound(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
-                        const ControlPoints& h2, double reach, int& taken) {
+/// foot_bound's loop, with B_p'' linear in t (Linear: degree <= 3, from the first and last
+/// control points k0, k1 of its hodograph h2) or not (point_at(h2, t)). The arithmetic is
+/// foot_bound's as stated there, operation for operation: the loop over the interior samples
+/// and the last node (u = 1 at t = 1) are written apart only so that no test of the last
+/// index is made per sample.
+template <bool Linear>
+SampledBound foot_bound_of(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
+                           const ControlPoints& h2, double reach, int& taken) {
   const auto count = static_cast<int>(o.size()) - 1;
   const double h = 1.0 / count;
   // C'(u) = a1 + u (2 a2 + 3 u a3) (the power form C(u) = c[0] + u (a1 + u (a2 + u a3))).
   const Point2 a1 = 3.0 * (c[1] - c[0]), a2 = 3.0 * (c[2] - 2.0 * c[1] + c[0]),
                a3 = c[3] - c[0] + 3.0 * (c[1] - c[2]);
   const Point2 c0 = 2.0 * a2, c1 = 2.0 * a2 + 6.0 * a3;  // C''(0), C''(1)
-  const bool linear_second = h2.size() <= 2;
+  const Point2 twice_a2 = 2.0 * a2, thrice_a3 = 3.0 * a3;
+  const Point2 p0 = c[0], p1 = c[1], p2 = c[2], p3 = c[3];
   const Point2 k0 = h2.empty() ? Point2{0, 0} : h2[0];
   const Point2 k1 = h2.empty() ? Point2{0, 0} : h2[h2.size() - 1];
   auto second_of_b = [&](double t) {
-    return linear_second ? (1.0 - t) * k0 + t * k1 : point_at(h2, t);
+    if constexpr (Linear) {
+      return (1.0 - t) * k0 + t * k1;
+    } else {
+      return point_at(h2, t);
+    }
   };
   const double reach_squared = reach > 0.0 ? reach * reach : 0.0;
+  const Point2* const samples = o.data();
   SampledBound result;
   double largest = 0.0, second = 0.0, steps = 0.0;
   double u_prev = 0.0, u_before = -h;
   Point2 c2_prev = c0, b2_prev = second_of_b(0.0);
-  taken = 0;
-  for (int j = 1; j <= count; ++j) {
-    ++taken;
-    const double t = j == count ? 1.0 : j * h;
-    double u = 1.0;
-    if (j < count) {
-      const Point2 target = o[static_cast<std::size_t>(j)];
-      // From the linear extrapolation u of the previous two, the Gauss-Newton step δ =
-      // -r · C'(u) / |C'(u)|^2 (r = C(u) - o_j) towards the foot, u_j = u + δ: by Taylor's
-      // formula |C(u_j) - o_j| <= |r + δ C'(u)| + δ^2 / 2 max |C''|, with C(u) in Bernstein
-      // form (positive weights: within a few units of rounding of the coordinates, as
-      // offset.hpp's margin assumes).
-      const double guess = std::clamp(u_prev + (u_prev - u_before), 0.0, 1.0), w = 1.0 - guess;
-      const Point2 r = (w * w * w) * c[0] + (3.0 * guess * w * w) * c[1] +
-                       (3.0 * guess * guess * w) * c[2] + (guess * guess * guess) * c[3] - target;
-      const Point2 v = a1 + guess * (2.0 * a2 + guess * (3.0 * a3));
-      const double speed_squared = squared_length(v);
-      u = speed_squared > 0.0 ? std::clamp(guess - core::dot(r, v) / speed_squared, 0.0, 1.0)
-                              : guess;
-      const double step = u - guess;
-      largest = std::max(largest, squared_length(r + step * v));
-      steps = std::max(steps, step * step);
-      if (largest > reach_squared) {
-        result.within = false;
-        break;
-      }
-    }
-    // Between t_prev and t: ψ' = s, (C o ψ)'' = s^2 C''(ψ), linear in t as C'' is (and
-    // B_p'' too for n <= 3): its largest distance from B_p'' is at an end.
+  // Between t_prev and t: ψ' = s, (C o ψ)'' = s^2 C''(ψ), linear in t as C'' is (and B_p''
+  // too for n <= 3): its largest distance from B_p'' is at an end.
+  auto bend_to = [&](double u, double t) {
     const double s = (u - u_prev) / h, s2 = s * s;
     const Point2 c2 = (1.0 - u) * c0 + u * c1, b2 = second_of_b(t);
-    second = std::max({second, squared_length(s2 * c2_prev - b2_prev),
-                       squared_length(s2 * c2 - b2)});
+    second = std::max(std::max(second, squared_length(s2 * c2_prev - b2_prev)),
+                      squared_length(s2 * c2 - b2));
     u_before = u_prev;
     u_prev = u;
     c2_prev = c2;
     b2_prev = b2;
+  };
+  int j = 1;
+  for (; j < count; ++j) {
+    const double t = j * h;
+    const Point2 target = samples[j];
+    // From the linear extrapolation u of the previous two, the Gauss-Newton step δ =
+    // -r · C'(u) / |C'(u)|^2 (r = C(u) - o_j) towards the foot, u_j = u + δ: by Taylor's
+    // formula |C(u_j) - o_j| <= |r + δ C'(u)| + δ^2 / 2 max |C''|, with C(u) in Bernstein
+    // form (positive weights: within a few units of rounding of the coordinates, as
+    // offset.hpp's margin assumes).
+    const double guess = std::clamp(u_prev + (u_prev - u_before), 0.0, 1.0), w = 1.0 - guess;
+    const Point2 r = (w * w * w) * p0 + (3.0 * guess * w * w) * p1 +
+                     (3.0 * guess * guess * w) * p2 + (guess * guess * guess) * p3 - target;
+    const Point2 v = a1 + guess * (twice_a2 + guess * thrice_a3);
+    const double speed_squared = squared_length(v);
+    const double u = speed_squared > 0.0
+                         ? std::clamp(guess - core::dot(r, v) / speed_squared, 0.0, 1.0)
+                         : guess;
+    const double step = u - guess;
+    largest = std::max(largest, squared_length(r + step * v));
+    steps = std::max(steps, step * step);
+    if (largest > reach_squared) {
+      result.within = false;
+      break;
+    }
+    bend_to(u, t);
   }
+  taken = j;
+  if (result.within) bend_to(1.0, 1.0);
   const double curving = std::sqrt(std::max(squared_length(c0), squared_length(c1)));
   result.largest = std::sqrt(largest) + 0.5 * steps * curving;
   result.second = std::sqrt(second);
   return result;
+}
+
+SampledBound foot_bound(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
+                        const ControlPoints& h2, double reach, int& taken) {
+  return h2.size() <= 2 ? foot_bound_of<true>(c, o, h2, reach, taken)
+                        : foot_bound_of<false>(c, o, h2, reach, taken);
 }
 
 /// The bound of offset.hpp where m is not positive: two balls about O(0), the cubic within
@@ -625,10 +666,11 @@ int samples_for(double second, double budget) {
 }
 
 /// fit_piece's first K: the remainder within kFirstRemainder of the tolerance with |e''|
-/// estimated at the bound `turning` of |d N''| (the area and moment cubic's C'' follows B_p''
-/// closely), at least kFitSamples. It depends on |d| only: both sides of a piece share it.
-int first_sample_count(double turning, double tolerance) {
-  return std::max(samples_for(turning, kFirstRemainder * tolerance), kFitSamples);
+/// estimated at `estimate` (PieceShape::sample_estimate, at least the bound of |d N''|; the
+/// area and moment cubic's C'' follows B_p'' closely), at least kFitSamples. It depends on
+/// |d| only: both sides of a piece share it.
+int first_sample_count(double estimate, double tolerance) {
+  return std::max(samples_for(estimate, kFirstRemainder * tolerance), kFitSamples);
 }
 
 /// A fitted piece: its cubic and its certified bound (infinite when not certified), and how
@@ -664,9 +706,15 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
     result.work = 16;
     return result;
   }
+  if (given == nullptr) {
+    // The piece's shape on the stack (not in a std::optional, whose payload would be
+    // zero-filled at every call).
+    const PieceShape own(s, a, b, zero_start, zero_end);
+    return fit_piece(s, a, b, q, start, end, d, tolerance, direction, o, zero_start, zero_end,
+                     &own, presampled, given_moments);
+  }
   const auto n = static_cast<std::int64_t>(q.size()) - 1;
-  std::optional<PieceShape> own;
-  const PieceShape& shape = given != nullptr ? *given : own.emplace(s, a, b, zero_start, zero_end);
+  const PieceShape& shape = *given;
   const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
   const Point2 p0 = start.point + d * n0, p3 = end.point + d * n1;
   const Point2 d0 = direction * start.tangent, d3 = direction * end.tangent;
@@ -677,15 +725,18 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
     const double turning = shape.normal_second(d);
     // Between samples, |B_p'' - its linear interpolant| <= M3 h / 2 (zero when n <= 3).
     const double bend = q.size() > 4 ? 0.5 * shape.M3 : 0.0;
-    // K for a remainder within kFirstRemainder of the tolerance with |e''| estimated at the
-    // bound of |d N''| (the area and moment cubic's C'' follows B_p'' closely).
-    const int count = first_sample_count(turning, tolerance);
+    // K for a remainder within kFirstRemainder of the tolerance with |e''| estimated from
+    // the hodographs (first_sample_count).
+    const int count = first_sample_count(shape.sample_estimate(d), tolerance);
     const CubicWeights& weights = cubic_weights(count);
     if (!presampled && !sample_parallel(q, shape.h1, d, p0, p3, weights, o)) return result;
     result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
     // The candidates: the area and moment cubic nearest an arc, then the others of
     // area_moment_fit.hpp, then the least squares.
-    std::array<std::array<Point2, 4>, 6> candidates;
+    // Each candidate's handle lengths (its cubic built when it is judged), the least squares
+    // cubic, always last, apart: no array of cubics to fill at every call.
+    std::array<HandleLengths, 5> candidates;
+    std::array<Point2, 4> least_squares_cubic;
     std::size_t candidate_count = 0;
     const ChordMoments moments = given_moments != nullptr
                                      ? *given_moments
@@ -704,7 +755,7 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
       t0 = {core::dot(d0, axis), core::cross(axis, d0)};
       t3 = {core::dot(d3, axis), core::cross(axis, d3)};
       if (arc_started_handles(t0, t3, moments.area, moments.moment, arc))
-        candidates[candidate_count++] = cubic_of(arc);
+        candidates[candidate_count++] = arc;
     }
     bool searched = !moments.valid, least_squares = false;
     // The bound of offset.hpp for the cubic c on K samples of O.
@@ -730,15 +781,18 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
         for (std::size_t i = 0; i < handles.count; ++i) {
           const HandleLengths h = handles.pairs[i];
           if (std::fabs(h.start - arc.start) + std::fabs(h.end - arc.end) > 1e-9)
-            candidates[candidate_count++] = cubic_of(h);
+            candidates[candidate_count++] = h;
         }
       }
       if (tried == candidate_count) {
         if (least_squares) break;
-        candidates[candidate_count++] = fit(o, weights, true, d0, d3);
+        least_squares_cubic = fit(o, weights, true, d0, d3);
         least_squares = true;
+        ++candidate_count;
       }
-      const std::array<Point2, 4>& c = candidates[tried];
+      const std::array<Point2, 4> c = least_squares && tried + 1 == candidate_count
+                                          ? least_squares_cubic
+                                          : cubic_of(candidates[tried]);
       double largest = 0.0;
       auto [bound, second] = judge(c, o, count, largest);
       // The samples are within the tolerance and the remainder alone fails: K for the
@@ -887,6 +941,7 @@ struct FirstPiece {
   EndFrame start, end;
   double direction = 1.0;
   PieceFit fit;
+  bool zero_start = false, zero_end = false;  // |B'| below the threshold at a, at b
 };
 
 /// Fits [a, b] of the scaled curve at the scaled distance d (s.d or -s.d), splitting where
@@ -902,6 +957,16 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
     if (!budget.spend(16 * (n + 1) * (n + 1) + 64 * n * n * n)) return false;
     if (straight_interval(s, d, a, b, s.tolerance - s.margin, budget, out)) return true;
     if (budget.exhausted()) return false;
+  }
+  if (first != nullptr && first->fit.bound + s.margin <= s.tolerance) {
+    // The whole [a, b] kept at its first fit (the common case), as the loop below keeps it,
+    // without stacking it.
+    if (!budget.spend(first->fit.work + 16 * (n + 1) * (n + 1))) return false;
+    OffsetCubic cubic{a, b, {}, 0.0};
+    for (std::size_t i = 0; i < 4; ++i) cubic.points[i] = s.back.times(first->fit.cubic[i]);
+    cubic.error_bound = s.back.times(first->fit.bound + s.margin);
+    out.push_back(cubic);
+    return true;
   }
   const double direction = first != nullptr ? first->direction : travel_direction(s, d, a, b);
 
@@ -920,7 +985,8 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
   }
   ControlPoints q;
   std::vector<Point2>& samples = sample_buffer();
-  const bool zero_start = s.stationary(a), zero_end = s.stationary(b);
+  const bool zero_start = first != nullptr ? first->zero_start : s.stationary(a);
+  const bool zero_end = first != nullptr ? first->zero_end : s.stationary(b);
   while (!stack.empty()) {
     const Pending piece = stack.back();
     stack.pop_back();
@@ -979,37 +1045,40 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
   const ScaledCurve s(curve, d, tolerance);
   ControlPoints q;
   piece_into(s.points, a, b, q);
-  std::optional<PieceShape> shape;
-  const bool zero_start = s.stationary(a), zero_end = s.stationary(b);
-  if (q.size() > 2 && !s.point) shape.emplace(s, a, b, zero_start, zero_end);
-  if (!shape || !(shape->w > 0.0) || s.straight) {
-    // A line, or a piece whose fit needs no samples of its own kind: each side alone.
+  const Point2 start_velocity = s.velocity(a), end_velocity = s.velocity(b);
+  const bool zero_start = s.stationary_at(start_velocity), zero_end = s.stationary_at(end_velocity);
+  // A line, or a piece whose fit needs no samples of its own kind: each side alone.
+  auto each_side_alone = [&] {
     if (!fit_interval(s, s.d, a, b, budget, plus)) return false;
     return fit_interval(s, -s.d, a, b, budget, minus);
-  }
-  const EndFrame start = s.frame(a, a, b, true), end = s.frame(b, a, b, false);
+  };
+  if (q.size() <= 2 || s.point) return each_side_alone();
+  const PieceShape shape(s, a, b, zero_start, zero_end);
+  if (!(shape.w > 0.0) || s.straight) return each_side_alone();
+  const EndFrame start = s.frame_at(a, start_velocity, a, b, true);
+  const EndFrame end = s.frame_at(b, end_velocity, a, b, false);
   const double tolerance_left = s.tolerance - s.margin;
   // The sample count of fit_piece depends on |d| only, so both sides share it.
-  const int count = first_sample_count(shape->normal_second(s.d), tolerance_left);
+  const int count = first_sample_count(shape.sample_estimate(s.d), tolerance_left);
   const CubicWeights& weights = cubic_weights(count);
   std::vector<Point2>& plus_samples = sample_buffer();
   std::vector<Point2>& minus_samples = side_buffer();
-  const bool sampled = sample_both_sides(q, shape->h1, s.d, start, end, weights, plus_samples,
+  const bool sampled = sample_both_sides(q, shape.h1, s.d, start, end, weights, plus_samples,
                                          minus_samples);
   const std::array<double, 2> directions = travel_directions<2>(s, {s.d, -s.d}, a, b);
-  FirstPiece plus_first{start, end, directions[0], {}};
-  FirstPiece minus_first{start, end, directions[1], {}};
+  FirstPiece plus_first{start, end, directions[0], {}, zero_start, zero_end};
+  FirstPiece minus_first{start, end, directions[1], {}, zero_start, zero_end};
   // The chord moments of both sides from one evaluation of B_p, B_p', B_p'' per node; the
   // ends as fit_piece's (the samples' first and last).
   const std::array<ChordMoments, 2> moments =
-      chord_moments_of<2>(q, shape->h1, shape->h2, {s.d, -s.d},
+      chord_moments_of<2>(q, shape.h1, shape.h2, {s.d, -s.d},
                           {plus_samples.front(), minus_samples.front()},
                           {plus_samples.back(), minus_samples.back()});
   plus_first.fit = fit_piece(s, a, b, q, start, end, s.d, tolerance_left, plus_first.direction,
-                             plus_samples, zero_start, zero_end, &*shape, sampled, &moments[0]);
+                             plus_samples, zero_start, zero_end, &shape, sampled, &moments[0]);
   minus_first.fit = fit_piece(s, a, b, q, start, end, -s.d, tolerance_left,
                               minus_first.direction, minus_samples, zero_start, zero_end,
-                              &*shape, sampled,
+                              &shape, sampled,
                               &moments[1]);
   if (!fit_interval(s, s.d, a, b, budget, plus, &plus_first)) return false;
   return fit_interval(s, -s.d, a, b, budget, minus, &minus_first);

@@ -78,11 +78,14 @@ struct CurveOffset {
 /// point of its k-th hodograph: convex hull) and m <= |B_p'| (the least projection of B_p's
 /// first hodograph's control points on the direction of B_p'(1/2), when positive), the
 /// turning rate ω = cross(B_p', B_p'') / |B_p'|^2 gives N'' = -ω' T - ω^2 N, so
-///   |N''| <= |ω'| + ω^2,  |ω| <= M_1 M_2 / m^2,  |ω'| <= M_1 M_3 / m^2 + 2 M_1^2 M_2^2 / m^4.
+/// (normal_turning.hpp, θ the angle from B_p' to B_p'', φ the golden ratio)
+///   |N''| <= |ω'| + ω^2 <= M_3 / m + (|sin 2θ| + sin^2 θ) M_2^2 / m^2 <= M_3 / m + φ M_2^2 / m^2.
 /// K is chosen first for a remainder within three quarters of the tolerance with |e''|
-/// estimated at the bound of |d N''| (at least 8); where the samples are inside the
-/// tolerance and the remainder alone fails, O is sampled again at the K the remainder needs
-/// beside them.
+/// estimated at |d| (M_1 M_3 / m^2 + 3 M_1^2 M_2^2 / m^4), the bound above times M_1 / m and
+/// (M_1 / m)^2 on its terms (denser samples where the speed varies along the piece; the
+/// least squares fits on them too), at least 8; where the samples are inside the tolerance
+/// and the remainder alone fails, O is sampled again at the K the remainder needs beside
+/// them.
 /// Zeros of B' at the ends. Where an end of the interval being fitted (a cut above, or an
 /// end of offset_interval's [a, b]) has |B'| below end_tangent's threshold (1e-12 n of the
 /// control points' scale, tangent_limits.hpp: the frame there takes the limit tangent), B' is

@@ -10,6 +10,7 @@
 #include "core/outline/offset.hpp"
 #include "core/numeric/power_of_two.hpp"
 #include "core/outline/control_points.hpp"
+#include "core/outline/loose_curve.hpp"
 #include "core/outline/offset_cusps.hpp"
 #include "core/outline/stroke_shapes.hpp"
 #include "core/outline/tangent_limits.hpp"
@@ -56,22 +57,6 @@ double curvature_at(const ControlPoints& h1, const ControlPoints& h2, double t) 
   return core::cross(v, a) / (speed_squared * std::sqrt(speed_squared));
 }
 
-/// Whether R |κ| < 1 on the whole curve and B' has no zero, by segment_cover.hpp's bound.
-bool loose_everywhere(const ControlPoints& h1, const ControlPoints& h2, double reach) {
-  if (h1.empty()) return false;
-  const Point2 mid = point_at(h1, 0.5);
-  const double mid_squared = squared_length(mid);
-  if (!(mid_squared > 0.0)) return false;
-  const Point2 direction = mid / std::sqrt(mid_squared);
-  double m = std::numeric_limits<double>::infinity();
-  for (const Point2 p : h1) m = std::min(m, core::dot(p, direction));
-  if (!(m > 0.0)) return false;
-  const double M1 = std::sqrt(largest_squared_length(h1));
-  const double M2 = std::sqrt(largest_squared_length(h2));
-  // The factor covers the rounding of the few operations above.
-  return reach * M1 * M2 < (1.0 - 1e-9) * m * m * m;
-}
-
 }  // namespace
 
 CoverSizes cover_sizes(double half_width, double tolerance) {
@@ -88,12 +73,11 @@ CoverSizes cover_sizes(double half_width, double tolerance) {
 bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineSink& sink,
                    SegmentCover& out) {
   const auto n = static_cast<std::int64_t>(segment.degree());
-  out.stretches.clear();
   out.cusp_at_start = out.cusp_at_end = false;
   if (!sink.charge(16 * (n + 1) * (n + 1))) return false;
-  // The hodographs of the segment scaled by a power of two (exact): the bound's cube stays
-  // a normal double.
-  const double size = std::max(core::scale(segment), sizes.reach);
+  // The hodographs of the segment scaled by a power of two (exact): the loose bound's
+  // squares stay normal doubles.
+  const double size = std::max(largest_abs_coordinate(segment.points()), sizes.reach);
   const int e = -core::exponent_of(size);
   const core::PowerOfTwo factor(e);
   ControlPoints scaled(segment.points()), h1, h2;
@@ -103,7 +87,10 @@ bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
 
   std::vector<double> cusps[2];  // left (+R), right (-R)
   std::vector<double> stationary;
-  if (!loose_everywhere(h1, h2, factor.times(sizes.reach))) {
+  std::int64_t loose_work = 0;
+  const bool loose = loose_everywhere(h1, h2, factor.times(sizes.reach), &loose_work);
+  if (!sink.charge(loose_work)) return false;
+  if (!loose) {
     if (!sink.charge(3 * 64 * n * n * n)) return false;
     cusps[0] = offset_cusps(segment, sizes.reach);
     cusps[1] = offset_cusps(segment, -sizes.reach);
@@ -128,12 +115,18 @@ bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
   auto stretch_end = [&](std::size_t k) {
     return k == 0 ? 0.0 : k == stretch_count ? 1.0 : stationary[k - 1];
   };
+  std::size_t used = 0;  // the entries of out.stretches filled
   thread_local std::vector<OffsetCubic> cubics;
   core::Coeffs cuts;
   for (std::size_t k = 0; k < stretch_count; ++k) {
     const double a = stretch_end(k), b = stretch_end(k + 1);
     if (!(b > a)) continue;
-    StretchEdges stretch;
+    // out's entries are reused with the room of their chains (stroke.cpp keeps its covers
+    // from one stroke to the next).
+    if (used == out.stretches.size()) out.stretches.emplace_back();
+    StretchEdges& stretch = out.stretches[used++];
+    stretch.left.clear();
+    stretch.right.clear();
     stretch.start = point_at(segment.points(), a);
     stretch.end = point_at(segment.points(), b);
     // Where neither side has a cusp in (a, b) and neither is tight, both sides are the
@@ -162,7 +155,6 @@ bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
                           sizes.snap);
         }
       }
-      out.stretches.push_back(std::move(stretch));
       continue;
     }
     for (int side = 0; side < 2; ++side) {
@@ -202,8 +194,8 @@ bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineS
         if (!sink.ok()) return false;
       }
     }
-    out.stretches.push_back(std::move(stretch));
   }
+  out.stretches.resize(used);
   return sink.ok();
 }
 

@@ -57,10 +57,10 @@ struct SegmentCover {
 /// the radius of curvature ρ = 1 / |κ| equals R, offset_cusps.hpp), so that on each piece
 /// the side is either loose (ρ >= R on that side: the map (t, s) -> B(t) + s N(t) has
 /// Jacobian |B'| (1 - s κ) >= 0 for s from 0 to ±R) or tight (ρ < R, decided at the piece's
-/// middle). Where the hodograph's control points all lie in an open half-plane (B' has no
-/// zero) and R M1 M2 < m^3 (M1, M2 the largest control points of the first and second
-/// hodographs, m the least projection of the first's on the direction of B'(1/2): then
-/// |κ| <= |B'| |B''| / |B'|^3 <= M1 M2 / m^3 < 1 / R), there is neither a cusp nor a zero of
+/// middle). Where loose_everywhere (loose_curve.hpp) proves R |κ| < 1 and B' != 0 on the
+/// whole segment (R M2 < m^2 on the segment or on each of its halves, quarters or eighths: M2
+/// the largest control point of B'' there, m the least projection of B''s on the direction
+/// of B' at the part's middle, |κ| <= |B''| / |B'|^2), there is neither a cusp nor a zero of
 /// B' and both sides are loose throughout, decided without the root searches.
 ///
 /// A loose side's edge is its parallel curve at distance R (offset.hpp's offset_interval,
@@ -86,6 +86,10 @@ struct SegmentCover {
 /// next to a zero of B' (where cross(B', B'') vanishes, so neither a bound of ρ nor the
 /// tangent-disk test applies) the parts shrink geometrically to a spread of ε/2, a few disks
 /// per halving.
+///
+/// `out` is replaced: its stretches' entries are reused, with the room of their chains, for
+/// the segment's stretches in order (a caller that keeps its covers from one stroke to the
+/// next allocates no chain twice), and cut to their count.
 ///
 /// Work is charged to `sink` (de Casteljau coordinate updates), and so are the disks'
 /// segments; false when the sink stopped (a part still failing the test after 64 halvings

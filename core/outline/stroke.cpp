@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/base/curve.hpp"
+#include "core/outline/control_points.hpp"
 #include "core/outline/segment_cover.hpp"
 #include "core/outline/stroke_shapes.hpp"
 #include "core/outline/tangent_limits.hpp"
@@ -16,13 +17,14 @@ namespace {
 
 using core::Point2;
 
-/// The segments of one subpath that draw something (stroke.hpp: zero-length ones are left out).
-std::vector<std::size_t> drawn_segments(const path::Path& path, const path::Subpath& sub) {
-  std::vector<std::size_t> out;
+/// The segments of one subpath that draw something (stroke.hpp: zero-length ones are left out),
+/// into `out`.
+void drawn_segments(const path::Path& path, const path::Subpath& sub,
+                    std::vector<std::size_t>& out) {
+  out.clear();
   for (std::size_t k = sub.first_segment; k < sub.first_segment + sub.segment_count; ++k) {
     if (!core::is_point(path.segments[k])) out.push_back(k);
   }
-  return out;
 }
 
 /// Whether B' at the curve's start (at_start) or end is zero to end_tangent's threshold
@@ -30,11 +32,13 @@ std::vector<std::size_t> drawn_segments(const path::Path& path, const path::Subp
 bool stationary_end(const core::Curve& curve, bool at_start) {
   const auto p = curve.points();
   const std::size_t n = p.size() - 1;
-  const Point2 v = at_start ? p[1] - p[0] : p[n] - p[n - 1];
-  double scale = std::numeric_limits<double>::min();
-  for (const Point2 q : p) scale = std::max(scale, core::max_abs_coordinate(q));
-  return !(core::length(static_cast<double>(n) * v) >
-           1e-12 * scale * static_cast<double>(p.size()));
+  const Point2 v = static_cast<double>(n) * (at_start ? p[1] - p[0] : p[n] - p[n - 1]);
+  const double scale = largest_abs_coordinate(p, std::numeric_limits<double>::min());
+  const double threshold = 1e-12 * scale * static_cast<double>(p.size());
+  // |v| >= its largest coordinate (and so does its computed length, rounded from above it):
+  // where that coordinate passes the threshold, so does the length, without computing it.
+  if (std::max(std::fabs(v.x), std::fabs(v.y)) > threshold) return false;
+  return !(core::length(v) > threshold);
 }
 
 /// Extends an open chain by a line to `point` when its end is farther than `snap` from it.
@@ -122,8 +126,20 @@ StrokeOutline stroke(const path::Path& path, const StrokeStyle& style, double to
   const bool round_join = style.join == LineJoin::round;
 
   // The covers of the drawn segments, each segment's once (a closed subpath's first segment
-  // is needed again at its closing joint).
-  std::vector<SegmentCover> covers(path.segments.size());
+  // is needed again at its closing joint). One buffer per thread, kept from stroke to stroke
+  // with the room of its stretches' chains (cover_segment reuses them), up to a size.
+  thread_local std::vector<SegmentCover> cover_buffer;
+  constexpr std::size_t kKeptCovers = 4096;
+  if (cover_buffer.size() < path.segments.size()) cover_buffer.resize(path.segments.size());
+  struct Trim {
+    ~Trim() {
+      if (cover_buffer.size() > kKeptCovers) {
+        cover_buffer.resize(kKeptCovers);
+        cover_buffer.shrink_to_fit();
+      }
+    }
+  } trim;
+  std::vector<SegmentCover>& covers = cover_buffer;
 
   // Whether the joint from segment `in` to segment `out` is smooth (stroke.hpp): the
   // directions there agree to within the snap's angle, B' does not vanish at either side,
@@ -159,8 +175,11 @@ StrokeOutline stroke(const path::Path& path, const StrokeStyle& style, double to
                                : style.cap == LineCap::square ? 4
                                                               : 0;
 
+  // Per subpath, reused from one to the next.
+  std::vector<std::size_t> drawn;
+  std::vector<char> smooth;
   for (const path::Subpath& sub : path.subpaths) {
-    const std::vector<std::size_t> drawn = drawn_segments(path, sub);
+    drawn_segments(path, sub, drawn);
     if (!sink.charge(static_cast<std::int64_t>(sub.segment_count) * 16)) break;
     if (drawn.empty()) {
       if (!sink.reserve(2 * cap_size)) break;
@@ -176,7 +195,7 @@ StrokeOutline stroke(const path::Path& path, const StrokeStyle& style, double to
 
     // Joint j is before drawn[j]; joint 0 is the closing joint of a closed subpath.
     const std::size_t m = drawn.size();
-    std::vector<char> smooth(m, 0);
+    smooth.assign(m, 0);
     std::size_t joins = 0;
     for (std::size_t j = 0; j < m; ++j) {
       if (j == 0 && !sub.closed) continue;
@@ -199,6 +218,9 @@ StrokeOutline stroke(const path::Path& path, const StrokeStyle& style, double to
       std::size_t right_to_end = 0, left_to_end = 0;
     };
     std::vector<Step> steps;
+    std::size_t stretch_count = 0;
+    for (std::size_t j = 0; j < m; ++j) stretch_count += covers[drawn[j]].stretches.size();
+    steps.reserve(stretch_count);
     for (std::size_t j = 0; j < m; ++j) {
       std::vector<StretchEdges>& stretches = covers[drawn[j]].stretches;
       for (std::size_t i = 0; i < stretches.size(); ++i) {

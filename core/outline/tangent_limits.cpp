@@ -17,9 +17,7 @@ using core::Point2;
 
 /// The largest absolute coordinate of the control points (at least the least normal double).
 double control_scale(std::span<const Point2> p) {
-  double s = std::numeric_limits<double>::min();
-  for (const Point2 q : p) s = std::max(s, core::max_abs_coordinate(q));
-  return s;
+  return largest_abs_coordinate(p, std::numeric_limits<double>::min());
 }
 
 }  // namespace
