@@ -163,6 +163,7 @@ PathSelfIntersectionResult unsorted_self_intersections(const Path& path,
   const SegmentFacts facts = segment_facts(path);
   const auto swept = swept_pairs(budget, [&] { return meeting_boxes(facts.boxes, budget); });
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  pairs.reserve(swept.size());
   for (const auto& [i, j] : swept) {
     if (facts.point[i] != 0 || facts.point[j] != 0) continue;
     // The copy is charged as the sweep's pairs are.

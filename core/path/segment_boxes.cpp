@@ -185,21 +185,31 @@ std::optional<PlainFindings> plain_sweep_findings(const std::vector<Entry>& entr
   PlainFindings found;
   found.compared.resize(entries.size());
   found.pairs_end.resize(entries.size());
+  // Boxes that follow each other along a path meet, so there are usually about as many pairs
+  // as boxes: room for that many (never more than may be kept) from the start.
+  found.pairs.reserve(std::min(entries.size(), most_kept));
   std::vector<OpenEntry> open[2];
   std::int64_t compared = 0;
   std::size_t pairs = 0;
   for (std::size_t k = 0; k < entries.size(); ++k) {
     const Entry& e = entries[k];
     std::vector<OpenEntry>& other = open[other_set(sets, e.set)];
-    std::size_t kept = 0;
-    for (const OpenEntry& o : other) {
-      if (o.max_x < e.box.min.x) continue;
+    // A dropped box takes the last open box's place (no order is kept among the open boxes:
+    // the pairs are sorted at the end, and when the memory budget cuts the list short the
+    // sweep's pairs are not used at all).
+    for (std::size_t l = 0; l < other.size();) {
+      const OpenEntry& o = other[l];
+      if (o.max_x < e.box.min.x) {
+        other[l] = other.back();
+        other.pop_back();
+        continue;
+      }
       if (e.box.min.y <= o.max_y && o.min_y <= e.box.max.y && pairs++ < most_kept) {
         found.pairs.push_back(oriented_pair(sets, e, entries[o.entry]));
       }
-      other[kept++] = o;
+      ++l;
     }
-    other.resize(kept);
+    const std::size_t kept = other.size();
     compared += static_cast<std::int64_t>(kept);
     if (compared > most_compared) return std::nullopt;
     found.compared[k] = kept;

@@ -195,7 +195,11 @@ Clusters close_events(const std::vector<Event>& events,
     }
     by_x.emplace_back(events[i].point.x, i);
   }
-  std::sort(by_x.begin(), by_x.end());
+  // By x, then index: the pairs' own order, compared directly (finite coordinates: no NaN)
+  // rather than through the three-way comparison std::pair's operator< goes through.
+  std::sort(by_x.begin(), by_x.end(), [](const auto& p, const auto& q) {
+    return p.first < q.first || (p.first == q.first && p.second < q.second);
+  });
   for (std::size_t k = 0; k < by_x.size(); ++k) {
     const Event& e = events[by_x[k].second];
     for (std::size_t l = k + 1; l < by_x.size(); ++l) {

@@ -170,14 +170,24 @@ bool charge_skipped(const Arrangement& arrangement, const SideWindingIndex& inde
   return true;
 }
 
-/// The first nonzero derivative of the curve at t (its tangent direction there).
-Point2 tangent_at(const core::Curve& curve, double t) {
+/// The first nonzero derivative of the curve at t (its tangent direction there), given the
+/// first derivative there (derivatives_at(curve, t, 1)[0]: the first of the derivatives of any
+/// order derivatives_at lists, the same double either way); the higher ones are computed only
+/// when it is zero.
+Point2 tangent_at(const core::Curve& curve, double t, Point2 first) {
+  if (first.x != 0.0 || first.y != 0.0) return first;
   const std::vector<Point2> d = core::derivatives_at(curve, t, curve.degree());
   for (const Point2 v : d) {
     if (v.x != 0.0 || v.y != 0.0) return v;
   }
   return curve.back() - curve.front();
 }
+
+/// A parameter of a curve and the curve's first derivative there.
+struct ParameterAndSpeed {
+  double t = 0.5;
+  Point2 first;
+};
 
 /// The parameter of `curve` the rays start from: its middle, or else the first of a few
 /// other parameters where the curve moves at a speed that is not small against its control
@@ -187,7 +197,8 @@ Point2 tangent_at(const core::Curve& curve, double t) {
 /// that face's twice over. Near one, the tangent's direction is lost to rounding. A
 /// polynomial curve's speed is small near at most a few parameters, so one of these is
 /// clear of them unless the curve is a point.
-double ray_origin_parameter(const core::Curve& curve) {
+/// Returned with the first derivative there, which the caller needs too.
+ParameterAndSpeed ray_origin_parameter(const core::Curve& curve) {
   const int n = curve.degree();
   const auto pts = curve.points();
   double leg = 0.0;
@@ -196,10 +207,13 @@ double ray_origin_parameter(const core::Curve& curve) {
         leg, core::length(pts[static_cast<std::size_t>(i) + 1] - pts[static_cast<std::size_t>(i)]));
   }
   const double slow = 0x1p-20 * n * leg;
+  ParameterAndSpeed middle;
   for (const double t : {0.5, 0.3183, 0.6817, 0.1887, 0.8113}) {
-    if (core::length(core::derivatives_at(curve, t, 1)[0]) > slow) return t;
+    const Point2 first = core::derivatives_at(curve, t, 1)[0];
+    if (t == 0.5) middle.first = first;
+    if (core::length(first) > slow) return {t, first};
   }
-  return 0.5;
+  return middle;
 }
 
 }  // namespace
@@ -233,10 +247,10 @@ SideWindingResult side_windings(const Arrangement& arrangement, const SideWindin
   std::vector<std::size_t> candidates;
   const CoincidentGroup& g = arrangement.groups[group];
   const ArrangementEdge& rep = arrangement.edges[g.representative];
-  const double origin_t = ray_origin_parameter(rep.exact());
-  const core::Split<Point2> halves = core::subdivide(rep.exact(), origin_t);
+  const ParameterAndSpeed origin = ray_origin_parameter(rep.exact());
+  const core::Split<Point2> halves = core::subdivide(rep.exact(), origin.t);
   const Point2 middle = halves.left.back();
-  const Point2 tangent = tangent_at(rep.exact(), origin_t);
+  const Point2 tangent = tangent_at(rep.exact(), origin.t, origin.first);
   const double norm = core::length(tangent);
   if (!(norm > 0.0)) {
     result.status = SideWindingStatus::unclear;
