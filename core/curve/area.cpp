@@ -121,8 +121,15 @@ double enclosed_area(std::span<const Point2> points) {
   // Differences and their cross products overflow beyond about 2^510 (underflow below
   // 2^-510) even when the area itself is representable: scale such input by a power of two
   // (exact) and the area back by its square; an area beyond the double range is then +-inf.
-  double largest = 0.0;
-  for (const Point2 p : points) largest = std::max(largest, std::max(std::fabs(p.x), std::fabs(p.y)));
+  // A cubic's four points with a fixed extent (the loop unrolls), the same maximum.
+  const auto largest_of = [](auto fixed_points) {
+    double largest = 0.0;
+    for (const Point2 p : fixed_points) {
+      largest = std::max(largest, std::max(std::fabs(p.x), std::fabs(p.y)));
+    }
+    return largest;
+  };
+  const double largest = points.size() == 4 ? largest_of(points.first<4>()) : largest_of(points);
   if (largest == 0.0 || (0x1p-400 <= largest && largest <= 0x1p400)) {
     return enclosed_area_as_given(points);
   }

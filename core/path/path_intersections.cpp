@@ -138,8 +138,11 @@ SegmentFacts segment_facts(const Path& path) {
   facts.boxes.reserve(n);
   facts.point.reserve(n);
   for (const core::Curve& segment : path.segments) {
-    facts.boxes.push_back(control_box(segment));
-    facts.point.push_back(core::is_point(segment) ? 1 : 0);
+    const core::Rect box = control_box(segment);
+    facts.boxes.push_back(box);
+    // core::is_point read off the box: every control point equal to the first (by value)
+    // exactly when each coordinate's least and greatest value are equal (finite coordinates).
+    facts.point.push_back(box.min == box.max ? 1 : 0);
   }
   // next_segment, subpath by subpath: the following segment, and for a closed subpath of
   // more than one segment its first after its last.

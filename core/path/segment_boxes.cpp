@@ -9,6 +9,8 @@
 #include <queue>
 #include <tuple>
 
+#include "core/base/sort_by_key.hpp"
+
 namespace bezier::path {
 
 namespace {
@@ -325,9 +327,7 @@ MeetingBoxes sweep(const std::vector<Entry>& unsorted, int sets, core::WorkBudge
   // positions break ties in min.x; sorting small keys and gathering once moves less.
   std::vector<std::pair<double, std::size_t>> keys(n);
   for (std::size_t k = 0; k < n; ++k) keys[k] = {unsorted[k].box.min.x, k};
-  std::sort(keys.begin(), keys.end(), [](const auto& p, const auto& q) {
-    return p.first < q.first || (!(q.first < p.first) && p.second < q.second);
-  });
+  core::sort_by_key_then_index(keys);
   std::vector<Entry> entries(n);
   std::size_t first_indices = 0;  // the first index of a pair is below this
   for (std::size_t k = 0; k < n; ++k) {

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/base/curve.hpp"
+#include "core/base/sort_by_key.hpp"
 #include "core/curve/derivative.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/intersect/options.hpp"
@@ -195,11 +196,8 @@ Clusters close_events(const std::vector<Event>& events,
     }
     by_x.emplace_back(events[i].point.x, i);
   }
-  // By x, then index: the pairs' own order, compared directly (finite coordinates: no NaN)
-  // rather than through the three-way comparison std::pair's operator< goes through.
-  std::sort(by_x.begin(), by_x.end(), [](const auto& p, const auto& q) {
-    return p.first < q.first || (p.first == q.first && p.second < q.second);
-  });
+  // By x, then index (finite coordinates: the order std::sort of the pairs gives).
+  core::sort_by_key_then_index(by_x);
   for (std::size_t k = 0; k < by_x.size(); ++k) {
     const Event& e = events[by_x[k].second];
     for (std::size_t l = k + 1; l < by_x.size(); ++l) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <algorithm>
+#include <span>
 #include <utility>
 
 #include "core/base/curve.hpp"
@@ -21,9 +22,14 @@ namespace bezier::region {
 /// core::portion. Checked against core::portion in tests/core/region/segment_piece_test.cpp.
 [[nodiscard]] inline bool segment_piece_is_segment(const core::Curve& segment, double t0,
                                                    double t1) {
-  return t0 == 0.0 && t1 == 1.0 &&
-         std::none_of(segment.points().begin(), segment.points().end(),
-                      [](core::Point2 p) { return p.x == 0.0 || p.y == 0.0; });
+  if (!(t0 == 0.0 && t1 == 1.0)) return false;
+  const std::span<const core::Point2> points = segment.points();
+  const auto has_zero = [](core::Point2 p) { return p.x == 0.0 || p.y == 0.0; };
+  // A cubic's four points tested at once (no early exit to branch on); other degrees in turn.
+  if (points.size() == 4) {
+    return !(has_zero(points[0]) | has_zero(points[1]) | has_zero(points[2]) | has_zero(points[3]));
+  }
+  return std::none_of(points.begin(), points.end(), has_zero);
 }
 
 [[nodiscard]] inline core::Curve segment_piece(const core::Curve& segment, double t0, double t1) {
