@@ -229,7 +229,6 @@ VertexAssignment assign_vertices(const std::vector<Event>& events, Clusters& clu
   VertexAssignment assigned;
   std::vector<std::size_t>& vertex_of = assigned.vertex_of;
   std::vector<double>& vertex_radius = assigned.vertex_radius;
-  std::vector<std::size_t> vertex_of_root(events.size(), SIZE_MAX);
   vertex_of.resize(events.size());
   std::vector<char> from_end;  // bytes, not bits: read and written once per event
   // At most one vertex per event.
@@ -237,14 +236,17 @@ VertexAssignment assign_vertices(const std::vector<Event>& events, Clusters& clu
   vertex_radius.reserve(events.size());
   from_end.reserve(events.size());
   for (std::size_t e = 0; e < events.size(); ++e) {
+    // A cluster's root is its least event (Clusters::join keeps the lower root), so it is
+    // the cluster's first event here: it opens the vertex, and every later event of the
+    // cluster finds the vertex at vertex_of[root].
     const std::size_t root = clusters.find(e);
-    if (vertex_of_root[root] == SIZE_MAX) {
-      vertex_of_root[root] = vertices.size();
+    if (root == e) {
+      vertex_of[e] = vertices.size();
       vertices.push_back(events[e].point);
       from_end.push_back(events[e].segment_end ? 1 : 0);
       vertex_radius.push_back(events[e].radius);
     }
-    const std::size_t v = vertex_of_root[root];
+    const std::size_t v = vertex_of[root];
     vertex_of[e] = v;
     vertex_radius[v] = std::max(vertex_radius[v], events[e].radius);
     if (events[e].segment_end && !from_end[v]) {
@@ -489,16 +491,18 @@ void join_thin_lenses(const Arrangement& arrangement, Clusters& groups) {
 /// each is its representative), each edge's group, and each group's multiplicity per
 /// operand (+1 for a member along the representative, -1 against it).
 void number_groups(Clusters& groups, Arrangement& arrangement) {
-  std::vector<std::size_t> group_of_root(arrangement.edges.size(), SIZE_MAX);
   arrangement.groups.reserve(arrangement.edges.size());  // at most one group per edge
   for (std::size_t e = 0; e < arrangement.edges.size(); ++e) {
+    // A root is its cluster's least edge (Clusters::join keeps the lower root): the first of
+    // its group here, which opens the group; the later ones read it off the root's edge.
     const std::size_t root = groups.find(e);
-    if (group_of_root[root] == SIZE_MAX) {
-      group_of_root[root] = arrangement.groups.size();
+    if (root == e) {
+      arrangement.edges[e].group = arrangement.groups.size();
       arrangement.groups.push_back({e, 0, 0, {0, 0}});
     }
-    arrangement.edges[e].group = group_of_root[root];
-    ++arrangement.groups[group_of_root[root]].member_count;
+    const std::size_t group = arrangement.edges[root].group;
+    arrangement.edges[e].group = group;
+    ++arrangement.groups[group].member_count;
     // Edges are in segment order, a before b: the group's first edge of a comes first.
   }
   // Each group's edges in one list, group by group, each group's in edge order.
