@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cmath>
 #include <numeric>
+#include <span>
 #include <tuple>
 #include <utility>
 
@@ -542,11 +543,20 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, core::Wo
   // The largest core::scale of the segments, by comparisons rather than library fmax calls:
   // for finite coordinates (the precondition) both give the same largest |coordinate|.
   double scale = 0.0;
-  for (const core::Curve& s : all.segments) {
-    for (const Point2 p : s.points()) {
+  const auto include = [&](auto points) {
+    for (const Point2 p : points) {
       const double x = std::fabs(p.x), y = std::fabs(p.y);
       if (x > scale) scale = x;
       if (y > scale) scale = y;
+    }
+  };
+  for (const core::Curve& s : all.segments) {
+    // A cubic's four points with a fixed extent (the loop unrolls); the same comparisons.
+    const std::span<const Point2> points = s.points();
+    if (points.size() == 4) {
+      include(points.first<4>());
+    } else {
+      include(points);
     }
   }
   out.scale = scale > 0.0 ? scale : 1.0;
