@@ -45,7 +45,7 @@ const double* tabled_weights(int n) {
 
 /// enclosed_area_as_given for a cubic: the same weights (the table's), products and sums in
 /// the same order, so the same double; written out, without the general loops.
-double cubic_enclosed_area_as_given(std::span<const Point2, 4> points) {
+inline double cubic_enclosed_area_as_given(std::span<const Point2, 4> points) {
   static const double* const weight = tabled_weights(3);
   const Point2 origin = points[0];
   const Point2 p1 = points[1] - origin, p2 = points[2] - origin, p3 = points[3] - origin;
@@ -129,9 +129,10 @@ double enclosed_area(std::span<const Point2> points) {
     }
     return largest;
   };
-  const double largest = points.size() == 4 ? largest_of(points.first<4>()) : largest_of(points);
+  const bool cubic = points.size() == 4;
+  const double largest = cubic ? largest_of(points.first<4>()) : largest_of(points);
   if (largest == 0.0 || (0x1p-400 <= largest && largest <= 0x1p400)) {
-    return enclosed_area_as_given(points);
+    return cubic ? cubic_enclosed_area_as_given(points.first<4>()) : enclosed_area_as_given(points);
   }
   const int k = -exponent_of(largest);
   return std::ldexp(enclosed_area_as_given(scaled_by_power_of_two(points, k)), -2 * k);
