@@ -163,11 +163,13 @@ struct OpenEntry {
   std::size_t entry;
 };
 
-/// What the plain sweep found before anything is charged: per box (in sweep order) the open
-/// boxes of the other set it was compared with and the number of pairs found up to and
-/// including its own; the pairs themselves, up to a number that the memory budget can
-/// certainly not pass.
+/// What the plain sweep found before anything is charged: the open boxes of the other set
+/// compared with, and the pairs found, in all and (when asked for) per box in sweep order,
+/// the pair count up to and including each box's own; the pairs themselves, up to a number
+/// that the memory budget can certainly not pass.
 struct PlainFindings {
+  std::int64_t compared_total = 0;
+  std::size_t pair_count = 0;
   std::vector<std::size_t> compared;
   std::vector<std::size_t> pairs_end;
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
@@ -180,13 +182,16 @@ struct PlainFindings {
 /// it in the order whose x ranges hold its min.x, so their count summed over the boxes is
 /// the number of x-overlapping pairs: nullopt (nothing charged) as soon as that passes
 /// `most_compared`. Only the first `most_kept` pairs are kept (the memory budget refuses
-/// the later ones), so what it holds uncharged stays within that budget.
+/// the later ones), so what it holds uncharged stays within that budget. The counts per box
+/// are kept only `per_box`.
 std::optional<PlainFindings> plain_sweep_findings(const std::vector<Entry>& entries, int sets,
                                                   std::int64_t most_compared,
-                                                  std::size_t most_kept) {
+                                                  std::size_t most_kept, bool per_box) {
   PlainFindings found;
-  found.compared.resize(entries.size());
-  found.pairs_end.resize(entries.size());
+  if (per_box) {
+    found.compared.resize(entries.size());
+    found.pairs_end.resize(entries.size());
+  }
   // Boxes that follow each other along a path meet, so there are usually about as many pairs
   // as boxes: room for that many (never more than may be kept) from the start.
   found.pairs.reserve(std::min(entries.size(), most_kept));
@@ -214,10 +219,14 @@ std::optional<PlainFindings> plain_sweep_findings(const std::vector<Entry>& entr
     const std::size_t kept = other.size();
     compared += static_cast<std::int64_t>(kept);
     if (compared > most_compared) return std::nullopt;
-    found.compared[k] = kept;
-    found.pairs_end[k] = pairs;
+    if (per_box) {
+      found.compared[k] = kept;
+      found.pairs_end[k] = pairs;
+    }
     open[sets == 1 ? 0 : e.set].push_back({e.box.max.x, e.box.min.y, e.box.max.y, k});
   }
+  found.compared_total = compared;
+  found.pair_count = pairs;
   return found;
 }
 
@@ -338,10 +347,25 @@ MeetingBoxes sweep(const std::vector<Entry>& unsorted, int sets, core::WorkBudge
   // The pairs a plain sweep can store: the memory budget refuses the one after these.
   const std::size_t most_kept = static_cast<std::size_t>(
       std::max<std::int64_t>(budget.memory_limit() - budget.memory(), 0) / kStoredPairBytes);
-  if (auto found = plain_sweep_findings(
-          entries, sets, kPlainSweepPairsPerBoxAndLog * static_cast<std::int64_t>(n) * log_n,
-          most_kept)) {
-    charge_plain_sweep(std::move(*found), n, budget, out);
+  const std::int64_t most_compared =
+      kPlainSweepPairsPerBoxAndLog * static_cast<std::int64_t>(n) * log_n;
+  if (auto found = plain_sweep_findings(entries, sets, most_compared, most_kept, false)) {
+    // What charge_plain_sweep charges box by box, summed: when the budget covers the sum,
+    // no charge on the way passes a limit (they only add), so charging the sums at once
+    // leaves the budget as charging them in turn would, with every pair stored. Otherwise
+    // the sweep runs again (the same findings) with its counts per box, charged in turn.
+    const std::int64_t work = found->compared_total + static_cast<std::int64_t>(n) +
+                              static_cast<std::int64_t>(found->pair_count) * 2 * log_n;
+    const std::int64_t memory = static_cast<std::int64_t>(found->pair_count) * kStoredPairBytes;
+    if (found->pair_count <= most_kept && work <= budget.remaining() &&
+        memory <= budget.memory_limit() - budget.memory()) {
+      budget.charge(work);
+      (void)budget.charge_memory(memory);
+      out.pairs = std::move(found->pairs);
+    } else {
+      auto per_box = plain_sweep_findings(entries, sets, most_compared, most_kept, true);
+      charge_plain_sweep(std::move(*per_box), n, budget, out);
+    }
   } else {
     budget.charge(sort_work(2 * n));
     tree_sweep(entries, sets, budget, out);
