@@ -192,10 +192,14 @@ std::optional<PlainFindings> plain_sweep_findings(const std::vector<Entry>& entr
     found.compared.resize(entries.size());
     found.pairs_end.resize(entries.size());
   }
-  // Boxes that follow each other along a path meet, so there are usually about as many pairs
-  // as boxes: room for that many (never more than may be kept) from the start.
-  found.pairs.reserve(std::min(entries.size(), most_kept));
+  // Boxes that follow each other along a path meet, so there are usually a little more pairs
+  // than boxes: room for that many (never more than may be kept) from the start.
+  found.pairs.reserve(std::min(entries.size() + entries.size() / 4 + 8, most_kept));
   std::vector<OpenEntry> open[2];
+  // Few boxes are open at once along a path; room for a few dozen saves the first growths.
+  for (int set = 0; set < sets; ++set) {
+    open[set].reserve(std::min<std::size_t>(entries.size(), 32));
+  }
   std::int64_t compared = 0;
   std::size_t pairs = 0;
   for (std::size_t k = 0; k < entries.size(); ++k) {
