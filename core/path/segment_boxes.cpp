@@ -195,7 +195,10 @@ std::optional<PlainFindings> plain_sweep_findings(const std::vector<Entry>& entr
   // Boxes that follow each other along a path meet, so there are usually a little more pairs
   // than boxes: room for that many (never more than may be kept) from the start.
   found.pairs.reserve(std::min(entries.size() + entries.size() / 4 + 8, most_kept));
+  // The open boxes of each set: the first open_count[set] entries of open[set] (the vector
+  // only grows; the dropped boxes' places are reused).
   std::vector<OpenEntry> open[2];
+  std::size_t open_count[2] = {0, 0};
   // Few boxes are open at once along a path; room for a few dozen saves the first growths.
   for (int set = 0; set < sets; ++set) {
     open[set].reserve(std::min<std::size_t>(entries.size(), 32));
@@ -204,30 +207,38 @@ std::optional<PlainFindings> plain_sweep_findings(const std::vector<Entry>& entr
   std::size_t pairs = 0;
   for (std::size_t k = 0; k < entries.size(); ++k) {
     const Entry& e = entries[k];
-    std::vector<OpenEntry>& other = open[other_set(sets, e.set)];
+    const std::size_t other = other_set(sets, e.set);
     // A dropped box takes the last open box's place (no order is kept among the open boxes:
     // the pairs are sorted at the end, and when the memory budget cuts the list short the
-    // sweep's pairs are not used at all).
-    for (std::size_t l = 0; l < other.size();) {
-      const OpenEntry& o = other[l];
-      if (o.max_x < e.box.min.x) {
-        other[l] = other.back();
-        other.pop_back();
+    // sweep's pairs are not used at all). Walked through a pointer and a count held here
+    // (storing a pair leaves the list alone).
+    OpenEntry* const list = open[other].data();
+    std::size_t kept = open_count[other];
+    for (std::size_t l = 0; l < kept;) {
+      if (list[l].max_x < e.box.min.x) {
+        list[l] = list[--kept];
         continue;
       }
-      if (e.box.min.y <= o.max_y && o.min_y <= e.box.max.y && pairs++ < most_kept) {
-        found.pairs.push_back(oriented_pair(sets, e, entries[o.entry]));
+      if (e.box.min.y <= list[l].max_y && list[l].min_y <= e.box.max.y && pairs++ < most_kept) {
+        found.pairs.push_back(oriented_pair(sets, e, entries[list[l].entry]));
       }
       ++l;
     }
-    const std::size_t kept = other.size();
+    open_count[other] = kept;
     compared += static_cast<std::int64_t>(kept);
     if (compared > most_compared) return std::nullopt;
     if (per_box) {
       found.compared[k] = kept;
       found.pairs_end[k] = pairs;
     }
-    open[sets == 1 ? 0 : e.set].push_back({e.box.max.x, e.box.min.y, e.box.max.y, k});
+    const std::size_t mine = sets == 1 ? 0 : static_cast<std::size_t>(e.set);
+    const OpenEntry opened{e.box.max.x, e.box.min.y, e.box.max.y, k};
+    if (open_count[mine] < open[mine].size()) {
+      open[mine][open_count[mine]] = opened;
+    } else {
+      open[mine].push_back(opened);
+    }
+    ++open_count[mine];
   }
   found.compared_total = compared;
   found.pair_count = pairs;
