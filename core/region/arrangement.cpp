@@ -230,31 +230,41 @@ VertexAssignment assign_vertices(const std::vector<Event>& events, Clusters& clu
   VertexAssignment assigned;
   std::vector<std::size_t>& vertex_of = assigned.vertex_of;
   std::vector<double>& vertex_radius = assigned.vertex_radius;
-  vertex_of.resize(events.size());
-  std::vector<char> from_end;  // bytes, not bits: read and written once per event
-  // At most one vertex per event.
-  vertices.reserve(events.size());
-  vertex_radius.reserve(events.size());
-  from_end.reserve(events.size());
-  for (std::size_t e = 0; e < events.size(); ++e) {
+  const std::size_t n = events.size();
+  // At most one vertex per event: room for that many, written in place, cut to the count.
+  const std::size_t first_vertex = vertices.size();
+  vertex_of.resize(n);
+  vertices.resize(first_vertex + n);
+  vertex_radius.resize(n);
+  std::vector<char> from_end(n);  // bytes, not bits: read and written once per event
+  std::size_t* const vertex_of_event = vertex_of.data();
+  Point2* const point = vertices.data() + first_vertex;
+  double* const radius = vertex_radius.data();
+  std::size_t count = 0;
+  for (std::size_t e = 0; e < n; ++e) {
+    const Event& event = events[e];
     // A cluster's root is its least event (Clusters::join keeps the lower root), so it is
     // the cluster's first event here: it opens the vertex, and every later event of the
     // cluster finds the vertex at vertex_of[root].
     const std::size_t root = clusters.find(e);
     if (root == e) {
-      vertex_of[e] = vertices.size();
-      vertices.push_back(events[e].point);
-      from_end.push_back(events[e].segment_end ? 1 : 0);
-      vertex_radius.push_back(events[e].radius);
+      vertex_of_event[e] = first_vertex + count;
+      point[count] = event.point;
+      from_end[count] = event.segment_end ? 1 : 0;
+      radius[count] = event.radius;
+      ++count;
     }
-    const std::size_t v = vertex_of[root];
-    vertex_of[e] = v;
-    vertex_radius[v] = std::max(vertex_radius[v], events[e].radius);
-    if (events[e].segment_end && !from_end[v]) {
-      vertices[v] = events[e].point;
-      from_end[v] = 1;
+    const std::size_t v = vertex_of_event[root];
+    vertex_of_event[e] = v;
+    const std::size_t k = v - first_vertex;
+    radius[k] = std::max(radius[k], event.radius);
+    if (event.segment_end && !from_end[k]) {
+      point[k] = event.point;
+      from_end[k] = 1;
     }
   }
+  vertices.resize(first_vertex + count);
+  vertex_radius.resize(count);
 
   return assigned;
 }

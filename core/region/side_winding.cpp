@@ -220,23 +220,31 @@ ParameterAndSpeed ray_origin_parameter(const core::Curve& curve) {
 
 SideWindingIndex::SideWindingIndex(const Arrangement& arrangement)
     : prune(arrangement.scale <= kPruneScaleLimit) {
-  boxes.reserve(arrangement.edges.size());
-  pass_cost_before.reserve(arrangement.edges.size() + 1);
-  pass_cost_before.push_back(0);
-  for (const ArrangementEdge& edge : arrangement.edges) {
-    boxes.push_back(control_point_box(edge.piece));
-    pass_cost_before.push_back(pass_cost_before.back() + edge.piece.degree() + 1);
+  // Sized once and written in place (the loops keep their running values in registers).
+  const std::size_t edge_count = arrangement.edges.size();
+  boxes.resize(edge_count);
+  pass_cost_before.resize(edge_count + 1);
+  EdgeBox* const box = boxes.data();
+  std::int64_t* const cost = pass_cost_before.data();
+  std::int64_t running = 0;
+  cost[0] = 0;
+  for (std::size_t e = 0; e < edge_count; ++e) {
+    const core::Curve& piece = arrangement.edges[e].piece;
+    box[e] = control_point_box(piece);
+    running += piece.degree() + 1;
+    cost[e + 1] = running;
   }
-  block_boxes.reserve((boxes.size() + kBlockEdges - 1) / kBlockEdges);
-  for (std::size_t first = 0; first < boxes.size(); first += kBlockEdges) {
-    EdgeBox block = boxes[first];
-    for (std::size_t e = first + 1; e < std::min(boxes.size(), first + kBlockEdges); ++e) {
-      block.x_lo = std::min(block.x_lo, boxes[e].x_lo);
-      block.x_hi = std::max(block.x_hi, boxes[e].x_hi);
-      block.y_lo = std::min(block.y_lo, boxes[e].y_lo);
-      block.y_hi = std::max(block.y_hi, boxes[e].y_hi);
+  block_boxes.resize((edge_count + kBlockEdges - 1) / kBlockEdges);
+  for (std::size_t b = 0; b < block_boxes.size(); ++b) {
+    const std::size_t first = b * kBlockEdges;
+    EdgeBox block = box[first];
+    for (std::size_t e = first + 1; e < std::min(edge_count, first + kBlockEdges); ++e) {
+      block.x_lo = std::min(block.x_lo, box[e].x_lo);
+      block.x_hi = std::max(block.x_hi, box[e].x_hi);
+      block.y_lo = std::min(block.y_lo, box[e].y_lo);
+      block.y_hi = std::max(block.y_hi, box[e].y_hi);
     }
-    block_boxes.push_back(block);
+    block_boxes[b] = block;
   }
 }
 
