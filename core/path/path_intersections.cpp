@@ -135,14 +135,16 @@ struct SegmentFacts {
 SegmentFacts segment_facts(const Path& path) {
   const std::size_t n = path.segments.size();
   SegmentFacts facts;
-  facts.boxes.reserve(n);
-  facts.point.reserve(n);
-  for (const core::Curve& segment : path.segments) {
-    const core::Rect box = control_box(segment);
-    facts.boxes.push_back(box);
+  facts.boxes.resize(n);
+  facts.point.resize(n);
+  core::Rect* const boxes = facts.boxes.data();
+  char* const point = facts.point.data();
+  for (std::size_t k = 0; k < n; ++k) {
+    const core::Rect box = control_box(path.segments[k]);
+    boxes[k] = box;
     // core::is_point read off the box: every control point equal to the first (by value)
     // exactly when each coordinate's least and greatest value are equal (finite coordinates).
-    facts.point.push_back(box.min == box.max ? 1 : 0);
+    point[k] = box.min == box.max ? 1 : 0;
   }
   // next_segment, subpath by subpath: the following segment, and for a closed subpath of
   // more than one segment its first after its last.

@@ -187,23 +187,26 @@ Clusters close_events(const std::vector<Event>& events,
   // The swept events by x (ties by index), each with its x beside it so that the sort
   // compares in place. Which pairs are joined, and so the clusters, do not depend on the
   // order of ties: each pair within reach is met from whichever of its two comes first.
-  std::vector<std::pair<double, std::size_t>> by_x;
-  by_x.reserve(events.size());
+  std::vector<std::pair<double, std::size_t>> by_x(events.size());
+  std::size_t swept = 0;
   for (std::size_t i = 0; i < events.size(); ++i) {
     if (i > 0 && events[i].point == events[i - 1].point &&
         events[i].radius == events[i - 1].radius) {
       clusters.join(i - 1, i);
       continue;
     }
-    by_x.emplace_back(events[i].point.x, i);
+    by_x[swept++] = {events[i].point.x, i};
   }
+  by_x.resize(swept);
   // By x, then index (finite coordinates: the order std::sort of the pairs gives).
   core::sort_by_key_then_index(by_x);
   for (std::size_t k = 0; k < by_x.size(); ++k) {
     const Event& e = events[by_x[k].second];
+    // by_x holds each event's x as it is: f.point.x - e.point.x read from it.
+    const double x = by_x[k].first, farthest = e.radius + max_radius;
     for (std::size_t l = k + 1; l < by_x.size(); ++l) {
+      if (by_x[l].first - x > farthest) break;
       const Event& f = events[by_x[l].second];
-      if (f.point.x - e.point.x > e.radius + max_radius) break;
       const double reach = e.radius + f.radius;
       const Point2 d = f.point - e.point;
       // A zero difference is within every reach (radii are not negative) without hypot.
