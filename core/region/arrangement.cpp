@@ -133,10 +133,11 @@ ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersec
   // Segment ends first (so that a vertex holding one takes its point), then contacts.
   events.reserve(2 * all.segments.size() + 2 * found.intersections.size() +
                  4 * found.overlaps.size());
+  events.resize(2 * all.segments.size());
   for (std::size_t i = 0; i < all.segments.size(); ++i) {
     const core::Curve& s = all.segments[i];
-    events.push_back({i, 0.0, s.front(), base_radius, true});
-    events.push_back({i, 1.0, s.back(), base_radius, true});
+    events[2 * i] = {i, 0.0, s.front(), base_radius, true};
+    events[2 * i + 1] = {i, 1.0, s.back(), base_radius, true};
   }
   const auto add_pair = [&](std::size_t i, double t, double t_width, std::size_t j, double s,
                             double s_width, Point2 p) {
@@ -505,20 +506,26 @@ void join_thin_lenses(const Arrangement& arrangement, Clusters& groups) {
 /// each is its representative), each edge's group, and each group's multiplicity per
 /// operand (+1 for a member along the representative, -1 against it).
 void number_groups(Clusters& groups, Arrangement& arrangement) {
-  arrangement.groups.reserve(arrangement.edges.size());  // at most one group per edge
-  for (std::size_t e = 0; e < arrangement.edges.size(); ++e) {
+  // At most one group per edge: room for that many, written in place, cut to the count.
+  const std::size_t edge_count = arrangement.edges.size();
+  arrangement.groups.resize(edge_count);
+  CoincidentGroup* const opened = arrangement.groups.data();
+  ArrangementEdge* const edges = arrangement.edges.data();
+  std::size_t count = 0;
+  for (std::size_t e = 0; e < edge_count; ++e) {
     // A root is its cluster's least edge (Clusters::join keeps the lower root): the first of
     // its group here, which opens the group; the later ones read it off the root's edge.
     const std::size_t root = groups.find(e);
     if (root == e) {
-      arrangement.edges[e].group = arrangement.groups.size();
-      arrangement.groups.push_back({e, 0, 0, {0, 0}});
+      edges[e].group = count;
+      opened[count++] = {e, 0, 0, {0, 0}};
     }
-    const std::size_t group = arrangement.edges[root].group;
-    arrangement.edges[e].group = group;
-    ++arrangement.groups[group].member_count;
+    const std::size_t group = edges[root].group;
+    edges[e].group = group;
+    ++opened[group].member_count;
     // Edges are in segment order, a before b: the group's first edge of a comes first.
   }
+  arrangement.groups.resize(count);
   // Each group's edges in one list, group by group, each group's in edge order.
   std::size_t next = 0;
   for (CoincidentGroup& g : arrangement.groups) {
