@@ -253,6 +253,8 @@ SideWindingResult side_windings(const Arrangement& arrangement, const SideWindin
   SideWindingResult result;
   const std::vector<ArrangementEdge>& edges = arrangement.edges;
   std::vector<std::size_t> candidates;
+  // Room for the edges a ray usually keeps, so that collecting them rarely grows the list.
+  candidates.reserve(std::min<std::size_t>(edges.size(), 64));
   const CoincidentGroup& g = arrangement.groups[group];
   const ArrangementEdge& rep = arrangement.edges[g.representative];
   const ParameterAndSpeed origin = ray_origin_parameter(rep.exact());
