@@ -133,6 +133,7 @@ ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersec
   // Segment ends first (so that a vertex holding one takes its point), then contacts.
   events.reserve(2 * all.segments.size() + 2 * found.intersections.size() +
                  4 * found.overlaps.size());
+  same.reserve(found.intersections.size() + 2 * found.overlaps.size());
   events.resize(2 * all.segments.size());
   for (std::size_t i = 0; i < all.segments.size(); ++i) {
     const core::Curve& s = all.segments[i];

@@ -122,6 +122,7 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::W
   }
   const double zero_area = 0x1p-80 * arrangement.scale * arrangement.scale;
   std::vector<const core::Curve*> contour_curves;
+  contour_curves.reserve(kept.size());  // a contour holds at most every kept edge
   result.segments.reserve(kept.size());
   result.contours.reserve(chains->size());
   for (const std::vector<std::size_t>& chain : *chains) {
