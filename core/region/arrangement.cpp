@@ -297,11 +297,9 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
   }
   std::sort(contacts_by_segment.begin(), contacts_by_segment.end());
 
-  const auto add_edge = [&](std::size_t i, double t0, double t1, std::size_t from,
-                            std::size_t to, bool whole_cut) {
-    // A segment cut nowhere inside is not needed any more: its one piece may take it.
-    core::Curve exact = whole_cut ? segment_piece(std::move(all.segments[i]), t0, t1)
-                                  : segment_piece(all.segments[i], t0, t1);
+  // An edge of segment i from its piece `exact` (segment_piece(segment i, t0, t1)).
+  const auto add_piece = [&](std::size_t i, double t0, double t1, std::size_t from,
+                             std::size_t to, core::Curve exact) {
     const Point2 front = arrangement.vertices[from], back = arrangement.vertices[to];
     // Every member given and built in place, so that no default curve is built and thrown
     // away.
@@ -316,6 +314,13 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
     arrangement.edges.emplace_back(both.origin[i].first, both.origin[i].second, t0, t1, from, to,
                                    core::Curve(std::move(pts)), std::move(exact),
                                    arrangement.edges.size());
+  };
+  const auto add_edge = [&](std::size_t i, double t0, double t1, std::size_t from,
+                            std::size_t to, bool whole_cut) {
+    // A segment cut nowhere inside is not needed any more: its one piece may take it.
+    add_piece(i, t0, t1, from, to,
+              whole_cut ? segment_piece(std::move(all.segments[i]), t0, t1)
+                        : segment_piece(all.segments[i], t0, t1));
   };
 
   // Edges of one segment in order, for the overlap groups below: [first, end) of arrangement.edges.
@@ -368,6 +373,15 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
       }
       if (!kept.empty() && kept.back().first == cut.first) continue;
       kept.push_back(cut);
+    }
+    if (kept.size() == 3) {
+      // Cut once inside (0 < t < 1): both pieces from one halving where it gives them.
+      const double t = kept[1].first;
+      auto [before, after] = segment_pieces_at(seg, t);
+      add_piece(i, 0.0, t, kept[0].second, kept[1].second, std::move(before));
+      add_piece(i, t, 1.0, kept[1].second, kept[2].second, std::move(after));
+      edges_of[i].second = arrangement.edges.size();
+      continue;
     }
     for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
       add_edge(i, kept[k].first, kept[k + 1].first, kept[k].second, kept[k + 1].second,

@@ -80,6 +80,18 @@ namespace bezier::region {
   return core::portion(segment, t0, t1);
 }
 
+/// segment_piece(segment, 0, t) and segment_piece(segment, t, 1) for 0 < t < 1, the same
+/// bits, from one core::subdivide where end_piece_by_halving would take its halves.
+[[nodiscard]] inline std::pair<core::Curve, core::Curve> segment_pieces_at(
+    const core::Curve& segment, double t) {
+  core::Split<core::Point2> halves = core::subdivide(segment, t);
+  core::Curve before = without_zero_coordinate(segment) ? std::move(halves.left)
+                                                        : core::portion(segment, 0.0, t);
+  core::Curve after = without_zero_coordinate(halves.right) ? std::move(halves.right)
+                                                            : core::portion(segment, t, 1.0);
+  return {std::move(before), std::move(after)};
+}
+
 /// segment_piece of a segment the caller no longer needs: the segment itself is moved into
 /// the result when it is the piece, and left unchanged otherwise.
 [[nodiscard]] inline core::Curve segment_piece(core::Curve&& segment, double t0, double t1) {

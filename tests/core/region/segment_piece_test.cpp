@@ -93,6 +93,9 @@ TEST(SegmentPiece, EndPiecesAreWhatPortionGivesBitForBit) {
         << "round " << round;
     EXPECT_TRUE(same_bits(segment_piece(std::move(right), t, 1.0), core::portion(c, t, 1.0)))
         << "round " << round;
+    const auto [before, after] = segment_pieces_at(c, t);
+    EXPECT_TRUE(same_bits(before, core::portion(c, 0.0, t))) << "round " << round;
+    EXPECT_TRUE(same_bits(after, core::portion(c, t, 1.0))) << "round " << round;
     if (end_piece_by_halving(c, 0.0, t)) ++halved_left;
     if (end_piece_by_halving(c, t, 1.0)) ++halved_right;
   }
