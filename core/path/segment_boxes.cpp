@@ -342,20 +342,27 @@ void sort_pairs(std::vector<std::pair<std::size_t, std::size_t>>& pairs, std::si
 /// whichever sweep costs less, the plain one when the x-overlapping pairs are at most
 /// kPlainSweepPairsPerBoxAndLog N log2 N (so O(N log N) in all), else the tree's. The plain
 /// sweep runs first, counting them, and stops (nothing charged) once they pass that bound.
-MeetingBoxes sweep(const std::vector<Entry>& unsorted, int sets, core::WorkBudget& budget) {
+/// The boxes of `a` (set 0) and then of `b` (set 1, empty for one set), each position k of
+/// that list (a's boxes at 0 .. |a| - 1, b's after) an entry.
+MeetingBoxes sweep(std::span<const core::Rect> a, std::span<const core::Rect> b, int sets,
+                   core::WorkBudget& budget) {
   MeetingBoxes out;
-  const std::size_t n = unsorted.size();
+  const std::size_t n = a.size() + b.size();
   if (n == 0) return out;
   if (!budget.spend(3 * sort_work(n))) return out;
-  // Sorted by (min.x, set, index): the entries come in (set, index) order, so their
-  // positions break ties in min.x; sorting small keys and gathering once moves less.
+  const auto entry_at = [&](std::size_t k) {
+    return k < a.size() ? Entry{a[k], k, 0} : Entry{b[k - a.size()], k - a.size(), 1};
+  };
+  // Sorted by (min.x, set, index): the positions come in (set, index) order, so they break
+  // ties in min.x; sorting small keys and gathering once moves less.
   std::vector<std::pair<double, std::size_t>> keys(n);
-  for (std::size_t k = 0; k < n; ++k) keys[k] = {unsorted[k].box.min.x, k};
+  for (std::size_t k = 0; k < a.size(); ++k) keys[k] = {a[k].min.x, k};
+  for (std::size_t k = 0; k < b.size(); ++k) keys[a.size() + k] = {b[k].min.x, a.size() + k};
   core::sort_by_key_then_index(keys);
   std::vector<Entry> entries(n);
   std::size_t first_indices = 0;  // the first index of a pair is below this
   for (std::size_t k = 0; k < n; ++k) {
-    entries[k] = unsorted[keys[k].second];
+    entries[k] = entry_at(keys[k].second);
     if (entries[k].set == 0) first_indices = std::max(first_indices, entries[k].index + 1);
   }
   const std::int64_t log_n = std::bit_width(n);
@@ -406,18 +413,11 @@ core::Rect control_box(const core::Curve& segment) noexcept {
 
 MeetingBoxes meeting_boxes(std::span<const core::Rect> a, std::span<const core::Rect> b,
                            core::WorkBudget& budget) {
-  std::vector<Entry> entries;
-  entries.reserve(a.size() + b.size());
-  for (std::size_t i = 0; i < a.size(); ++i) entries.push_back({a[i], i, 0});
-  for (std::size_t j = 0; j < b.size(); ++j) entries.push_back({b[j], j, 1});
-  return sweep(entries, 2, budget);
+  return sweep(a, b, 2, budget);
 }
 
 MeetingBoxes meeting_boxes(std::span<const core::Rect> boxes, core::WorkBudget& budget) {
-  std::vector<Entry> entries;
-  entries.reserve(boxes.size());
-  for (std::size_t i = 0; i < boxes.size(); ++i) entries.push_back({boxes[i], i, 0});
-  return sweep(entries, 1, budget);
+  return sweep(boxes, {}, 1, budget);
 }
 
 }  // namespace bezier::path
