@@ -43,10 +43,28 @@ const double* tabled_weights(int n) {
   return tables[static_cast<std::size_t>(n)].data();
 }
 
+/// enclosed_area_as_given for a cubic: the same weights (the table's), products and sums in
+/// the same order, so the same double; written out, without the general loops.
+inline double cubic_enclosed_area_as_given(std::span<const Point2, 4> points) {
+  static const double* const weight = tabled_weights(3);
+  const Point2 origin = points[0];
+  const Point2 p1 = points[1] - origin, p2 = points[2] - origin, p3 = points[3] - origin;
+  double row1 = 0.0;
+  row1 += weight[1 * 4 + 2] * cross(p1, p2);
+  row1 += weight[1 * 4 + 3] * cross(p1, p3);
+  double row2 = 0.0;
+  row2 += weight[2 * 4 + 3] * cross(p2, p3);
+  double area = 0.0;
+  area += row1;
+  area += row2;
+  return area;
+}
+
 /// The double sum of enclosed_area() on the coordinates as given.
 double enclosed_area_as_given(std::span<const Point2> points) {
   const int n = static_cast<int>(points.size()) - 1;
   if (n < 2) return 0.0;  // a point or a segment closed by itself encloses nothing
+  if (n == 3) return cubic_enclosed_area_as_given(points.first<4>());
   // The weights from the table for the usual degrees; beyond, C(n, i) and C(2n - 2, k) once
   // and each weight from them.
   std::vector<double> computed;
@@ -103,10 +121,18 @@ double enclosed_area(std::span<const Point2> points) {
   // Differences and their cross products overflow beyond about 2^510 (underflow below
   // 2^-510) even when the area itself is representable: scale such input by a power of two
   // (exact) and the area back by its square; an area beyond the double range is then +-inf.
-  double largest = 0.0;
-  for (const Point2 p : points) largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)});
+  // A cubic's four points with a fixed extent (the loop unrolls), the same maximum.
+  const auto largest_of = [](auto fixed_points) {
+    double largest = 0.0;
+    for (const Point2 p : fixed_points) {
+      largest = std::max(largest, std::max(std::fabs(p.x), std::fabs(p.y)));
+    }
+    return largest;
+  };
+  const bool cubic = points.size() == 4;
+  const double largest = cubic ? largest_of(points.first<4>()) : largest_of(points);
   if (largest == 0.0 || (0x1p-400 <= largest && largest <= 0x1p400)) {
-    return enclosed_area_as_given(points);
+    return cubic ? cubic_enclosed_area_as_given(points.first<4>()) : enclosed_area_as_given(points);
   }
   const int k = -exponent_of(largest);
   return std::ldexp(enclosed_area_as_given(scaled_by_power_of_two(points, k)), -2 * k);

@@ -135,11 +135,16 @@ struct SegmentFacts {
 SegmentFacts segment_facts(const Path& path) {
   const std::size_t n = path.segments.size();
   SegmentFacts facts;
-  facts.boxes.reserve(n);
-  facts.point.reserve(n);
-  for (const core::Curve& segment : path.segments) {
-    facts.boxes.push_back(control_box(segment));
-    facts.point.push_back(core::is_point(segment) ? 1 : 0);
+  facts.boxes.resize(n);
+  facts.point.resize(n);
+  core::Rect* const boxes = facts.boxes.data();
+  char* const point = facts.point.data();
+  for (std::size_t k = 0; k < n; ++k) {
+    const core::Rect box = control_box(path.segments[k]);
+    boxes[k] = box;
+    // core::is_point read off the box: every control point equal to the first (by value)
+    // exactly when each coordinate's least and greatest value are equal (finite coordinates).
+    point[k] = box.min == box.max ? 1 : 0;
   }
   // next_segment, subpath by subpath: the following segment, and for a closed subpath of
   // more than one segment its first after its last.
@@ -163,6 +168,7 @@ PathSelfIntersectionResult unsorted_self_intersections(const Path& path,
   const SegmentFacts facts = segment_facts(path);
   const auto swept = swept_pairs(budget, [&] { return meeting_boxes(facts.boxes, budget); });
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  pairs.reserve(swept.size());
   for (const auto& [i, j] : swept) {
     if (facts.point[i] != 0 || facts.point[j] != 0) continue;
     // The copy is charged as the sweep's pairs are.

@@ -9,6 +9,8 @@
 #include <queue>
 #include <tuple>
 
+#include "core/base/sort_by_key.hpp"
+
 namespace bezier::path {
 
 namespace {
@@ -161,11 +163,13 @@ struct OpenEntry {
   std::size_t entry;
 };
 
-/// What the plain sweep found before anything is charged: per box (in sweep order) the open
-/// boxes of the other set it was compared with and the number of pairs found up to and
-/// including its own; the pairs themselves, up to a number that the memory budget can
-/// certainly not pass.
+/// What the plain sweep found before anything is charged: the open boxes of the other set
+/// compared with, and the pairs found, in all and (when asked for) per box in sweep order,
+/// the pair count up to and including each box's own; the pairs themselves, up to a number
+/// that the memory budget can certainly not pass.
 struct PlainFindings {
+  std::int64_t compared_total = 0;
+  std::size_t pair_count = 0;
   std::vector<std::size_t> compared;
   std::vector<std::size_t> pairs_end;
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
@@ -178,34 +182,66 @@ struct PlainFindings {
 /// it in the order whose x ranges hold its min.x, so their count summed over the boxes is
 /// the number of x-overlapping pairs: nullopt (nothing charged) as soon as that passes
 /// `most_compared`. Only the first `most_kept` pairs are kept (the memory budget refuses
-/// the later ones), so what it holds uncharged stays within that budget.
+/// the later ones), so what it holds uncharged stays within that budget. The counts per box
+/// are kept only `per_box`.
 std::optional<PlainFindings> plain_sweep_findings(const std::vector<Entry>& entries, int sets,
                                                   std::int64_t most_compared,
-                                                  std::size_t most_kept) {
+                                                  std::size_t most_kept, bool per_box) {
   PlainFindings found;
-  found.compared.resize(entries.size());
-  found.pairs_end.resize(entries.size());
+  if (per_box) {
+    found.compared.resize(entries.size());
+    found.pairs_end.resize(entries.size());
+  }
+  // Boxes that follow each other along a path meet, so there are usually a little more pairs
+  // than boxes: room for that many (never more than may be kept) from the start.
+  found.pairs.reserve(std::min(entries.size() + entries.size() / 4 + 8, most_kept));
+  // The open boxes of each set: the first open_count[set] entries of open[set] (the vector
+  // only grows; the dropped boxes' places are reused).
   std::vector<OpenEntry> open[2];
+  std::size_t open_count[2] = {0, 0};
+  // Few boxes are open at once along a path; room for a few dozen saves the first growths.
+  for (int set = 0; set < sets; ++set) {
+    open[set].reserve(std::min<std::size_t>(entries.size(), 32));
+  }
   std::int64_t compared = 0;
   std::size_t pairs = 0;
   for (std::size_t k = 0; k < entries.size(); ++k) {
     const Entry& e = entries[k];
-    std::vector<OpenEntry>& other = open[other_set(sets, e.set)];
-    std::size_t kept = 0;
-    for (const OpenEntry& o : other) {
-      if (o.max_x < e.box.min.x) continue;
-      if (e.box.min.y <= o.max_y && o.min_y <= e.box.max.y && pairs++ < most_kept) {
-        found.pairs.push_back(oriented_pair(sets, e, entries[o.entry]));
+    const std::size_t other = other_set(sets, e.set);
+    // A dropped box takes the last open box's place (no order is kept among the open boxes:
+    // the pairs are sorted at the end, and when the memory budget cuts the list short the
+    // sweep's pairs are not used at all). Walked through a pointer and a count held here
+    // (storing a pair leaves the list alone).
+    OpenEntry* const list = open[other].data();
+    std::size_t kept = open_count[other];
+    for (std::size_t l = 0; l < kept;) {
+      if (list[l].max_x < e.box.min.x) {
+        list[l] = list[--kept];
+        continue;
       }
-      other[kept++] = o;
+      if (e.box.min.y <= list[l].max_y && list[l].min_y <= e.box.max.y && pairs++ < most_kept) {
+        found.pairs.push_back(oriented_pair(sets, e, entries[list[l].entry]));
+      }
+      ++l;
     }
-    other.resize(kept);
+    open_count[other] = kept;
     compared += static_cast<std::int64_t>(kept);
     if (compared > most_compared) return std::nullopt;
-    found.compared[k] = kept;
-    found.pairs_end[k] = pairs;
-    open[sets == 1 ? 0 : e.set].push_back({e.box.max.x, e.box.min.y, e.box.max.y, k});
+    if (per_box) {
+      found.compared[k] = kept;
+      found.pairs_end[k] = pairs;
+    }
+    const std::size_t mine = sets == 1 ? 0 : static_cast<std::size_t>(e.set);
+    const OpenEntry opened{e.box.max.x, e.box.min.y, e.box.max.y, k};
+    if (open_count[mine] < open[mine].size()) {
+      open[mine][open_count[mine]] = opened;
+    } else {
+      open[mine].push_back(opened);
+    }
+    ++open_count[mine];
   }
+  found.compared_total = compared;
+  found.pair_count = pairs;
   return found;
 }
 
@@ -306,32 +342,52 @@ void sort_pairs(std::vector<std::pair<std::size_t, std::size_t>>& pairs, std::si
 /// whichever sweep costs less, the plain one when the x-overlapping pairs are at most
 /// kPlainSweepPairsPerBoxAndLog N log2 N (so O(N log N) in all), else the tree's. The plain
 /// sweep runs first, counting them, and stops (nothing charged) once they pass that bound.
-MeetingBoxes sweep(const std::vector<Entry>& unsorted, int sets, core::WorkBudget& budget) {
+/// The boxes of `a` (set 0) and then of `b` (set 1, empty for one set), each position k of
+/// that list (a's boxes at 0 .. |a| - 1, b's after) an entry.
+MeetingBoxes sweep(std::span<const core::Rect> a, std::span<const core::Rect> b, int sets,
+                   core::WorkBudget& budget) {
   MeetingBoxes out;
-  const std::size_t n = unsorted.size();
+  const std::size_t n = a.size() + b.size();
   if (n == 0) return out;
   if (!budget.spend(3 * sort_work(n))) return out;
-  // Sorted by (min.x, set, index): the entries come in (set, index) order, so their
-  // positions break ties in min.x; sorting small keys and gathering once moves less.
+  const auto entry_at = [&](std::size_t k) {
+    return k < a.size() ? Entry{a[k], k, 0} : Entry{b[k - a.size()], k - a.size(), 1};
+  };
+  // Sorted by (min.x, set, index): the positions come in (set, index) order, so they break
+  // ties in min.x; sorting small keys and gathering once moves less.
   std::vector<std::pair<double, std::size_t>> keys(n);
-  for (std::size_t k = 0; k < n; ++k) keys[k] = {unsorted[k].box.min.x, k};
-  std::sort(keys.begin(), keys.end(), [](const auto& p, const auto& q) {
-    return p.first < q.first || (!(q.first < p.first) && p.second < q.second);
-  });
+  for (std::size_t k = 0; k < a.size(); ++k) keys[k] = {a[k].min.x, k};
+  for (std::size_t k = 0; k < b.size(); ++k) keys[a.size() + k] = {b[k].min.x, a.size() + k};
+  core::sort_by_key_then_index(keys);
   std::vector<Entry> entries(n);
   std::size_t first_indices = 0;  // the first index of a pair is below this
   for (std::size_t k = 0; k < n; ++k) {
-    entries[k] = unsorted[keys[k].second];
+    entries[k] = entry_at(keys[k].second);
     if (entries[k].set == 0) first_indices = std::max(first_indices, entries[k].index + 1);
   }
   const std::int64_t log_n = std::bit_width(n);
   // The pairs a plain sweep can store: the memory budget refuses the one after these.
   const std::size_t most_kept = static_cast<std::size_t>(
       std::max<std::int64_t>(budget.memory_limit() - budget.memory(), 0) / kStoredPairBytes);
-  if (auto found = plain_sweep_findings(
-          entries, sets, kPlainSweepPairsPerBoxAndLog * static_cast<std::int64_t>(n) * log_n,
-          most_kept)) {
-    charge_plain_sweep(std::move(*found), n, budget, out);
+  const std::int64_t most_compared =
+      kPlainSweepPairsPerBoxAndLog * static_cast<std::int64_t>(n) * log_n;
+  if (auto found = plain_sweep_findings(entries, sets, most_compared, most_kept, false)) {
+    // What charge_plain_sweep charges box by box, summed: when the budget covers the sum,
+    // no charge on the way passes a limit (they only add), so charging the sums at once
+    // leaves the budget as charging them in turn would, with every pair stored. Otherwise
+    // the sweep runs again (the same findings) with its counts per box, charged in turn.
+    const std::int64_t work = found->compared_total + static_cast<std::int64_t>(n) +
+                              static_cast<std::int64_t>(found->pair_count) * 2 * log_n;
+    const std::int64_t memory = static_cast<std::int64_t>(found->pair_count) * kStoredPairBytes;
+    if (found->pair_count <= most_kept && work <= budget.remaining() &&
+        memory <= budget.memory_limit() - budget.memory()) {
+      budget.charge(work);
+      (void)budget.charge_memory(memory);
+      out.pairs = std::move(found->pairs);
+    } else {
+      auto per_box = plain_sweep_findings(entries, sets, most_compared, most_kept, true);
+      charge_plain_sweep(std::move(*per_box), n, budget, out);
+    }
   } else {
     budget.charge(sort_work(2 * n));
     tree_sweep(entries, sets, budget, out);
@@ -357,18 +413,11 @@ core::Rect control_box(const core::Curve& segment) noexcept {
 
 MeetingBoxes meeting_boxes(std::span<const core::Rect> a, std::span<const core::Rect> b,
                            core::WorkBudget& budget) {
-  std::vector<Entry> entries;
-  entries.reserve(a.size() + b.size());
-  for (std::size_t i = 0; i < a.size(); ++i) entries.push_back({a[i], i, 0});
-  for (std::size_t j = 0; j < b.size(); ++j) entries.push_back({b[j], j, 1});
-  return sweep(entries, 2, budget);
+  return sweep(a, b, 2, budget);
 }
 
 MeetingBoxes meeting_boxes(std::span<const core::Rect> boxes, core::WorkBudget& budget) {
-  std::vector<Entry> entries;
-  entries.reserve(boxes.size());
-  for (std::size_t i = 0; i < boxes.size(); ++i) entries.push_back({boxes[i], i, 0});
-  return sweep(entries, 1, budget);
+  return sweep(boxes, {}, 1, budget);
 }
 
 }  // namespace bezier::path

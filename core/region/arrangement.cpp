@@ -5,10 +5,12 @@
 #include <cstdint>
 #include <cmath>
 #include <numeric>
+#include <span>
 #include <tuple>
 #include <utility>
 
 #include "core/base/curve.hpp"
+#include "core/base/sort_by_key.hpp"
 #include "core/curve/derivative.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/intersect/options.hpp"
@@ -131,10 +133,12 @@ ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersec
   // Segment ends first (so that a vertex holding one takes its point), then contacts.
   events.reserve(2 * all.segments.size() + 2 * found.intersections.size() +
                  4 * found.overlaps.size());
+  same.reserve(found.intersections.size() + 2 * found.overlaps.size());
+  events.resize(2 * all.segments.size());
   for (std::size_t i = 0; i < all.segments.size(); ++i) {
     const core::Curve& s = all.segments[i];
-    events.push_back({i, 0.0, s.front(), base_radius, true});
-    events.push_back({i, 1.0, s.back(), base_radius, true});
+    events[2 * i] = {i, 0.0, s.front(), base_radius, true};
+    events[2 * i + 1] = {i, 1.0, s.back(), base_radius, true};
   }
   const auto add_pair = [&](std::size_t i, double t, double t_width, std::size_t j, double s,
                             double s_width, Point2 p) {
@@ -185,22 +189,26 @@ Clusters close_events(const std::vector<Event>& events,
   // The swept events by x (ties by index), each with its x beside it so that the sort
   // compares in place. Which pairs are joined, and so the clusters, do not depend on the
   // order of ties: each pair within reach is met from whichever of its two comes first.
-  std::vector<std::pair<double, std::size_t>> by_x;
-  by_x.reserve(events.size());
+  std::vector<std::pair<double, std::size_t>> by_x(events.size());
+  std::size_t swept = 0;
   for (std::size_t i = 0; i < events.size(); ++i) {
     if (i > 0 && events[i].point == events[i - 1].point &&
         events[i].radius == events[i - 1].radius) {
       clusters.join(i - 1, i);
       continue;
     }
-    by_x.emplace_back(events[i].point.x, i);
+    by_x[swept++] = {events[i].point.x, i};
   }
-  std::sort(by_x.begin(), by_x.end());
+  by_x.resize(swept);
+  // By x, then index (finite coordinates: the order std::sort of the pairs gives).
+  core::sort_by_key_then_index(by_x);
   for (std::size_t k = 0; k < by_x.size(); ++k) {
     const Event& e = events[by_x[k].second];
+    // by_x holds each event's x as it is: f.point.x - e.point.x read from it.
+    const double x = by_x[k].first, farthest = e.radius + max_radius;
     for (std::size_t l = k + 1; l < by_x.size(); ++l) {
+      if (by_x[l].first - x > farthest) break;
       const Event& f = events[by_x[l].second];
-      if (f.point.x - e.point.x > e.radius + max_radius) break;
       const double reach = e.radius + f.radius;
       const Point2 d = f.point - e.point;
       // A zero difference is within every reach (radii are not negative) without hypot.
@@ -227,29 +235,41 @@ VertexAssignment assign_vertices(const std::vector<Event>& events, Clusters& clu
   VertexAssignment assigned;
   std::vector<std::size_t>& vertex_of = assigned.vertex_of;
   std::vector<double>& vertex_radius = assigned.vertex_radius;
-  std::vector<std::size_t> vertex_of_root(events.size(), SIZE_MAX);
-  vertex_of.resize(events.size());
-  std::vector<char> from_end;  // bytes, not bits: read and written once per event
-  // At most one vertex per event.
-  vertices.reserve(events.size());
-  vertex_radius.reserve(events.size());
-  from_end.reserve(events.size());
-  for (std::size_t e = 0; e < events.size(); ++e) {
+  const std::size_t n = events.size();
+  // At most one vertex per event: room for that many, written in place, cut to the count.
+  const std::size_t first_vertex = vertices.size();
+  vertex_of.resize(n);
+  vertices.resize(first_vertex + n);
+  vertex_radius.resize(n);
+  std::vector<char> from_end(n);  // bytes, not bits: read and written once per event
+  std::size_t* const vertex_of_event = vertex_of.data();
+  Point2* const point = vertices.data() + first_vertex;
+  double* const radius = vertex_radius.data();
+  std::size_t count = 0;
+  for (std::size_t e = 0; e < n; ++e) {
+    const Event& event = events[e];
+    // A cluster's root is its least event (Clusters::join keeps the lower root), so it is
+    // the cluster's first event here: it opens the vertex, and every later event of the
+    // cluster finds the vertex at vertex_of[root].
     const std::size_t root = clusters.find(e);
-    if (vertex_of_root[root] == SIZE_MAX) {
-      vertex_of_root[root] = vertices.size();
-      vertices.push_back(events[e].point);
-      from_end.push_back(events[e].segment_end ? 1 : 0);
-      vertex_radius.push_back(events[e].radius);
+    if (root == e) {
+      vertex_of_event[e] = first_vertex + count;
+      point[count] = event.point;
+      from_end[count] = event.segment_end ? 1 : 0;
+      radius[count] = event.radius;
+      ++count;
     }
-    const std::size_t v = vertex_of_root[root];
-    vertex_of[e] = v;
-    vertex_radius[v] = std::max(vertex_radius[v], events[e].radius);
-    if (events[e].segment_end && !from_end[v]) {
-      vertices[v] = events[e].point;
-      from_end[v] = 1;
+    const std::size_t v = vertex_of_event[root];
+    vertex_of_event[e] = v;
+    const std::size_t k = v - first_vertex;
+    radius[k] = std::max(radius[k], event.radius);
+    if (event.segment_end && !from_end[k]) {
+      point[k] = event.point;
+      from_end[k] = 1;
     }
   }
+  vertices.resize(first_vertex + count);
+  vertex_radius.resize(count);
 
   return assigned;
 }
@@ -277,11 +297,9 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
   }
   std::sort(contacts_by_segment.begin(), contacts_by_segment.end());
 
-  const auto add_edge = [&](std::size_t i, double t0, double t1, std::size_t from,
-                            std::size_t to, bool whole_cut) {
-    // A segment cut nowhere inside is not needed any more: its one piece may take it.
-    core::Curve exact = whole_cut ? segment_piece(std::move(all.segments[i]), t0, t1)
-                                  : segment_piece(all.segments[i], t0, t1);
+  // An edge of segment i from its piece `exact` (segment_piece(segment i, t0, t1)).
+  const auto add_piece = [&](std::size_t i, double t0, double t1, std::size_t from,
+                             std::size_t to, core::Curve exact) {
     const Point2 front = arrangement.vertices[from], back = arrangement.vertices[to];
     // Every member given and built in place, so that no default curve is built and thrown
     // away.
@@ -296,6 +314,13 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
     arrangement.edges.emplace_back(both.origin[i].first, both.origin[i].second, t0, t1, from, to,
                                    core::Curve(std::move(pts)), std::move(exact),
                                    arrangement.edges.size());
+  };
+  const auto add_edge = [&](std::size_t i, double t0, double t1, std::size_t from,
+                            std::size_t to, bool whole_cut) {
+    // A segment cut nowhere inside is not needed any more: its one piece may take it.
+    add_piece(i, t0, t1, from, to,
+              whole_cut ? segment_piece(std::move(all.segments[i]), t0, t1)
+                        : segment_piece(all.segments[i], t0, t1));
   };
 
   // Edges of one segment in order, for the overlap groups below: [first, end) of arrangement.edges.
@@ -348,6 +373,15 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
       }
       if (!kept.empty() && kept.back().first == cut.first) continue;
       kept.push_back(cut);
+    }
+    if (kept.size() == 3) {
+      // Cut once inside (0 < t < 1): both pieces from one halving where it gives them.
+      const double t = kept[1].first;
+      auto [before, after] = segment_pieces_at(seg, t);
+      add_piece(i, 0.0, t, kept[0].second, kept[1].second, std::move(before));
+      add_piece(i, t, 1.0, kept[1].second, kept[2].second, std::move(after));
+      edges_of[i].second = arrangement.edges.size();
+      continue;
     }
     for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
       add_edge(i, kept[k].first, kept[k + 1].first, kept[k].second, kept[k + 1].second,
@@ -487,18 +521,26 @@ void join_thin_lenses(const Arrangement& arrangement, Clusters& groups) {
 /// each is its representative), each edge's group, and each group's multiplicity per
 /// operand (+1 for a member along the representative, -1 against it).
 void number_groups(Clusters& groups, Arrangement& arrangement) {
-  std::vector<std::size_t> group_of_root(arrangement.edges.size(), SIZE_MAX);
-  arrangement.groups.reserve(arrangement.edges.size());  // at most one group per edge
-  for (std::size_t e = 0; e < arrangement.edges.size(); ++e) {
+  // At most one group per edge: room for that many, written in place, cut to the count.
+  const std::size_t edge_count = arrangement.edges.size();
+  arrangement.groups.resize(edge_count);
+  CoincidentGroup* const opened = arrangement.groups.data();
+  ArrangementEdge* const edges = arrangement.edges.data();
+  std::size_t count = 0;
+  for (std::size_t e = 0; e < edge_count; ++e) {
+    // A root is its cluster's least edge (Clusters::join keeps the lower root): the first of
+    // its group here, which opens the group; the later ones read it off the root's edge.
     const std::size_t root = groups.find(e);
-    if (group_of_root[root] == SIZE_MAX) {
-      group_of_root[root] = arrangement.groups.size();
-      arrangement.groups.push_back({e, 0, 0, {0, 0}});
+    if (root == e) {
+      edges[e].group = count;
+      opened[count++] = {e, 0, 0, {0, 0}};
     }
-    arrangement.edges[e].group = group_of_root[root];
-    ++arrangement.groups[group_of_root[root]].member_count;
+    const std::size_t group = edges[root].group;
+    edges[e].group = group;
+    ++opened[group].member_count;
     // Edges are in segment order, a before b: the group's first edge of a comes first.
   }
+  arrangement.groups.resize(count);
   // Each group's edges in one list, group by group, each group's in edge order.
   std::size_t next = 0;
   for (CoincidentGroup& g : arrangement.groups) {
@@ -536,11 +578,20 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, core::Wo
   // The largest core::scale of the segments, by comparisons rather than library fmax calls:
   // for finite coordinates (the precondition) both give the same largest |coordinate|.
   double scale = 0.0;
-  for (const core::Curve& s : all.segments) {
-    for (const Point2 p : s.points()) {
+  const auto include = [&](auto points) {
+    for (const Point2 p : points) {
       const double x = std::fabs(p.x), y = std::fabs(p.y);
       if (x > scale) scale = x;
       if (y > scale) scale = y;
+    }
+  };
+  for (const core::Curve& s : all.segments) {
+    // A cubic's four points with a fixed extent (the loop unrolls); the same comparisons.
+    const std::span<const Point2> points = s.points();
+    if (points.size() == 4) {
+      include(points.first<4>());
+    } else {
+      include(points);
     }
   }
   out.scale = scale > 0.0 ? scale : 1.0;

@@ -101,10 +101,11 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::W
     ArrangementEdge& edge = arrangement.edges[e];
     if (left) {
       // Each group is looked at once here and its representative's piece is not read again
-      // (the result takes only its source and parameters), so the piece moves.
+      // (the result takes only its source and parameters), so the piece moves (reversed in
+      // its own storage when it runs the other way).
       kept.push_back({edge.from, edge.to, std::move(edge.piece), e});
     } else {
-      kept.push_back({edge.to, edge.from, core::reversed(edge.piece), e});
+      kept.push_back({edge.to, edge.from, core::reversed(std::move(edge.piece)), e});
     }
     kept_reversed.push_back(left ? 0 : 1);
   }
@@ -121,6 +122,7 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::W
   }
   const double zero_area = 0x1p-80 * arrangement.scale * arrangement.scale;
   std::vector<const core::Curve*> contour_curves;
+  contour_curves.reserve(kept.size());  // a contour holds at most every kept edge
   result.segments.reserve(kept.size());
   result.contours.reserve(chains->size());
   for (const std::vector<std::size_t>& chain : *chains) {

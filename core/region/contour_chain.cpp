@@ -18,9 +18,14 @@ std::optional<std::vector<std::vector<std::size_t>>> chain_contours(
   }
   std::vector<char> used(edges.size(), 0);  // bytes, not bits
   std::vector<std::vector<std::size_t>> contours;
+  std::size_t unused = edges.size();
   for (std::size_t first = 0; first < edges.size(); ++first) {
     if (used[first]) continue;
-    std::vector<std::size_t> contour{first};
+    // A contour takes at most the edges not used yet: room for them at once (one allocation
+    // for a long contour instead of a doubling per power of two).
+    std::vector<std::size_t> contour;
+    contour.reserve(unused);
+    contour.push_back(first);
     used[first] = 1;
     std::size_t current = first;
     while (edges[current].to != edges[first].from) {
@@ -50,6 +55,10 @@ std::optional<std::vector<std::vector<std::size_t>>> chain_contours(
       contour.push_back(*next);
       current = *next;
     }
+    unused -= contour.size();
+    // What is kept stays within twice the contours' lengths (many short contours must not
+    // each hold room for all the edges).
+    if (contour.capacity() > 2 * contour.size() + 16) contour.shrink_to_fit();
     contours.push_back(std::move(contour));
   }
   return contours;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/base/curve.hpp"
@@ -15,15 +16,24 @@ struct EdgeBox {
 };
 
 /// The box of a curve's control points, which holds the curve (convex hull property).
-[[nodiscard]] inline EdgeBox control_point_box(const core::Curve& curve) {
-  EdgeBox box{curve.front().x, curve.front().x, curve.front().y, curve.front().y};
-  for (const core::Point2 p : curve.points()) {
+/// Written over spans of any extent: with four points (a cubic) the loop unrolls; the
+/// comparisons and their order are the same either way.
+template <std::size_t Extent>
+[[nodiscard]] inline EdgeBox control_point_box_of(std::span<const core::Point2, Extent> points) {
+  EdgeBox box{points.front().x, points.front().x, points.front().y, points.front().y};
+  for (const core::Point2 p : points) {
     box.x_lo = std::min(box.x_lo, p.x);
     box.x_hi = std::max(box.x_hi, p.x);
     box.y_lo = std::min(box.y_lo, p.y);
     box.y_hi = std::max(box.y_hi, p.y);
   }
   return box;
+}
+
+[[nodiscard]] inline EdgeBox control_point_box(const core::Curve& curve) {
+  const std::span<const core::Point2> points = curve.points();
+  if (points.size() == 4) return control_point_box_of(points.first<4>());
+  return control_point_box_of(points);
 }
 
 /// The boxes of an arrangement's edges in a bounding-volume hierarchy, so that each ray of

@@ -31,11 +31,14 @@ std::vector<GroupLinks> side_links(const Arrangement& arrangement) {
     const CoincidentGroup& group = arrangement.groups[g];
     const ArrangementEdge& rep = arrangement.edges[group.representative];
     bool arc = rep.from != rep.to;
-    for (const std::size_t e : arrangement.group_edges(g)) {
-      const ArrangementEdge& edge = arrangement.edges[e];
-      const bool same_ends = (edge.from == rep.from && edge.to == rep.to) ||
-                             (edge.from == rep.to && edge.to == rep.from);
-      arc = arc && same_ends;
+    // A group of one edge is its representative, whose ends are its own.
+    if (group.member_count > 1) {
+      for (const std::size_t e : arrangement.group_edges(g)) {
+        const ArrangementEdge& edge = arrangement.edges[e];
+        const bool same_ends = (edge.from == rep.from && edge.to == rep.to) ||
+                               (edge.from == rep.to && edge.to == rep.from);
+        arc = arc && same_ends;
+      }
     }
     if (!arc) {
       for (const std::size_t e : arrangement.group_edges(g)) {

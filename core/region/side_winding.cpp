@@ -170,14 +170,24 @@ bool charge_skipped(const Arrangement& arrangement, const SideWindingIndex& inde
   return true;
 }
 
-/// The first nonzero derivative of the curve at t (its tangent direction there).
-Point2 tangent_at(const core::Curve& curve, double t) {
+/// The first nonzero derivative of the curve at t (its tangent direction there), given the
+/// first derivative there (derivatives_at(curve, t, 1)[0]: the first of the derivatives of any
+/// order derivatives_at lists, the same double either way); the higher ones are computed only
+/// when it is zero.
+Point2 tangent_at(const core::Curve& curve, double t, Point2 first) {
+  if (first.x != 0.0 || first.y != 0.0) return first;
   const std::vector<Point2> d = core::derivatives_at(curve, t, curve.degree());
   for (const Point2 v : d) {
     if (v.x != 0.0 || v.y != 0.0) return v;
   }
   return curve.back() - curve.front();
 }
+
+/// A parameter of a curve and the curve's first derivative there.
+struct ParameterAndSpeed {
+  double t = 0.5;
+  Point2 first;
+};
 
 /// The parameter of `curve` the rays start from: its middle, or else the first of a few
 /// other parameters where the curve moves at a speed that is not small against its control
@@ -187,7 +197,8 @@ Point2 tangent_at(const core::Curve& curve, double t) {
 /// that face's twice over. Near one, the tangent's direction is lost to rounding. A
 /// polynomial curve's speed is small near at most a few parameters, so one of these is
 /// clear of them unless the curve is a point.
-double ray_origin_parameter(const core::Curve& curve) {
+/// Returned with the first derivative there, which the caller needs too.
+ParameterAndSpeed ray_origin_parameter(const core::Curve& curve) {
   const int n = curve.degree();
   const auto pts = curve.points();
   double leg = 0.0;
@@ -196,33 +207,44 @@ double ray_origin_parameter(const core::Curve& curve) {
         leg, core::length(pts[static_cast<std::size_t>(i) + 1] - pts[static_cast<std::size_t>(i)]));
   }
   const double slow = 0x1p-20 * n * leg;
+  ParameterAndSpeed middle;
   for (const double t : {0.5, 0.3183, 0.6817, 0.1887, 0.8113}) {
-    if (core::length(core::derivatives_at(curve, t, 1)[0]) > slow) return t;
+    const Point2 first = core::derivatives_at(curve, t, 1)[0];
+    if (t == 0.5) middle.first = first;
+    if (core::length(first) > slow) return {t, first};
   }
-  return 0.5;
+  return middle;
 }
 
 }  // namespace
 
 SideWindingIndex::SideWindingIndex(const Arrangement& arrangement)
     : prune(arrangement.scale <= kPruneScaleLimit) {
-  boxes.reserve(arrangement.edges.size());
-  pass_cost_before.reserve(arrangement.edges.size() + 1);
-  pass_cost_before.push_back(0);
-  for (const ArrangementEdge& edge : arrangement.edges) {
-    boxes.push_back(control_point_box(edge.piece));
-    pass_cost_before.push_back(pass_cost_before.back() + edge.piece.degree() + 1);
+  // Sized once and written in place (the loops keep their running values in registers).
+  const std::size_t edge_count = arrangement.edges.size();
+  boxes.resize(edge_count);
+  pass_cost_before.resize(edge_count + 1);
+  EdgeBox* const box = boxes.data();
+  std::int64_t* const cost = pass_cost_before.data();
+  std::int64_t running = 0;
+  cost[0] = 0;
+  for (std::size_t e = 0; e < edge_count; ++e) {
+    const core::Curve& piece = arrangement.edges[e].piece;
+    box[e] = control_point_box(piece);
+    running += piece.degree() + 1;
+    cost[e + 1] = running;
   }
-  block_boxes.reserve((boxes.size() + kBlockEdges - 1) / kBlockEdges);
-  for (std::size_t first = 0; first < boxes.size(); first += kBlockEdges) {
-    EdgeBox block = boxes[first];
-    for (std::size_t e = first + 1; e < std::min(boxes.size(), first + kBlockEdges); ++e) {
-      block.x_lo = std::min(block.x_lo, boxes[e].x_lo);
-      block.x_hi = std::max(block.x_hi, boxes[e].x_hi);
-      block.y_lo = std::min(block.y_lo, boxes[e].y_lo);
-      block.y_hi = std::max(block.y_hi, boxes[e].y_hi);
+  block_boxes.resize((edge_count + kBlockEdges - 1) / kBlockEdges);
+  for (std::size_t b = 0; b < block_boxes.size(); ++b) {
+    const std::size_t first = b * kBlockEdges;
+    EdgeBox block = box[first];
+    for (std::size_t e = first + 1; e < std::min(edge_count, first + kBlockEdges); ++e) {
+      block.x_lo = std::min(block.x_lo, box[e].x_lo);
+      block.x_hi = std::max(block.x_hi, box[e].x_hi);
+      block.y_lo = std::min(block.y_lo, box[e].y_lo);
+      block.y_hi = std::max(block.y_hi, box[e].y_hi);
     }
-    block_boxes.push_back(block);
+    block_boxes[b] = block;
   }
 }
 
@@ -231,12 +253,14 @@ SideWindingResult side_windings(const Arrangement& arrangement, const SideWindin
   SideWindingResult result;
   const std::vector<ArrangementEdge>& edges = arrangement.edges;
   std::vector<std::size_t> candidates;
+  // Room for the edges a ray usually keeps, so that collecting them rarely grows the list.
+  candidates.reserve(std::min<std::size_t>(edges.size(), 64));
   const CoincidentGroup& g = arrangement.groups[group];
   const ArrangementEdge& rep = arrangement.edges[g.representative];
-  const double origin_t = ray_origin_parameter(rep.exact());
-  const core::Split<Point2> halves = core::subdivide(rep.exact(), origin_t);
+  const ParameterAndSpeed origin = ray_origin_parameter(rep.exact());
+  const core::Split<Point2> halves = core::subdivide(rep.exact(), origin.t);
   const Point2 middle = halves.left.back();
-  const Point2 tangent = tangent_at(rep.exact(), origin_t);
+  const Point2 tangent = tangent_at(rep.exact(), origin.t, origin.first);
   const double norm = core::length(tangent);
   if (!(norm > 0.0)) {
     result.status = SideWindingStatus::unclear;

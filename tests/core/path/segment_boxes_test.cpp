@@ -85,6 +85,30 @@ TEST(SegmentBoxes, StopsAtItsWorkLimit) {
   EXPECT_EQ(unlimited.memory(), static_cast<std::int64_t>(full.pairs.size()) * kStoredPairBytes);
 }
 
+TEST(SegmentBoxes, ChargesTheSameWhetherTheBudgetJustCoversItOrNot) {
+  // The plain sweep charges its sums at once when the budget covers them and box by box
+  // otherwise: limits of exactly the work and memory an unlimited run spends are met without
+  // running out, with the same pairs and charges; a memory limit one byte short runs out
+  // (its last pair refused, box by box).
+  test::Mulberry32 rng(21);
+  for (int round = 0; round < 40; ++round) {
+    const auto boxes = random_boxes(rng, 2 + static_cast<std::size_t>(rng.next() * 60));
+    core::WorkBudget unlimited;
+    const MeetingBoxes full = meeting_boxes(boxes, unlimited);
+    ASSERT_FALSE(unlimited.exhausted());
+    core::WorkBudget exact(unlimited.spent(), unlimited.memory());
+    EXPECT_EQ(meeting_boxes(boxes, exact).pairs, full.pairs) << round;
+    EXPECT_FALSE(exact.exhausted()) << round;
+    EXPECT_EQ(exact.spent(), unlimited.spent()) << round;
+    EXPECT_EQ(exact.memory(), unlimited.memory()) << round;
+    if (!full.pairs.empty()) {
+      core::WorkBudget short_of_memory(core::WorkBudget::kUnlimited, unlimited.memory() - 1);
+      (void)meeting_boxes(boxes, short_of_memory);
+      EXPECT_EQ(short_of_memory.exhaustion(), core::Exhaustion::memory) << round;
+    }
+  }
+}
+
 TEST(SegmentBoxes, StopsBeforeStoringPastItsMemoryLimit) {
   // The same 4950 pairs against a limit of 1000 pairs' bytes: exactly 1000 are stored, the
   // 1001st is charged and refused, whichever sweep runs (the plain one for 100 boxes, the
