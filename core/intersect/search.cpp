@@ -37,6 +37,9 @@ struct Box {
   int depth = 0;
   /// The box's larger width when the Krawczyk test last failed on it (or an ancestor).
   double krawczyk_failed_at = INFINITY;
+  /// The same for the implicit cubic clip: the box's larger width when it last kept most of
+  /// the piece on the box or an ancestor.
+  double cubic_clip_failed_at = INFINITY;
 };
 
 /// The two halves of an interval, or nothing when it is too narrow to split in doubles.
@@ -401,13 +404,15 @@ class Searcher {
       // The finer test decides whether rounding is what keeps the pieces together.
       if (fine.informative) clip.noisy = fine.noisy;
       // Cubics that run closer than the parabola's cubic term: the cubic's own equation.
+      const double w = std::max(box.t.width(), box.s.width());
       if (other.degree() == 3 && fine.kept && fine.kept->width() >= kCubicClipAfterParabolaKept &&
-          std::max(box.t.width(), box.s.width()) <= kImplicitClipWidth) {
+          w <= kImplicitClipWidth && w <= box.cubic_clip_failed_at * kCubicClipRetryWidth) {
         const Clip exact = implicit_cubic_clip(x, other);
         ++out_.stats.clipping_steps;
         budget_.charge(implicit_cubic_clip_cost(x.degree()));
         clip.kept = intersect_kept(clip.kept, exact.kept);
         if (!clip.kept) return Next::finished;
+        if (exact.kept->width() >= kCubicClipAfterParabolaKept) box.cubic_clip_failed_at = w;
       }
     }
     if (clip.noisy && retry_compensated(box)) return Next::again;

@@ -38,6 +38,10 @@ inline constexpr double kImplicitClipWidth = 0.25;
 /// that the parabola's cubic term hides the gap. Where the parabola narrows the piece the
 /// box is near a crossing or a contact, and halving does better than the costlier clip.
 inline constexpr double kCubicClipAfterParabolaKept = 0.9;
+/// Where the cubic clip kept as much itself (the pieces meet, or come together at a common
+/// end, where no implicit band parts them), it is tried again on that box's descendants
+/// only once they are this fraction of its width: four levels of halving later.
+inline constexpr double kCubicClipRetryWidth = 1.0 / 16;
 
 /// A clip that keeps more than this fraction of its interval has not done enough: the box
 /// is split instead of clipped again. The hybrid method halves both intervals once a clip

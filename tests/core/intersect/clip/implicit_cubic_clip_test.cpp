@@ -96,6 +96,27 @@ TEST(ImplicitCubicClip, AQuarterAndItsCopyMovedATinyDistanceAreSeparatedWithinAF
   }
 }
 
+TEST(ImplicitCubicClip, ACopyScaledAboutTheCommonStartIsSolvedWithinAFewMillionUnits) {
+  // S(t) = (9t + 3t^2 - 2t^3, 15t - 45t^2 + 30t^3) (control points (0,0), (3,5), (7,-5),
+  // (10,0)) and (1 + e) S, e = 2^-30 (exact). They meet at the common start, touching, and
+  // near where S's tangent passes through the origin, cross(S, S') = 0, which is t = 3/4
+  // exactly (both factors of cross / t equal -18.984375 there); the crossing moves by O(e).
+  // Near the common start the gap vanishes and no implicit band parts the pieces: the
+  // cubic clip must not spend the budget retrying there.
+  const Curve s({{0, 0}, {3, 5}, {7, -5}, {10, 0}});
+  const double e = 0x1p-30;
+  const Curve scaled({{0, 0}, {3 * (1 + e), 5 * (1 + e)}, {7 * (1 + e), -5 * (1 + e)}, {10 * (1 + e), 0}});
+  IntersectOptions options;
+  options.max_work = 4'000'000;
+  const IntersectionResult r = intersect(s, scaled, options);
+  ASSERT_EQ(r.status, IntersectStatus::ok);
+  ASSERT_EQ(r.intersections.size(), 2u);
+  EXPECT_EQ(r.intersections[0].t, 0.0);
+  EXPECT_EQ(r.intersections[0].s, 0.0);
+  EXPECT_NEAR(r.intersections[1].t, 0.75, 1e-6);
+  EXPECT_NEAR(r.intersections[1].s, 0.75, 1e-6);
+}
+
 TEST(ImplicitCubicClip, TheCrossingOfTwoCirclesANearDistanceApartIsFound) {
   // The circles of radius 5 about (0, 0) and (1e-10, 0) cross on the line x = 5e-11, in the
   // first's quarter from 0 to 90 degrees and the second's from 90 to 180 degrees (the first
