@@ -430,6 +430,30 @@ TEST(Boolean, CirclesNearTangentAcrossTheTolerance) {
   }
 }
 
+TEST(Boolean, CircleAndItsCopyMovedATinyDistance) {
+  // The four-cubic circle of radius 5 (convex, its height 10 reached at (0, +-5) with level
+  // tangents) and its copy moved by (d, 0): A u B covers A and the strip the move sweeps,
+  // d x 10, less two cusps of area O(d^3) at the crossings; A n B is A less that strip. The
+  // boundaries run within d of each other all the way round, and the answer must come
+  // within the service's default work cap of 22 million units.
+  const path::Path a = parsed_path(circle(0, 0, 5));
+  const double area = exact_area(a).to_double();
+  for (const double d : {1e-9, 1e-10, 1e-11}) {
+    SCOPED_TRACE(d);
+    const path::Path b = parsed_path(circle(d, 0, 5));
+    const BooleanResult u = boolean_operation(BooleanOperation::union_, {a, FillRule::nonzero},
+                                              {b, FillRule::nonzero}, 22'000'000);
+    const BooleanResult i = boolean_operation(BooleanOperation::intersection, {a, FillRule::nonzero},
+                                              {b, FillRule::nonzero}, 22'000'000);
+    ASSERT_EQ(u.status, BooleanStatus::ok);
+    ASSERT_EQ(i.status, BooleanStatus::ok);
+    test::expect_clean(u, a, &b, 1e-9);
+    test::expect_clean(i, a, &b, 1e-9);
+    EXPECT_NEAR(u.area, area + 10 * d, d);
+    EXPECT_NEAR(i.area, area - 10 * d, d);
+  }
+}
+
 TEST(Boolean, MirroredArcsTouchingAtTheirMiddles) {
   // A's right arc runs from -45 to 45 degrees; B is A mirrored about the vertical line through
   // that arc's middle, so the two touch there with a common vertical tangent, inside a segment
