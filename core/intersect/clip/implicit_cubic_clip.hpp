@@ -22,17 +22,21 @@ namespace bezier::core {
 ///
 /// The band. Points of the true `other` lie within e_o = sqrt(2) other.error of the stored
 /// cubic Q, and points of the true x within e_x = sqrt(2) x.error of the stored piece X. For
-/// q with det M(q) = 0 and |e| <= e, M(q + e) = M(q) + E with |E_ij| <= C(3,i) C(3,j)
-/// |P_j - P_i| e (L_ij moves by C C cross(P_j - P_i, e)), and by Hadamard's inequality on
-/// the columns, |det(M + E) - det M| <= prod_k (|m_k| + |E_k|) - prod_k |m_k|, with column
-/// norms bounded over the hull where q lies (|P_i - q| at most the distance to the hull's
-/// farthest vertex). So where x meets `other`, |J(t)| <= band_o + band_x + e_J, e_J bounding
-/// the rounding of J's coefficients (tracked through every difference, sum and product of
-/// the computation). Keeping the t where J can be in [-band, band] (the convex hull clip) is
-/// conservative. The whole band is rounding, so `noisy` is set when it is a quarter of J's
-/// spread or more. A degenerate cubic (all control points on a line, or a cubic that is a
-/// quadratic raised in degree) has det M = 0 identically or nearly: J stays in the band and
-/// the clip keeps everything, which is sound.
+/// q on either curve and |e| <= e, M(q + e) = M(q) + E with |E_ij| <= C(3,i) C(3,j)
+/// |P_j - P_i| e (L_ij moves by C C cross(P_j - P_i, e)). Expanding det(M + E) by columns,
+/// the terms with one column of E sum to grad det M(q) . e (Jacobi's formula: the cofactors
+/// times the entries' slopes), bounded by the largest Bernstein coefficients of grad det M
+/// along the curve; the terms with two or three columns of E are bounded by Hadamard's
+/// inequality, with column norms bounded over the hull where q lies (|P_i - q| at most the
+/// distance to the hull's farthest vertex). det M = 0 on Q, so where x meets `other`,
+/// |J(t)| <= band_o + band_x + e_J, e_J bounding the rounding of J's coefficients. The
+/// entries, cofactors and J are computed in double-double arithmetic in the scaled Bernstein
+/// basis (products are convolutions without weights), each operation's rounding tracked: J
+/// cancels to about the gap times the products that form it, which doubles would bury
+/// below gaps near 1e-11 of the curves' size. Keeping the t where J can be in [-band, band]
+/// (the convex hull clip) is conservative. A degenerate cubic (all control points on a
+/// line, or a quadratic raised in degree) has det M small or zero everywhere: J stays in the
+/// band and the clip keeps everything, which is sound.
 /// Precondition: other.degree() == 3; x of any degree.
 [[nodiscard]] Clip implicit_cubic_clip(const Piece& x, const Piece& other);
 
