@@ -412,6 +412,9 @@ class Searcher {
         budget_.charge(implicit_cubic_clip_cost(x.degree()));
         clip.kept = intersect_kept(clip.kept, exact.kept);
         if (!clip.kept) return Next::finished;
+        // Its `noisy` is left out: this band is all rounding, so it would call the boxes of
+        // crossings at tiny angles noisy and stop them unresolved at the floor; the parabola's
+        // judgement stands.
         if (exact.kept->width() >= kCubicClipAfterParabolaKept) box.cubic_clip_failed_at = w;
       }
     }

@@ -37,6 +37,7 @@ namespace bezier::core {
 /// (the convex hull clip) is conservative. A degenerate cubic (all control points on a
 /// line, or a quadratic raised in degree) has det M small or zero everywhere: J stays in the
 /// band and the clip keeps everything, which is sound.
+/// `noisy`: the band, all of it rounding, is a quarter of J's spread or more.
 /// Precondition: other.degree() == 3; x of any degree.
 [[nodiscard]] Clip implicit_cubic_clip(const Piece& x, const Piece& other);
 
