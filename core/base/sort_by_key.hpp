@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -38,6 +39,11 @@ inline void sort_by_key_then_index(std::vector<std::pair<double, std::size_t>>& 
   constexpr std::size_t kInsertionLimit = 16;
   const std::size_t n = items.size();
   if (n < 2) return;
+  // The work arrays first: every double register is lost across a call (an allocation), and
+  // a running minimum that is still needed after one is kept in memory by the compiler, so
+  // that each step of its loop waits for the store of the step before.
+  std::vector<std::size_t> start(n + 1, 0);
+  std::vector<Item> placed(n);
   double lo = items[0].first, hi = items[0].first;
   bool finite = true;
   for (const Item& item : items) {
@@ -50,18 +56,17 @@ inline void sort_by_key_then_index(std::vector<std::pair<double, std::size_t>>& 
     std::sort(items.begin(), items.end(), before);
     return;
   }
-  const auto bucket_of = [&](double x) {
+  const auto bucket_of = [lo, f, n](double x) {
+    // v >= 0 (x >= lo, f > 0): the signed conversion, one instruction, gives its floor.
     const double v = (x - lo) * f;
-    return v < static_cast<double>(n) ? static_cast<std::size_t>(v) : n - 1;
+    return v < static_cast<double>(n) ? static_cast<std::size_t>(static_cast<std::int64_t>(v)) : n - 1;
   };
-  std::vector<std::size_t> start(n + 1, 0);
   for (const Item& item : items) ++start[bucket_of(item.first) + 1];
   std::size_t largest = 0;
   for (std::size_t b = 0; b < n; ++b) {
     largest = std::max(largest, start[b + 1]);
     start[b + 1] += start[b];
   }
-  std::vector<Item> placed(n);
   // start[b] is used as bucket b's next free place.
   for (const Item& item : items) placed[start[bucket_of(item.first)]++] = item;
   if (largest <= kInsertionLimit) {

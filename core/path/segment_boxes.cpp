@@ -350,8 +350,14 @@ MeetingBoxes sweep(std::span<const core::Rect> a, std::span<const core::Rect> b,
   const std::size_t n = a.size() + b.size();
   if (n == 0) return out;
   if (!budget.spend(3 * sort_work(n))) return out;
-  const auto entry_at = [&](std::size_t k) {
-    return k < a.size() ? Entry{a[k], k, 0} : Entry{b[k - a.size()], k - a.size(), 1};
+  // Filled field by field: an Entry built whole and then copied is read back by the
+  // compiler in wide pieces across the narrower stores just made (a store-buffer stall on
+  // every entry).
+  const auto fill_entry = [&](Entry& entry, std::size_t k) {
+    const bool in_a = k < a.size();
+    entry.box = in_a ? a[k] : b[k - a.size()];
+    entry.index = in_a ? k : k - a.size();
+    entry.set = in_a ? 0 : 1;
   };
   // Sorted by (min.x, set, index): the positions come in (set, index) order, so they break
   // ties in min.x; sorting small keys and gathering once moves less.
@@ -362,7 +368,7 @@ MeetingBoxes sweep(std::span<const core::Rect> a, std::span<const core::Rect> b,
   std::vector<Entry> entries(n);
   std::size_t first_indices = 0;  // the first index of a pair is below this
   for (std::size_t k = 0; k < n; ++k) {
-    entries[k] = entry_at(keys[k].second);
+    fill_entry(entries[k], keys[k].second);
     if (entries[k].set == 0) first_indices = std::max(first_indices, entries[k].index + 1);
   }
   const std::int64_t log_n = std::bit_width(n);

@@ -77,6 +77,30 @@ double diameter_bound(const core::Curve& c) {
   return 2.0 * m;
 }
 
+/// The largest core::scale of the segments, by comparisons rather than library fmax calls:
+/// for finite coordinates (the precondition) both give the same largest |coordinate|. Each
+/// segment's largest first, as a tree of comparisons for a cubic, then one comparison with
+/// the running maximum, so that the steps of one segment do not wait for those of the one
+/// before. Not in line: a double still needed after a call is kept in memory by the
+/// compiler, and the running maximum would then wait on its own stores at every step.
+[[gnu::noinline]] double largest_coordinate(const std::vector<core::Curve>& segments) {
+  const auto larger = [](double a, double b) { return a > b ? a : b; };
+  const auto magnitude = [&](Point2 p) { return larger(std::fabs(p.x), std::fabs(p.y)); };
+  double scale = 0.0;
+  for (const core::Curve& s : segments) {
+    const std::span<const Point2> points = s.points();
+    double m = 0.0;
+    if (points.size() == 4) {
+      m = larger(larger(magnitude(points[0]), magnitude(points[1])),
+                 larger(magnitude(points[2]), magnitude(points[3])));
+    } else {
+      for (const Point2 p : points) m = larger(m, magnitude(p));
+    }
+    scale = larger(scale, m);
+  }
+  return scale;
+}
+
 /// Both operands' segments as one path, without the zero-length ones (a single point adds
 /// no boundary; inside a subpath it is a joint of its neighbours, and a subpath of points
 /// alone is left out), and where each came from.
@@ -116,6 +140,7 @@ Combined combined(const path::Path& a, const path::Path* b) {
 struct ContactEvents {
   std::vector<Event> events;
   std::vector<std::pair<std::size_t, std::size_t>> same;  // events that are one vertex
+  double largest_radius = 0.0;  // of all the events (kept as they are made)
 };
 
 ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersectionResult& found,
@@ -135,14 +160,28 @@ ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersec
                  4 * found.overlaps.size());
   same.reserve(found.intersections.size() + 2 * found.overlaps.size());
   events.resize(2 * all.segments.size());
+  if (!all.segments.empty()) contacts.largest_radius = base_radius;
+  // Field by field: an Event built whole and then copied makes the compiler read it back
+  // in wide pieces across narrower stores just made, each a stall of the store buffer.
   for (std::size_t i = 0; i < all.segments.size(); ++i) {
     const core::Curve& s = all.segments[i];
-    events[2 * i] = {i, 0.0, s.front(), base_radius, true};
-    events[2 * i + 1] = {i, 1.0, s.back(), base_radius, true};
+    Event& start = events[2 * i];
+    start.segment = i;
+    start.t = 0.0;
+    start.point = s.front();
+    start.radius = base_radius;
+    start.segment_end = true;
+    Event& end = events[2 * i + 1];
+    end.segment = i;
+    end.t = 1.0;
+    end.point = s.back();
+    end.radius = base_radius;
+    end.segment_end = true;
   }
   const auto add_pair = [&](std::size_t i, double t, double t_width, std::size_t j, double s,
                             double s_width, Point2 p) {
     const double r = base_radius + std::max(t_width * speed_of(i), s_width * speed_of(j));
+    contacts.largest_radius = std::max(contacts.largest_radius, r);
     events.push_back({i, t, p, r, false});
     events.push_back({j, s, p, r, false});
     same.emplace_back(events.size() - 2, events.size() - 1);
@@ -173,7 +212,8 @@ ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersec
 }
 
 /// Joins the events that are one vertex: the pairs of `same`, and every two events within
-/// the sum of their radii (a sweep over x; the largest radius bounds how far to look).
+/// the sum of their radii (a sweep over x; the largest radius, max_radius, bounds how far
+/// to look).
 ///
 /// An event with the same point (by value) and the same radius as the event before it (a
 /// joint's two segment ends, a contact's two events) is joined to it and left out of the
@@ -181,11 +221,10 @@ ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersec
 /// differences and the radii alone, so f is within reach of it exactly when f is within
 /// reach of the event before it, which the sweep tests; the clusters are the same.
 Clusters close_events(const std::vector<Event>& events,
-                      const std::vector<std::pair<std::size_t, std::size_t>>& same) {
+                      const std::vector<std::pair<std::size_t, std::size_t>>& same,
+                      double max_radius) {
   Clusters clusters(events.size());
   for (const auto& [i, j] : same) clusters.join(i, j);
-  double max_radius = 0.0;
-  for (const Event& e : events) max_radius = std::max(max_radius, e.radius);
   // The swept events by x (ties by index), each with its x beside it so that the sort
   // compares in place. Which pairs are joined, and so the clusters, do not depend on the
   // order of ties: each pair within reach is met from whichever of its two comes first.
@@ -575,25 +614,7 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, core::Wo
   Arrangement out;
   Combined both = combined(a, b);
   const path::Path& all = both.path;
-  // The largest core::scale of the segments, by comparisons rather than library fmax calls:
-  // for finite coordinates (the precondition) both give the same largest |coordinate|.
-  double scale = 0.0;
-  const auto include = [&](auto points) {
-    for (const Point2 p : points) {
-      const double x = std::fabs(p.x), y = std::fabs(p.y);
-      if (x > scale) scale = x;
-      if (y > scale) scale = y;
-    }
-  };
-  for (const core::Curve& s : all.segments) {
-    // A cubic's four points with a fixed extent (the loop unrolls); the same comparisons.
-    const std::span<const Point2> points = s.points();
-    if (points.size() == 4) {
-      include(points.first<4>());
-    } else {
-      include(points);
-    }
-  }
+  const double scale = largest_coordinate(all.segments);
   out.scale = scale > 0.0 ? scale : 1.0;
   const double base_radius = kVertexMergeRel * out.scale;
 
@@ -605,7 +626,7 @@ Arrangement build_arrangement(const path::Path& a, const path::Path* b, core::Wo
   if (out.status != core::IntersectStatus::ok) return out;
 
   const ContactEvents contacts = contact_events(all, found, base_radius);
-  Clusters clusters = close_events(contacts.events, contacts.same);
+  Clusters clusters = close_events(contacts.events, contacts.same, contacts.largest_radius);
   const VertexAssignment assigned = assign_vertices(contacts.events, clusters, out.vertices);
   const auto edges_of = cut_into_edges(both, contacts.events, assigned, out);
   Clusters groups(out.edges.size());
