@@ -59,20 +59,26 @@ bool separates(Point2 d, std::span<const Point2, Before> before,
   return true;
 }
 
-/// The difference of the two end tangents' unit vectors (see the header).
+/// The difference of the two end tangents' unit vectors (see the header), times the product
+/// of the two lengths: v |w| - w |v| = |v| |w| (v / |v| - w / |w|), the same direction
+/// without the two divisions, whose latency the test would otherwise wait on (separates
+/// takes any d as exact). A product that overflows makes d infinite or NaN, which separates
+/// never certifies.
 template <std::size_t Before, std::size_t After>
 std::optional<Point2> tangent_direction(std::span<const Point2, Before> before,
                                         std::span<const Point2, After> after) noexcept {
   const Point2 joint = after.front();
   std::optional<Point2> v, w;
   for (std::size_t i = before.size() - 1; i-- > 0 && !v;) {
-    if (before[i] != joint) v = unit(before[i] - joint);
+    if (before[i] != joint) v = before[i] - joint;
   }
   for (std::size_t j = 1; j < after.size() && !w; ++j) {
-    if (after[j] != joint) w = unit(after[j] - joint);
+    if (after[j] != joint) w = after[j] - joint;
   }
   if (!v || !w) return std::nullopt;
-  return *v - *w;
+  const double v_length = length_of(*v), w_length = length_of(*w);
+  if (!(v_length > 0.0) || !(w_length > 0.0)) return std::nullopt;
+  return *v * w_length - *w * v_length;
 }
 
 /// The difference of the control polygons' mean directions from the joint (see the header).
