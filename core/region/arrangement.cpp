@@ -344,15 +344,17 @@ std::vector<std::pair<std::size_t, std::size_t>> cut_into_edges(Combined& both,
     // away.
     if (same_bits(exact.front(), front) && same_bits(exact.back(), back)) {
       arrangement.edges.emplace_back(both.origin[i].first, both.origin[i].second, t0, t1, from,
-                                     to, std::move(exact), std::nullopt, arrangement.edges.size());
+                                     to, std::move(exact), ArrangementEdge::kNotSnapped,
+                                     arrangement.edges.size());
       return;
     }
     core::Curve::Points pts(exact.points());
     pts.front() = front;
     pts.back() = back;
     arrangement.edges.emplace_back(both.origin[i].first, both.origin[i].second, t0, t1, from, to,
-                                   core::Curve(std::move(pts)), std::move(exact),
+                                   core::Curve(std::move(pts)), arrangement.snapped_exacts.size(),
                                    arrangement.edges.size());
+    arrangement.snapped_exacts.push_back(std::move(exact));
   };
   const auto add_edge = [&](std::size_t i, double t0, double t1, std::size_t from,
                             std::size_t to, bool whole_cut) {
@@ -546,8 +548,8 @@ void join_thin_lenses(const Arrangement& arrangement, Clusters& groups) {
         const bool flip = p.from != q.from;
         bool near = true;
         for (const double t : {0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875}) {
-          const Point2 at_p = core::evaluate(p.exact(), t);
-          const Point2 at_q = core::evaluate(q.exact(), flip ? 1.0 - t : t);
+          const Point2 at_p = core::evaluate(arrangement.exact(p), t);
+          const Point2 at_q = core::evaluate(arrangement.exact(q), flip ? 1.0 - t : t);
           near = near && core::length(at_p - at_q) <= clearance;
         }
         if (near) groups.join(by_ends[x].edge, by_ends[y].edge);
@@ -601,8 +603,8 @@ void number_groups(Clusters& groups, Arrangement& arrangement) {
       // one vertex) when its tangent at the middle points the same way.
       const bool along = (x.from != x.to && r.from != r.to)
                              ? x.from == r.from
-                             : core::dot(core::derivatives_at(x.exact(), 0.5, 1).front(),
-                                         core::derivatives_at(r.exact(), 0.5, 1).front()) > 0.0;
+                             : core::dot(core::derivatives_at(arrangement.exact(x), 0.5, 1).front(),
+                                         core::derivatives_at(arrangement.exact(r), 0.5, 1).front()) > 0.0;
       g.multiplicity[static_cast<std::size_t>(x.source)] += along ? 1 : -1;
     }
   }

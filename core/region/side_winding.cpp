@@ -257,10 +257,10 @@ SideWindingResult side_windings(const Arrangement& arrangement, const SideWindin
   candidates.reserve(std::min<std::size_t>(edges.size(), 64));
   const CoincidentGroup& g = arrangement.groups[group];
   const ArrangementEdge& rep = arrangement.edges[g.representative];
-  const ParameterAndSpeed origin = ray_origin_parameter(rep.exact());
-  const core::Split<Point2> halves = core::subdivide(rep.exact(), origin.t);
+  const ParameterAndSpeed origin = ray_origin_parameter(arrangement.exact(rep));
+  const core::Split<Point2> halves = core::subdivide(arrangement.exact(rep), origin.t);
   const Point2 middle = halves.left.back();
-  const Point2 tangent = tangent_at(rep.exact(), origin.t, origin.first);
+  const Point2 tangent = tangent_at(arrangement.exact(rep), origin.t, origin.first);
   const double norm = core::length(tangent);
   if (!(norm > 0.0)) {
     result.status = SideWindingStatus::unclear;
