@@ -159,24 +159,13 @@ ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersec
   events.reserve(2 * all.segments.size() + 2 * found.intersections.size() +
                  4 * found.overlaps.size());
   same.reserve(found.intersections.size() + 2 * found.overlaps.size());
-  events.resize(2 * all.segments.size());
   if (!all.segments.empty()) contacts.largest_radius = base_radius;
-  // Field by field: an Event built whole and then copied makes the compiler read it back
-  // in wide pieces across narrower stores just made, each a stall of the store buffer.
+  // Built in place (no Event copied whole: GCC reads a copied Event back in wide pieces
+  // across the narrower stores just made, a store-buffer stall each).
   for (std::size_t i = 0; i < all.segments.size(); ++i) {
     const core::Curve& s = all.segments[i];
-    Event& start = events[2 * i];
-    start.segment = i;
-    start.t = 0.0;
-    start.point = s.front();
-    start.radius = base_radius;
-    start.segment_end = true;
-    Event& end = events[2 * i + 1];
-    end.segment = i;
-    end.t = 1.0;
-    end.point = s.back();
-    end.radius = base_radius;
-    end.segment_end = true;
+    events.emplace_back(i, 0.0, s.front(), base_radius, true);
+    events.emplace_back(i, 1.0, s.back(), base_radius, true);
   }
   const auto add_pair = [&](std::size_t i, double t, double t_width, std::size_t j, double s,
                             double s_width, Point2 p) {
