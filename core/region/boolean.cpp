@@ -103,9 +103,9 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::W
       // Each group is looked at once here and its representative's piece is not read again
       // (the result takes only its source and parameters), so the piece moves (reversed in
       // its own storage when it runs the other way).
-      kept.push_back({edge.from, edge.to, std::move(edge.piece), e});
+      kept.emplace_back(edge.from, edge.to, std::move(edge.piece), e);
     } else {
-      kept.push_back({edge.to, edge.from, core::reversed(std::move(edge.piece)), e});
+      kept.emplace_back(edge.to, edge.from, core::reversed(std::move(edge.piece)), e);
     }
     kept_reversed.push_back(left ? 0 : 1);
   }
@@ -135,9 +135,10 @@ BooleanResult run(BooleanOperation op, const Region& a, const Region* b, core::W
     for (std::size_t k : chain) {
       const ArrangementEdge& edge = arrangement.edges[kept[k].tag];
       const bool backwards = kept_reversed[k] != 0;
-      // Each kept edge is in one chain only: its curve moves to the result.
-      result.segments.push_back({edge.source, edge.segment, backwards ? edge.t1 : edge.t0,
-                                 backwards ? edge.t0 : edge.t1, std::move(kept[k].curve)});
+      // Each kept edge is in one chain only: its curve moves to the result (built in place,
+      // not through a temporary moved twice).
+      result.segments.emplace_back(edge.source, edge.segment, backwards ? edge.t1 : edge.t0,
+                                   backwards ? edge.t0 : edge.t1, std::move(kept[k].curve));
     }
     contour.end_segment = result.segments.size();
     contour.area = area;
