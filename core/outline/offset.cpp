@@ -385,7 +385,7 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
 /// Both sides' samples O = B_p ± d N at once (as sample_parallel at d and at -d, bit for
 /// bit): B_p and B_p' are evaluated once per sample. The ends are the end frames' points
 /// moved by ±d along their normals. Returns whether every sample is a number.
-bool sample_both_sides(const ControlPoints& q, const ControlPoints& h1, double d,
+BEZIER_FMA_CLONES bool sample_both_sides(const ControlPoints& q, const ControlPoints& h1, double d,
                        const EndFrame& start, const EndFrame& end, const CubicWeights& weights,
                        std::vector<Point2>& plus, std::vector<Point2>& minus) {
   const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
@@ -496,6 +496,13 @@ std::array<ChordMoments, N> chord_moments_of(const ControlPoints& q, const Contr
     results[c].valid = std::isfinite(results[c].area) && std::isfinite(results[c].moment);
   }
   return results;
+}
+
+/// chord_moments_of for both sides of a piece (the FMA clones: the same roundings).
+BEZIER_FMA_CLONES std::array<ChordMoments, 2> chord_moments_of_sides(
+    const ControlPoints& q, const ControlPoints& h1, const ControlPoints& h2, double d,
+    const std::array<Point2, 2>& starts, const std::array<Point2, 2>& ends) {
+  return chord_moments_of<2>(q, h1, h2, {d, -d}, starts, ends);
 }
 
 ChordMoments chord_moments(const ControlPoints& q, const ControlPoints& h1,
@@ -1102,7 +1109,7 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
   // The chord moments of both sides from one evaluation of B_p, B_p', B_p'' per node; the
   // ends as fit_piece's (the samples' first and last).
   const std::array<ChordMoments, 2> moments =
-      chord_moments_of<2>(q, shape.h1, shape.h2, {s.d, -s.d},
+      chord_moments_of_sides(q, shape.h1, shape.h2, s.d,
                           {plus_samples.front(), minus_samples.front()},
                           {plus_samples.back(), minus_samples.back()});
   plus_first.fit = fit_piece(s, a, b, q, start, end, s.d, tolerance_left, plus_first.direction,
