@@ -385,9 +385,10 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
 /// Both sides' samples O = B_p ± d N at once (as sample_parallel at d and at -d, bit for
 /// bit): B_p and B_p' are evaluated once per sample. The ends are the end frames' points
 /// moved by ±d along their normals. Returns whether every sample is a number.
-BEZIER_FMA_CLONES bool sample_both_sides(const ControlPoints& q, const ControlPoints& h1, double d,
-                       const EndFrame& start, const EndFrame& end, const CubicWeights& weights,
-                       std::vector<Point2>& plus, std::vector<Point2>& minus) {
+BEZIER_FMA_CLONES bool sample_both_sides(const ControlPoints& q, const ControlPoints& h1,
+                                         double d, const EndFrame& start, const EndFrame& end,
+                                         const CubicWeights& weights, std::vector<Point2>& plus,
+                                         std::vector<Point2>& minus) {
   const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
   if (q.size() != 4) {
     const bool all = sample_parallel(q, h1, d, start.point + d * n0, end.point + d * n1,
@@ -1110,8 +1111,8 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
   // ends as fit_piece's (the samples' first and last).
   const std::array<ChordMoments, 2> moments =
       chord_moments_of_sides(q, shape.h1, shape.h2, s.d,
-                          {plus_samples.front(), minus_samples.front()},
-                          {plus_samples.back(), minus_samples.back()});
+                             {plus_samples.front(), minus_samples.front()},
+                             {plus_samples.back(), minus_samples.back()});
   plus_first.fit = fit_piece(s, a, b, q, start, end, s.d, tolerance_left, plus_first.direction,
                              plus_samples, zero_start, zero_end, &shape, sampled, &moments[0]);
   minus_first.fit = fit_piece(s, a, b, q, start, end, -s.d, tolerance_left,
