@@ -559,6 +559,14 @@ std::array<Point2, 4> fit(const std::vector<Point2>& o, const CubicWeights& w, b
   return {p0, p0 + alpha * d0, p3 - beta * d3, p3};
 }
 
+/// The direction u in the frame of the unit chord direction `axis`: (u · axis, axis × u).
+/// Kept out of line: in an FMA clone, GCC's vectorizer takes the pair for a complex product
+/// and fuses its multiplications and additions (vfmsubadd) in spite of -ffp-contract=off,
+/// which would change the bits against the plain x86-64 copy.
+__attribute__((noinline)) Point2 in_chord_frame(Point2 u, Point2 axis) {
+  return {core::dot(u, axis), core::cross(axis, u)};
+}
+
 /// The sampled part of offset.hpp's bound for the cubic c against the samples o_j = O(t_j),
 /// t_j = j / K, under the correspondence t -> u = ψ(t) that is linear between the u_j, each
 /// u_j near the foot of o_j on c: a Gauss-Newton step of (C(u) - o_j) · C'(u) = 0 from the
@@ -788,8 +796,8 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
       const Point2 chord = p3 - p0;
       chord_length = std::sqrt(squared_length(chord));
       const Point2 axis = chord / chord_length;
-      t0 = {core::dot(d0, axis), core::cross(axis, d0)};
-      t3 = {core::dot(d3, axis), core::cross(axis, d3)};
+      t0 = in_chord_frame(d0, axis);
+      t3 = in_chord_frame(d3, axis);
       if (arc_started_handles(t0, t3, moments.area, moments.moment, arc))
         candidates[candidate_count++] = arc;
     }
@@ -1078,9 +1086,11 @@ bool offset_interval(const core::Curve& curve, double a, double b, double d, dou
   return fit_interval(scaled, scaled.d, a, b, budget, out);
 }
 
-bool offset_interval_sides(const core::Curve& curve, double a, double b, double d,
-                           double tolerance, core::WorkBudget& budget,
-                           std::vector<OffsetCubic>& plus, std::vector<OffsetCubic>& minus) {
+BEZIER_FMA_CLONES bool offset_interval_sides(const core::Curve& curve, double a, double b,
+                                             double d, double tolerance,
+                                             core::WorkBudget& budget,
+                                             std::vector<OffsetCubic>& plus,
+                                             std::vector<OffsetCubic>& minus) {
   const ScaledCurve s(curve, d, tolerance);
   ControlPoints q;
   piece_into(s.points, a, b, q);
