@@ -579,7 +579,6 @@ struct SampledBound {
   double largest = 0.0;  // max_j |C(u_j) - o_j|, or the first one beyond `reach`
   double second = 0.0;   // the bound of |(C o ψ)'' - B_p''| between samples
   bool within = true;    // no sample beyond `reach`
-  int steps = 0;         // the further Gauss-Newton steps tried (each an evaluation more)
 };
 
 /// foot_bound's loop, with B_p'' linear in t (Linear: degree <= 3, from the first and last
@@ -651,7 +650,6 @@ SampledBound foot_bound_of(const std::array<Point2, 4>& c, const std::vector<Poi
       const double next = step_from(u, r);
       const Point2 next_r = off(next, target);
       const double next_squared = squared_length(next_r);
-      ++result.steps;
       if (!(next_squared < distance_squared)) break;
       const bool slow = !(next_squared < 0.25 * distance_squared);
       u = next;
@@ -809,7 +807,7 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
                      int k, double& largest) {
       int taken = 0;
       const SampledBound sampled = foot_bound(c, samples, shape.h2, tolerance, taken);
-      result.work += 24 * static_cast<std::int64_t>(taken) + 12 * std::int64_t{sampled.steps};
+      result.work += 24 * static_cast<std::int64_t>(taken);
       largest = sampled.largest;
       const double second = sampled.second + bend / k + turning;
       const double remainder = second / (8.0 * k * k) + slack;
