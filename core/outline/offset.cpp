@@ -807,7 +807,9 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
                      int k, double& largest) {
       int taken = 0;
       const SampledBound sampled = foot_bound(c, samples, shape.h2, tolerance, taken);
-      result.work += 24 * static_cast<std::int64_t>(taken);
+      // Per sample two evaluations of the cubic and a step (further steps, at most
+      // kFootSteps at a sample, are rare: within a constant of this).
+      result.work += 36 * static_cast<std::int64_t>(taken);
       largest = sampled.largest;
       const double second = sampled.second + bend / k + turning;
       const double remainder = second / (8.0 * k * k) + slack;
