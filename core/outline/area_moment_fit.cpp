@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/base/multiversion.hpp"
 #include "core/numeric/quadratic_roots.hpp"
 
 namespace bezier::outline {
@@ -159,7 +160,7 @@ struct AreaMomentSystem {
 
 }  // namespace
 
-HandleCandidates area_moment_handles(core::Point2 t0, core::Point2 t3, double area,
+BEZIER_FMA_CLONES HandleCandidates area_moment_handles(core::Point2 t0, core::Point2 t3, double area,
                                      double moment) {
   HandleCandidates result;
   const AreaMomentSystem system(t0, t3, area, moment);
@@ -180,7 +181,7 @@ HandleCandidates area_moment_handles(core::Point2 t0, core::Point2 t3, double ar
   return result;
 }
 
-bool arc_started_handles(core::Point2 t0, core::Point2 t3, double area, double moment,
+BEZIER_FMA_CLONES bool arc_started_handles(core::Point2 t0, core::Point2 t3, double area, double moment,
                          HandleLengths& out) {
   const AreaMomentSystem system(t0, t3, area, moment);
   if (!system.valid) return false;

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <tuple>
 
+#include "core/base/multiversion.hpp"
 #include "core/numeric/power_of_two.hpp"
 #include "core/outline/area_moment_fit.hpp"
 #include "core/outline/control_points.hpp"
@@ -20,17 +22,34 @@ namespace {
 
 using core::Point2;
 
-constexpr int kFitSamples = 8;
+// The fewest samples of a fit's bound (three interior samples for the least squares' two
+// handles), and the samples of the least squares where m is not positive (no bound of
+// |d N''| to choose them from).
+constexpr int kFitSamples = 4;
+constexpr int kBallSamples = 8;
 constexpr int kMaxSamples = 4096;
 // The deepest split: next to a zero of B' that is one only to within a few units of
 // rounding (a hairpin whose turn spans 1e-12 of the parameter), the halving towards it takes
 // about 40 levels before the turn itself is reached.
 constexpr int kMaxDepth = 60;
 constexpr int kMostParts = 8;
-// The share of the tolerance the first K leaves to the remainder, and the share below
-// which a cubic's samples must stay for a denser K to be tried.
-constexpr double kFirstRemainder = 0.75;
-constexpr double kDenserBelow = 0.9;
+// The first K: the remainder h^2 / 8 |e''| within kFirstRemainder of the tolerance with
+// |e''| estimated at kSecondEstimate times the bound of |d N''| (the sampled term of |e''|,
+// |s^2 C'' - B_p''|, is about a third of that bound where the fit follows O).
+constexpr double kFirstRemainder = 0.9;
+constexpr double kSecondEstimate = 1.4;
+// A denser K is tried while the samples stay below kDenserBelow of the tolerance, for the
+// remainder within kDenserRoom of the room they leave, with |e''| estimated at
+// kDenserEstimate times the sampled one (denser samples find more of s^2 C''); at most
+// kDenserTries times, each later one at least a quarter denser than the one before.
+constexpr double kDenserBelow = 0.995;
+constexpr double kDenserRoom = 0.9;
+constexpr double kDenserEstimate = 1.3;
+constexpr int kDenserTries = 2;
+// foot_bound's further Gauss-Newton steps at a sample whose distance exceeds this share of
+// the tolerance (at most kFootSteps, while each at least halves the distance).
+constexpr double kFootRefine = 0.25;
+constexpr int kFootSteps = 4;
 
 /// The buffer of one thread's samples of O, reused from fit to fit.
 std::vector<Point2>& sample_buffer() {
@@ -173,12 +192,12 @@ void divide_at_start(ControlPoints& g) {
 /// The piece's derivatives' control points and the bounds offset.hpp takes from them.
 struct PieceShape {
   ControlPoints h1, h2, h3;
-  double M1 = 0.0, M2 = 0.0, M3 = 0.0;
+  double M2 = 0.0, M3 = 0.0;
   double m = 0.0;  // least projection of h1 on the direction of B'(1/2); 0 when not positive
   // The bounds of the normal's turning (offset.hpp): those of B_p' itself (W = M, w = m), or
   // where B' vanishes at an end of the piece, those of the reduced hodograph Q with B_p' =
   // t^i (1 - t)^j Q, whose direction is B_p''s inside the piece.
-  double W1 = 0.0, W2 = 0.0, W3 = 0.0;
+  double W2 = 0.0, W3 = 0.0;
   double w = 0.0;  // least projection of Q on the direction of Q(1/2); 0 when not positive
   bool reduced_start = false, reduced_end = false;
   Point2 start_direction{0, 0}, end_direction{0, 0};  // Q(0), Q(1) as unit vectors, if reduced
@@ -203,11 +222,9 @@ struct PieceShape {
         for (Point2& p : h2) p = (length * length) * p;
     }
     hodograph_into(h2, h3);
-    M1 = std::sqrt(largest_squared_length(h1));
     M2 = std::sqrt(largest_squared_length(h2));
     M3 = std::sqrt(largest_squared_length(h3));
     m = least_projection(h1);
-    W1 = M1;
     W2 = M2;
     W3 = M3;
     w = m;
@@ -232,7 +249,6 @@ struct PieceShape {
     }
     hodograph_into(q, q1);
     hodograph_into(q1, q2);
-    W1 = std::sqrt(largest_squared_length(q));
     W2 = std::sqrt(largest_squared_length(q1));
     W3 = std::sqrt(largest_squared_length(q2));
     w = least_projection(q);
@@ -245,14 +261,10 @@ struct PieceShape {
   /// offset.hpp's bound of |d N''| on the piece (needs w > 0; normal_turning.hpp).
   [[nodiscard]] double normal_second(double d) const { return normal_second_bound(W2, W3, w, d); }
 
-  /// The estimate of |d N''| the first sample count is chosen for (offset.hpp): the bound
-  /// above with the factors W1 / w and (W1 / w)^2 on its terms (|d| (W1 W3 / w^2 +
-  /// 3 W1^2 W2^2 / w^4), no smaller than it), which makes the samples denser where the speed
-  /// varies along the piece.
+  /// The estimate of |e''| the first sample count is chosen for (offset.hpp): the bound of
+  /// |d N''| times kSecondEstimate.
   [[nodiscard]] double sample_estimate(double d) const {
-    const double v = W1 * W2 / (w * w);
-    const double v1 = W1 * W3 / (w * w) + 2.0 * v * v;
-    return std::fabs(d) * (v1 + v * v);
+    return kSecondEstimate * normal_second(d);
   }
 
   /// The distance |d| |T - Q/|Q|| at the reduced ends between the end frames' tangents
@@ -373,9 +385,10 @@ bool sample_parallel(const ControlPoints& q, const ControlPoints& h1, double d, 
 /// Both sides' samples O = B_p ± d N at once (as sample_parallel at d and at -d, bit for
 /// bit): B_p and B_p' are evaluated once per sample. The ends are the end frames' points
 /// moved by ±d along their normals. Returns whether every sample is a number.
-bool sample_both_sides(const ControlPoints& q, const ControlPoints& h1, double d,
-                       const EndFrame& start, const EndFrame& end, const CubicWeights& weights,
-                       std::vector<Point2>& plus, std::vector<Point2>& minus) {
+BEZIER_FMA_CLONES bool sample_both_sides(const ControlPoints& q, const ControlPoints& h1,
+                                         double d, const EndFrame& start, const EndFrame& end,
+                                         const CubicWeights& weights, std::vector<Point2>& plus,
+                                         std::vector<Point2>& minus) {
   const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
   if (q.size() != 4) {
     const bool all = sample_parallel(q, h1, d, start.point + d * n0, end.point + d * n1,
@@ -486,6 +499,13 @@ std::array<ChordMoments, N> chord_moments_of(const ControlPoints& q, const Contr
   return results;
 }
 
+/// chord_moments_of for both sides of a piece (the FMA clones: the same roundings).
+BEZIER_FMA_CLONES std::array<ChordMoments, 2> chord_moments_of_sides(
+    const ControlPoints& q, const ControlPoints& h1, const ControlPoints& h2, double d,
+    const std::array<Point2, 2>& starts, const std::array<Point2, 2>& ends) {
+  return chord_moments_of<2>(q, h1, h2, {d, -d}, starts, ends);
+}
+
 ChordMoments chord_moments(const ControlPoints& q, const ControlPoints& h1,
                            const ControlPoints& h2, double d, Point2 start, Point2 end) {
   return chord_moments_of<1>(q, h1, h2, {d}, {start}, {end})[0];
@@ -539,11 +559,22 @@ std::array<Point2, 4> fit(const std::vector<Point2>& o, const CubicWeights& w, b
   return {p0, p0 + alpha * d0, p3 - beta * d3, p3};
 }
 
+/// The direction u in the frame of the unit chord direction `axis`: (u · axis, axis × u).
+/// Kept out of line: in an FMA clone, GCC's vectorizer takes the pair for a complex product
+/// and fuses its multiplications and additions (vfmsubadd) in spite of -ffp-contract=off,
+/// which would change the bits against the plain x86-64 copy.
+__attribute__((noinline)) Point2 in_chord_frame(Point2 u, Point2 axis) {
+  return {core::dot(u, axis), core::cross(axis, u)};
+}
+
 /// The sampled part of offset.hpp's bound for the cubic c against the samples o_j = O(t_j),
 /// t_j = j / K, under the correspondence t -> u = ψ(t) that is linear between the u_j, each
-/// u_j near the foot of o_j on c: one Gauss-Newton step of (C(u) - o_j) · C'(u) = 0 from
-/// the linear extrapolation of the previous two, kept in [0, 1]; u_0 = 0, u_K = 1. Any u_j
-/// in [0, 1] gives a valid bound; the nearer the foot, the smaller it is.
+/// u_j near the foot of o_j on c: a Gauss-Newton step of (C(u) - o_j) · C'(u) = 0 from the
+/// linear extrapolation of the previous two, then more steps (at most kFootSteps) while
+/// |C(u_j) - o_j| exceeds kFootRefine of `reach` and each step at least halves it (where the
+/// extrapolation lands far from the foot: next to an end, where ψ' differs most from 1),
+/// each kept in [0, 1]; u_0 = 0, u_K = 1. Any u_j in [0, 1] gives a valid bound; the nearer
+/// the foot, the smaller it is.
 struct SampledBound {
   double largest = 0.0;  // max_j |C(u_j) - o_j|, or the first one beyond `reach`
   double second = 0.0;   // the bound of |(C o ψ)'' - B_p''| between samples
@@ -575,10 +606,24 @@ SampledBound foot_bound_of(const std::array<Point2, 4>& c, const std::vector<Poi
       return point_at(h2, t);
     }
   };
+  // C(u) - target with C in Bernstein form (positive weights: within a few units of rounding
+  // of the coordinates, as offset.hpp's margin assumes).
+  auto off = [&](double u, Point2 target) {
+    const double w = 1.0 - u;
+    return (w * w * w) * p0 + (3.0 * u * w * w) * p1 + (3.0 * u * u * w) * p2 +
+           (u * u * u) * p3 - target;
+  };
+  // One Gauss-Newton step from u for the residual r = C(u) - target, kept in [0, 1].
+  auto step_from = [&](double u, Point2 r) {
+    const Point2 v = a1 + u * (twice_a2 + u * thrice_a3);
+    const double speed_squared = squared_length(v);
+    return speed_squared > 0.0 ? std::clamp(u - core::dot(r, v) / speed_squared, 0.0, 1.0) : u;
+  };
   const double reach_squared = reach > 0.0 ? reach * reach : 0.0;
+  const double refine_squared = (kFootRefine * kFootRefine) * reach_squared;
   const Point2* const samples = o.data();
   SampledBound result;
-  double largest = 0.0, second = 0.0, steps = 0.0;
+  double largest = 0.0, second = 0.0;
   double u_prev = 0.0, u_before = -h;
   Point2 c2_prev = c0, b2_prev = second_of_b(0.0);
   // Between t_prev and t: ψ' = s, (C o ψ)'' = s^2 C''(ψ), linear in t as C'' is (and B_p''
@@ -597,22 +642,22 @@ SampledBound foot_bound_of(const std::array<Point2, 4>& c, const std::vector<Poi
   for (; j < count; ++j) {
     const double t = j * h;
     const Point2 target = samples[j];
-    // From the linear extrapolation u of the previous two, the Gauss-Newton step δ =
-    // -r · C'(u) / |C'(u)|^2 (r = C(u) - o_j) towards the foot, u_j = u + δ: by Taylor's
-    // formula |C(u_j) - o_j| <= |r + δ C'(u)| + δ^2 / 2 max |C''|, with C(u) in Bernstein
-    // form (positive weights: within a few units of rounding of the coordinates, as
-    // offset.hpp's margin assumes).
-    const double guess = std::clamp(u_prev + (u_prev - u_before), 0.0, 1.0), w = 1.0 - guess;
-    const Point2 r = (w * w * w) * p0 + (3.0 * guess * w * w) * p1 +
-                     (3.0 * guess * guess * w) * p2 + (guess * guess * guess) * p3 - target;
-    const Point2 v = a1 + guess * (twice_a2 + guess * thrice_a3);
-    const double speed_squared = squared_length(v);
-    const double u = speed_squared > 0.0
-                         ? std::clamp(guess - core::dot(r, v) / speed_squared, 0.0, 1.0)
-                         : guess;
-    const double step = u - guess;
-    largest = std::max(largest, squared_length(r + step * v));
-    steps = std::max(steps, step * step);
+    const double guess = std::clamp(u_prev + (u_prev - u_before), 0.0, 1.0);
+    double u = step_from(guess, off(guess, target));
+    Point2 r = off(u, target);
+    double distance_squared = squared_length(r);
+    for (int more = 0; more < kFootSteps && distance_squared > refine_squared; ++more) {
+      const double next = step_from(u, r);
+      const Point2 next_r = off(next, target);
+      const double next_squared = squared_length(next_r);
+      if (!(next_squared < distance_squared)) break;
+      const bool slow = !(next_squared < 0.25 * distance_squared);
+      u = next;
+      r = next_r;
+      distance_squared = next_squared;
+      if (slow) break;
+    }
+    largest = std::max(largest, distance_squared);
     if (largest > reach_squared) {
       result.within = false;
       break;
@@ -621,14 +666,14 @@ SampledBound foot_bound_of(const std::array<Point2, 4>& c, const std::vector<Poi
   }
   taken = j;
   if (result.within) bend_to(1.0, 1.0);
-  const double curving = std::sqrt(std::max(squared_length(c0), squared_length(c1)));
-  result.largest = std::sqrt(largest) + 0.5 * steps * curving;
+  result.largest = std::sqrt(largest);
   result.second = std::sqrt(second);
   return result;
 }
 
-SampledBound foot_bound(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
-                        const ControlPoints& h2, double reach, int& taken) {
+BEZIER_FMA_CLONES SampledBound foot_bound(const std::array<Point2, 4>& c,
+                                          const std::vector<Point2>& o, const ControlPoints& h2,
+                                          double reach, int& taken) {
   return h2.size() <= 2 ? foot_bound_of<true>(c, o, h2, reach, taken)
                         : foot_bound_of<false>(c, o, h2, reach, taken);
 }
@@ -666,8 +711,7 @@ int samples_for(double second, double budget) {
 }
 
 /// fit_piece's first K: the remainder within kFirstRemainder of the tolerance with |e''|
-/// estimated at `estimate` (PieceShape::sample_estimate, at least the bound of |d N''|; the
-/// area and moment cubic's C'' follows B_p'' closely), at least kFitSamples. It depends on
+/// estimated at `estimate` (PieceShape::sample_estimate), at least kFitSamples. It depends on
 /// |d| only: both sides of a piece share it.
 int first_sample_count(double estimate, double tolerance) {
   return std::max(samples_for(estimate, kFirstRemainder * tolerance), kFitSamples);
@@ -752,8 +796,8 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
       const Point2 chord = p3 - p0;
       chord_length = std::sqrt(squared_length(chord));
       const Point2 axis = chord / chord_length;
-      t0 = {core::dot(d0, axis), core::cross(axis, d0)};
-      t3 = {core::dot(d3, axis), core::cross(axis, d3)};
+      t0 = in_chord_frame(d0, axis);
+      t3 = in_chord_frame(d3, axis);
       if (arc_started_handles(t0, t3, moments.area, moments.moment, arc))
         candidates[candidate_count++] = arc;
     }
@@ -763,7 +807,9 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
                      int k, double& largest) {
       int taken = 0;
       const SampledBound sampled = foot_bound(c, samples, shape.h2, tolerance, taken);
-      result.work += 24 * static_cast<std::int64_t>(taken);
+      // Per sample two evaluations of the cubic and a step (further steps, at most
+      // kFootSteps at a sample, are rare: within a constant of this).
+      result.work += 36 * static_cast<std::int64_t>(taken);
       largest = sampled.largest;
       const double second = sampled.second + bend / k + turning;
       const double remainder = second / (8.0 * k * k) + slack;
@@ -796,18 +842,21 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
       double largest = 0.0;
       auto [bound, second] = judge(c, o, count, largest);
       // The samples are within the tolerance and the remainder alone fails: K for the
-      // remainder to fit in the room the samples leave (with a tenth more for the samples a
-      // denser set may find), and the bound again on those samples.
-      const double room = tolerance - 1.1 * largest;
-      if (std::isfinite(bound) && bound > tolerance && largest < kDenserBelow * tolerance &&
-          room > 0.0) {
-        const int more = samples_for(second, room);
-        if (more > count) {
-          std::vector<Point2>& dense = dense_buffer();
-          if (!sample_parallel(q, shape.h1, d, p0, p3, cubic_weights(more), dense)) return result;
-          result.work += static_cast<std::int64_t>(more) * (n * (n + 1) + 12);
-          bound = judge(c, dense, more, largest).first;
-        }
+      // remainder to fit in kDenserRoom of the room the samples leave, with |e''| estimated
+      // at kDenserEstimate times the sampled one, and the bound again on those samples; once
+      // more if that fails too and the next K is a quarter denser.
+      int judged = count;
+      for (int denser = 0; denser < kDenserTries; ++denser) {
+        const double room = kDenserRoom * (tolerance - largest);
+        if (!(std::isfinite(bound) && bound > tolerance && largest < kDenserBelow * tolerance))
+          break;
+        const int more = samples_for(kDenserEstimate * second, room);
+        if (!(more > (denser == 0 ? judged : judged + judged / 4))) break;
+        std::vector<Point2>& dense = dense_buffer();
+        if (!sample_parallel(q, shape.h1, d, p0, p3, cubic_weights(more), dense)) return result;
+        result.work += static_cast<std::int64_t>(more) * (n * (n + 1) + 12);
+        std::tie(bound, second) = judge(c, dense, more, largest);
+        judged = more;
       }
       if (tried == 0 || bound < result.bound) {
         result.bound = std::min(result.bound, bound);
@@ -816,9 +865,9 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
       if (result.bound <= tolerance) return result;
     }
   } else {
-    const CubicWeights& weights = cubic_weights(kFitSamples);
+    const CubicWeights& weights = cubic_weights(kBallSamples);
     const bool all_numbers = sample_parallel(q, shape.h1, d, p0, p3, weights, o);
-    result.work += kFitSamples * (n * (n + 1) + 12);
+    result.work += kBallSamples * (n * (n + 1) + 12);
     result.cubic = fit(o, weights, all_numbers, d0, d3);
   }
   result.bound = std::min(result.bound, ball_bound(q, shape.h1, result.cubic, d, n0) + slack);
@@ -1039,9 +1088,11 @@ bool offset_interval(const core::Curve& curve, double a, double b, double d, dou
   return fit_interval(scaled, scaled.d, a, b, budget, out);
 }
 
-bool offset_interval_sides(const core::Curve& curve, double a, double b, double d,
-                           double tolerance, core::WorkBudget& budget,
-                           std::vector<OffsetCubic>& plus, std::vector<OffsetCubic>& minus) {
+BEZIER_FMA_CLONES bool offset_interval_sides(const core::Curve& curve, double a, double b,
+                                             double d, double tolerance,
+                                             core::WorkBudget& budget,
+                                             std::vector<OffsetCubic>& plus,
+                                             std::vector<OffsetCubic>& minus) {
   const ScaledCurve s(curve, d, tolerance);
   ControlPoints q;
   piece_into(s.points, a, b, q);
@@ -1071,9 +1122,9 @@ bool offset_interval_sides(const core::Curve& curve, double a, double b, double 
   // The chord moments of both sides from one evaluation of B_p, B_p', B_p'' per node; the
   // ends as fit_piece's (the samples' first and last).
   const std::array<ChordMoments, 2> moments =
-      chord_moments_of<2>(q, shape.h1, shape.h2, {s.d, -s.d},
-                          {plus_samples.front(), minus_samples.front()},
-                          {plus_samples.back(), minus_samples.back()});
+      chord_moments_of_sides(q, shape.h1, shape.h2, s.d,
+                             {plus_samples.front(), minus_samples.front()},
+                             {plus_samples.back(), minus_samples.back()});
   plus_first.fit = fit_piece(s, a, b, q, start, end, s.d, tolerance_left, plus_first.direction,
                              plus_samples, zero_start, zero_end, &shape, sampled, &moments[0]);
   minus_first.fit = fit_piece(s, a, b, q, start, end, -s.d, tolerance_left,

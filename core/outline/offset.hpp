@@ -63,9 +63,10 @@ struct CurveOffset {
 /// u the cubic's); then the Hausdorff distance is at most max_t |e(t)|, e(t) = C(ψ(t)) -
 /// O(t): each O(t) is that close to C(ψ(t)), and each C(u) is C(ψ(t)) for some t (ψ is
 /// onto). O is sampled at the K + 1 uniform t_j = j / K, and ψ is linear between the nodes
-/// ψ(t_j) = u_j, each u_j in [0, 1] near the foot of O(t_j) on C (one Newton step; the
-/// area-and-moment cubic follows O geometrically but not in parameter, so the linear
-/// correspondence u = t would overstate its distance many times). Between two samples e is
+/// ψ(t_j) = u_j, each u_j in [0, 1] near the foot of O(t_j) on C (Gauss-Newton steps from
+/// the previous two nodes' extrapolation; the area-and-moment cubic follows O geometrically
+/// but not in parameter, so the linear correspondence u = t would overstate its distance many
+/// times), and |e(t_j)| = |C(u_j) - O(t_j)| is evaluated there. Between two samples e is
 /// smooth and
 ///   |e(t)| <= max(|e(t_j)|, |e(t_{j+1})|) + h^2 / 8 max |e''|,  h = 1 / K,
 /// (the linear interpolant of e plus its remainder, by the interpolation kernel, which is
@@ -80,12 +81,12 @@ struct CurveOffset {
 /// turning rate ω = cross(B_p', B_p'') / |B_p'|^2 gives N'' = -ω' T - ω^2 N, so
 /// (normal_turning.hpp, θ the angle from B_p' to B_p'', φ the golden ratio)
 ///   |N''| <= |ω'| + ω^2 <= M_3 / m + (|sin 2θ| + sin^2 θ) M_2^2 / m^2 <= M_3 / m + φ M_2^2 / m^2.
-/// K is chosen first for a remainder within three quarters of the tolerance with |e''|
-/// estimated at |d| (M_1 M_3 / m^2 + 3 M_1^2 M_2^2 / m^4), the bound above times M_1 / m and
-/// (M_1 / m)^2 on its terms (denser samples where the speed varies along the piece; the
-/// least squares fits on them too), at least 8; where the samples are inside the tolerance
-/// and the remainder alone fails, O is sampled again at the K the remainder needs beside
-/// them.
+/// K is chosen first for a remainder within 0.9 of the tolerance with |e''| estimated at 1.4
+/// times the bound of |d N''| above (where the cubic follows O, the sampled first term is
+/// about a third of that bound), at least 4; where the samples are inside the tolerance and
+/// the remainder alone fails, O is sampled again at the K the remainder needs in the room the
+/// samples leave (twice at most, the second time at least a quarter denser). K only spends
+/// work: the bound holds for every K.
 /// Zeros of B' at the ends. Where an end of the interval being fitted (a cut above, or an
 /// end of offset_interval's [a, b]) has |B'| below end_tangent's threshold (1e-12 n of the
 /// control points' scale, tangent_limits.hpp: the frame there takes the limit tangent), B' is

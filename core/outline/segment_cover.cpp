@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/base/multiversion.hpp"
 #include "core/curve/evaluate.hpp"
 #include "core/measure/frame.hpp"
 #include "core/outline/offset.hpp"
@@ -70,7 +71,7 @@ CoverSizes cover_sizes(double half_width, double tolerance) {
   return sizes;
 }
 
-bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineSink& sink,
+BEZIER_FMA_CLONES bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineSink& sink,
                    SegmentCover& out) {
   const auto n = static_cast<std::int64_t>(segment.degree());
   out.cusp_at_start = out.cusp_at_end = false;
