@@ -59,7 +59,8 @@ inline void sort_by_key_then_index(std::vector<std::pair<double, std::size_t>>& 
   const auto bucket_of = [lo, f, n](double x) {
     // v >= 0 (x >= lo, f > 0): the signed conversion, one instruction, gives its floor.
     const double v = (x - lo) * f;
-    return v < static_cast<double>(n) ? static_cast<std::size_t>(static_cast<std::int64_t>(v)) : n - 1;
+    return v < static_cast<double>(n) ? static_cast<std::size_t>(static_cast<std::int64_t>(v))
+                                      : n - 1;
   };
   for (const Item& item : items) ++start[bucket_of(item.first) + 1];
   std::size_t largest = 0;

@@ -160,8 +160,8 @@ struct AreaMomentSystem {
 
 }  // namespace
 
-BEZIER_FMA_CLONES HandleCandidates area_moment_handles(core::Point2 t0, core::Point2 t3, double area,
-                                     double moment) {
+BEZIER_FMA_CLONES HandleCandidates area_moment_handles(core::Point2 t0, core::Point2 t3,
+                                                       double area, double moment) {
   HandleCandidates result;
   const AreaMomentSystem system(t0, t3, area, moment);
   if (!system.valid) return result;
@@ -181,8 +181,8 @@ BEZIER_FMA_CLONES HandleCandidates area_moment_handles(core::Point2 t0, core::Po
   return result;
 }
 
-BEZIER_FMA_CLONES bool arc_started_handles(core::Point2 t0, core::Point2 t3, double area, double moment,
-                         HandleLengths& out) {
+BEZIER_FMA_CLONES bool arc_started_handles(core::Point2 t0, core::Point2 t3, double area,
+                                           double moment, HandleLengths& out) {
   const AreaMomentSystem system(t0, t3, area, moment);
   if (!system.valid) return false;
   // A circular arc through the ends with these tangents, turning by φ, has both handles

@@ -71,8 +71,8 @@ CoverSizes cover_sizes(double half_width, double tolerance) {
   return sizes;
 }
 
-BEZIER_FMA_CLONES bool cover_segment(const core::Curve& segment, const CoverSizes& sizes, OutlineSink& sink,
-                   SegmentCover& out) {
+BEZIER_FMA_CLONES bool cover_segment(const core::Curve& segment, const CoverSizes& sizes,
+                                     OutlineSink& sink, SegmentCover& out) {
   const auto n = static_cast<std::int64_t>(segment.degree());
   out.cusp_at_start = out.cusp_at_end = false;
   if (!sink.charge(16 * (n + 1) * (n + 1))) return false;

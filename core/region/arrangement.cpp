@@ -171,8 +171,8 @@ ContactEvents contact_events(const path::Path& all, const path::PathSelfIntersec
                             double s_width, Point2 p) {
     const double r = base_radius + std::max(t_width * speed_of(i), s_width * speed_of(j));
     contacts.largest_radius = std::max(contacts.largest_radius, r);
-    events.push_back({i, t, p, r, false});
-    events.push_back({j, s, p, r, false});
+    events.emplace_back(i, t, p, r, false);
+    events.emplace_back(j, s, p, r, false);
     same.emplace_back(events.size() - 2, events.size() - 1);
   };
   for (const path::PathContact& c : found.intersections) {
@@ -590,10 +590,11 @@ void number_groups(Clusters& groups, Arrangement& arrangement) {
       const ArrangementEdge& x = arrangement.edges[e];
       // Along the representative when it leaves the same vertex; for a loop (both ends at
       // one vertex) when its tangent at the middle points the same way.
-      const bool along = (x.from != x.to && r.from != r.to)
-                             ? x.from == r.from
-                             : core::dot(core::derivatives_at(arrangement.exact(x), 0.5, 1).front(),
-                                         core::derivatives_at(arrangement.exact(r), 0.5, 1).front()) > 0.0;
+      const bool along =
+          (x.from != x.to && r.from != r.to)
+              ? x.from == r.from
+              : core::dot(core::derivatives_at(arrangement.exact(x), 0.5, 1).front(),
+                          core::derivatives_at(arrangement.exact(r), 0.5, 1).front()) > 0.0;
       g.multiplicity[static_cast<std::size_t>(x.source)] += along ? 1 : -1;
     }
   }
