@@ -109,8 +109,8 @@ namespace bezier::outline {
 // first nonzero derivative's (tangent_limits.hpp). A subpath is closed when it ends exactly
 // where it starts (path::Subpath::closed): a join there, no caps. (SVG closes a subpath
 // only with Z; a path that returns to its start without Z is taken as closed here, since
-// core/path does not record a Z that draws nothing. `M x y Z` alone draws no segment in
-// core/path, so it gets no dot.)
+// core/path does not record a Z that draws nothing. `M x y Z` is a closing line of zero
+// length in core/path, so it is a dot.)
 //
 // The error bound: each point of the outline where it bounds the region is within ε of the
 // exact stroke's boundary (the far edges and circles are within ε/2 of curves at distance

@@ -298,6 +298,7 @@ class PathDataParser {
     end_subpath();
     current_ = p;
     start_ = p;
+    moved_ = true;
     previous_ = Previous::other;
     return true;
   }
@@ -318,6 +319,7 @@ class PathDataParser {
       subpath_open_ = true;
     }
     current_ = points.back();
+    moved_ = false;
     previous_ = kind;
     if (kind != Previous::other) reflect_from_ = points[points.size() - 2];
     path_.segments.emplace_back(std::move(points));
@@ -325,10 +327,14 @@ class PathDataParser {
   }
 
   bool close_subpath(std::size_t offset) {
-    if (subpath_open_ && !(current_ == start_)) {
+    // A line back to the start where the current point is elsewhere; one of zero length where
+    // nothing was drawn since the moveto (M x y Z: a zero-length subpath, which SVG strokes
+    // as a dot under round and square caps).
+    if ((subpath_open_ && !(current_ == start_)) || (!subpath_open_ && moved_)) {
       if (!segment({current_, start_}, Previous::other, offset)) return false;
       closing_lines_.push_back(path_.segments.size() - 1);
     }
+    moved_ = false;
     end_subpath();
     current_ = start_;
     previous_ = Previous::other;
@@ -355,6 +361,7 @@ class PathDataParser {
   Point2 start_{};
   std::size_t subpath_first_ = 0;
   bool subpath_open_ = false;
+  bool moved_ = false;  // a moveto and nothing drawn since
   Previous previous_ = Previous::other;
   Point2 reflect_from_{};
 };

@@ -55,8 +55,12 @@ struct PathDataParse {
 ///                   which follows SVG 2's arc implementation notes); Path::arc_tolerance
 ///                   states the largest distance the arcs' segments keep
 ///   Z z             close the subpath: a line back to its start when the current point is
-///                   elsewhere (no segment when it is already there); a command other than
-///                   M after it starts the next subpath at the same start point
+///                   elsewhere (no segment when it is already there, except right after
+///                   a moveto: `M1 1 Z` is a line of zero length, the zero-length subpath
+///                   SVG 2 strokes as a dot under round and square caps,
+///                   https://www.w3.org/TR/SVG2/painting.html#StrokeLinecapProperty); a
+///                   command other than M after it starts the next subpath at the same
+///                   start point
 ///
 /// Lowercase commands are relative to the current point (a leading m to the origin). Any
 /// command's arguments may repeat without repeating the letter. Numbers follow the SVG
@@ -69,7 +73,7 @@ struct PathDataParse {
 /// Every segment drawn is kept, a zero-length one included, so that, arcs aside, segment k
 /// is the k-th drawing command's (a closing line of Z counts; an arc draws as many segments
 /// as its approximation takes). A subpath that draws nothing (`M1 1`
-/// alone, or `M1 1 Z`) is left out. Data without any segment (empty, or movetos only) is
+/// alone, or an arc ending where it starts with no Z after it) is left out. Data without any segment (empty, or movetos only) is
 /// a path without segments. Parsing stops at the first error, which names its offset and
 /// what was expected; more than `max_segments` segments is an error at the command that
 /// draws the first one too many. `arc_tolerance` (> 0) is the absolute distance each arc's

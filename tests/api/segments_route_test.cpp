@@ -74,9 +74,16 @@ TEST(SegmentsRoute, ArcsAreCubicsAndTheAnswerStatesTheirTolerance) {
 }
 
 TEST(SegmentsRoute, DataThatDrawsNothingHasNoSegments) {
-  for (const char* body : {R"({"path":""})", R"({"path":"M1 1"})", R"({"path":"M1 1 Z m2 2"})"}) {
+  for (const char* body : {R"({"path":""})", R"({"path":"M1 1"})", R"({"path":"M1 1 m2 2"})"}) {
     EXPECT_EQ(call(body, 200), json::parse(R"({"segment_count":0,"segments":[],"subpaths":[]})")) << body;
   }
+}
+
+TEST(SegmentsRoute, ZRightAfterAMovetoIsAZeroLengthClosingLine) {
+  EXPECT_EQ(call(R"({"path":"M1 1 Z"})", 200),
+            json::parse(R"({"segment_count":1,"segments":[{"closing":true,"degree":1,)"
+                        R"("points":[[1.0,1.0],[1.0,1.0]],"subpath":0}],)"
+                        R"("subpaths":[{"closed":true,"first_segment":0,"segment_count":1}]})"));
 }
 
 TEST(SegmentsRoute, RefusalsPointAtTheirField) {

@@ -335,21 +335,28 @@ TEST(Stroke, RoundIsTheDistanceSetForCurvesOfHighDegreeWithRepeatedControlPoints
 }
 
 TEST(Stroke, ZeroLengthSubpathIsADotWithRoundCapsASquareWithSquareCapsNothingWithButt) {
-  const path::Path path = test::parsed_path("M3 3 L3 3");
-  StrokeStyle style = round_style(2.0);
-  auto winding_at = [&](const StrokeOutline& o, Point2 p) {
-    core::WorkBudget work(kWork);
-    return region::RegionWinding(test::outline_region(o)).at(p, work)->winding;
-  };
-  const StrokeOutline dot = stroke(path, style, 1e-3, kWork, kSegments);
-  EXPECT_NE(winding_at(dot, {3.7, 3.7}), 0);   // distance 0.99
-  EXPECT_EQ(winding_at(dot, {3.8, 3.8}), 0);   // distance 1.13
-  style.cap = LineCap::square;
-  const StrokeOutline square = stroke(path, style, 1e-3, kWork, kSegments);
-  EXPECT_NE(winding_at(square, {3.9, 3.9}), 0);  // inside the square of side 2
-  EXPECT_EQ(winding_at(square, {4.1, 3.0}), 0);
-  style.cap = LineCap::butt;
-  EXPECT_TRUE(stroke(path, style, 1e-3, kWork, kSegments).contours.empty());
+  // SVG 2 (stroke-linecap): a zero-length subpath, drawn by a zero-length command or by
+  // a moveto closed at once, is a disk of radius width / 2 under round caps, a square of
+  // side width along the axes under square caps, nothing under butt caps.
+  for (const char* data : {"M3 3 L3 3", "M3 3 Z", "M3 3 z z", "M0 0 M3 3 Z", "M3 3 A1 1 0 0 1 3 3 Z"}) {
+    SCOPED_TRACE(data);
+    const path::Path path = test::parsed_path(data);
+    StrokeStyle style = round_style(2.0);
+    auto winding_at = [&](const StrokeOutline& o, Point2 p) {
+      core::WorkBudget work(kWork);
+      return region::RegionWinding(test::outline_region(o)).at(p, work)->winding;
+    };
+    const StrokeOutline dot = stroke(path, style, 1e-3, kWork, kSegments);
+    EXPECT_NE(winding_at(dot, {3.7, 3.7}), 0);   // distance 0.99
+    EXPECT_EQ(winding_at(dot, {3.8, 3.8}), 0);   // distance 1.13
+    EXPECT_EQ(winding_at(dot, {0.0, 0.0}), 0);   // a moveto alone is not stroked
+    style.cap = LineCap::square;
+    const StrokeOutline square = stroke(path, style, 1e-3, kWork, kSegments);
+    EXPECT_NE(winding_at(square, {3.9, 3.9}), 0);  // inside the square of side 2
+    EXPECT_EQ(winding_at(square, {4.1, 3.0}), 0);
+    style.cap = LineCap::butt;
+    EXPECT_TRUE(stroke(path, style, 1e-3, kWork, kSegments).contours.empty());
+  }
 }
 
 /// The contours' vertices (segment ends).
