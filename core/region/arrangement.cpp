@@ -31,6 +31,12 @@ struct Event {
   Point2 point;
   double radius = 0.0;
   bool segment_end = false;
+
+  Event() = default;
+  // Every member given, for emplace_back (which builds an aggregate from parentheses only
+  // from C++20 on, and clang only from version 16).
+  Event(std::size_t of_segment, double at, Point2 where, double within, bool at_end)
+      : segment(of_segment), t(at), point(where), radius(within), segment_end(at_end) {}
 };
 
 /// Union-find over event indices.

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "core/base/curve.hpp"
@@ -41,6 +42,15 @@ struct ArrangementEdge {
   std::size_t snapped_exact = kNotSnapped;
   /// The coincident group holding the edge.
   std::size_t group = 0;
+
+  ArrangementEdge() = default;
+  /// Every member given, for emplace_back (which builds an aggregate from parentheses only
+  /// from C++20 on, and clang only from version 16).
+  ArrangementEdge(Operand of, std::size_t in_segment, double from_t, double to_t,
+                  std::size_t from_vertex, std::size_t to_vertex, core::Curve curve,
+                  std::size_t snapped, std::size_t in_group)
+      : source(of), segment(in_segment), t0(from_t), t1(to_t), from(from_vertex),
+        to(to_vertex), piece(std::move(curve)), snapped_exact(snapped), group(in_group) {}
 };
 
 /// Edges that are the same point set: pieces of shared boundary (an overlap reported by the

@@ -48,6 +48,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/base/curve.hpp"
@@ -89,6 +90,13 @@ struct ResultSegment {
   double t1 = 1.0;
   /// core::portion(source segment, t0, t1) with its ends at the result's vertices.
   core::Curve curve = core::Curve({core::Point2{}});
+
+  ResultSegment() = default;
+  /// Every member given, for emplace_back (which builds an aggregate from parentheses only
+  /// from C++20 on, and clang only from version 16).
+  ResultSegment(Operand of, std::size_t in_segment, double from_t, double to_t,
+                core::Curve piece)
+      : source(of), segment(in_segment), t0(from_t), t1(to_t), curve(std::move(piece)) {}
 };
 
 struct ResultContour {

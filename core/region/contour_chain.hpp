@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/base/curve.hpp"
@@ -15,6 +16,13 @@ struct DirectedEdge {
   std::size_t to = 0;
   core::Curve curve = core::Curve({core::Point2{}});
   std::size_t tag = 0;
+
+  DirectedEdge() = default;
+  /// Every member given, for emplace_back (which builds an aggregate from parentheses only
+  /// from C++20 on, and clang only from version 16).
+  DirectedEdge(std::size_t from_vertex, std::size_t to_vertex, core::Curve piece,
+               std::size_t edge_tag)
+      : from(from_vertex), to(to_vertex), curve(std::move(piece)), tag(edge_tag) {}
 };
 
 /// Chains directed edges into closed contours, each a list of indices into `edges` in order.
