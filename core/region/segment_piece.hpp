@@ -26,10 +26,11 @@ namespace bezier::region {
                                                    double t1) {
   if (!(t0 == 0.0 && t1 == 1.0)) return false;
   const std::span<const core::Point2> points = segment.points();
-  const auto has_zero = [](core::Point2 p) { return p.x == 0.0 || p.y == 0.0; };
+  // (An int, so that the four tests below combine with | without a warning for | on bool.)
+  const auto has_zero = [](core::Point2 p) -> int { return p.x == 0.0 || p.y == 0.0; };
   // A cubic's four points tested at once (no early exit to branch on); other degrees in turn.
   if (points.size() == 4) {
-    return !(has_zero(points[0]) | has_zero(points[1]) | has_zero(points[2]) | has_zero(points[3]));
+    return (has_zero(points[0]) | has_zero(points[1]) | has_zero(points[2]) | has_zero(points[3])) == 0;
   }
   return std::none_of(points.begin(), points.end(), has_zero);
 }
