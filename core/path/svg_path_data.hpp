@@ -72,13 +72,13 @@ struct PathDataParse {
 ///
 /// Every segment drawn is kept, a zero-length one included, so that, arcs aside, segment k
 /// is the k-th drawing command's (a closing line of Z counts; an arc draws as many segments
-/// as its approximation takes). A subpath that draws nothing (`M1 1`
-/// alone, or an arc ending where it starts with no Z after it) is left out. Data without any segment (empty, or movetos only) is
-/// a path without segments. Parsing stops at the first error, which names its offset and
-/// what was expected; more than `max_segments` segments is an error at the command that
-/// draws the first one too many. `arc_tolerance` (> 0) is the absolute distance each arc's
-/// cubics keep from it; nullopt means 1e-6 of each arc's larger radius. Time linear in the
-/// length of the data plus the segments made.
+/// as its approximation takes). A subpath that draws nothing (`M1 1` alone, or an arc ending
+/// where it starts with no Z after it) is left out. Data without any segment (empty, or
+/// movetos only) is a path without segments. Parsing stops at the first error, which names
+/// its offset and what was expected; more than `max_segments` segments is an error at the
+/// command that draws the first one too many. `arc_tolerance` (> 0) is the absolute distance
+/// each arc's cubics keep from it; nullopt means 1e-6 of each arc's larger radius. Time
+/// linear in the length of the data plus the segments made.
 [[nodiscard]] PathDataParse parse_svg_path_data(std::string_view data, std::size_t max_segments,
                                                 std::optional<double> arc_tolerance = std::nullopt);
 

@@ -30,7 +30,8 @@ namespace bezier::region {
   const auto has_zero = [](core::Point2 p) -> int { return p.x == 0.0 || p.y == 0.0; };
   // A cubic's four points tested at once (no early exit to branch on); other degrees in turn.
   if (points.size() == 4) {
-    return (has_zero(points[0]) | has_zero(points[1]) | has_zero(points[2]) | has_zero(points[3])) == 0;
+    return (has_zero(points[0]) | has_zero(points[1]) | has_zero(points[2]) |
+            has_zero(points[3])) == 0;
   }
   return std::none_of(points.begin(), points.end(), has_zero);
 }

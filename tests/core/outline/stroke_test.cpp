@@ -338,7 +338,8 @@ TEST(Stroke, ZeroLengthSubpathIsADotWithRoundCapsASquareWithSquareCapsNothingWit
   // SVG 2 (stroke-linecap): a zero-length subpath, drawn by a zero-length command or by
   // a moveto closed at once, is a disk of radius width / 2 under round caps, a square of
   // side width along the axes under square caps, nothing under butt caps.
-  for (const char* data : {"M3 3 L3 3", "M3 3 Z", "M3 3 z z", "M0 0 M3 3 Z", "M3 3 A1 1 0 0 1 3 3 Z"}) {
+  for (const char* data :
+       {"M3 3 L3 3", "M3 3 Z", "M3 3 z z", "M0 0 M3 3 Z", "M3 3 A1 1 0 0 1 3 3 Z"}) {
     SCOPED_TRACE(data);
     const path::Path path = test::parsed_path(data);
     StrokeStyle style = round_style(2.0);

@@ -48,9 +48,9 @@ TEST(SvgPathData, EmptyDataAndMovetosAloneHaveNoSegments) {
 TEST(SvgPathData, ZRightAfterAMovetoIsAClosingLineOfZeroLength) {
   // A zero-length subpath (SVG 2 strokes it as a dot under round and square caps); a
   // second Z draws nothing more, and a moveto before the last one is still left out.
-  for (const auto& [data, at] : {std::pair{"M1 1 Z", Point2{1, 1}}, std::pair{"m1 1 z z", Point2{1, 1}},
-                                 std::pair{"M0 0 M2 3 Z", Point2{2, 3}},
-                                 std::pair{"M2 3 A1 1 0 0 1 2 3 z", Point2{2, 3}}}) {
+  for (const auto& [data, at] :
+       {std::pair{"M1 1 Z", Point2{1, 1}}, std::pair{"m1 1 z z", Point2{1, 1}},
+        std::pair{"M0 0 M2 3 Z", Point2{2, 3}}, std::pair{"M2 3 A1 1 0 0 1 2 3 z", Point2{2, 3}}}) {
     const PathDataParse parse = parse_svg_path_data(data, 100);
     ASSERT_FALSE(parse.error) << data;
     EXPECT_EQ(parse.path.segments, std::vector<Curve>{line(at, at)}) << data;
@@ -59,8 +59,10 @@ TEST(SvgPathData, ZRightAfterAMovetoIsAClosingLineOfZeroLength) {
     EXPECT_EQ(parse.closing_lines, std::vector<std::size_t>{0}) << data;
   }
   // Two such subpaths, and one after a closed subpath (its Z starts nothing).
-  EXPECT_EQ(segments_of("M1 1zM2 2z"), (std::vector<Curve>{line({1, 1}, {1, 1}), line({2, 2}, {2, 2})}));
-  EXPECT_EQ(segments_of("M0 0 L1 0 L0 0 Z Z"), (std::vector<Curve>{line({0, 0}, {1, 0}), line({1, 0}, {0, 0})}));
+  EXPECT_EQ(segments_of("M1 1zM2 2z"),
+            (std::vector<Curve>{line({1, 1}, {1, 1}), line({2, 2}, {2, 2})}));
+  EXPECT_EQ(segments_of("M0 0 L1 0 L0 0 Z Z"),
+            (std::vector<Curve>{line({0, 0}, {1, 0}), line({1, 0}, {0, 0})}));
 }
 
 TEST(SvgPathData, LineCommandsAbsoluteAndRelative) {
