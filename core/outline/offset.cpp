@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <tuple>
@@ -581,22 +582,83 @@ struct SampledBound {
   bool within = true;    // no sample beyond `reach`
 };
 
-/// foot_bound's loop, with B_p'' linear in t (Linear: degree <= 3, from the first and last
-/// control points k0, k1 of its hodograph h2) or not (point_at(h2, t)). The arithmetic is
-/// foot_bound's as stated there, operation for operation: the loop over the interior samples
-/// and the last node (u = 1 at t = 1) are written apart only so that no test of the last
-/// index is made per sample.
-template <bool Linear>
-SampledBound foot_bound_of(const std::array<Point2, 4>& c, const std::vector<Point2>& o,
-                           const ControlPoints& h2, double reach, int& taken) {
-  const auto count = static_cast<int>(o.size()) - 1;
+/// L doubles, one per curve that foot_walk bounds at once (the two sides of a stroke's
+/// segment): each operation is the scalar one on each in turn, which the compiler may pack.
+template <int L>
+struct Lanes {
+  double v[L];
+
+  static Lanes all(double x) {
+    Lanes out;
+    for (int i = 0; i < L; ++i) out.v[i] = x;
+    return out;
+  }
+};
+template <int L, class Op>
+Lanes<L> each(Lanes<L> a, Lanes<L> b, Op op) {
+  for (int i = 0; i < L; ++i) a.v[i] = op(a.v[i], b.v[i]);
+  return a;
+}
+template <int L>
+Lanes<L> operator+(Lanes<L> a, Lanes<L> b) { return each(a, b, std::plus<>{}); }
+template <int L>
+Lanes<L> operator-(Lanes<L> a, Lanes<L> b) { return each(a, b, std::minus<>{}); }
+template <int L>
+Lanes<L> operator*(Lanes<L> a, Lanes<L> b) { return each(a, b, std::multiplies<>{}); }
+template <int L>
+Lanes<L> operator/(Lanes<L> a, Lanes<L> b) { return each(a, b, std::divides<>{}); }
+
+/// Points of L curves, coordinate by coordinate.
+template <int L>
+struct LanePoints {
+  Lanes<L> x, y;
+
+  static LanePoints all(Point2 p) { return {Lanes<L>::all(p.x), Lanes<L>::all(p.y)}; }
+};
+template <int L>
+LanePoints<L> operator+(LanePoints<L> a, LanePoints<L> b) { return {a.x + b.x, a.y + b.y}; }
+template <int L>
+LanePoints<L> operator-(LanePoints<L> a, LanePoints<L> b) { return {a.x - b.x, a.y - b.y}; }
+template <int L>
+LanePoints<L> operator*(Lanes<L> s, LanePoints<L> a) { return {s * a.x, s * a.y}; }
+template <int L>
+Lanes<L> squared_lengths(LanePoints<L> a) { return a.x * a.x + a.y * a.y; }
+template <int L>
+Lanes<L> dots(LanePoints<L> a, LanePoints<L> b) { return a.x * b.x + a.y * b.y; }
+
+/// foot_bound's loop for L cubics c[i] against their samples o[i] at once (the same sample
+/// count), with B_p'' linear in t (Linear: degree <= 3, from the first and last control
+/// points k0, k1 of its hodograph h2) or not (point_at(h2, t)): each curve's result is the
+/// one foot_bound states, bit for bit (every operation is foot_bound's, on each curve). Where
+/// a curve's sample is beyond `reach`, the walk stops there for all of them: each is then
+/// `within` = false, with its largest distance so far (for L = 1, foot_bound's answer; for
+/// L > 1 the others' are cut short, and the caller bounds them alone). The loop over the
+/// interior samples and the last node (u = 1 at t = 1) are written apart only so that no test
+/// of the last index is made per sample.
+template <int L, bool Linear>
+void foot_walk(const std::array<const std::array<Point2, 4>*, L>& c,
+               const std::array<const std::vector<Point2>*, L>& o, const ControlPoints& h2,
+               double reach, std::array<SampledBound, L>& out, int& taken) {
+  using Real = Lanes<L>;
+  using Point = LanePoints<L>;
+  auto gather = [&](std::size_t k) {
+    Point p;
+    for (int i = 0; i < L; ++i) {
+      p.x.v[i] = (*c[static_cast<std::size_t>(i)])[k].x;
+      p.y.v[i] = (*c[static_cast<std::size_t>(i)])[k].y;
+    }
+    return p;
+  };
+  const auto count = static_cast<int>(o[0]->size()) - 1;
   const double h = 1.0 / count;
+  const Real two = Real::all(2.0), three = Real::all(3.0), six = Real::all(6.0),
+             one = Real::all(1.0);
+  const Point p0 = gather(0), p1 = gather(1), p2 = gather(2), p3 = gather(3);
   // C'(u) = a1 + u (2 a2 + 3 u a3) (the power form C(u) = c[0] + u (a1 + u (a2 + u a3))).
-  const Point2 a1 = 3.0 * (c[1] - c[0]), a2 = 3.0 * (c[2] - 2.0 * c[1] + c[0]),
-               a3 = c[3] - c[0] + 3.0 * (c[1] - c[2]);
-  const Point2 c0 = 2.0 * a2, c1 = 2.0 * a2 + 6.0 * a3;  // C''(0), C''(1)
-  const Point2 twice_a2 = 2.0 * a2, thrice_a3 = 3.0 * a3;
-  const Point2 p0 = c[0], p1 = c[1], p2 = c[2], p3 = c[3];
+  const Point a1 = three * (p1 - p0), a2 = three * (p2 - two * p1 + p0),
+              a3 = p3 - p0 + three * (p1 - p2);
+  const Point c0 = two * a2, c1 = two * a2 + six * a3;  // C''(0), C''(1)
+  const Point twice_a2 = two * a2, thrice_a3 = three * a3;
   const Point2 k0 = h2.empty() ? Point2{0, 0} : h2[0];
   const Point2 k1 = h2.empty() ? Point2{0, 0} : h2[h2.size() - 1];
   auto second_of_b = [&](double t) {
@@ -608,74 +670,126 @@ SampledBound foot_bound_of(const std::array<Point2, 4>& c, const std::vector<Poi
   };
   // C(u) - target with C in Bernstein form (positive weights: within a few units of rounding
   // of the coordinates, as offset.hpp's margin assumes).
-  auto off = [&](double u, Point2 target) {
-    const double w = 1.0 - u;
-    return (w * w * w) * p0 + (3.0 * u * w * w) * p1 + (3.0 * u * u * w) * p2 +
+  auto off = [&](Real u, Point target) {
+    const Real w = one - u;
+    return (w * w * w) * p0 + (three * u * w * w) * p1 + (three * u * u * w) * p2 +
            (u * u * u) * p3 - target;
   };
   // One Gauss-Newton step from u for the residual r = C(u) - target, kept in [0, 1].
-  auto step_from = [&](double u, Point2 r) {
-    const Point2 v = a1 + u * (twice_a2 + u * thrice_a3);
-    const double speed_squared = squared_length(v);
-    return speed_squared > 0.0 ? std::clamp(u - core::dot(r, v) / speed_squared, 0.0, 1.0) : u;
+  auto step_from = [&](Real u, Point r) {
+    const Point v = a1 + u * (twice_a2 + u * thrice_a3);
+    const Real speed_squared = squared_lengths(v);
+    const Real next = u - dots(r, v) / speed_squared;
+    for (int i = 0; i < L; ++i) {
+      if (speed_squared.v[i] > 0.0) u.v[i] = std::clamp(next.v[i], 0.0, 1.0);
+    }
+    return u;
   };
   const double reach_squared = reach > 0.0 ? reach * reach : 0.0;
   const double refine_squared = (kFootRefine * kFootRefine) * reach_squared;
-  const Point2* const samples = o.data();
-  SampledBound result;
-  double largest = 0.0, second = 0.0;
-  double u_prev = 0.0, u_before = -h;
-  Point2 c2_prev = c0, b2_prev = second_of_b(0.0);
+  Real largest = Real::all(0.0), second = Real::all(0.0);
+  Real u_prev = Real::all(0.0), u_before = Real::all(-h);
+  Point c2_prev = c0;
+  Point2 b2_prev = second_of_b(0.0);
   // Between t_prev and t: ψ' = s, (C o ψ)'' = s^2 C''(ψ), linear in t as C'' is (and B_p''
   // too for n <= 3): its largest distance from B_p'' is at an end.
-  auto bend_to = [&](double u, double t) {
-    const double s = (u - u_prev) / h, s2 = s * s;
-    const Point2 c2 = (1.0 - u) * c0 + u * c1, b2 = second_of_b(t);
-    second = std::max(std::max(second, squared_length(s2 * c2_prev - b2_prev)),
-                      squared_length(s2 * c2 - b2));
+  auto bend_to = [&](Real u, double t) {
+    const Real s = (u - u_prev) / Real::all(h), s2 = s * s;
+    const Point c2 = (one - u) * c0 + u * c1;
+    const Point2 b2 = second_of_b(t);
+    const Real before = squared_lengths(s2 * c2_prev - Point::all(b2_prev));
+    const Real after = squared_lengths(s2 * c2 - Point::all(b2));
+    for (int i = 0; i < L; ++i) {
+      second.v[i] = std::max(std::max(second.v[i], before.v[i]), after.v[i]);
+    }
     u_before = u_prev;
     u_prev = u;
     c2_prev = c2;
     b2_prev = b2;
   };
+  bool within = true;
   int j = 1;
   for (; j < count; ++j) {
     const double t = j * h;
-    const Point2 target = samples[j];
-    const double guess = std::clamp(u_prev + (u_prev - u_before), 0.0, 1.0);
-    double u = step_from(guess, off(guess, target));
-    Point2 r = off(u, target);
-    double distance_squared = squared_length(r);
-    for (int more = 0; more < kFootSteps && distance_squared > refine_squared; ++more) {
-      const double next = step_from(u, r);
-      const Point2 next_r = off(next, target);
-      const double next_squared = squared_length(next_r);
-      if (!(next_squared < distance_squared)) break;
-      const bool slow = !(next_squared < 0.25 * distance_squared);
-      u = next;
-      r = next_r;
-      distance_squared = next_squared;
-      if (slow) break;
+    Point target;
+    for (int i = 0; i < L; ++i) {
+      const Point2 sample = (*o[static_cast<std::size_t>(i)])[static_cast<std::size_t>(j)];
+      target.x.v[i] = sample.x;
+      target.y.v[i] = sample.y;
     }
-    largest = std::max(largest, distance_squared);
-    if (largest > reach_squared) {
-      result.within = false;
+    Real guess = u_prev + (u_prev - u_before);
+    for (int i = 0; i < L; ++i) guess.v[i] = std::clamp(guess.v[i], 0.0, 1.0);
+    Real u = step_from(guess, off(guess, target));
+    Point r = off(u, target);
+    Real distance_squared = squared_lengths(r);
+    // Further steps on each curve while its distance exceeds the refinement share and each
+    // step at least halves it.
+    bool refine[L];
+    bool any = false;
+    for (int i = 0; i < L; ++i) any |= refine[i] = distance_squared.v[i] > refine_squared;
+    for (int more = 0; more < kFootSteps && any; ++more) {
+      const Real next = step_from(u, r);
+      const Point next_r = off(next, target);
+      const Real next_squared = squared_lengths(next_r);
+      any = false;
+      for (int i = 0; i < L; ++i) {
+        if (!refine[i]) continue;
+        refine[i] = next_squared.v[i] < distance_squared.v[i];
+        if (!refine[i]) continue;
+        const bool slow = !(next_squared.v[i] < 0.25 * distance_squared.v[i]);
+        u.v[i] = next.v[i];
+        r.x.v[i] = next_r.x.v[i];
+        r.y.v[i] = next_r.y.v[i];
+        distance_squared.v[i] = next_squared.v[i];
+        refine[i] = !slow && distance_squared.v[i] > refine_squared;
+        any |= refine[i];
+      }
+    }
+    bool beyond = false;
+    for (int i = 0; i < L; ++i) {
+      largest.v[i] = std::max(largest.v[i], distance_squared.v[i]);
+      beyond |= largest.v[i] > reach_squared;
+    }
+    if (beyond) {
+      within = false;
       break;
     }
     bend_to(u, t);
   }
   taken = j;
-  if (result.within) bend_to(1.0, 1.0);
-  result.largest = std::sqrt(largest);
-  result.second = std::sqrt(second);
-  return result;
+  if (within) bend_to(one, 1.0);
+  for (int i = 0; i < L; ++i) {
+    SampledBound& result = out[static_cast<std::size_t>(i)];
+    result.largest = std::sqrt(largest.v[i]);
+    result.second = std::sqrt(second.v[i]);
+    result.within = within;
+  }
 }
 
 BEZIER_FMA_CLONES SampledBound foot_bound(const std::array<Point2, 4>& c,
                                           const std::vector<Point2>& o, const ControlPoints& h2,
                                           double reach, int& taken) {
-  return h2.size() <= 2 ? foot_bound_of<true>(c, o, h2, reach, taken)
-                        : foot_bound_of<false>(c, o, h2, reach, taken);
+  std::array<SampledBound, 1> out;
+  if (h2.size() <= 2) {
+    foot_walk<1, true>({&c}, {&o}, h2, reach, out, taken);
+  } else {
+    foot_walk<1, false>({&c}, {&o}, h2, reach, out, taken);
+  }
+  return out[0];
+}
+
+/// foot_bound for the two sides of a piece of degree at most 3 at once (B_p'' linear): the
+/// cubics `plus` and `minus` against their samples (the same count), each side's result
+/// foot_bound's for it. False when a side's sample is beyond `reach` (the caller then judges
+/// each side alone).
+BEZIER_FMA_CLONES bool foot_bound_sides(const std::array<Point2, 4>& plus,
+                                        const std::array<Point2, 4>& minus,
+                                        const std::vector<Point2>& o_plus,
+                                        const std::vector<Point2>& o_minus,
+                                        const ControlPoints& h2, double reach,
+                                        std::array<SampledBound, 2>& out, int& taken) {
+  foot_walk<2, true>({&plus, &minus}, {&o_plus, &o_minus}, h2, reach, out, taken);
+  return out[0].within;
 }
 
 /// The bound of offset.hpp where m is not positive: two balls about O(0), the cubic within
@@ -715,6 +829,75 @@ int samples_for(double second, double budget) {
 /// |d| only: both sides of a piece share it.
 int first_sample_count(double estimate, double tolerance) {
   return std::max(samples_for(estimate, kFirstRemainder * tolerance), kFitSamples);
+}
+
+/// A candidate's bound from its samples (offset.hpp): the largest sampled distance plus the
+/// remainder h^2 / 8 |e''| (|e''| the sampled term, bend / K for degree above 3 and the bound
+/// of |d N''|) and the end slack; how many times the room the remainder leaves the largest
+/// sample is (to choose a split); and the bound of |e''|.
+struct JudgedFit {
+  double bound = std::numeric_limits<double>::infinity();
+  double second = 0.0;
+  double excess = std::numeric_limits<double>::infinity();
+};
+
+JudgedFit judged_fit(const SampledBound& sampled, double bend, double turning, int k,
+                     double slack, double tolerance) {
+  JudgedFit judged;
+  judged.second = sampled.second + bend / k + turning;
+  const double remainder = judged.second / (8.0 * k * k) + slack;
+  if (sampled.within) {
+    judged.excess = sampled.largest / std::max(tolerance - remainder, 0.25 * tolerance);
+    judged.bound = sampled.largest + remainder;
+  } else {
+    judged.excess = sampled.largest / tolerance;
+  }
+  return judged;
+}
+
+/// The work of one candidate's bound on `taken` samples: per sample two evaluations of the
+/// cubic and a step (further steps, at most kFootSteps at a sample, are rare: within a
+/// constant of this).
+std::int64_t judge_work(int taken) { return 36 * static_cast<std::int64_t>(taken); }
+
+/// The chord frame of a fit with ends p0, p3 and end directions d0, d3 (offset.hpp), and the
+/// area and moment cubic nearest an arc when the moments give one (fit_piece's first
+/// candidate).
+struct ChordFrame {
+  Point2 p0{0, 0}, p3{0, 0}, d0{0, 0}, d3{0, 0};
+  Point2 t0{0, 0}, t3{0, 0};  // d0, d3 in the frame of the chord
+  double chord_length = 0.0;
+  HandleLengths arc{-1.0, -1.0};
+  bool arc_found = false;
+
+  [[nodiscard]] std::array<Point2, 4> cubic_of(HandleLengths h) const {
+    return {p0, p0 + (h.start * chord_length) * d0, p3 - (h.end * chord_length) * d3, p3};
+  }
+};
+
+ChordFrame chord_frame(Point2 p0, Point2 p3, Point2 d0, Point2 d3, const ChordMoments& moments) {
+  ChordFrame frame;
+  frame.p0 = p0;
+  frame.p3 = p3;
+  frame.d0 = d0;
+  frame.d3 = d3;
+  if (moments.valid) {
+    const Point2 chord = p3 - p0;
+    frame.chord_length = std::sqrt(squared_length(chord));
+    const Point2 axis = chord / frame.chord_length;
+    frame.t0 = in_chord_frame(d0, axis);
+    frame.t3 = in_chord_frame(d3, axis);
+    frame.arc_found =
+        arc_started_handles(frame.t0, frame.t3, moments.area, moments.moment, frame.arc);
+  }
+  return frame;
+}
+
+/// The work fit_piece charges for a piece fitted at the first candidate on `count` samples
+/// that took `taken` of them, n the degree.
+std::int64_t first_fit_work(std::int64_t n, int count, int taken) {
+  return 8 * (n + 1) * (n + 1) + static_cast<std::int64_t>(count) * (n * (n + 1) + 12) +
+         8 * (n * (n + 1) + 24) + 100 + judge_work(taken);
 }
 
 /// A fitted piece: its cubic and its certified bound (infinite when not certified), and how
@@ -786,36 +969,22 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
                                      ? *given_moments
                                      : chord_moments(q, shape.h1, shape.h2, d, p0, p3);
     result.work += 8 * (n * (n + 1) + 24) + 100;
-    Point2 t0{0, 0}, t3{0, 0};
-    double chord_length = 0.0;
-    HandleLengths arc{-1.0, -1.0};
-    auto cubic_of = [&](HandleLengths h) -> std::array<Point2, 4> {
-      return {p0, p0 + (h.start * chord_length) * d0, p3 - (h.end * chord_length) * d3, p3};
-    };
-    if (moments.valid) {
-      const Point2 chord = p3 - p0;
-      chord_length = std::sqrt(squared_length(chord));
-      const Point2 axis = chord / chord_length;
-      t0 = in_chord_frame(d0, axis);
-      t3 = in_chord_frame(d3, axis);
-      if (arc_started_handles(t0, t3, moments.area, moments.moment, arc))
-        candidates[candidate_count++] = arc;
-    }
+    const ChordFrame frame = chord_frame(p0, p3, d0, d3, moments);
+    const Point2 t0 = frame.t0, t3 = frame.t3;
+    const HandleLengths arc = frame.arc;
+    auto cubic_of = [&](HandleLengths h) { return frame.cubic_of(h); };
+    if (frame.arc_found) candidates[candidate_count++] = arc;
     bool searched = !moments.valid, least_squares = false;
     // The bound of offset.hpp for the cubic c on K samples of O.
     auto judge = [&](const std::array<Point2, 4>& c, const std::vector<Point2>& samples,
                      int k, double& largest) {
       int taken = 0;
       const SampledBound sampled = foot_bound(c, samples, shape.h2, tolerance, taken);
-      // Per sample two evaluations of the cubic and a step (further steps, at most
-      // kFootSteps at a sample, are rare: within a constant of this).
-      result.work += 36 * static_cast<std::int64_t>(taken);
+      result.work += judge_work(taken);
       largest = sampled.largest;
-      const double second = sampled.second + bend / k + turning;
-      const double remainder = second / (8.0 * k * k) + slack;
-      if (sampled.within) result.excess = std::min(result.excess, largest / std::max(tolerance - remainder, 0.25 * tolerance));
-      else result.excess = std::min(result.excess, largest / tolerance);
-      return std::pair{sampled.within ? largest + remainder : std::numeric_limits<double>::infinity(), second};
+      const JudgedFit judged = judged_fit(sampled, bend, turning, k, slack, tolerance);
+      result.excess = std::min(result.excess, judged.excess);
+      return std::pair{judged.bound, judged.second};
     };
     result.excess = std::numeric_limits<double>::infinity();
     for (std::size_t tried = 0;; ++tried) {
@@ -1080,6 +1249,51 @@ bool fit_interval(const ScaledCurve& s, double d, double a, double b, core::Work
   return true;
 }
 
+/// fit_piece's fits of both sides of a piece of degree at most 3 at d and -d, where both
+/// pass at their first candidate, the area and moment cubic nearest an arc: judged together
+/// (foot_bound_sides), each fit (cubic, bound, excess, work) the one fit_piece gives. False,
+/// leaving the fits alone, where either side has no such candidate or its bound fails.
+bool first_fits_of_sides(const ControlPoints& q, const PieceShape& shape,
+                         const EndFrame& start, const EndFrame& end, double d, int count,
+                         double tolerance, FirstPiece& plus, FirstPiece& minus,
+                         const std::vector<Point2>& plus_samples,
+                         const std::vector<Point2>& minus_samples,
+                         const std::array<ChordMoments, 2>& moments) {
+  const std::array<double, 2> ds{d, -d};
+  const std::array<FirstPiece*, 2> pieces{&plus, &minus};
+  std::array<ChordFrame, 2> frames;
+  const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double side = ds[i], direction = pieces[i]->direction;
+    frames[i] = chord_frame(start.point + side * n0, end.point + side * n1,
+                            direction * start.tangent, direction * end.tangent, moments[i]);
+    if (!frames[i].arc_found) return false;
+  }
+  const std::array<std::array<Point2, 4>, 2> cubics{frames[0].cubic_of(frames[0].arc),
+                                                    frames[1].cubic_of(frames[1].arc)};
+  std::array<SampledBound, 2> sampled;
+  int taken = 0;
+  if (!foot_bound_sides(cubics[0], cubics[1], plus_samples, minus_samples, shape.h2, tolerance,
+                        sampled, taken)) {
+    return false;
+  }
+  std::array<JudgedFit, 2> judged;
+  for (std::size_t i = 0; i < 2; ++i) {
+    judged[i] = judged_fit(sampled[i], 0.0, shape.normal_second(ds[i]), count,
+                           shape.end_slack(start, end, ds[i]), tolerance);
+    if (!(judged[i].bound <= tolerance)) return false;
+  }
+  const auto n = static_cast<std::int64_t>(q.size()) - 1;
+  for (std::size_t i = 0; i < 2; ++i) {
+    PieceFit& fit = pieces[i]->fit;
+    fit.cubic = cubics[i];
+    fit.bound = judged[i].bound;
+    fit.excess = judged[i].excess;
+    fit.work = first_fit_work(n, count, taken);
+  }
+  return true;
+}
+
 }  // namespace
 
 bool offset_interval(const core::Curve& curve, double a, double b, double d, double tolerance,
@@ -1125,12 +1339,20 @@ BEZIER_FMA_CLONES bool offset_interval_sides(const core::Curve& curve, double a,
       chord_moments_of_sides(q, shape.h1, shape.h2, s.d,
                              {plus_samples.front(), minus_samples.front()},
                              {plus_samples.back(), minus_samples.back()});
-  plus_first.fit = fit_piece(s, a, b, q, start, end, s.d, tolerance_left, plus_first.direction,
-                             plus_samples, zero_start, zero_end, &shape, sampled, &moments[0]);
-  minus_first.fit = fit_piece(s, a, b, q, start, end, -s.d, tolerance_left,
-                              minus_first.direction, minus_samples, zero_start, zero_end,
-                              &shape, sampled,
-                              &moments[1]);
+  // Where B_p'' is linear (degree <= 3), both sides' first candidates are judged at once
+  // (foot_bound_sides); when both hold, they are fit_piece's fits; otherwise each side is
+  // fitted alone.
+  if (!(sampled && q.size() <= 4 && first_fits_of_sides(q, shape, start, end, s.d, count,
+                                                        tolerance_left, plus_first,
+                                                        minus_first, plus_samples,
+                                                        minus_samples, moments))) {
+    plus_first.fit = fit_piece(s, a, b, q, start, end, s.d, tolerance_left,
+                               plus_first.direction, plus_samples, zero_start, zero_end,
+                               &shape, sampled, &moments[0]);
+    minus_first.fit = fit_piece(s, a, b, q, start, end, -s.d, tolerance_left,
+                                minus_first.direction, minus_samples, zero_start, zero_end,
+                                &shape, sampled, &moments[1]);
+  }
   if (!fit_interval(s, s.d, a, b, budget, plus, &plus_first)) return false;
   return fit_interval(s, -s.d, a, b, budget, minus, &minus_first);
 }

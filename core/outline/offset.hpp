@@ -160,7 +160,9 @@ bool offset_interval(const core::Curve& curve, double a, double b, double d, dou
 /// side, with the same work charged. The two sides share what does not depend on the sign of
 /// d: the scaled curve, the piece's hodographs and bounds, the end frames, the sample count,
 /// and, for the first fit of [a, b], the evaluations of B, B' and B'' at its samples and
-/// at the chord moments' quadrature nodes; a side whose first fit fails is split on its own.
+/// at the chord moments' quadrature nodes; for a curve of degree at most 3, the two first
+/// candidates' bounds walk their samples in one loop, each side's arithmetic its own (kept
+/// when both hold); a side whose first fit fails is split on its own.
 /// False when the budget runs out or a piece fails as in offset_interval (nothing appended
 /// to `minus`; `plus` may hold its side's cubics).
 bool offset_interval_sides(const core::Curve& curve, double a, double b, double d,
