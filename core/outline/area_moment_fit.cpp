@@ -181,25 +181,66 @@ BEZIER_FMA_CLONES HandleCandidates area_moment_handles(core::Point2 t0, core::Po
   return result;
 }
 
+namespace {
+
+/// The start of arc_started_handles' Newton steps: both handles of the circular arc through
+/// the ends with these tangents, turning by φ, are 1 / (3 cos^2(φ / 4)) chords:
+/// cos^2(φ / 4) = (1 + cos(φ / 2)) / 2, cos(φ / 2) = sqrt((1 + cos φ) / 2), cos φ = t0 · t3.
+double arc_handle(core::Point2 t0, core::Point2 t3) {
+  const double half = std::sqrt(std::max(0.0, 0.5 * (1.0 + core::dot(t0, t3))));
+  return 2.0 / (3.0 * (1.0 + half));
+}
+
+/// Where a Newton walk of arc_started_handles stands.
+enum class Walk { stepping, found, failed };
+
+/// One Newton step of arc_started_handles from a on the system's quartic q (dq its
+/// derivative): found (out set) once a step is within kRootResolution, failed where the slope
+/// vanishes, the step leaves [0, kMaxHandle] or the pair is refused.
+Walk arc_newton_step(const AreaMomentSystem& system, const Quartic& dq, double& a,
+                     HandleLengths& out) {
+  const double slope = dq.at(a);
+  if (!(slope != 0.0)) return Walk::failed;
+  const double step = system.q.at(a) / slope;
+  a -= step;
+  if (!(a >= 0.0 && a <= kMaxHandle)) return Walk::failed;
+  if (std::fabs(step) <= kRootResolution) return system.pair(a, out) ? Walk::found : Walk::failed;
+  return Walk::stepping;
+}
+
+}  // namespace
+
 BEZIER_FMA_CLONES bool arc_started_handles(core::Point2 t0, core::Point2 t3, double area,
                                            double moment, HandleLengths& out) {
   const AreaMomentSystem system(t0, t3, area, moment);
   if (!system.valid) return false;
-  // A circular arc through the ends with these tangents, turning by φ, has both handles
-  // 1 / (3 cos^2(φ / 4)) chords: cos^2(φ / 4) = (1 + cos(φ / 2)) / 2, cos(φ / 2) =
-  // sqrt((1 + cos φ) / 2), cos φ = t0 · t3.
-  const double half = std::sqrt(std::max(0.0, 0.5 * (1.0 + core::dot(t0, t3))));
-  double a = 2.0 / (3.0 * (1.0 + half));
+  double a = arc_handle(t0, t3);
   const Quartic dq = system.q.derivative();
   for (int i = 0; i < kArcNewtonSteps; ++i) {
-    const double slope = dq.at(a);
-    if (!(slope != 0.0)) return false;
-    const double step = system.q.at(a) / slope;
-    a -= step;
-    if (!(a >= 0.0 && a <= kMaxHandle)) return false;
-    if (std::fabs(step) <= kRootResolution) return system.pair(a, out);
+    const Walk walk = arc_newton_step(system, dq, a, out);
+    if (walk != Walk::stepping) return walk == Walk::found;
   }
   return false;
+}
+
+BEZIER_FMA_CLONES std::array<bool, 2> arc_started_handles_of_two(
+    const std::array<core::Point2, 2>& t0, const std::array<core::Point2, 2>& t3,
+    const std::array<double, 2>& area, const std::array<double, 2>& moment,
+    std::array<HandleLengths, 2>& out) {
+  const std::array<AreaMomentSystem, 2> systems{
+      AreaMomentSystem(t0[0], t3[0], area[0], moment[0]),
+      AreaMomentSystem(t0[1], t3[1], area[1], moment[1])};
+  const std::array<Quartic, 2> dq{systems[0].q.derivative(), systems[1].q.derivative()};
+  std::array<double, 2> a{arc_handle(t0[0], t3[0]), arc_handle(t0[1], t3[1])};
+  std::array<Walk, 2> walk{systems[0].valid ? Walk::stepping : Walk::failed,
+                           systems[1].valid ? Walk::stepping : Walk::failed};
+  for (int i = 0; i < kArcNewtonSteps; ++i) {
+    if (walk[0] != Walk::stepping && walk[1] != Walk::stepping) break;
+    for (std::size_t k = 0; k < 2; ++k) {
+      if (walk[k] == Walk::stepping) walk[k] = arc_newton_step(systems[k], dq[k], a[k], out[k]);
+    }
+  }
+  return {walk[0] == Walk::found, walk[1] == Walk::found};
 }
 
 }  // namespace bezier::outline

@@ -58,6 +58,14 @@ struct HandleCandidates {
 [[nodiscard]] bool arc_started_handles(core::Point2 t0, core::Point2 t3, double area,
                                        double moment, HandleLengths& out);
 
+/// arc_started_handles for two curves at once (the two sides of a stroke's segment), each
+/// answer (the flag and the handles) arc_started_handles' own for that curve: the two Newton
+/// walks advance in one loop, so that neither waits on the other's chain of steps.
+[[nodiscard]] std::array<bool, 2> arc_started_handles_of_two(
+    const std::array<core::Point2, 2>& t0, const std::array<core::Point2, 2>& t3,
+    const std::array<double, 2>& area, const std::array<double, 2>& moment,
+    std::array<HandleLengths, 2>& out);
+
 /// The largest handle length (in chords) searched: a longer handle makes a cubic that
 /// overshoots its chord, not the parallel curve of a piece that turns by less than a half
 /// turn.

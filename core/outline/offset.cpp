@@ -860,9 +860,9 @@ JudgedFit judged_fit(const SampledBound& sampled, double bend, double turning, i
 /// constant of this).
 std::int64_t judge_work(int taken) { return 36 * static_cast<std::int64_t>(taken); }
 
-/// The chord frame of a fit with ends p0, p3 and end directions d0, d3 (offset.hpp), and the
-/// area and moment cubic nearest an arc when the moments give one (fit_piece's first
-/// candidate).
+/// The chord frame of a fit with ends p0, p3 and end directions d0, d3 (offset.hpp) where the
+/// moments are valid, and the area and moment cubic nearest an arc when they give one
+/// (fit_piece's first candidate, found by the caller: arc_started_handles).
 struct ChordFrame {
   Point2 p0{0, 0}, p3{0, 0}, d0{0, 0}, d3{0, 0};
   Point2 t0{0, 0}, t3{0, 0};  // d0, d3 in the frame of the chord
@@ -887,8 +887,6 @@ ChordFrame chord_frame(Point2 p0, Point2 p3, Point2 d0, Point2 d3, const ChordMo
     const Point2 axis = chord / frame.chord_length;
     frame.t0 = in_chord_frame(d0, axis);
     frame.t3 = in_chord_frame(d3, axis);
-    frame.arc_found =
-        arc_started_handles(frame.t0, frame.t3, moments.area, moments.moment, frame.arc);
   }
   return frame;
 }
@@ -969,7 +967,9 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
                                      ? *given_moments
                                      : chord_moments(q, shape.h1, shape.h2, d, p0, p3);
     result.work += 8 * (n * (n + 1) + 24) + 100;
-    const ChordFrame frame = chord_frame(p0, p3, d0, d3, moments);
+    ChordFrame frame = chord_frame(p0, p3, d0, d3, moments);
+    frame.arc_found = moments.valid && arc_started_handles(frame.t0, frame.t3, moments.area,
+                                                           moments.moment, frame.arc);
     const Point2 t0 = frame.t0, t3 = frame.t3;
     const HandleLengths arc = frame.arc;
     auto cubic_of = [&](HandleLengths h) { return frame.cubic_of(h); };
@@ -1267,8 +1267,15 @@ bool first_fits_of_sides(const ControlPoints& q, const PieceShape& shape,
     const double side = ds[i], direction = pieces[i]->direction;
     frames[i] = chord_frame(start.point + side * n0, end.point + side * n1,
                             direction * start.tangent, direction * end.tangent, moments[i]);
-    if (!frames[i].arc_found) return false;
+    if (!moments[i].valid) return false;
   }
+  std::array<HandleLengths, 2> arcs{frames[0].arc, frames[1].arc};
+  const std::array<bool, 2> found = arc_started_handles_of_two(
+      {frames[0].t0, frames[1].t0}, {frames[0].t3, frames[1].t3},
+      {moments[0].area, moments[1].area}, {moments[0].moment, moments[1].moment}, arcs);
+  if (!found[0] || !found[1]) return false;
+  frames[0].arc = arcs[0];
+  frames[1].arc = arcs[1];
   const std::array<std::array<Point2, 4>, 2> cubics{frames[0].cubic_of(frames[0].arc),
                                                     frames[1].cubic_of(frames[1].arc)};
   std::array<SampledBound, 2> sampled;
