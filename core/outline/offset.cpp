@@ -583,7 +583,8 @@ struct SampledBound {
 };
 
 /// L doubles, one per curve that foot_walk bounds at once (the two sides of a stroke's
-/// segment): each operation is the scalar one on each in turn, which the compiler may pack.
+/// segment): each operation is the scalar one on each in turn, so that every curve's
+/// arithmetic is that of its walk alone.
 template <int L>
 struct Lanes {
   double v[L];
