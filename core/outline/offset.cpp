@@ -892,11 +892,18 @@ ChordFrame chord_frame(Point2 p0, Point2 p3, Point2 d0, Point2 d3, const ChordMo
   return frame;
 }
 
+/// The work fit_piece charges, n the degree: its ends and frames; `count` samples of O; the
+/// chord moments and the first candidate's handles.
+std::int64_t fit_setup_work(std::int64_t n) { return 8 * (n + 1) * (n + 1); }
+std::int64_t sampling_work(std::int64_t n, int count) {
+  return static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
+}
+std::int64_t proposal_work(std::int64_t n) { return 8 * (n * (n + 1) + 24) + 100; }
+
 /// The work fit_piece charges for a piece fitted at the first candidate on `count` samples
-/// that took `taken` of them, n the degree.
+/// that took `taken` of them.
 std::int64_t first_fit_work(std::int64_t n, int count, int taken) {
-  return 8 * (n + 1) * (n + 1) + static_cast<std::int64_t>(count) * (n * (n + 1) + 12) +
-         8 * (n * (n + 1) + 24) + 100 + judge_work(taken);
+  return fit_setup_work(n) + sampling_work(n, count) + proposal_work(n) + judge_work(taken);
 }
 
 /// A fitted piece: its cubic and its certified bound (infinite when not certified), and how
@@ -944,7 +951,7 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
   const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
   const Point2 p0 = start.point + d * n0, p3 = end.point + d * n1;
   const Point2 d0 = direction * start.tangent, d3 = direction * end.tangent;
-  result.work = 8 * (n + 1) * (n + 1);
+  result.work = fit_setup_work(n);
   // Where B' vanishes at an end, the end frame's normal against the limit Q gives.
   const double slack = shape.end_slack(start, end, d);
   if (shape.w > 0.0) {
@@ -956,7 +963,7 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
     const int count = first_sample_count(shape.sample_estimate(d), tolerance);
     const CubicWeights& weights = cubic_weights(count);
     if (!presampled && !sample_parallel(q, shape.h1, d, p0, p3, weights, o)) return result;
-    result.work += static_cast<std::int64_t>(count) * (n * (n + 1) + 12);
+    result.work += sampling_work(n, count);
     // The candidates: the area and moment cubic nearest an arc, then the others of
     // area_moment_fit.hpp, then the least squares.
     // Each candidate's handle lengths (its cubic built when it is judged), the least squares
@@ -967,7 +974,7 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
     const ChordMoments moments = given_moments != nullptr
                                      ? *given_moments
                                      : chord_moments(q, shape.h1, shape.h2, d, p0, p3);
-    result.work += 8 * (n * (n + 1) + 24) + 100;
+    result.work += proposal_work(n);
     ChordFrame frame = chord_frame(p0, p3, d0, d3, moments);
     frame.arc_found = moments.valid && arc_started_handles(frame.t0, frame.t3, moments.area,
                                                            moments.moment, frame.arc);
@@ -1024,7 +1031,7 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
         if (!(more > (denser == 0 ? judged : judged + judged / 4))) break;
         std::vector<Point2>& dense = dense_buffer();
         if (!sample_parallel(q, shape.h1, d, p0, p3, cubic_weights(more), dense)) return result;
-        result.work += static_cast<std::int64_t>(more) * (n * (n + 1) + 12);
+        result.work += sampling_work(n, more);
         std::tie(bound, second) = judge(c, dense, more, largest);
         judged = more;
       }
@@ -1037,7 +1044,7 @@ PieceFit fit_piece(const ScaledCurve& s, double a, double b, const ControlPoints
   } else {
     const CubicWeights& weights = cubic_weights(kBallSamples);
     const bool all_numbers = sample_parallel(q, shape.h1, d, p0, p3, weights, o);
-    result.work += kBallSamples * (n * (n + 1) + 12);
+    result.work += sampling_work(n, kBallSamples);
     result.cubic = fit(o, weights, all_numbers, d0, d3);
   }
   result.bound = std::min(result.bound, ball_bound(q, shape.h1, result.cubic, d, n0) + slack);
@@ -1264,11 +1271,11 @@ bool first_fits_of_sides(const ControlPoints& q, const PieceShape& shape,
   const std::array<FirstPiece*, 2> pieces{&plus, &minus};
   std::array<ChordFrame, 2> frames;
   const Point2 n0 = left_normal(start.tangent), n1 = left_normal(end.tangent);
+  if (!moments[0].valid || !moments[1].valid) return false;
   for (std::size_t i = 0; i < 2; ++i) {
     const double side = ds[i], direction = pieces[i]->direction;
     frames[i] = chord_frame(start.point + side * n0, end.point + side * n1,
                             direction * start.tangent, direction * end.tangent, moments[i]);
-    if (!moments[i].valid) return false;
   }
   std::array<HandleLengths, 2> arcs{frames[0].arc, frames[1].arc};
   const std::array<bool, 2> found = arc_started_handles_of_two(
