@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
-"""Writes skia.jsonl: operands of Skia's PathOps tests (tests/PathOpsOpTest.cpp, google/skia),
-transcribed as data. Each operand is path data in a small notation: M/L/Q/C/Z with numbers
-that are float32 (SkScalar; `h` + 8 hex digits is SkBits2Float of those bits), R x0 y0 x1 y1
-for addRect (clockwise in Skia's y-down sense, as addRect's default kCW draws it; `r` for
-kCCW), and the fill type (w winding -> nonzero, e even-odd). Coordinates are y-down in Skia;
-the regions are the same point sets. Inverse fill types and conics have no counterpart here
-and are left out."""
+"""Writes skia.jsonl and skia_optest.jsonl: operands of Skia's PathOps tests
+(tests/PathOpsOpTest.cpp, google/skia), transcribed as data: a first set here, the rest of
+the file's transcribable tests in skia_optest.tsv. Each operand is path data in a small
+notation: M/L/Q/C/Z with numbers that are float32 (SkScalar; `h` + 8 hex digits is
+SkBits2Float of those bits), R x0 y0 x1 y1 for addRect (clockwise in Skia's y-down sense, as
+addRect's default kCW draws it; `r` for kCCW), and the fill type (w winding -> nonzero, e
+even-odd). Coordinates are y-down in Skia; the regions are the same point sets. Inverse fill
+types and conics have no counterpart here and are left out."""
 import json
 import re
 import os
@@ -176,7 +177,34 @@ for name, fa, pa, fb, pb in CASES:
     if pb:
         c["b"] = {"path": svg(pb), "fill_rule": RULE[fb]}
     cases.append(c)
-with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "skia.jsonl"), "w") as f:
+here = os.path.dirname(os.path.abspath(__file__))
+with open(os.path.join(here, "skia.jsonl"), "w") as f:
     for c in cases:
         f.write(json.dumps(c) + "\n")
 print(len(cases), "cases")
+
+# The rest of PathOpsOpTest.cpp (skia_optest.tsv, its header says what it holds) to
+# skia_optest.jsonl: the tests not in CASES, each operand as above (an empty first path is an
+# empty operand, an empty second one is left out). Operands with infinite or NaN coordinates
+# (SkBits2Float of such bits) are left out: SVG path data has no such numbers, and the
+# service refuses them at the parser.
+known = {name for name, *_ in CASES}
+more = []
+with open(os.path.join(here, "skia_optest.tsv")) as f:
+    for line in f:
+        if line.startswith("#") or not line.strip():
+            continue
+        name, fa, pa, fb, pb, _op = line.rstrip("\n").split("\t")
+        if name in known:
+            continue
+        a, b = svg(pa), svg(pb)
+        if any(w in a + " " + b for w in ("inf", "nan")):
+            continue
+        c = {"name": "skia-" + name, "a": {"path": a, "fill_rule": RULE[fa]}}
+        if b:
+            c["b"] = {"path": b, "fill_rule": RULE[fb]}
+        more.append(c)
+with open(os.path.join(here, "skia_optest.jsonl"), "w") as f:
+    for c in more:
+        f.write(json.dumps(c) + "\n")
+print(len(more), "more cases")
