@@ -22,13 +22,26 @@ namespace bezier::outline {
 /// certainty by bernstein_roots (core/bernstein/roots.hpp); the curve is first scaled by a
 /// power of two (exact) so that the sixth powers neither overflow nor underflow. Roots where
 /// B' = 0 (s = 0, a cusp of B itself, where the normal turns by a half turn and the parallel
-/// curve jumps) are not cusps of the parallel curve and are left out (s at the root within
-/// the rounding of p's coefficients: s^3 below 1e-12 of their largest). A double root of p
+/// curve jumps) are not cusps of the parallel curve and are left out. A root where s^3 is
+/// below 1e-12 of the largest coefficient of p cannot be told from such a zero at p's
+/// rounding: next to a near-cusp of B (a hairpin, |B'| small but not zero), where s^3 is tiny
+/// at the cusps of O too, p's coefficients on [0, 1] are far larger than its values there.
+/// Such a piece is halved and p built again on each half from the hodographs' pieces (the
+/// values of B' and B'' there, rounded as on the whole curve, so p's coefficients shrink with
+/// the piece while its values near the root keep their accuracy), until every root is told
+/// apart or the piece is 2^-48 wide (then it is taken as a zero of B'). A double root of p
 /// with d c > 0 (a curvature extremum whose radius is exactly |d|, where O' vanishes without
 /// turning back) is reported too: O is not smooth there either.
 ///
-/// Accuracy: each t within about 1e-12 of a simple root (bernstein_roots' refinement),
-/// about the square root of that for a double one. Precondition: finite coordinates and d.
-[[nodiscard]] std::vector<double> offset_cusps(const core::Curve& curve, double d);
+/// Each root found is polished by Newton's method on the unsquared condition |B'|^3 = d c,
+/// whose two sides keep their accuracy where p's coefficients do not.
+///
+/// Accuracy: each t within about 1e-12 of a simple root, about the square root of that for a
+/// double one. `pieces`, when given,
+/// receives the count of polynomials built (one unless a piece was halved; at most a few per
+/// halving, 48 halvings, about each near-zero of B'), for the caller's work charge.
+/// Precondition: finite coordinates and d.
+[[nodiscard]] std::vector<double> offset_cusps(const core::Curve& curve, double d,
+                                               int* pieces = nullptr);
 
 }  // namespace bezier::outline

@@ -94,6 +94,43 @@ TEST(OffsetCusps, SignChangesOfOneMinusDKappaAreTheCusps) {
   }
 }
 
+/// The hairpin B(t) = (3 t (1 - t), g (3 t^2 - 2 t^3)) (control points (0,0), (1,0), (1,g),
+/// (0,g)): out along the x axis and back g above it, turning at t = 1/2 where |B'| = 3g/2.
+/// f(t) = |B'|^3 - d cross(B', B''), from B' = (3 - 6t, 6g t (1 - t)) and B'' = (-6, 6g (1 - 2t)),
+/// in long double: the parallel curve at d turns back where f changes sign.
+long double hairpin_f(long double g, long double d, long double t) {
+  const long double x1 = 3 - 6 * t, y1 = 6 * g * t * (1 - t), x2 = -6, y2 = 6 * g * (1 - 2 * t);
+  const long double speed = std::sqrt(x1 * x1 + y1 * y1);
+  return speed * speed * speed - d * (x1 * y2 - y1 * x2);
+}
+
+/// The root of hairpin_f between lo and hi (of opposite signs there), by bisection.
+long double hairpin_root(long double g, long double d, long double lo, long double hi) {
+  const bool rising = hairpin_f(g, d, hi) > 0;
+  for (int i = 0; i < 200; ++i) {
+    const long double mid = (lo + hi) / 2;
+    ((hairpin_f(g, d, mid) > 0) == rising ? hi : lo) = mid;
+  }
+  return (lo + hi) / 2;
+}
+
+TEST(OffsetCusps, HairpinsTurnBackNextToTheirTip) {
+  // Next to the tip |B'| is small but not zero, so |B'|^3 at the cusps of O (about
+  // (9 g d / 2)^(1/3) / 6 from t = 1/2) is far below the coefficients of p on [0, 1]; the
+  // cusps are found on halved pieces. The radius at the tip, (3g/2)^3 / (9g), is below d on
+  // the left for every g here, and f > 0 at t = 0.4 and 0.6, so there are two cusps.
+  const double d = 0.005;
+  for (const double g : {1e-2, 1e-3, 3e-4, 1e-6, 1e-9}) {
+    const Curve hairpin({{0, 0}, {1, 0}, {1, g}, {0, g}});
+    const std::vector<double> cusps = offset_cusps(hairpin, d);
+    ASSERT_EQ(cusps.size(), 2u) << g;
+    EXPECT_NEAR(cusps[0], static_cast<double>(hairpin_root(g, d, 0.4L, 0.5L)), 1e-12) << g;
+    EXPECT_NEAR(cusps[1], static_cast<double>(hairpin_root(g, d, 0.5L, 0.6L)), 1e-12) << g;
+    // On the right the curve turns away: no cusp.
+    EXPECT_TRUE(offset_cusps(hairpin, -d).empty()) << g;
+  }
+}
+
 TEST(OffsetCusps, PowerOfTwoScalingScalesTheDistance) {
   // The arch (3t, 6t(1 - t)) has radius 3/4 at its apex on its right: at d = -1 its parallel
   // curve turns back twice around the apex.

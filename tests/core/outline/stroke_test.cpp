@@ -334,6 +334,28 @@ TEST(Stroke, RoundIsTheDistanceSetForCurvesOfHighDegreeWithRepeatedControlPoints
   }
 }
 
+TEST(Stroke, HairpinIsCoveredByItsRibbonsAndAFewDisksAtItsTip) {
+  // (0,0), (1,0), (1,g), (0,g): out along the x axis to x = 3/4 and back g above it. Its radius
+  // of curvature is below r only next to the tip (offset_cusps_test's hairpins), where B' is
+  // small but not zero; the tight side there is shorter than r and turns by a half turn, so
+  // a few disks cover it. A chain of disks of radius R along a whole leg (the tight side
+  // taken for the whole curve) would need at least 3/4 / (2R) of them.
+  const double width = 0.01, tolerance = 1e-4, reach = width / 2 + tolerance / 2;
+  for (const double g : {3e-4, 1e-6}) {
+    SCOPED_TRACE(g);
+    path::Path path;
+    path.segments.push_back(core::Curve({{0, 0}, {1, 0}, {1, g}, {0, g}}));
+    path.subpaths.push_back({0, 1, false});
+    const StrokeOutline outline = stroke(path, round_style(width), tolerance, kWork, kSegments);
+    ASSERT_EQ(outline.status, StrokeStatus::ok);
+    EXPECT_LT(static_cast<double>(outline.contours.size()), 0.75 / (2 * reach) / 4);
+    const test::MembershipCounts counts = test::check_round_membership(
+        path, outline, width / 2, tolerance, probe_points(path, width / 2, tolerance, 12, 3000));
+    EXPECT_GT(counts.inside, 100);
+    EXPECT_GT(counts.outside, 100);
+  }
+}
+
 TEST(Stroke, ZeroLengthSubpathIsADotWithRoundCapsASquareWithSquareCapsNothingWithButt) {
   // SVG 2 (stroke-linecap): a zero-length subpath, drawn by a zero-length command or by
   // a moveto closed at once, is a disk of radius width / 2 under round caps, a square of
