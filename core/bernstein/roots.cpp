@@ -53,6 +53,7 @@ BernsteinRoots bernstein_roots(std::span<const double> c, int max_depth) {
   while (!stack.empty()) {
     const Job job = stack.back();
     stack.pop_back();
+    ++out.intervals;
     const Coeffs q = bernstein::portion<double>(c, job.a, job.b);
     // An end that is an exact zero is left out of the count: p = (t - end) r(t) there, and
     // r's coefficients on the interval have the other coefficients' signs.

@@ -17,6 +17,9 @@ struct BernsteinRoots {
   /// stretch and reported as one (a multiple root). Exact zeros, at the ends or at the
   /// points where the interval was split, leave it true.
   bool isolated = true;
+  /// The intervals examined, each a portion of p (O(n^2) operations) and a few evaluations:
+  /// the measure of the search's work (clusters and multiple roots take many).
+  int intervals = 0;
 };
 
 /// Descartes' rule of signs on Bernstein coefficients, counting only the coefficients

@@ -1376,13 +1376,13 @@ CurveOffset offset_curve(const core::Curve& curve, double d, double tolerance,
                          core::WorkBudget& budget) {
   CurveOffset result;
   std::vector<double> cuts{0.0, 1.0};
-  int pieces = 1;
-  for (const double t : offset_cusps(curve, d, &pieces)) cuts.push_back(t);
+  std::int64_t cusp_work = 0;
+  for (const double t : offset_cusps(curve, d, &cusp_work)) cuts.push_back(t);
   for (const double t : stationary_points(curve)) cuts.push_back(t);
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
   const auto n = static_cast<std::int64_t>(curve.degree());
-  budget.charge(64 * n * n * n * pieces);
+  budget.charge(32 * n * n * n + cusp_work);
   const ScaledCurve scaled(curve, d, tolerance);
   for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
     if (!(cuts[k + 1] > cuts[k])) continue;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <span>
 
@@ -107,11 +108,13 @@ struct Limits {
 };
 
 /// The cusps on [a, b] of the scaled curve whose hodographs are h1 and h2 (offset_cusps below),
-/// appended to `out`; `pieces` counts the polynomials built.
+/// appended to `out`; `work` grows by the operations of each piece (its products, and the root
+/// search's intervals, each a portion of p).
 void cusps_on(std::span<const Point2> h1, std::span<const Point2> h2, double d, double a,
               double b, int depth, const Limits& limits, std::vector<double>& out,
-              int& pieces) {
-  ++pieces;
+              std::int64_t& work) {
+  const auto n = static_cast<std::int64_t>(h1.size());
+  work += 16 * n * n;
   ControlPoints first, second;
   piece_into(h1, a, b, first);
   piece_into(h2, a, b, second);
@@ -137,7 +140,10 @@ void cusps_on(std::span<const Point2> h1, std::span<const Point2> h2, double d, 
   if (largest == 0.0) return;
   std::vector<double> found;
   bool unclear = false;
-  for (const double u : core::bernstein_roots(poly).roots) {
+  const core::BernsteinRoots roots = core::bernstein_roots(poly);
+  const auto degree = static_cast<std::int64_t>(poly.size());
+  work += std::int64_t{roots.intervals} * degree * degree;
+  for (const double u : roots.roots) {
     const double su = evaluate(s, u);
     if (!(su * su * su > kStationaryShare * largest)) {
       unclear = true;  // B' = 0 here, or |B'|^3 below the rounding of this piece's p
@@ -148,8 +154,8 @@ void cusps_on(std::span<const Point2> h1, std::span<const Point2> h2, double d, 
   if (unclear && depth < kCuspDepth && largest_squared_length(first) > limits.floor_squared) {
     const double m = a + 0.5 * (b - a);
     if (a < m && m < b) {
-      cusps_on(h1, h2, d, a, m, depth + 1, limits, out, pieces);
-      cusps_on(h1, h2, d, m, b, depth + 1, limits, out, pieces);
+      cusps_on(h1, h2, d, a, m, depth + 1, limits, out, work);
+      cusps_on(h1, h2, d, m, b, depth + 1, limits, out, work);
       return;
     }
   }
@@ -158,8 +164,8 @@ void cusps_on(std::span<const Point2> h1, std::span<const Point2> h2, double d, 
 
 }  // namespace
 
-std::vector<double> offset_cusps(const core::Curve& curve, double d, int* pieces) {
-  int built = 0;
+std::vector<double> offset_cusps(const core::Curve& curve, double d, std::int64_t* work) {
+  std::int64_t done = 0;
   std::vector<double> cusps;
   const int n = curve.degree();
   // A line, or the curve itself, has no cusps; nor has a point.
@@ -174,14 +180,14 @@ std::vector<double> offset_cusps(const core::Curve& curve, double d, int* pieces
     const double m2 = std::sqrt(largest_squared_length(second));
     const Limits limits{kNearCuspSpeed * kNearCuspSpeed * m1 * m1,
                         16.0 * n * std::numeric_limits<double>::epsilon() * m1 * m2};
-    cusps_on(first, second, core::PowerOfTwo(e).times(d), 0.0, 1.0, 0, limits, cusps, built);
+    cusps_on(first, second, core::PowerOfTwo(e).times(d), 0.0, 1.0, 0, limits, cusps, done);
     // A cusp at a split point may be found on both sides of it.
     std::sort(cusps.begin(), cusps.end());
     cusps.erase(std::unique(cusps.begin(), cusps.end(),
                             [](double x, double y) { return y - x <= kSameCusp; }),
                 cusps.end());
   }
-  if (pieces != nullptr) *pieces = built;
+  if (work != nullptr) *work += done;
   return cusps;
 }
 

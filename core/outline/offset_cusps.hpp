@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "core/base/curve.hpp"
@@ -29,19 +30,22 @@ namespace bezier::outline {
 /// Such a piece is halved and p built again on each half from the hodographs' pieces (the
 /// values of B' and B'' there, rounded as on the whole curve, so p's coefficients shrink with
 /// the piece while its values near the root keep their accuracy), until every root is told
-/// apart or the piece is 2^-48 wide (then it is taken as a zero of B'). A double root of p
-/// with d c > 0 (a curvature extremum whose radius is exactly |d|, where O' vanishes without
-/// turning back) is reported too: O is not smooth there either.
+/// apart, or the piece is 2^-48 wide, or |B'| stays below 2^-20 of its largest on it (a
+/// near-cusp of B, whose parallel curve turns by a half turn where B hardly moves): such a
+/// root is then taken as a zero of B'. A piece where d c <= 0 throughout (to within c's
+/// rounding) holds no cusp and is not searched. A double root of p with d c > 0 (a curvature
+/// extremum whose radius is exactly |d|, where O' vanishes without turning back) is reported
+/// too: O is not smooth there either.
 ///
 /// Each root found is polished by Newton's method on the unsquared condition |B'|^3 = d c,
 /// whose two sides keep their accuracy where p's coefficients do not.
 ///
 /// Accuracy: each t within about 1e-12 of a simple root, about the square root of that for a
-/// double one. `pieces`, when given,
-/// receives the count of polynomials built (one unless a piece was halved; at most a few per
-/// halving, 48 halvings, about each near-zero of B'), for the caller's work charge.
-/// Precondition: finite coordinates and d.
+/// double one. `work`, when given, grows by the operations done (per piece built, its products
+/// of Bernstein polynomials and the intervals of its root search, each a portion of p), for
+/// the caller's work charge: next to near-zeros of B', where p has clusters of roots, the root
+/// search dominates. Precondition: finite coordinates and d.
 [[nodiscard]] std::vector<double> offset_cusps(const core::Curve& curve, double d,
-                                               int* pieces = nullptr);
+                                               std::int64_t* work = nullptr);
 
 }  // namespace bezier::outline

@@ -92,12 +92,11 @@ BEZIER_FMA_CLONES bool cover_segment(const core::Curve& segment, const CoverSize
   const bool loose = loose_everywhere(h1, h2, factor.times(sizes.reach), &loose_work);
   if (!sink.charge(loose_work)) return false;
   if (!loose) {
-    if (!sink.charge(3 * 64 * n * n * n)) return false;
-    int pieces[2] = {1, 1};
-    cusps[0] = offset_cusps(segment, sizes.reach, &pieces[0]);
-    cusps[1] = offset_cusps(segment, -sizes.reach, &pieces[1]);
-    // Each piece offset_cusps halved to beyond the first (next to a near-zero of B').
-    if (!sink.charge(64 * n * n * n * (pieces[0] + pieces[1] - 2))) return false;
+    if (!sink.charge(64 * n * n * n)) return false;
+    std::int64_t cusp_work = 0;
+    cusps[0] = offset_cusps(segment, sizes.reach, &cusp_work);
+    cusps[1] = offset_cusps(segment, -sizes.reach, &cusp_work);
+    if (!sink.charge(cusp_work)) return false;
     stationary = stationary_points(segment);
   }
   for (const std::vector<double>& side : cusps) {
