@@ -149,7 +149,11 @@ void cusps_on(std::span<const Point2> h1, std::span<const Point2> h2, double d, 
       unclear = true;  // B' = 0 here, or |B'|^3 below the rounding of this piece's p
       continue;
     }
-    if (d * evaluate(c, u) > 0.0) found.push_back(a + (b - a) * polished(c, s, d, u));
+    if (!(d * evaluate(c, u) > 0.0)) continue;
+    const double root = polished(c, s, d, u);
+    // Where |B'| is below the floor, a near-cusp of B: taken as its zero of B', like the
+    // pieces not halved below.
+    if (evaluate(s, root) > limits.floor_squared) found.push_back(a + (b - a) * root);
   }
   if (unclear && depth < kCuspDepth && largest_squared_length(first) > limits.floor_squared) {
     const double m = a + 0.5 * (b - a);

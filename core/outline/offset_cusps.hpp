@@ -32,7 +32,7 @@ namespace bezier::outline {
 /// the piece while its values near the root keep their accuracy), until every root is told
 /// apart, or the piece is 2^-48 wide, or |B'| stays below 2^-20 of its largest on it (a
 /// near-cusp of B, whose parallel curve turns by a half turn where B hardly moves): such a
-/// root is then taken as a zero of B'. A piece where d c <= 0 throughout (to within c's
+/// root is then taken as a zero of B', as is any cusp where |B'| is below that floor. A piece where d c <= 0 throughout (to within c's
 /// rounding) holds no cusp and is not searched. A double root of p with d c > 0 (a curvature
 /// extremum whose radius is exactly |d|, where O' vanishes without turning back) is reported
 /// too: O is not smooth there either.

@@ -356,6 +356,25 @@ TEST(Stroke, HairpinIsCoveredByItsRibbonsAndAFewDisksAtItsTip) {
   }
 }
 
+TEST(Stroke, NearCuspOfTheCurveAtANarrowWidth) {
+  // (0,0), (1,1/2), (0,1/2 + e), (1,0): x' = 3 (1 - 2t)^2 and y'(1/2) = 3e/4, so B' nearly
+  // vanishes at t = 1/2 and the curve turns back there within a stretch of t of about e; its
+  // parallel curves have cusps close on either side, where |B'| is far below its largest.
+  for (const double e : {6.053e-7, 1e-7}) {
+    SCOPED_TRACE(e);
+    path::Path path;
+    path.segments.push_back(core::Curve({{0, 0}, {1, 0.5}, {0, 0.5 + e}, {1, 0}}));
+    path.subpaths.push_back({0, 1, false});
+    const double width = 0.001, tolerance = 1e-6;
+    const StrokeOutline outline = stroke(path, round_style(width), tolerance, 22000000, kSegments);
+    ASSERT_EQ(outline.status, StrokeStatus::ok);
+    const test::MembershipCounts counts = test::check_round_membership(
+        path, outline, width / 2, tolerance, probe_points(path, width / 2, tolerance, 13, 3000));
+    EXPECT_GT(counts.inside, 100);
+    EXPECT_GT(counts.outside, 100);
+  }
+}
+
 TEST(Stroke, ZeroLengthSubpathIsADotWithRoundCapsASquareWithSquareCapsNothingWithButt) {
   // SVG 2 (stroke-linecap): a zero-length subpath, drawn by a zero-length command or by
   // a moveto closed at once, is a disk of radius width / 2 under round caps, a square of
