@@ -116,7 +116,7 @@ long double hairpin_root(long double g, long double d, long double lo, long doub
 
 TEST(OffsetCusps, HairpinsTurnBackNextToTheirTip) {
   // Next to the tip |B'| is small but not zero, so |B'|^3 at the cusps of O (about
-  // (9 g d / 2)^(1/3) / 6 from t = 1/2) is far below the coefficients of p on [0, 1]; the
+  // (9 g d)^(1/3) / 6 from t = 1/2) is far below the coefficients of p on [0, 1]; the
   // cusps are found on halved pieces. The radius at the tip, (3g/2)^3 / (9g), is below d on
   // the left for every g here, and f > 0 at t = 0.4 and 0.6, so there are two cusps.
   const double d = 0.005;
