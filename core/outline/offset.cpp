@@ -1382,7 +1382,7 @@ CurveOffset offset_curve(const core::Curve& curve, double d, double tolerance,
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
   const auto n = static_cast<std::int64_t>(curve.degree());
-  budget.charge(32 * n * n * n + cusp_work);
+  budget.charge(64 * n * n * n + cusp_work);
   const ScaledCurve scaled(curve, d, tolerance);
   for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
     if (!(cuts[k + 1] > cuts[k])) continue;

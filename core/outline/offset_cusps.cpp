@@ -6,7 +6,9 @@
 #include <limits>
 #include <span>
 
+#include "core/bernstein/bernstein1d.hpp"
 #include "core/bernstein/roots.hpp"
+#include "core/measure/bernstein_product.hpp"
 #include "core/numeric/binomial.hpp"
 #include "core/numeric/power_of_two.hpp"
 #include "core/outline/control_points.hpp"
@@ -33,18 +35,10 @@ constexpr int kPolishSteps = 8;
 // Cusps closer than this in t are one (found on both sides of a split point).
 constexpr double kSameCusp = 0x1p-44;
 
-/// The hodograph's control points n (P_{i+1} - P_i).
-std::vector<Point2> hodograph(const std::vector<Point2>& p) {
-  const double n = static_cast<double>(p.size() - 1);
-  std::vector<Point2> h;
-  for (std::size_t i = 0; i + 1 < p.size(); ++i) h.push_back(n * (p[i + 1] - p[i]));
-  return h;
-}
-
 /// The Bernstein coefficients of the product of two polynomials given by theirs, with the
 /// pair's product f(a_i, b_j) (cross, dot or a plain product).
 template <class A, class B, class F>
-std::vector<double> product(const std::vector<A>& a, const std::vector<B>& b, F f) {
+std::vector<double> product(std::span<const A> a, std::span<const B> b, F f) {
   const int m = static_cast<int>(a.size()) - 1, k = static_cast<int>(b.size()) - 1;
   std::vector<double> r(static_cast<std::size_t>(m + k + 1), 0.0);
   for (int i = 0; i <= m; ++i) {
@@ -58,24 +52,12 @@ std::vector<double> product(const std::vector<A>& a, const std::vector<B>& b, F 
   return r;
 }
 
-std::vector<double> times(const std::vector<double>& a, const std::vector<double>& b) {
+std::vector<double> times(std::span<const double> a, std::span<const double> b) {
   return product(a, b, [](double x, double y) { return x * y; });
 }
 
-double evaluate(std::vector<double> c, double t) {
-  for (std::size_t k = c.size() - 1; k > 0; --k)
-    for (std::size_t i = 0; i < k; ++i) c[i] = (1.0 - t) * c[i] + t * c[i + 1];
-  return c.front();
-}
-
-/// The Bernstein coefficients of the derivative of the polynomial with coefficients c.
-std::vector<double> derivative(const std::vector<double>& c) {
-  const double m = static_cast<double>(c.size() - 1);
-  std::vector<double> r;
-  for (std::size_t i = 0; i + 1 < c.size(); ++i) r.push_back(m * (c[i + 1] - c[i]));
-  if (r.empty()) r.push_back(0.0);
-  return r;
-}
+/// p(t) for the Bernstein coefficients of p.
+double evaluate(std::span<const double> c, double t) { return core::bernstein::evaluate(c, t); }
 
 /// A root u of p = d^2 c^2 - s^3 (with d c > 0 and s > 0 there) polished by Newton's method on
 /// f = s^(3/2) - d c, which vanishes there too: f keeps the cancellation of two numbers of the
@@ -83,7 +65,7 @@ std::vector<double> derivative(const std::vector<double>& c) {
 /// its values next to a near-cusp of B. A step is kept while it stays in [0, 1] and |f|
 /// falls; at most kPolishSteps.
 double polished(const std::vector<double>& c, const std::vector<double>& s, double d, double u) {
-  const std::vector<double> dc = derivative(c), ds = derivative(s);
+  const core::Coeffs dc = core::bernstein_derivative(c), ds = core::bernstein_derivative(s);
   auto f = [&](double x) { return std::pow(evaluate(s, x), 1.5) - d * evaluate(c, x); };
   double fu = f(u);
   for (int step = 0; step < kPolishSteps && fu != 0.0; ++step) {
@@ -115,17 +97,18 @@ void cusps_on(std::span<const Point2> h1, std::span<const Point2> h2, double d, 
               std::int64_t& work) {
   const auto n = static_cast<std::int64_t>(h1.size());
   work += 16 * n * n;
-  ControlPoints first, second;
-  piece_into(h1, a, b, first);
-  piece_into(h2, a, b, second);
-  const std::vector<Point2> f(first.begin(), first.end()), g(second.begin(), second.end());
-  const std::vector<double> c = product(f, g, [](Point2 x, Point2 y) { return core::cross(x, y); });
+  ControlPoints f, g;
+  piece_into(h1, a, b, f);
+  piece_into(h2, a, b, g);
+  const std::vector<double> c = product<Point2, Point2>(
+      f, g, [](Point2 x, Point2 y) { return core::cross(x, y); });
   // No cusp where d c <= 0 throughout (to within c's rounding): a piece that turns away from
   // d's side, or none at all (a line).
   double towards = 0.0;
   for (const double x : c) towards = std::max(towards, d * x);
   if (!(towards > std::fabs(d) * limits.cross_error)) return;
-  const std::vector<double> s = product(f, f, [](Point2 x, Point2 y) { return core::dot(x, y); });
+  const std::vector<double> s = product<Point2, Point2>(
+      f, f, [](Point2 x, Point2 y) { return core::dot(x, y); });
   // d^2 c^2, raised from degree 4n - 6 to 6n - 6 by the product with 1 (all coefficients 1).
   std::vector<double> squared = times(c, c);
   for (double& x : squared) x *= d * d;
@@ -155,7 +138,7 @@ void cusps_on(std::span<const Point2> h1, std::span<const Point2> h2, double d, 
     // pieces not halved below.
     if (evaluate(s, root) > limits.floor_squared) found.push_back(a + (b - a) * root);
   }
-  if (unclear && depth < kCuspDepth && largest_squared_length(first) > limits.floor_squared) {
+  if (unclear && depth < kCuspDepth && largest_squared_length(f) > limits.floor_squared) {
     const double m = a + 0.5 * (b - a);
     if (a < m && m < b) {
       cusps_on(h1, h2, d, a, m, depth + 1, limits, out, work);
@@ -178,8 +161,9 @@ std::vector<double> offset_cusps(const core::Curve& curve, double d, std::int64_
     // Scale by a power of two so that the largest coordinate is about 1.
     const int e = -core::exponent_of(scale);
     const std::vector<Point2> p = core::scaled_by_power_of_two(curve.points(), e);
-    const std::vector<Point2> first = hodograph(p);
-    const std::vector<Point2> second = hodograph(first);
+    ControlPoints first, second;
+    hodograph_into(p, first);
+    hodograph_into(first, second);
     const double m1 = std::sqrt(largest_squared_length(first));
     const double m2 = std::sqrt(largest_squared_length(second));
     const Limits limits{kNearCuspSpeed * kNearCuspSpeed * m1 * m1,

@@ -23,19 +23,19 @@ namespace bezier::outline {
 /// certainty by bernstein_roots (core/bernstein/roots.hpp); the curve is first scaled by a
 /// power of two (exact) so that the sixth powers neither overflow nor underflow. Roots where
 /// B' = 0 (s = 0, a cusp of B itself, where the normal turns by a half turn and the parallel
-/// curve jumps) are not cusps of the parallel curve and are left out. A root where s^3 is
-/// below 1e-12 of the largest coefficient of p cannot be told from such a zero at p's
-/// rounding: next to a near-cusp of B (a hairpin, |B'| small but not zero), where s^3 is tiny
-/// at the cusps of O too, p's coefficients on [0, 1] are far larger than its values there.
-/// Such a piece is halved and p built again on each half from the hodographs' pieces (the
-/// values of B' and B'' there, rounded as on the whole curve, so p's coefficients shrink with
-/// the piece while its values near the root keep their accuracy), until every root is told
-/// apart, or the piece is 2^-48 wide, or |B'| stays below 2^-20 of its largest on it (a
-/// near-cusp of B, whose parallel curve turns by a half turn where B hardly moves): such a
-/// root is then taken as a zero of B', as is any cusp where |B'| is below that floor. A piece where d c <= 0 throughout (to within c's
-/// rounding) holds no cusp and is not searched. A double root of p with d c > 0 (a curvature
-/// extremum whose radius is exactly |d|, where O' vanishes without turning back) is reported
-/// too: O is not smooth there either.
+/// curve jumps) are not cusps of the parallel curve and are left out. A root where s^3 is below
+/// 1e-12 of the largest coefficient of p cannot be told from such a zero at p's rounding: next
+/// to a near-cusp of B (a hairpin, |B'| small but not zero), where s^3 is tiny at the cusps of
+/// O too, p's coefficients on [0, 1] are far larger than its values there. Such a piece is
+/// halved and p built again on each half from the hodographs' pieces (the values of B' and B''
+/// there, rounded as on the whole curve, so p's coefficients shrink with the piece while its
+/// values near the root keep their accuracy), until every root is told apart, or the piece is
+/// 2^-48 wide, or |B'| stays below 2^-20 of its largest on it (a near-cusp of B, whose parallel
+/// curve turns by a half turn where B hardly moves): such a root is then taken as a zero of B',
+/// as is any cusp where |B'| is below that floor. A piece where d c <= 0 throughout (to within
+/// c's rounding) holds no cusp and is not searched. A double root of p with d c > 0 (a
+/// curvature extremum whose radius is exactly |d|, where O' vanishes without turning back) is
+/// reported too: O is not smooth there either.
 ///
 /// Each root found is polished by Newton's method on the unsquared condition |B'|^3 = d c,
 /// whose two sides keep their accuracy where p's coefficients do not.

@@ -339,7 +339,8 @@ TEST(Stroke, HairpinIsCoveredByItsRibbonsAndAFewDisksAtItsTip) {
   // of curvature is below r only next to the tip (offset_cusps_test's hairpins), where B' is
   // small but not zero; the tight side there is shorter than r and turns by a half turn, so
   // a few disks cover it. A chain of disks of radius R along a whole leg (the tight side
-  // taken for the whole curve) would need at least 3/4 / (2R) of them.
+  // taken for the whole curve) would need at least 3/4 / (2R) of them; the outline's
+  // contours (two sides, a few disks) stay below a quarter of that.
   const double width = 0.01, tolerance = 1e-4, reach = width / 2 + tolerance / 2;
   for (const double g : {3e-4, 1e-6}) {
     SCOPED_TRACE(g);
